@@ -1,0 +1,1 @@
+//! # dem — dynamic DEM tier of superlube (placeholder; filled by the DEM issue)

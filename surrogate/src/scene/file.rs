@@ -1,0 +1,315 @@
+//! [`SceneFile`]: the TOML / command-line form of a scene, in user units (µm, GPa, g/cm³,
+//! degrees). Every field is optional and overrides the preset named by `pattern`
+//! (default `square-tri`). Unknown fields are rejected with their name.
+//!
+//! ```toml
+//! pattern = "square-tri"          # base preset: tri-tri | square-tri | square-square | tri-square
+//! sphere_diameter_um = 3.0
+//! [slider]
+//! radius_um = 100.0
+//! theta_deg = 0.0
+//! offset_um = [0.0, 0.0]
+//! lattice = { kind = "square", spacing_um = 3.0 }
+//! [substrate]
+//! size_um = [364.0, 270.0]
+//! sigma_h_um = 0.0
+//! seed = 1
+//! lattice = { kind = "oblique", a1_um = [3.0, 0.0], a2_um = [1.0, 2.8] }
+//! [material]
+//! youngs_GPa = 100.0
+//! poisson = 0.3
+//! density_g_cm3 = 2.2
+//! [coating]
+//! p_crit_GPa = 4.0
+//! mu1 = 0.01
+//! mu2 = 0.5
+//! ```
+
+use super::{Lattice, Scene};
+use crate::error::SceneError;
+use crate::units::{deg_to_rad, gcm3_to_kgm3, gpa_to_pa, um_to_m};
+use serde::{Deserialize, Serialize};
+
+/// A lattice in user units. `kind` is `triangular`, `square`, `rectangular` (needs
+/// `spacing_um` and `spacing_y_um`) or `oblique` (needs `a1_um` and `a2_um`).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LatticeFile {
+    /// Lattice kind.
+    pub kind: String,
+    /// Nearest-neighbour spacing (µm) of triangular/square, x spacing of rectangular. Default 3.
+    pub spacing_um: Option<f64>,
+    /// y spacing (µm) of a rectangular lattice.
+    pub spacing_y_um: Option<f64>,
+    /// First primitive vector (µm) of an oblique lattice.
+    pub a1_um: Option<[f64; 2]>,
+    /// Second primitive vector (µm) of an oblique lattice.
+    pub a2_um: Option<[f64; 2]>,
+}
+
+impl LatticeFile {
+    /// Converts to a [`Lattice`] (m); `field` names the table in errors.
+    pub fn to_lattice(&self, field: &str) -> Result<Lattice, SceneError> {
+        let s = um_to_m(self.spacing_um.unwrap_or(3.0));
+        let need = |v: Option<[f64; 2]>, name: &str| {
+            v.map(|a| [um_to_m(a[0]), um_to_m(a[1])]).ok_or_else(|| {
+                SceneError::invalid(
+                    &format!("{field}.{name}"),
+                    "missing",
+                    "required for an oblique lattice",
+                )
+            })
+        };
+        let l = match self.kind.as_str() {
+            "triangular" | "tri" => Lattice::triangular(s),
+            "square" => Lattice::square(s),
+            "rectangular" => {
+                let sy = self.spacing_y_um.ok_or_else(|| {
+                    SceneError::invalid(
+                        &format!("{field}.spacing_y_um"),
+                        "missing",
+                        "required for a rectangular lattice",
+                    )
+                })?;
+                Lattice::rectangular(s, um_to_m(sy))
+            }
+            "oblique" => Lattice::oblique(need(self.a1_um, "a1_um")?, need(self.a2_um, "a2_um")?),
+            other => {
+                return Err(SceneError::Unknown {
+                    field: format!("{field}.kind"),
+                    what: "lattice".into(),
+                    name: other.into(),
+                    expected: "triangular, square, rectangular, oblique".into(),
+                })
+            }
+        };
+        if let Some(sp) = self.spacing_um {
+            if !(sp.is_finite() && sp > 0.0) {
+                return Err(SceneError::invalid(
+                    &format!("{field}.spacing_um"),
+                    sp,
+                    "must be a positive number",
+                ));
+            }
+        }
+        l.validate(field)?;
+        Ok(l)
+    }
+}
+
+/// Slider overrides (user units).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SliderFile {
+    /// Slider lattice.
+    pub lattice: Option<LatticeFile>,
+    /// Disc radius (µm).
+    pub radius_um: Option<f64>,
+    /// Rotation θ (degrees).
+    pub theta_deg: Option<f64>,
+    /// Disc centre relative to the central substrate sphere (µm).
+    pub offset_um: Option<[f64; 2]>,
+}
+
+/// Substrate overrides (user units).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SubstrateFile {
+    /// Substrate lattice.
+    pub lattice: Option<LatticeFile>,
+    /// Rectangle size `[Lx, Ly]` (µm).
+    pub size_um: Option<[f64; 2]>,
+    /// Height perturbation amplitude σ_h (µm).
+    pub sigma_h_um: Option<f64>,
+    /// Seed of the height perturbation.
+    pub seed: Option<u64>,
+}
+
+/// Material overrides (user units).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialFile {
+    /// Young's modulus (GPa).
+    #[serde(rename = "youngs_GPa")]
+    pub youngs_gpa: Option<f64>,
+    /// Poisson ratio.
+    pub poisson: Option<f64>,
+    /// Density (g/cm³).
+    pub density_g_cm3: Option<f64>,
+}
+
+/// Coating overrides (user units).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CoatingFile {
+    /// Critical pressure (GPa).
+    #[serde(rename = "p_crit_GPa")]
+    pub p_crit_gpa: Option<f64>,
+    /// Friction coefficient of intact contacts.
+    pub mu1: Option<f64>,
+    /// Friction coefficient of failed contacts.
+    pub mu2: Option<f64>,
+}
+
+/// A scene in user units, as read from TOML or assembled from command-line flags.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// Base preset (default `square-tri`).
+    pub pattern: Option<String>,
+    /// Diameter of every sphere (µm).
+    pub sphere_diameter_um: Option<f64>,
+    /// Slider overrides.
+    #[serde(default)]
+    pub slider: SliderFile,
+    /// Substrate overrides.
+    #[serde(default)]
+    pub substrate: SubstrateFile,
+    /// Material overrides.
+    #[serde(default)]
+    pub material: MaterialFile,
+    /// Coating overrides.
+    #[serde(default)]
+    pub coating: CoatingFile,
+}
+
+impl SceneFile {
+    /// Parses TOML text; `path` is only used in error messages.
+    pub fn from_toml(text: &str, path: &str) -> Result<SceneFile, SceneError> {
+        toml::from_str(text).map_err(|e| SceneError::File {
+            path: path.to_string(),
+            msg: e.to_string(),
+        })
+    }
+
+    /// Reads and parses a TOML file.
+    pub fn read(path: &std::path::Path) -> Result<SceneFile, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::File {
+            path: path.display().to_string(),
+            msg: e.to_string(),
+        })?;
+        Self::from_toml(&text, &path.display().to_string())
+    }
+
+    /// Overlays every field set in `other` on `self` (`other` wins).
+    pub fn merge(mut self, other: &SceneFile) -> SceneFile {
+        macro_rules! take {
+            ($($f:ident).+) => { if other.$($f).+.is_some() { self.$($f).+ = other.$($f).+.clone(); } };
+        }
+        take!(pattern);
+        take!(sphere_diameter_um);
+        take!(slider.lattice);
+        take!(slider.radius_um);
+        take!(slider.theta_deg);
+        take!(slider.offset_um);
+        take!(substrate.lattice);
+        take!(substrate.size_um);
+        take!(substrate.sigma_h_um);
+        take!(substrate.seed);
+        take!(material.youngs_gpa);
+        take!(material.poisson);
+        take!(material.density_g_cm3);
+        take!(coating.p_crit_gpa);
+        take!(coating.mu1);
+        take!(coating.mu2);
+        self
+    }
+
+    /// Builds and validates the SI [`Scene`]: the preset named by `pattern` (default
+    /// `square-tri`) with every given field overriding it. Errors name the bad field.
+    pub fn into_scene(&self) -> Result<Scene, SceneError> {
+        let mut s = Scene::preset(self.pattern.as_deref().unwrap_or("square-tri"))?;
+        if let Some(d) = self.sphere_diameter_um {
+            s.sphere_radius = um_to_m(d) / 2.0;
+        }
+        if let Some(l) = &self.slider.lattice {
+            s.slider.lattice = l.to_lattice("slider.lattice")?;
+        }
+        if let Some(v) = self.slider.radius_um {
+            s.slider.radius = um_to_m(v);
+        }
+        if let Some(v) = self.slider.theta_deg {
+            s.slider.theta = deg_to_rad(v);
+        }
+        if let Some(v) = self.slider.offset_um {
+            s.slider.offset = v.map(um_to_m);
+        }
+        if let Some(l) = &self.substrate.lattice {
+            s.substrate.lattice = l.to_lattice("substrate.lattice")?;
+        }
+        if let Some(v) = self.substrate.size_um {
+            s.substrate.size = v.map(um_to_m);
+        }
+        if let Some(v) = self.substrate.sigma_h_um {
+            s.substrate.sigma_h = um_to_m(v);
+        }
+        if let Some(v) = self.substrate.seed {
+            s.substrate.seed = v;
+        }
+        if let Some(v) = self.material.youngs_gpa {
+            s.material.youngs = gpa_to_pa(v);
+        }
+        if let Some(v) = self.material.poisson {
+            s.material.poisson = v;
+        }
+        if let Some(v) = self.material.density_g_cm3 {
+            s.material.density = gcm3_to_kgm3(v);
+        }
+        if let Some(v) = self.coating.p_crit_gpa {
+            s.coating.p_crit = gpa_to_pa(v);
+        }
+        if let Some(v) = self.coating.mu1 {
+            s.coating.mu1 = v;
+        }
+        if let Some(v) = self.coating.mu2 {
+            s.coating.mu2 = v;
+        }
+        if self.slider.lattice.is_some() || self.substrate.lattice.is_some() {
+            if self.pattern.is_none() {
+                s.pattern = "custom".into();
+            } else {
+                s.pattern = format!("{}*", s.pattern);
+            }
+        }
+        s.validate()?;
+        Ok(s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn toml_round_trip_and_overrides() {
+        let f = SceneFile::from_toml(
+            "pattern = 'tri-tri'\n[slider]\nradius_um = 30\ntheta_deg = 10\n[substrate]\nsigma_h_um = 0.01\nlattice = { kind = 'square' }\n",
+            "x.toml",
+        )
+        .unwrap();
+        let s = f.into_scene().unwrap();
+        assert!((s.slider.radius - 30e-6).abs() < 1e-18);
+        assert!((s.slider.theta - 10f64.to_radians()).abs() < 1e-15);
+        assert_eq!(s.substrate.lattice, Lattice::square(3e-6));
+        assert_eq!(s.pattern, "tri-tri*");
+    }
+
+    #[test]
+    fn errors_name_the_field() {
+        let e = SceneFile::from_toml("[slider]\nradius = 3\n", "bad.toml").unwrap_err();
+        assert!(
+            e.to_string().contains("radius") && e.to_string().contains("bad.toml"),
+            "{e}"
+        );
+        let e = SceneFile::from_toml("[substrate]\nlattice = { kind = 'hex' }\n", "b.toml")
+            .unwrap()
+            .into_scene()
+            .unwrap_err();
+        assert!(e.to_string().contains("substrate.lattice.kind"), "{e}");
+        let e = SceneFile::from_toml("[material]\nyoungs_GPa = -1\n", "b.toml")
+            .unwrap()
+            .into_scene()
+            .unwrap_err();
+        assert!(e.to_string().contains("material.youngs_GPa"), "{e}");
+    }
+}

@@ -1,0 +1,113 @@
+//! Elastic material of the spheres and the superlubric coating on them.
+
+use crate::error::SceneError;
+use serde::{Deserialize, Serialize};
+
+/// Isotropic elastic material of every sphere (SI).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Material {
+    /// Young's modulus E (Pa). Study: 100 GPa (also 50 GPa).
+    pub youngs: f64,
+    /// Poisson ratio ν (–). Study: 0.3.
+    pub poisson: f64,
+    /// Density ρ (kg/m³). Study: 2200 kg/m³ (2.2 g/cm³).
+    pub density: f64,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            youngs: 100e9,
+            poisson: 0.3,
+            density: 2200.0,
+        }
+    }
+}
+
+impl Material {
+    /// Effective modulus of two spheres of this material, `E* = E / (2(1 − ν²))` (Pa).
+    pub fn e_star(&self) -> f64 {
+        self.youngs / (2.0 * (1.0 - self.poisson * self.poisson))
+    }
+    /// Mass of a sphere of radius `r` (m): `ρ·4/3·π·r³` (kg).
+    pub fn sphere_mass(&self, r: f64) -> f64 {
+        self.density * 4.0 / 3.0 * std::f64::consts::PI * r * r * r
+    }
+    /// Checks ranges; errors name the user-facing field.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        if !(self.youngs.is_finite() && self.youngs > 0.0) {
+            return Err(SceneError::invalid(
+                "material.youngs_GPa",
+                self.youngs / 1e9,
+                "must be a positive number",
+            ));
+        }
+        if !(self.poisson.is_finite() && self.poisson > -1.0 && self.poisson < 0.5) {
+            return Err(SceneError::invalid(
+                "material.poisson",
+                self.poisson,
+                "must lie in (-1, 0.5)",
+            ));
+        }
+        if !(self.density.is_finite() && self.density > 0.0) {
+            return Err(SceneError::invalid(
+                "material.density_g_cm3",
+                self.density / 1e3,
+                "must be a positive number",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The superlubric coating: its strength and the two friction coefficients it switches between.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Coating {
+    /// Critical contact pressure P_crit (Pa) above which the coating fails. Study: 4 GPa.
+    pub p_crit: f64,
+    /// Friction coefficient μ1 of an intact contact (p0 ≤ P_crit). Study: 0.01.
+    pub mu1: f64,
+    /// Friction coefficient μ2 of a failed contact (p0 > P_crit). Study: 0.5.
+    pub mu2: f64,
+}
+
+impl Default for Coating {
+    fn default() -> Self {
+        Coating {
+            p_crit: 4e9,
+            mu1: 0.01,
+            mu2: 0.5,
+        }
+    }
+}
+
+impl Coating {
+    /// Friction coefficient of a contact whose maximum Hertz pressure is `p0` (Pa).
+    pub fn mu(&self, p0: f64) -> f64 {
+        if self.failed(p0) {
+            self.mu2
+        } else {
+            self.mu1
+        }
+    }
+    /// Whether a contact with maximum Hertz pressure `p0` (Pa) has failed (`p0 > P_crit`).
+    pub fn failed(&self, p0: f64) -> bool {
+        p0 > self.p_crit
+    }
+    /// Checks ranges; errors name the user-facing field.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        if !(self.p_crit.is_finite() && self.p_crit > 0.0) {
+            return Err(SceneError::invalid(
+                "coating.p_crit_GPa",
+                self.p_crit / 1e9,
+                "must be a positive number",
+            ));
+        }
+        for (f, v) in [("coating.mu1", self.mu1), ("coating.mu2", self.mu2)] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(SceneError::invalid(f, v, "must be a non-negative number"));
+            }
+        }
+        Ok(())
+    }
+}

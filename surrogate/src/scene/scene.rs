@@ -1,0 +1,286 @@
+//! [`Scene`]: the full description of one slider–substrate pair (SI units).
+
+use super::{Coating, Lattice, Material};
+use crate::contact::Hertz;
+use crate::error::SceneError;
+use rand::{Rng, SeedableRng};
+use serde::{Deserialize, Serialize};
+
+/// Names of the built-in pattern pairs (`slider-substrate`).
+pub const PATTERNS: &[&str] = &["tri-tri", "square-tri", "square-square", "tri-square"];
+
+/// The slider: a rigid disc of lattice sites, one sphere per site.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SliderSpec {
+    /// Slider lattice before rotation (m).
+    pub lattice: Lattice,
+    /// Disc radius (m): sites with |p| ≤ radius (a site sits at the disc centre).
+    pub radius: f64,
+    /// Rotation θ of the slider lattice about the vertical axis through its centre (rad).
+    pub theta: f64,
+    /// In-plane position of the disc centre relative to the substrate sphere at the origin (m).
+    pub offset: [f64; 2],
+}
+
+/// The substrate: a rectangle of lattice sites centred on a site at the origin.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SubstrateSpec {
+    /// Substrate lattice (m). `a1` along x: one lattice row along x.
+    pub lattice: Lattice,
+    /// Rectangle size `[Lx, Ly]` (m), centred on the origin.
+    pub size: [f64; 2],
+    /// Amplitude of the random sphere-height perturbation (m): heights uniform in `[-σ_h, σ_h]`.
+    pub sigma_h: f64,
+    /// Seed of the height perturbation (ChaCha8; same seed → same heights).
+    pub seed: u64,
+}
+
+/// One slider–substrate scene (SI units). Build with [`Scene::preset`] or
+/// [`crate::SceneFile::into_scene`], then [`Scene::validate`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Scene {
+    /// Short name of the pattern pair, used in output tables (e.g. `square-tri`).
+    pub pattern: String,
+    /// The slider disc.
+    pub slider: SliderSpec,
+    /// The substrate rectangle.
+    pub substrate: SubstrateSpec,
+    /// Radius of every slider and substrate sphere (m). Study: 1.5 µm.
+    pub sphere_radius: f64,
+    /// Sphere material.
+    pub material: Material,
+    /// Coating strength and friction coefficients.
+    pub coating: Coating,
+}
+
+impl Scene {
+    /// A built-in pattern pair with the reference study's parameters (see SPEC.md):
+    /// spheres of 3 µm diameter, 3 µm spacing, substrate 364 × 270 µm, triangular slider radius
+    /// 93.5 µm, square slider radius 100 µm (both 3505 spheres), θ = 0, E = 100 GPa.
+    pub fn preset(name: &str) -> Result<Scene, SceneError> {
+        let s = 3e-6;
+        let (sl, r, sb) = match name {
+            "tri-tri" => (Lattice::triangular(s), 93.5e-6, Lattice::triangular(s)),
+            "square-tri" => (Lattice::square(s), 100e-6, Lattice::triangular(s)),
+            "square-square" => (Lattice::square(s), 100e-6, Lattice::square(s)),
+            "tri-square" => (Lattice::triangular(s), 93.5e-6, Lattice::square(s)),
+            _ => {
+                return Err(SceneError::Unknown {
+                    field: "pattern".into(),
+                    what: "pattern".into(),
+                    name: name.into(),
+                    expected: PATTERNS.join(", "),
+                })
+            }
+        };
+        Ok(Scene {
+            pattern: name.to_string(),
+            slider: SliderSpec {
+                lattice: sl,
+                radius: r,
+                theta: 0.0,
+                offset: [0.0, 0.0],
+            },
+            substrate: SubstrateSpec {
+                lattice: sb,
+                size: [364e-6, 270e-6],
+                sigma_h: 0.0,
+                seed: 1,
+            },
+            sphere_radius: 1.5e-6,
+            material: Material::default(),
+            coating: Coating::default(),
+        })
+    }
+
+    /// The same scene with the slider rotated to `theta` (rad).
+    pub fn with_theta(&self, theta: f64) -> Scene {
+        let mut s = self.clone();
+        s.slider.theta = theta;
+        s
+    }
+
+    /// Checks every field; the error names the first bad field in user units.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        let um = 1e6;
+        if !(self.sphere_radius.is_finite() && self.sphere_radius > 0.0) {
+            return Err(SceneError::invalid(
+                "sphere_diameter_um",
+                2.0 * self.sphere_radius * um,
+                "must be a positive number",
+            ));
+        }
+        self.slider.lattice.validate("slider.lattice")?;
+        self.substrate.lattice.validate("substrate.lattice")?;
+        if !(self.slider.radius.is_finite() && self.slider.radius >= 0.0) {
+            return Err(SceneError::invalid(
+                "slider.radius_um",
+                self.slider.radius * um,
+                "must be a non-negative number",
+            ));
+        }
+        if !self.slider.theta.is_finite() {
+            return Err(SceneError::invalid(
+                "slider.theta_deg",
+                self.slider.theta.to_degrees(),
+                "must be finite",
+            ));
+        }
+        if !self.slider.offset.iter().all(|v| v.is_finite()) {
+            return Err(SceneError::invalid(
+                "slider.offset_um",
+                format!("{:?}", self.slider.offset.map(|v| v * um)),
+                "must be finite",
+            ));
+        }
+        let [lx, ly] = self.substrate.size;
+        if !(lx.is_finite() && ly.is_finite() && lx > 0.0 && ly > 0.0) {
+            return Err(SceneError::invalid(
+                "substrate.size_um",
+                format!("{}x{}", lx * um, ly * um),
+                "both sides must be positive",
+            ));
+        }
+        let sh = self.substrate.sigma_h;
+        if !(sh.is_finite() && sh >= 0.0) {
+            return Err(SceneError::invalid(
+                "substrate.sigma_h_um",
+                sh * um,
+                "must be a non-negative number",
+            ));
+        }
+        if sh >= self.sphere_radius {
+            return Err(SceneError::invalid(
+                "substrate.sigma_h_um",
+                sh * um,
+                &format!(
+                    "must be smaller than the sphere radius {} µm",
+                    self.sphere_radius * um
+                ),
+            ));
+        }
+        let [ox, oy] = self.slider.offset;
+        if ox.abs() > 0.5 * lx || oy.abs() > 0.5 * ly {
+            return Err(SceneError::invalid(
+                "slider.offset_um",
+                format!("[{}, {}]", ox * um, oy * um),
+                &format!(
+                    "slider centre is not over the {}x{} µm substrate",
+                    lx * um,
+                    ly * um
+                ),
+            ));
+        }
+        self.material.validate()?;
+        self.coating.validate()?;
+        Ok(())
+    }
+
+    /// Hertz law of one slider–substrate sphere pair.
+    pub fn hertz(&self) -> Hertz {
+        Hertz::equal_spheres(self.sphere_radius, &self.material)
+    }
+
+    /// Slider sphere centres relative to the disc centre, unrotated (m), deterministic order.
+    pub fn slider_sites_local(&self) -> Vec<[f64; 2]> {
+        self.slider.lattice.sites_in_disc(self.slider.radius)
+    }
+
+    /// Slider sphere centres in the substrate frame (m) for the slider rotated by `theta` (rad)
+    /// and its centre at `offset + shift`.
+    pub fn slider_sites_at(&self, theta: f64, shift: [f64; 2]) -> Vec<[f64; 2]> {
+        let (s, c) = theta.sin_cos();
+        let cx = self.slider.offset[0] + shift[0];
+        let cy = self.slider.offset[1] + shift[1];
+        self.slider_sites_local()
+            .into_iter()
+            .map(|p| [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]])
+            .collect()
+    }
+
+    /// Slider sphere centres in the substrate frame (m) at the scene's own θ and offset.
+    pub fn slider_sites(&self) -> Vec<[f64; 2]> {
+        self.slider_sites_at(self.slider.theta, [0.0, 0.0])
+    }
+
+    /// Substrate sphere centres `[x, y, h]` (m): lattice sites in the rectangle, with heights
+    /// `h` uniform in `[-σ_h, σ_h]` from a ChaCha8 stream seeded by `substrate.seed` (all zero
+    /// when `σ_h = 0`).
+    pub fn substrate_spheres(&self) -> Vec<[f64; 3]> {
+        let sites = self
+            .substrate
+            .lattice
+            .sites_in_rect(self.substrate.size[0], self.substrate.size[1]);
+        let sh = self.substrate.sigma_h;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(self.substrate.seed);
+        sites
+            .into_iter()
+            .map(|p| {
+                let h = if sh > 0.0 {
+                    sh * rng.random_range(-1.0..=1.0)
+                } else {
+                    0.0
+                };
+                [p[0], p[1], h]
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn presets_have_study_sizes() {
+        for p in ["tri-tri", "square-tri"] {
+            let s = Scene::preset(p).unwrap();
+            s.validate().unwrap();
+            assert_eq!(s.slider_sites().len(), 3505, "{p}");
+        }
+        assert_eq!(
+            Scene::preset("square-tri")
+                .unwrap()
+                .substrate_spheres()
+                .len(),
+            12515
+        );
+    }
+
+    #[test]
+    fn bad_fields_are_named() {
+        let mut s = Scene::preset("tri-tri").unwrap();
+        s.slider.radius = -1.0;
+        assert!(s
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("slider.radius_um"));
+        let mut s = Scene::preset("tri-tri").unwrap();
+        s.substrate.sigma_h = 2e-6;
+        assert!(s.validate().unwrap_err().to_string().contains("sigma_h_um"));
+        let mut s = Scene::preset("tri-tri").unwrap();
+        s.slider.offset = [500e-6, 0.0];
+        assert!(s
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("slider.offset_um"));
+        assert!(Scene::preset("hex-tri")
+            .unwrap_err()
+            .to_string()
+            .contains("pattern"));
+    }
+
+    #[test]
+    fn heights_are_seeded_and_bounded() {
+        let mut s = Scene::preset("tri-tri").unwrap();
+        s.substrate.sigma_h = 0.01e-6;
+        let a = s.substrate_spheres();
+        assert_eq!(a, s.substrate_spheres());
+        assert!(a.iter().all(|p| p[2].abs() <= 0.01e-6));
+        assert!(a.iter().any(|p| p[2] != 0.0));
+        s.substrate.seed = 2;
+        assert_ne!(a, s.substrate_spheres());
+    }
+}

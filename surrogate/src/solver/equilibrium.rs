@@ -1,0 +1,63 @@
+//! [`Equilibrium`]: the result of one quasi-static solve.
+
+use super::Model;
+use serde::{Deserialize, Serialize};
+
+/// One touching slider–substrate sphere pair at equilibrium (SI).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ContactInfo {
+    /// Slider sphere index (scene order).
+    pub slider: u32,
+    /// Substrate sphere index (scene order).
+    pub substrate: u32,
+    /// Contact point (midpoint of the two centres) `[x, y, z]` (m).
+    pub point: [f64; 3],
+    /// Overlap δ (m), > 0.
+    pub overlap: f64,
+    /// Normal (Hertz) force magnitude (N).
+    pub force_n: f64,
+    /// Vertical component of the normal force on the slider (N).
+    pub force_z: f64,
+    /// Maximum Hertz pressure p0 (Pa).
+    pub p0: f64,
+    /// Whether the coating of this contact has failed (p0 > P_crit).
+    pub failed: bool,
+}
+
+/// Equilibrium of the slider under load W (SI).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Equilibrium {
+    /// Model actually used.
+    pub model: Model,
+    /// Applied load W (N).
+    pub load: f64,
+    /// Height z (m) of the slider's sphere-centre plane (at its centre) above the substrate's
+    /// unperturbed sphere-centre plane. 2R at first touch of an on-top pair.
+    pub z: f64,
+    /// Tilts `[about x, about y]` (rad): slider sphere i sits at z + tilt[0]·y_i − tilt[1]·x_i
+    /// relative to the disc centre. Zero for the rigid-z model.
+    pub tilt: [f64; 2],
+    /// Touching pairs (δ > 0), in slider-then-substrate index order.
+    pub contacts: Vec<ContactInfo>,
+    /// Largest p0 (Pa) over the contacts (0 if none).
+    pub p_max: f64,
+    /// Residual ΣF_z − W (N).
+    pub residual: f64,
+    /// Iterations the root find took.
+    pub iterations: usize,
+}
+
+impl Equilibrium {
+    /// Contact number: pairs with δ > 0.
+    pub fn contact_count(&self) -> usize {
+        self.contacts.len()
+    }
+    /// Number of contacts whose coating has failed.
+    pub fn failed_count(&self) -> usize {
+        self.contacts.iter().filter(|c| c.failed).count()
+    }
+    /// Whether any contact's coating has failed (P_max > P_crit).
+    pub fn coating_failed(&self) -> bool {
+        self.contacts.iter().any(|c| c.failed)
+    }
+}
