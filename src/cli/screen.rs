@@ -95,7 +95,13 @@ struct ContactRow {
     failed: bool,
 }
 
-fn row(pattern: &str, theta_deg: f64, load_mn: f64, r: &Result<Equilibrium, surrogate::SceneError>, model: Model) -> Row {
+fn row(
+    pattern: &str,
+    theta_deg: f64,
+    load_mn: f64,
+    r: &Result<Equilibrium, surrogate::SceneError>,
+    model: Model,
+) -> Row {
     match r {
         Ok(e) => Row {
             pattern: pattern.to_string(),

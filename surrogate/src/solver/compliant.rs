@@ -2,8 +2,8 @@
 //! vertical spring k_z; substrate spheres fixed in z. Sparse Newton with faer's sparse Cholesky.
 
 use super::assemble::{assemble, Ctx};
-use super::law::pair_response;
-use super::rigid_tilt::{rigid_tilt_state, tilt_pairs, TiltPair};
+use super::law::{body_pairs, pair_response, BodyPair};
+use super::rigid_tilt::rigid_tilt_state;
 use super::{Equilibrium, Model, PairSet};
 use crate::error::SceneError;
 use faer::linalg::solvers::Solve;
@@ -17,10 +17,9 @@ use faer::{Col, Side};
 /// with faer's sparse Cholesky (AMD ordering, no fill-in beyond the arrow).
 struct System<'a> {
     ctx: &'a Ctx<'a>,
-    tp: Vec<TiltPair>,
+    tp: Vec<BodyPair>,
     groups: Vec<(u32, std::ops::Range<usize>)>,
     load: f64,
-    zref: f64,
     kz: f64,
 }
 
@@ -41,7 +40,7 @@ impl System<'_> {
         let k = self.ctx.hertz.k();
         let n = self.n();
         let q = [x[n], x[n + 1], x[n + 2]];
-        let mut pi = self.load * (q[0] - self.zref);
+        let mut pi = self.load * q[0];
         let mut grad = vec![0.0; n + 3];
         grad[n] = self.load;
         let mut diag = Vec::with_capacity(n);
@@ -54,7 +53,7 @@ impl System<'_> {
             let mut f = 0.0;
             let mut s = 0.0;
             for p in &self.tp[range.clone()] {
-                let r = pair_response(k, self.ctx.two_r, p.r2, base - p.h);
+                let r = pair_response(k, self.ctx.two_r, p.r2, p.ut, base - p.c);
                 pi += r.phi;
                 f += r.fz;
                 s += r.s.max(0.0);
@@ -111,14 +110,18 @@ impl System<'_> {
 /// balance holds to `force_rtol`·W, the moments to `moment_rtol`·W·L and every sphere's spring
 /// balance to `force_rtol`·W. Cost per iteration: O(P) assembly plus a sparse Cholesky of
 /// n + 3 unknowns (n slider spheres with candidate pairs), i.e. O(n).
-pub(crate) fn solve_compliant(ctx: &Ctx, ps: &PairSet, load: f64) -> Result<Equilibrium, SceneError> {
-    let (q0, it0) = rigid_tilt_state(ctx, ps, load)?;
+pub(crate) fn solve_compliant(
+    ctx: &Ctx,
+    ps: &PairSet,
+    load: f64,
+) -> Result<Equilibrium, SceneError> {
+    let (bp, zref) = body_pairs(ctx, ps);
+    let (q0, it0) = rigid_tilt_state(ctx, &bp, load)?;
     let sys = System {
         ctx,
-        tp: tilt_pairs(ctx, ps),
+        tp: bp,
         groups: ps.groups(),
         load,
-        zref: q0[0],
         kz: ctx.params.k_slider_z,
     };
     let n = sys.n();
@@ -145,13 +148,22 @@ pub(crate) fn solve_compliant(ctx: &Ctx, ps: &PairSet, load: f64) -> Result<Equi
             converged = true;
             break;
         }
-        let dmax = st.hqq[0][0].max(st.hqq[1][1]).max(st.hqq[2][2]).max(f64::MIN_POSITIVE);
+        let dmax = st.hqq[0][0]
+            .max(st.hqq[1][1])
+            .max(st.hqq[2][2])
+            .max(f64::MIN_POSITIVE);
         let d = sys.step(&st, 1e-10 * dmax)?;
         let norm = d.iter().map(|v| v * v).sum::<f64>().sqrt();
         if !norm.is_finite() {
-            return Err(SceneError::NoEquilibrium("compliant Newton step is not finite".into()));
+            return Err(SceneError::NoEquilibrium(
+                "compliant Newton step is not finite".into(),
+            ));
         }
-        let cap = if norm > ctx.two_r { ctx.two_r / norm } else { 1.0 };
+        let cap = if norm > ctx.two_r {
+            ctx.two_r / norm
+        } else {
+            1.0
+        };
         let slope: f64 = d.iter().zip(&st.grad).map(|(a, b)| a * b).sum::<f64>() * cap;
         let mut alpha = cap;
         let mut accepted = false;
@@ -159,7 +171,12 @@ pub(crate) fn solve_compliant(ctx: &Ctx, ps: &PairSet, load: f64) -> Result<Equi
             let xn: Vec<f64> = x.iter().zip(&d).map(|(a, b)| a + alpha * b).collect();
             let sn = sys.eval(&xn);
             let slack = 1e-13 * st.pi.abs();
-            if sn.pi <= st.pi + 1e-4 * (alpha / cap) * slope + slack {
+            // Energy (Armijo) test; near convergence Π is flat to round-off, so a step that
+            // halves the gradient is accepted too.
+            let gnorm = |v: &[f64]| v.iter().fold(0.0f64, |m, g| m.max(g.abs()));
+            if sn.pi <= st.pi + 1e-4 * (alpha / cap) * slope + slack
+                || gnorm(&sn.grad) < 0.5 * gnorm(&st.grad)
+            {
                 x = xn;
                 st = sn;
                 accepted = true;
@@ -191,14 +208,14 @@ pub(crate) fn solve_compliant(ctx: &Ctx, ps: &PairSet, load: f64) -> Result<Equi
     for (gi, (i, _)) in sys.groups.iter().enumerate() {
         defl[*i as usize] = x[gi];
     }
-    let tilt = [x[n + 1] / ctx.scale, x[n + 2] / ctx.scale];
     Ok(assemble(
         ctx,
         ps,
+        &sys.tp,
+        zref,
         Model::Compliant,
         load,
-        x[n],
-        tilt,
+        [x[n], x[n + 1], x[n + 2]],
         &|i| defl[i as usize],
         iters,
     ))

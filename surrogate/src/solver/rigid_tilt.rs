@@ -2,47 +2,23 @@
 //! (ΣF_z = W, ΣF_z·y = 0, ΣF_z·x = 0 about the disc centre), solved with faer.
 
 use super::assemble::{assemble, Ctx};
-use super::law::pair_response;
+use super::law::{body_pairs, pair_response, BodyPair};
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
 use crate::error::SceneError;
 use faer::linalg::solvers::Solve;
 use faer::{Col, Mat, Side};
 
-/// One pair in the tilt unknowns: vertical gap `u = q·[1, gx, gy] − h` with
-/// `q = [z, L·t_x, L·t_y]`, `gx = y_arm/L`, `gy = −x_arm/L` (L = slider radius).
-#[derive(Clone, Copy)]
-pub(crate) struct TiltPair {
-    pub g: [f64; 2],
-    pub r2: f64,
-    pub h: f64,
-}
-
-/// Tilt pairs of a pair set, with arms scaled by `ctx.scale`.
-pub(crate) fn tilt_pairs(ctx: &Ctx, ps: &PairSet) -> Vec<TiltPair> {
-    ps.pairs
-        .iter()
-        .map(|p| {
-            let a = ps.arm(p.slider);
-            TiltPair {
-                g: [a[1] / ctx.scale, -a[0] / ctx.scale],
-                r2: p.r2,
-                h: p.h,
-            }
-        })
-        .collect()
-}
-
 /// Potential `Π(q) = Σ Φ_j + W (z − z_ref)`, its gradient `[W − ΣF_z, −ΣF_z gx, −ΣF_z gy]` (N)
 /// and Hessian `Σ s_j g_j g_jᵀ` (N/m). Π is convex wherever every s_j ≥ 0.
-fn eval(ctx: &Ctx, tp: &[TiltPair], load: f64, zref: f64, q: [f64; 3]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
     let k = ctx.hertz.k();
-    let mut pi = load * (q[0] - zref);
+    let mut pi = load * q[0];
     let mut g = [load, 0.0, 0.0];
     let mut h = [[0.0; 3]; 3];
     for p in tp {
-        let u = q[0] + q[1] * p.g[0] + q[2] * p.g[1] - p.h;
-        let r = pair_response(k, ctx.two_r, p.r2, u);
+        let dz = q[0] + q[1] * p.g[0] + q[2] * p.g[1] - p.c;
+        let r = pair_response(k, ctx.two_r, p.r2, p.ut, dz);
         if r.fz == 0.0 && r.s == 0.0 {
             continue;
         }
@@ -75,17 +51,16 @@ fn eval(ctx: &Ctx, tp: &[TiltPair], load: f64, zref: f64, q: [f64; 3]) -> (f64, 
 /// (e.g. slider hanging over the substrate edge) and the solve fails with `NoEquilibrium`.
 pub(crate) fn tilt_newton(
     ctx: &Ctx,
-    tp: &[TiltPair],
+    tp: &[BodyPair],
     load: f64,
     q0: [f64; 3],
 ) -> Result<([f64; 3], usize), SceneError> {
     let params = ctx.params;
-    let zref = q0[0];
     let mut q = q0;
     let tol_f = params.force_rtol * load;
     let tol_m = params.moment_rtol * load;
     let mut rho = ctx.two_r; // trust radius (m) on the step
-    let (mut pi, mut g, mut h) = eval(ctx, tp, load, zref, q);
+    let (mut pi, mut g, mut h) = eval(ctx, tp, load, q);
     for it in 1..=params.max_iter {
         if g[0].abs() <= tol_f && g[1].abs() <= tol_m && g[2].abs() <= tol_m {
             return Ok((q, it));
@@ -117,10 +92,17 @@ pub(crate) fn tilt_newton(
         let mut alpha = 1.0;
         let mut accepted = false;
         for _ in 0..60 {
-            let qn = [q[0] + alpha * d[0], q[1] + alpha * d[1], q[2] + alpha * d[2]];
-            let (pn, gn, hn) = eval(ctx, tp, load, zref, qn);
+            let qn = [
+                q[0] + alpha * d[0],
+                q[1] + alpha * d[1],
+                q[2] + alpha * d[2],
+            ];
+            let (pn, gn, hn) = eval(ctx, tp, load, qn);
             let slack = 1e-13 * (pi.abs() + load * ctx.two_r * 1e-6);
-            if pn <= pi + 1e-4 * alpha * slope + slack {
+            // Energy (Armijo) test; near convergence Π is flat to round-off, so a step that
+            // halves the gradient is accepted too.
+            let gnorm = |v: &[f64; 3]| v[0].abs().max(v[1].abs()).max(v[2].abs());
+            if pn <= pi + 1e-4 * alpha * slope + slack || gnorm(&gn) < 0.5 * gnorm(&g) {
                 q = qn;
                 pi = pn;
                 g = gn;
@@ -157,25 +139,38 @@ pub(crate) fn tilt_newton(
 }
 
 /// Rigid-tilt equilibrium: rigid-z start, tilt Newton, then a 1-D z polish at the final tilt
-/// so ΣF_z = W holds to `force_rtol`. Cost: a few rigid-z solves plus ~5–30 Newton iterations
+/// so ΣF_z = W holds to `force_rtol`. Cost: two rigid-z solves plus ~5–30 Newton iterations
 /// of O(P) each (P candidate pairs).
-pub(crate) fn solve_rigid_tilt(ctx: &Ctx, ps: &PairSet, load: f64) -> Result<Equilibrium, SceneError> {
-    let (q, iters) = rigid_tilt_state(ctx, ps, load)?;
-    let tilt = [q[1] / ctx.scale, q[2] / ctx.scale];
-    Ok(assemble(ctx, ps, Model::RigidTilt, load, q[0], tilt, &|_| 0.0, iters))
+pub(crate) fn solve_rigid_tilt(
+    ctx: &Ctx,
+    ps: &PairSet,
+    load: f64,
+) -> Result<Equilibrium, SceneError> {
+    let (bp, zref) = body_pairs(ctx, ps);
+    let (q, iters) = rigid_tilt_state(ctx, &bp, load)?;
+    Ok(assemble(
+        ctx,
+        ps,
+        &bp,
+        zref,
+        Model::RigidTilt,
+        load,
+        q,
+        &|_| 0.0,
+        iters,
+    ))
 }
 
-/// Converged `[z, L·t_x, L·t_y]` (with the z polish) and iterations.
-pub(crate) fn rigid_tilt_state(ctx: &Ctx, ps: &PairSet, load: f64) -> Result<([f64; 3], usize), SceneError> {
-    let zr = ZRoot::new(ps.pairs.iter().map(|p| (p.r2, p.h)), ctx.two_r, ctx.hertz);
+/// Converged `[ζ, L·t_x, L·t_y]` (after the ζ polish) and iterations.
+pub(crate) fn rigid_tilt_state(
+    ctx: &Ctx,
+    bp: &[BodyPair],
+    load: f64,
+) -> Result<([f64; 3], usize), SceneError> {
+    let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
     let (z0, it0) = zr.solve(load, ctx.hertz, ctx.params)?;
-    let tp = tilt_pairs(ctx, ps);
-    let (q, it1) = tilt_newton(ctx, &tp, load, [z0, 0.0, 0.0])?;
-    let zr = ZRoot::new(
-        tp.iter().map(|p| (p.r2, p.h - q[1] * p.g[0] - q[2] * p.g[1])),
-        ctx.two_r,
-        ctx.hertz,
-    );
+    let (q, it1) = tilt_newton(ctx, bp, load, [z0, 0.0, 0.0])?;
+    let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r, ctx.hertz);
     let (z, it2) = zr.solve(load, ctx.hertz, ctx.params)?;
     Ok(([z, q[1], q[2]], it0 + it1 + it2))
 }

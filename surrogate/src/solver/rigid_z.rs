@@ -2,35 +2,42 @@
 //! (see [`super::z_root::ZRoot`]), exact for flat, inversion-symmetric scenes.
 
 use super::assemble::{assemble, Ctx};
+use super::law::{body_pairs, BodyPair};
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
 use crate::error::SceneError;
 
-/// The 1-D problem of a pair set at zero tilt: `u = z − h` for every pair. Build once per θ,
-/// solve for every load. O(P log P).
-pub(crate) fn rigid_z_problem(ctx: &Ctx, ps: &PairSet) -> ZRoot {
-    ZRoot::new(ps.pairs.iter().map(|p| (p.r2, p.h)), ctx.two_r, ctx.hertz)
+/// The 1-D problem of a pair set at zero tilt. Build once per θ, solve for every load.
+/// O(P log P).
+pub(crate) struct RigidZ {
+    pub bp: Vec<BodyPair>,
+    pub zref: f64,
+    pub zr: ZRoot,
 }
 
-/// Rigid-z equilibrium for `load` W (N) from a prepared problem. For a pair at lateral distance
-/// r and substrate height h, with `u = z − h`, `D = √(r² + u²)`, `δ = 2R − D`:
-/// `F_z = (4/3)E*√R_eff δ^{3/2} · u/D`; solves `Σ F_z(z) = W`. O(active pairs) per iteration,
-/// typically < 15 iterations.
-pub(crate) fn solve_rigid_z(
-    ctx: &Ctx,
-    ps: &PairSet,
-    zr: &ZRoot,
-    load: f64,
-) -> Result<Equilibrium, SceneError> {
-    let (z, iters) = zr.solve(load, ctx.hertz, ctx.params)?;
-    Ok(assemble(
-        ctx,
-        ps,
-        Model::RigidZ,
-        load,
-        z,
-        [0.0, 0.0],
-        &|_| 0.0,
-        iters,
-    ))
+impl RigidZ {
+    /// Prepares the pairs of `ps`.
+    pub fn new(ctx: &Ctx, ps: &PairSet) -> RigidZ {
+        let (bp, zref) = body_pairs(ctx, ps);
+        let zr = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
+        RigidZ { bp, zref, zr }
+    }
+
+    /// Rigid-z equilibrium for `load` W (N). For a pair at lateral distance r, with vertical
+    /// centre gap u, `D = √(r² + u²)`, `δ = 2R − D`: `F_z = (4/3)E*√R_eff δ^{3/2} · u/D`;
+    /// solves `Σ F_z(z) = W`. O(active pairs) per iteration, typically < 15 iterations.
+    pub fn solve(&self, ctx: &Ctx, ps: &PairSet, load: f64) -> Result<Equilibrium, SceneError> {
+        let (zeta, iters) = self.zr.solve(load, ctx.hertz, ctx.params)?;
+        Ok(assemble(
+            ctx,
+            ps,
+            &self.bp,
+            self.zref,
+            Model::RigidZ,
+            load,
+            [zeta, 0.0, 0.0],
+            &|_| 0.0,
+            iters,
+        ))
+    }
 }

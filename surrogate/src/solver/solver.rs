@@ -3,7 +3,7 @@
 use super::assemble::Ctx;
 use super::compliant::solve_compliant;
 use super::rigid_tilt::solve_rigid_tilt;
-use super::rigid_z::{rigid_z_problem, solve_rigid_z};
+use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
 use crate::contact::{BvhSearch, CandidateSearch, GridSearch, Hertz};
 use crate::error::SceneError;
@@ -158,10 +158,7 @@ impl Solver {
         check_load(load)?;
         let ctx = self.ctx();
         match self.resolve(model) {
-            Model::RigidZ | Model::Auto => {
-                let zr = rigid_z_problem(&ctx, ps);
-                solve_rigid_z(&ctx, ps, &zr, load)
-            }
+            Model::RigidZ | Model::Auto => RigidZ::new(&ctx, ps).solve(&ctx, ps, load),
             Model::RigidTilt => solve_rigid_tilt(&ctx, ps, load),
             Model::Compliant => solve_compliant(&ctx, ps, load),
         }
@@ -179,10 +176,10 @@ impl Solver {
         let ctx = self.ctx();
         match self.resolve(model) {
             Model::RigidZ | Model::Auto => {
-                let zr = rigid_z_problem(&ctx, &ps);
+                let rz = RigidZ::new(&ctx, &ps);
                 loads
                     .iter()
-                    .map(|&w| check_load(w).and_then(|_| solve_rigid_z(&ctx, &ps, &zr, w)))
+                    .map(|&w| check_load(w).and_then(|_| rz.solve(&ctx, &ps, w)))
                     .collect()
             }
             m => loads.iter().map(|&w| self.solve_pairs(&ps, w, m)).collect(),

@@ -1,27 +1,26 @@
-//! [`ZRoot`]: the safeguarded 1-D Newton root find of ΣF_z(z) = W at fixed tilt, shared by the
+//! [`ZRoot`]: the safeguarded 1-D Newton root find of ΣF_z(ζ) = W at fixed tilt, shared by the
 //! rigid-z model and the final force-balance polish of the rigid-tilt model.
 
-use super::law::pair_response;
+use super::law::{pair_response, BodyPair};
 use super::SolverParams;
 use crate::contact::Hertz;
 use crate::error::SceneError;
 
-/// Pairs sorted by the slider height at which they start to touch, descending, so the pairs
-/// active at height z are a prefix. Build once per pair set (and tilt), solve for many loads.
+/// Pairs sorted by their touch height (relative to z_ref), descending, so the pairs active at
+/// height ζ are a prefix. Build once per pair set (and tilt), solve for many loads.
 pub(crate) struct ZRoot {
-    /// `(z_touch, r2, h_eff)`: touch height (m), lateral distance² (m²), effective substrate
-    /// height (m) such that the vertical gap is `u = z − h_eff`.
+    /// `(c, r2, u_t)`: touch height relative to z_ref (m), lateral distance² (m²), touch gap (m).
     act: Vec<(f64, f64, f64)>,
     k: f64,
     two_r: f64,
 }
 
 impl ZRoot {
-    /// Sorts the pairs `(r2, h_eff)`. O(P log P).
-    pub fn new(pairs: impl Iterator<Item = (f64, f64)>, two_r: f64, hertz: &Hertz) -> ZRoot {
-        let d2 = two_r * two_r;
+    /// Sorts the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m). O(P log P).
+    pub fn new(pairs: &[BodyPair], q12: [f64; 2], two_r: f64, hertz: &Hertz) -> ZRoot {
         let mut act: Vec<(f64, f64, f64)> = pairs
-            .map(|(r2, h)| (h + (d2 - r2).max(0.0).sqrt(), r2, h))
+            .iter()
+            .map(|p| (p.c - q12[0] * p.g[0] - q12[1] * p.g[1], p.r2, p.ut))
             .collect();
         act.sort_by(|a, b| b.0.total_cmp(&a.0));
         ZRoot {
@@ -31,27 +30,32 @@ impl ZRoot {
         }
     }
 
-    /// ΣF_z (N) and its derivative d(ΣF_z)/dz (N/m) at height z (m). O(active pairs).
-    fn eval(&self, z: f64) -> (f64, f64) {
+    /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m). O(active pairs).
+    fn eval(&self, zeta: f64) -> (f64, f64) {
         let mut f = 0.0;
         let mut df = 0.0;
-        for &(zt, r2, h) in &self.act {
-            if zt <= z {
+        for &(c, r2, ut) in &self.act {
+            if c <= zeta {
                 break;
             }
-            let r = pair_response(self.k, self.two_r, r2, z - h);
+            let r = pair_response(self.k, self.two_r, r2, ut, zeta - c);
             f += r.fz;
             df -= r.s;
         }
         (f, df)
     }
 
-    /// Height z (m) with ΣF_z(z) = `load` (N) to `params.force_rtol`, and the iteration count.
+    /// ζ (m) with ΣF_z(ζ) = `load` (N) to `params.force_rtol`, and the iteration count.
     ///
-    /// ΣF_z is non-increasing in z, so Newton's method inside a shrinking bracket converges from
+    /// ΣF_z is non-increasing in ζ, so Newton's method inside a shrinking bracket converges from
     /// any start; bisection takes over whenever a Newton step leaves the bracket (grazing contacts
     /// where dF/dz → 0). Typically < 15 iterations of O(active pairs) each.
-    pub fn solve(&self, load: f64, hertz: &Hertz, params: &SolverParams) -> Result<(f64, usize), SceneError> {
+    pub fn solve(
+        &self,
+        load: f64,
+        hertz: &Hertz,
+        params: &SolverParams,
+    ) -> Result<(f64, usize), SceneError> {
         if self.act.is_empty() {
             return Err(SceneError::NoEquilibrium(
                 "no substrate sphere lies under any slider sphere (slider off the substrate?)"
@@ -61,7 +65,7 @@ impl ZRoot {
         let z_hi0 = self.act[0].0;
         let mut z_hi = z_hi0;
         // Lower bracket: step down by the overlap one on-top contact needs for W, doubling.
-        let mut step = hertz.overlap_for_force(load).max(1e-15 * self.two_r);
+        let mut step = hertz.overlap_for_force(load).max(1e-30 * self.two_r);
         let mut z_lo = z_hi - step;
         let mut iters = 0;
         loop {
@@ -99,9 +103,8 @@ impl ZRoot {
             } else {
                 0.5 * (z_lo + z_hi)
             };
-            if z_hi - z_lo <= 4.0 * f64::EPSILON * z_hi.abs().max(self.two_r)
-                || iters > params.max_iter
-            {
+            let scale = z_hi.abs().max(z_lo.abs()).max(1e-300);
+            if z_hi - z_lo <= 4.0 * f64::EPSILON * scale || iters > params.max_iter {
                 // Bracket exhausted at machine precision: accept the better end point if it
                 // balances the load to 1e-9 (the documented guarantee), else fail loudly.
                 let (fl, _) = self.eval(z_lo);
@@ -113,7 +116,7 @@ impl ZRoot {
                 };
                 if (fb - load).abs() > 1e-9 * load {
                     return Err(SceneError::NoEquilibrium(format!(
-                        "root find stalled at z = {zb:e} m with residual {:e} N",
+                        "root find stalled at ζ = {zb:e} m with residual {:e} N",
                         fb - load
                     )));
                 }
