@@ -11,10 +11,22 @@ const HEADER: &str = "pattern,theta_deg,load_mN,contacts,p_max_GPa,z_um,coating_
 #[test]
 fn reference_row_and_header() {
     let out = bin()
-        .args(["screen", "--pattern", "tri-tri", "--theta", "0,30", "--load-mn", "3.86"])
+        .args([
+            "screen",
+            "--pattern",
+            "tri-tri",
+            "--theta",
+            "0,30",
+            "--load-mn",
+            "3.86",
+        ])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8(out.stdout).unwrap();
     let mut lines = text.lines();
     assert!(lines.next().unwrap().starts_with(&format!("{HEADER},")));
@@ -39,9 +51,19 @@ fn default_is_square_tri_and_contacts_out() {
         .arg(&cts)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = std::fs::read_to_string(&csv).unwrap();
-    let row: Vec<String> = text.lines().nth(1).unwrap().split(',').map(String::from).collect();
+    let row: Vec<String> = text
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(String::from)
+        .collect();
     assert_eq!(row[0], "square-tri");
     let n: usize = row[3].parse().unwrap();
     let c = std::fs::read_to_string(&cts).unwrap();
@@ -63,7 +85,10 @@ fn fails_naming(args: &[&str], field: &str) {
     assert!(!out.status.success(), "{args:?} should fail");
     assert_ne!(out.status.code(), Some(0));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains(field), "{args:?}: `{err}` does not name {field}");
+    assert!(
+        err.contains(field),
+        "{args:?}: `{err}` does not name {field}"
+    );
 }
 
 #[test]
@@ -77,7 +102,15 @@ fn bad_input_names_the_field() {
     fails_naming(&["screen", "--theta", "0:30"], "--theta");
     fails_naming(&["screen", "--sigma-h-um", "2"], "sigma_h_um");
     fails_naming(
-        &["screen", "--theta", "0,1", "--load-mn", "1", "--contacts-out", "x.csv"],
+        &[
+            "screen",
+            "--theta",
+            "0,1",
+            "--load-mn",
+            "1",
+            "--contacts-out",
+            "x.csv",
+        ],
         "--contacts-out",
     );
 }

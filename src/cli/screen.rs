@@ -197,7 +197,9 @@ pub fn run(args: Args) -> Result<()> {
     for (t, rs) in thetas.iter().zip(&per_theta) {
         for (w, r) in loads.iter().zip(rs) {
             failures += r.is_err() as usize;
-            rows.push(row(&scene.pattern, *t, *w, r, model));
+            // Ranges are computed as start + k·step: round off the binary noise (1e-9 deg, mN).
+            let clean = |v: f64| (v * 1e9).round() / 1e9;
+            rows.push(row(&scene.pattern, clean(*t), clean(*w), r, model));
         }
     }
     if let Some(path) = &args.contacts_out {

@@ -1,6 +1,9 @@
 //! Compliant slider: a rigid body (height, two tilts) carrying every slider sphere on its own
 //! vertical spring k_z; substrate spheres fixed in z. Sparse Newton with faer's sparse Cholesky.
 
+// Small dense index loops read like the math they implement.
+#![allow(clippy::needless_range_loop)]
+
 use super::assemble::{assemble, Ctx};
 use super::law::{body_pairs, pair_response, BodyPair};
 use super::rigid_tilt::rigid_tilt_state;

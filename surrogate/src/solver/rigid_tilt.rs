@@ -1,6 +1,9 @@
 //! Rigid slider with height and two tilts: damped Newton on the three balance equations
 //! (ΣF_z = W, ΣF_z·y = 0, ΣF_z·x = 0 about the disc centre), solved with faer.
 
+// Small dense index loops read like the math they implement.
+#![allow(clippy::needless_range_loop)]
+
 use super::assemble::{assemble, Ctx};
 use super::law::{body_pairs, pair_response, BodyPair};
 use super::z_root::ZRoot;
