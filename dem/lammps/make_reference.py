@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""Run the two LAMMPS reference cases and write the CSVs in reference/ (committed).
+
+    cd dem/lammps && python3 make_reference.py            # needs `lmp` (Debian package lammps)
+
+Cases (parameters exactly as in in.collision.lmp / in.drag.lmp, units micro in LAMMPS,
+converted to the CSV column units named in each header):
+  collision: two free spheres R = 1.5 um, rho = 2.2 g/cm^3, E = 100 GPa, nu = 0.3, head-on,
+             relative speed v_rel, viscoelastic damping eta_n0 (F = -eta_n0 a m_eff v_n), dt 1e-5 us
+             -> reference/collision_<case>.csv (every 10 steps) + reference/collision_summary.csv
+  drag:      sphere pressed with F_n = 10 uN on a fixed sphere, pulled by a K_d = 1e3 N/m spring
+             whose anchor moves at 0.01 m/s for 2 us, mu = 0.5 and 0.01, eta_n0 = 2e3, xgt = 1
+             -> reference/drag_mu<mu>.csv (every 100 steps) + reference/drag_summary.csv
+Standard library only.
+"""
+
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REF = os.path.join(HERE, "reference")
+
+R = 1.5  # um
+RHO = 2.2  # pg/um^3
+E = 1e8  # 1e3 Pa  (100 GPa)
+NU = 0.3
+M = RHO * 4.0 / 3.0 * math.pi * R ** 3  # pg
+E_STAR = E / (2.0 * (1.0 - NU * NU))
+R_EFF = R / 2.0
+G_STAR = E / (4.0 * (2.0 - NU) * (1.0 + NU))  # LAMMPS mix_stiffnessG for equal materials
+
+
+def lmp(inp, **var):
+    args = ["lmp", "-in", inp, "-log", "none", "-screen", "none"]
+    for k, v in var.items():
+        args += ["-var", k, str(v)]
+    subprocess.run(args, cwd=HERE, check=True)
+
+
+def read_table(path):
+    with open(path) as f:
+        lines = [ln.split() for ln in f if ln.strip() and not ln.startswith("#")]
+    head = lines[0]
+    rows = [[float(x) for x in ln] for ln in lines[1:]]
+    return head, rows
+
+
+def write_csv(path, header, rows, fmt="{:.15g}"):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(",".join(header) + "\n")
+        for r in rows:
+            f.write(",".join(x if isinstance(x, str) else fmt.format(x) for x in r) + "\n")
+    os.replace(tmp, path)
+
+
+def hertz_collision(v_rel):
+    """Closed-form undamped Hertz collision of two equal spheres: (t_contact_us, max_overlap_um)."""
+    m_eff = M / 2.0
+    k = 4.0 / 3.0 * E_STAR * math.sqrt(R_EFF)
+    d_max = (15.0 * m_eff * v_rel ** 2 / (16.0 * E_STAR * math.sqrt(R_EFF))) ** 0.4
+    # t_c = 2 d_max / v * int_0^1 (1 - x^(5/2))^(-1/2) dx, the integral = B(2/5, 1/2) / (5/2)
+    integral = math.gamma(0.4) * math.gamma(0.5) / math.gamma(0.9) / 2.5
+    assert abs(0.5 * m_eff * v_rel ** 2 - 0.4 * k * d_max ** 2.5) < 1e-9 * m_eff * v_rel ** 2
+    return 2.0 * d_max / v_rel * integral, d_max
+
+
+def crossing(t0, y0, t1, y1):
+    return t0 + (0.0 - y0) * (t1 - t0) / (y1 - y0)
+
+
+def collision_case(name, v_rel, eta_n, dt=1e-5, steps=4000):
+    with tempfile.TemporaryDirectory() as td:
+        out = os.path.join(td, "c.txt")
+        lmp("in.collision.lmp", v_rel=v_rel, eta_n=eta_n, dt=dt, steps=steps, out=out)
+        _, rows = read_table(out)
+    # rows: step t x1 x2 v1 v2 overlap fx1
+    idx = [i for i, r in enumerate(rows) if r[6] > 0.0]
+    a, b = idx[0], idx[-1]
+    t_in = crossing(rows[a - 1][1], rows[a - 1][6], rows[a][1], rows[a][6])
+    t_out = crossing(rows[b][1], rows[b][6], rows[b + 1][1], rows[b + 1][6])
+    v_in = rows[0][4] - rows[0][5]
+    v_out = rows[-1][5] - rows[-1][4]
+    tc_h, dmax_h = hertz_collision(v_rel)
+    summary = [
+        name, v_rel, eta_n, dt, t_out - t_in, tc_h, v_out / v_in,
+        max(r[6] for r in rows), dmax_h, max(-r[7] for r in rows) * 1e-3,
+    ]
+    csv_rows = [[r[1], r[2], r[3], r[4], r[5], r[6], -r[7] * 1e-3] for r in rows if int(r[0]) % 10 == 0]
+    write_csv(
+        os.path.join(REF, f"collision_{name}.csv"),
+        ["t_us", "x1_um", "x2_um", "v1_m_s", "v2_m_s", "overlap_um", "contact_force_uN"],
+        csv_rows,
+    )
+    return summary
+
+
+def drag_case(mu, eta_n=2.0e3, xgt=1.0, Fn=1.0e4, Kd=1.0e6, vd=0.01, dt=1e-5, steps=200000, every=100):
+    with tempfile.TemporaryDirectory() as td:
+        out = os.path.join(td, "d.txt")
+        lmp("in.drag.lmp", mu=mu, eta_n=eta_n, xgt=xgt, Fn=Fn, Kd=Kd, vd=vd, dt=dt, steps=steps,
+            every=every, out=out)
+        _, rows = read_table(out)
+    # rows: step t anchor x z fn ft ftx fspring   (nN, um)
+    name = f"mu{mu:g}"
+    write_csv(
+        os.path.join(REF, f"drag_{name}.csv"),
+        ["t_us", "anchor_x_nm", "x_nm", "z_um", "normal_force_uN", "tangential_force_uN",
+         "tangential_force_x_uN", "spring_force_uN"],
+        [[r[1], r[2] * 1e3, r[3] * 1e3, r[4], r[5] * 1e-3, r[6] * 1e-3, r[7] * 1e-3, r[8] * 1e-3]
+         for r in rows],
+    )
+    # slip onset: first sample where ft >= (1 - 1e-6) mu fn
+    slip = next((r for r in rows if r[6] >= (1.0 - 1e-6) * mu * r[5]), None)
+    sliding = [r for r in rows if r[6] >= (1.0 - 1e-6) * mu * r[5]]
+    ratio = sum(r[6] / r[5] for r in sliding) / len(sliding) if sliding else float("nan")
+    # stick stiffness from the first 10 % of the stick branch
+    stick = [r for r in rows[1:] if r[6] < 0.5 * mu * r[5]]
+    kt_meas = (stick[-1][6] - stick[0][6]) / (stick[-1][3] - stick[0][3]) if len(stick) > 2 else float("nan")
+    d0 = (Fn / (4.0 / 3.0 * E_STAR * math.sqrt(R_EFF))) ** (2.0 / 3.0)
+    kt_theory = 8.0 * G_STAR * math.sqrt(R_EFF * d0)
+    return [
+        name, mu, Fn * 1e-3, Kd * 1e-3, vd, eta_n, xgt, dt,
+        slip[2] * 1e3 if slip else float("nan"), slip[6] * 1e-3 if slip else float("nan"),
+        ratio, kt_meas * 1e-3, kt_theory * 1e-3,
+    ]
+
+
+def main():
+    os.makedirs(REF, exist_ok=True)
+    col = [
+        collision_case("v0.2_eta0", 0.2, 0.0),
+        collision_case("v0.2_eta2000", 0.2, 2.0e3),
+        collision_case("v1_eta2000", 1.0, 2.0e3),
+    ]
+    write_csv(
+        os.path.join(REF, "collision_summary.csv"),
+        ["case", "v_rel_m_s", "eta_n0_per_us_um", "dt_us", "t_contact_us", "t_contact_hertz_us",
+         "restitution", "max_overlap_um", "max_overlap_hertz_um", "max_force_uN"],
+        col,
+    )
+    dr = [drag_case(0.5), drag_case(0.01)]
+    write_csv(
+        os.path.join(REF, "drag_summary.csv"),
+        ["case", "mu", "normal_load_uN", "drag_spring_N_m", "anchor_speed_m_s", "eta_n0_per_us_um",
+         "xgt", "dt_us", "slip_onset_anchor_nm", "slip_tangential_force_uN", "sliding_ft_over_fn",
+         "stick_stiffness_N_m", "mindlin_8Ga_N_m"],
+        dr,
+    )
+    for r in col + dr:
+        print(*r, sep=",")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
