@@ -6,10 +6,11 @@
 Cases (parameters exactly as in in.collision.lmp / in.drag.lmp, units micro in LAMMPS,
 converted to the CSV column units named in each header):
   collision: two free spheres R = 1.5 um, rho = 2.2 g/cm^3, E = 100 GPa, nu = 0.3, head-on,
-             relative speed v_rel, viscoelastic damping eta_n0 (F = -eta_n0 a m_eff v_n), dt 1e-5 us
+             relative speed v_rel, undamped or with the Rust engine's damping gamma_n = 0.1
+             (LAMMPS `damping tsuji` with the e of damping.py), dt 1e-5 us
              -> reference/collision_<case>.csv (every 10 steps) + reference/collision_summary.csv
   drag:      sphere pressed with F_n = 10 uN on a fixed sphere, pulled by a K_d = 1e3 N/m spring
-             whose anchor moves at 0.01 m/s for 2 us, mu = 0.5 and 0.01, eta_n0 = 2e3, xgt = 1
+             whose anchor moves at 0.01 m/s for 2 us, mu = 0.5 and 0.01, gamma_n = gamma_t = 0.1
              -> reference/drag_mu<mu>.csv (every 100 steps) + reference/drag_summary.csv
 Standard library only.
 """
@@ -19,6 +20,8 @@ import os
 import subprocess
 import sys
 import tempfile
+
+from damping import lammps_damping
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REF = os.path.join(HERE, "reference")
@@ -72,10 +75,14 @@ def crossing(t0, y0, t1, y1):
     return t0 + (0.0 - y0) * (t1 - t0) / (y1 - y0)
 
 
-def collision_case(name, v_rel, eta_n, dt=1e-5, steps=4000):
+def collision_case(name, v_rel, gamma_n, dt=1e-5, steps=4000):
+    if gamma_n > 0.0:
+        damp, dcoef = "tsuji", lammps_damping(gamma_n, gamma_n)[0]
+    else:
+        damp, dcoef = "viscoelastic", 0.0
     with tempfile.TemporaryDirectory() as td:
         out = os.path.join(td, "c.txt")
-        lmp("in.collision.lmp", v_rel=v_rel, eta_n=eta_n, dt=dt, steps=steps, out=out)
+        lmp("in.collision.lmp", v_rel=v_rel, damp=damp, dcoef=repr(dcoef), dt=dt, steps=steps, out=out)
         _, rows = read_table(out)
     # rows: step t x1 x2 v1 v2 overlap fx1
     idx = [i for i, r in enumerate(rows) if r[6] > 0.0]
@@ -86,7 +93,7 @@ def collision_case(name, v_rel, eta_n, dt=1e-5, steps=4000):
     v_out = rows[-1][5] - rows[-1][4]
     tc_h, dmax_h = hertz_collision(v_rel)
     summary = [
-        name, v_rel, eta_n, dt, t_out - t_in, tc_h, v_out / v_in,
+        name, v_rel, gamma_n, damp, dcoef, dt, t_out - t_in, tc_h, v_out / v_in,
         max(r[6] for r in rows), dmax_h, max(-r[7] for r in rows) * 1e-3,
     ]
     csv_rows = [[r[1], r[2], r[3], r[4], r[5], r[6], -r[7] * 1e-3] for r in rows if int(r[0]) % 10 == 0]
@@ -98,11 +105,12 @@ def collision_case(name, v_rel, eta_n, dt=1e-5, steps=4000):
     return summary
 
 
-def drag_case(mu, eta_n=2.0e3, xgt=1.0, Fn=1.0e4, Kd=1.0e6, vd=0.01, dt=1e-5, steps=200000, every=100):
+def drag_case(mu, gamma_n=0.1, gamma_t=0.1, Fn=1.0e4, Kd=1.0e6, vd=0.01, dt=1e-5, steps=200000, every=100):
+    e, xgt = lammps_damping(gamma_n, gamma_t)
     with tempfile.TemporaryDirectory() as td:
         out = os.path.join(td, "d.txt")
-        lmp("in.drag.lmp", mu=mu, eta_n=eta_n, xgt=xgt, Fn=Fn, Kd=Kd, vd=vd, dt=dt, steps=steps,
-            every=every, out=out)
+        lmp("in.drag.lmp", mu=mu, damp="tsuji", dcoef=repr(e), xgt=repr(xgt), Fn=Fn, Kd=Kd, vd=vd, dt=dt,
+            steps=steps, every=every, out=out)
         _, rows = read_table(out)
     # rows: step t anchor x z fn ft ftx fspring   (nN, um)
     name = f"mu{mu:g}"
@@ -123,7 +131,7 @@ def drag_case(mu, eta_n=2.0e3, xgt=1.0, Fn=1.0e4, Kd=1.0e6, vd=0.01, dt=1e-5, st
     d0 = (Fn / (4.0 / 3.0 * E_STAR * math.sqrt(R_EFF))) ** (2.0 / 3.0)
     kt_theory = 8.0 * G_STAR * math.sqrt(R_EFF * d0)
     return [
-        name, mu, Fn * 1e-3, Kd * 1e-3, vd, eta_n, xgt, dt,
+        name, mu, Fn * 1e-3, Kd * 1e-3, vd, gamma_n, gamma_t, e, xgt, dt,
         slip[2] * 1e3 if slip else float("nan"), slip[6] * 1e-3 if slip else float("nan"),
         ratio, kt_meas * 1e-3, kt_theory * 1e-3,
     ]
@@ -132,21 +140,21 @@ def drag_case(mu, eta_n=2.0e3, xgt=1.0, Fn=1.0e4, Kd=1.0e6, vd=0.01, dt=1e-5, st
 def main():
     os.makedirs(REF, exist_ok=True)
     col = [
-        collision_case("v0.2_eta0", 0.2, 0.0),
-        collision_case("v0.2_eta2000", 0.2, 2.0e3),
-        collision_case("v1_eta2000", 1.0, 2.0e3),
+        collision_case("v0.2_undamped", 0.2, 0.0),
+        collision_case("v0.2_gn0.1", 0.2, 0.1),
+        collision_case("v1_gn0.1", 1.0, 0.1),
     ]
     write_csv(
         os.path.join(REF, "collision_summary.csv"),
-        ["case", "v_rel_m_s", "eta_n0_per_us_um", "dt_us", "t_contact_us", "t_contact_hertz_us",
+        ["case", "v_rel_m_s", "gamma_n", "lammps_damping", "lammps_damping_coeff", "dt_us", "t_contact_us", "t_contact_hertz_us",
          "restitution", "max_overlap_um", "max_overlap_hertz_um", "max_force_uN"],
         col,
     )
     dr = [drag_case(0.5), drag_case(0.01)]
     write_csv(
         os.path.join(REF, "drag_summary.csv"),
-        ["case", "mu", "normal_load_uN", "drag_spring_N_m", "anchor_speed_m_s", "eta_n0_per_us_um",
-         "xgt", "dt_us", "slip_onset_anchor_nm", "slip_tangential_force_uN", "sliding_ft_over_fn",
+        ["case", "mu", "normal_load_uN", "drag_spring_N_m", "anchor_speed_m_s", "gamma_n", "gamma_t",
+         "lammps_tsuji_e", "lammps_xgt", "dt_us", "slip_onset_anchor_nm", "slip_tangential_force_uN", "sliding_ft_over_fn",
          "stick_stiffness_N_m", "mindlin_8Ga_N_m"],
         dr,
     )
