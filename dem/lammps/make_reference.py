@@ -15,6 +15,7 @@ converted to the CSV column units named in each header):
 Standard library only.
 """
 
+import json
 import math
 import os
 import subprocess
@@ -158,7 +159,25 @@ def main():
          "stick_stiffness_N_m", "mindlin_8Ga_N_m"],
         dr,
     )
-    for r in col + dr:
+    # the Python rigid-z start heights of gen_scene.py (an independent re-implementation of the
+    # scene geometry and of the surrogate's RigidZ model), for tests/lammps_peer.rs
+    rz = []
+    for pattern, theta, load in [("tri-tri", 0.0, 3.86), ("square-tri", 0.0, 1.4), ("tri-tri", 30.0, 2.1),
+                                 ("square-tri", 10.0, 0.35)]:
+        out = subprocess.run(
+            [sys.executable, os.path.join(HERE, "gen_scene.py"), "--pattern", pattern, "--theta-deg",
+             str(theta), "--load-mN", str(load), "--out", os.devnull],
+            check=True, capture_output=True, text=True).stdout
+        j = json.loads(out)
+        rz.append([pattern, theta, load, j["n_substrate"], j["n_slider"], j["rigid_contacts"],
+                   j["rigid_p_max_GPa"], j["rigid_z_um"]])
+    write_csv(
+        os.path.join(REF, "rigid_z_python.csv"),
+        ["pattern", "theta_deg", "load_mN", "substrate_spheres", "slider_spheres", "contacts",
+         "p_max_GPa", "z_um"],
+        rz,
+    )
+    for r in col + dr + rz:
         print(*r, sep=",")
 
 
