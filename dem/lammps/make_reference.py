@@ -12,6 +12,11 @@ converted to the CSV column units named in each header):
   drag:      sphere pressed with F_n = 10 uN on a fixed sphere, pulled by a K_d = 1e3 N/m spring
              whose anchor moves at 0.01 m/s for 2 us, mu = 0.5 and 0.01, gamma_n = gamma_t = 0.1
              -> reference/drag_mu<mu>.csv (every 100 steps) + reference/drag_summary.csv
+  equilibrate (only with --with-scene, ~6 min each on one core): the study scene in.equilibrate.lmp,
+             ties = bond, 10 us at dt = 5e-5 us (the 1 us prefix agrees with dt = 1e-5 us to 1e-5),
+             square-tri theta 0 at 1.4 mN and tri-tri theta 30 at 2.1 mN, mu = 0.01
+             -> reference/equilibrate_<case>.csv (t_us,contacts,p_max_GPa,z_um,zc_um every 0.1 us)
+                + reference/equilibrate_summary.csv (with the rigid-z start for comparison)
 Standard library only.
 """
 
@@ -138,8 +143,47 @@ def drag_case(mu, gamma_n=0.1, gamma_t=0.1, Fn=1.0e4, Kd=1.0e6, vd=0.01, dt=1e-5
     ]
 
 
+def equilibrate_case(pattern, theta, load, dt=5e-5, us=10.0):
+    name = f"{pattern}_{theta:g}deg_{load:g}mN"
+    with tempfile.TemporaryDirectory() as td:
+        for f in os.listdir(HERE):
+            if f.startswith("in.") and f.endswith(".lmp"):
+                with open(os.path.join(HERE, f)) as a, open(os.path.join(td, f), "w") as b:
+                    b.write(a.read())
+        data = os.path.join(td, "scene.data")
+        j = json.loads(subprocess.run(
+            [sys.executable, os.path.join(HERE, "gen_scene.py"), "--ties", "bond", "--pattern", pattern,
+             "--theta-deg", str(theta), "--load-mN", str(load), "--out", data],
+            check=True, capture_output=True, text=True).stdout)
+        csv = os.path.join(td, "eq.csv")
+        steps = round(us / dt)
+        args = ["lmp", "-in", "in.equilibrate.lmp", "-log", "none", "-screen", "none"]
+        for k, v in dict(ties="bond", data=data, load_mN=load, dt=dt, steps=steps,
+                         every=round(0.1 / dt), csv=csv).items():
+            args += ["-var", k, str(v)]
+        subprocess.run(args, cwd=td, check=True)
+        with open(csv) as f:
+            lines = [ln.strip() for ln in f if ln.strip()]
+    head = lines[0].lstrip("# ").split(",")
+    rows = [ln.split(",") for ln in lines[1:]]
+    write_csv(os.path.join(REF, f"equilibrate_{name}.csv"), head, rows)
+    last = rows[-1]
+    return [name, pattern, theta, load, dt, us, int(float(last[1])), float(last[2]), float(last[3]),
+            j["rigid_contacts"], j["rigid_p_max_GPa"], j["rigid_z_um"]]
+
+
 def main():
     os.makedirs(REF, exist_ok=True)
+    if "--with-scene" in sys.argv:
+        eq = [equilibrate_case("square-tri", 0.0, 1.4), equilibrate_case("tri-tri", 30.0, 2.1)]
+        write_csv(
+            os.path.join(REF, "equilibrate_summary.csv"),
+            ["case", "pattern", "theta_deg", "load_mN", "dt_us", "time_us", "contacts", "p_max_GPa", "z_um",
+             "rigid_z_contacts", "rigid_z_p_max_GPa", "rigid_z_z_um"],
+            eq,
+        )
+        for r in eq:
+            print(*r, sep=",")
     col = [
         collision_case("v0.2_undamped", 0.2, 0.0),
         collision_case("v0.2_gn0.1", 0.2, 0.1),
