@@ -129,9 +129,17 @@ pub fn run(args: Args) -> Result<()> {
     eprintln!(
         "contact line: {:.3}° from x ({}; moiré estimate {:.3}°{}, line spacing {:.2} µm)",
         rad_to_deg(line_angle),
-        if args.line_deg.is_some() { "given by --line-deg" } else { "moiré estimate" },
+        if args.line_deg.is_some() {
+            "given by --line-deg"
+        } else {
+            "moiré estimate"
+        },
         rad_to_deg(line.angle),
-        if line.degenerate { ", degenerate: commensurate first shells, substrate row used" } else { "" },
+        if line.degenerate {
+            ", degenerate: commensurate first shells, substrate row used"
+        } else {
+            ""
+        },
         line.spacing * 1e6
     );
     let t0 = std::time::Instant::now();
@@ -139,9 +147,10 @@ pub fn run(args: Args) -> Result<()> {
         Method::Direct => {
             let per = (params.distance / params.step - 1e-9).ceil().max(1.0) as u64 + 1;
             let pb = progress(per * alphas.len() as u64, "corrugation");
-            let r = corrugation_direct(&solver, theta, load, line_angle, &alphas, &params, &|| {
-                pb.inc(1)
-            })?;
+            let r =
+                corrugation_direct(&solver, theta, load, line_angle, &alphas, &params, &|| {
+                    pb.inc(1)
+                })?;
             pb.finish_and_clear();
             r
         }
@@ -176,7 +185,10 @@ pub fn run(args: Args) -> Result<()> {
                 y_label: "corrugation, peak-to-peak z (nm)".into(),
                 series: vec![crate::plot::Series {
                     name: "corrugation".into(),
-                    points: rows.iter().map(|r| (r.alpha_deg, r.corrugation_nm)).collect(),
+                    points: rows
+                        .iter()
+                        .map(|r| (r.alpha_deg, r.corrugation_nm))
+                        .collect(),
                 }],
                 hlines: vec![],
                 log_y: false,

@@ -167,7 +167,10 @@ fn sweep(out: &Path, pattern: &str, theta_step: f64) -> Result<()> {
         x_label: "slider rotation θ (°)".into(),
         y_label: "P_max (GPa)".into(),
         series: series(&|r| r.p_max_gpa),
-        hlines: vec![(pa_to_gpa(scene.coating.p_crit), "P_crit (coating fails above)".into())],
+        hlines: vec![(
+            pa_to_gpa(scene.coating.p_crit),
+            "P_crit (coating fails above)".into(),
+        )],
         log_y: false,
     };
     png_atomic(&base.with_extension("png"), (1100, 1150), |root| {
@@ -253,7 +256,10 @@ fn corrugation(
     let base = out.join("corrugation_square-tri");
     write_atomic(&base.with_extension("csv"), csv_text(&rows)?.as_bytes())?;
     let c = LinePlot {
-        title: format!("square-tri: corrugation along pulling angle α ({} µm paths)", fmt_num(distance_um)),
+        title: format!(
+            "square-tri: corrugation along pulling angle α ({} µm paths)",
+            fmt_num(distance_um)
+        ),
         x_label: "pulling angle α from the contact line (°)".into(),
         y_label: "corrugation, peak-to-peak z (nm)".into(),
         series: corr,
@@ -279,7 +285,10 @@ fn corrugation(
 /// Runs `superlube figures`.
 pub fn run(args: Args) -> Result<()> {
     if !(args.theta_step.is_finite() && args.theta_step > 0.0 && args.theta_step <= 30.0) {
-        bail!("`--theta-step`: {} must be in (0, 30] degrees", args.theta_step);
+        bail!(
+            "`--theta-step`: {} must be in (0, 30] degrees",
+            args.theta_step
+        );
     }
     parse_alphas(&args.alpha)?;
     path_params(args.distance_um, args.step_um, args.grid)?;

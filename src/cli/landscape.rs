@@ -143,6 +143,7 @@ pub(crate) fn fmt_num(v: f64) -> String {
 
 /// One CSV row of a contact map.
 #[derive(Serialize)]
+#[allow(non_snake_case)]
 struct ContactRow {
     slider_index: u32,
     substrate_index: u32,
@@ -183,7 +184,11 @@ pub(crate) fn contact_map_files(
         ),
         sphere_radius_um: m_to_um(scene.sphere_radius),
         slider_um: slider.iter().map(|&p| um(p)).collect(),
-        substrate_um: solver.substrate().iter().map(|p| um([p[0], p[1]])).collect(),
+        substrate_um: solver
+            .substrate()
+            .iter()
+            .map(|p| um([p[0], p[1]]))
+            .collect(),
         contacts: eq
             .contacts
             .iter()
@@ -217,7 +222,10 @@ pub fn run(args: Args) -> Result<()> {
     let scene = args.scene.scene()?;
     let (theta, load) = theta_load(args.theta, args.load_mn)?;
     if args.grid < 2 {
-        bail!("`--grid`: {} must be at least 2 (both cell edges are included)", args.grid);
+        bail!(
+            "`--grid`: {} must be at least 2 (both cell edges are included)",
+            args.grid
+        );
     }
     let solver = Solver::new(&scene)?;
     let t0 = std::time::Instant::now();

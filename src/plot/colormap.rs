@@ -16,7 +16,11 @@ const STOPS: [(u8, u8, u8); 9] = [
 
 /// Viridis colour at `t ∈ [0, 1]` (clamped), linear between 9 stops.
 pub fn viridis(t: f64) -> RGBColor {
-    let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.0 };
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let x = t * (STOPS.len() - 1) as f64;
     let i = (x.floor() as usize).min(STOPS.len() - 2);
     let f = x - i as f64;

@@ -50,7 +50,9 @@ pub fn contact_map(path: &Path, data: &ContactMapData) -> Result<()> {
     let (p_lo, p_hi) = data
         .contacts
         .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c.1), b.max(c.1)));
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
+            (a.min(c.1), b.max(c.1))
+        });
     let (p_lo, p_hi) = if p_lo.is_finite() {
         (p_lo, if p_hi > p_lo { p_hi } else { p_lo + 0.1 })
     } else {
@@ -84,9 +86,11 @@ pub fn contact_map(path: &Path, data: &ContactMapData) -> Result<()> {
             )
             .map_err(perr("substrate"))?;
         chart
-            .draw_series(data.slider_um.iter().map(|p| {
-                Circle::new((p[0], p[1]), rad_px, RGBColor(70, 110, 200).stroke_width(1))
-            }))
+            .draw_series(
+                data.slider_um.iter().map(|p| {
+                    Circle::new((p[0], p[1]), rad_px, RGBColor(70, 110, 200).stroke_width(1))
+                }),
+            )
             .map_err(perr("slider"))?
             .label("slider sphere")
             .legend(|(x, y)| Circle::new((x + 10, y), 6, RGBColor(70, 110, 200).stroke_width(1)));

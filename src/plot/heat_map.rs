@@ -37,15 +37,15 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             (a.min(v), b.max(v))
         });
     let span = if hi > lo { hi - lo } else { 1.0 };
-    let pt = |i: f64, j: f64| {
-        (
-            i * map.da[0] + j * map.db[0],
-            i * map.da[1] + j * map.db[1],
-        )
-    };
+    let pt = |i: f64, j: f64| (i * map.da[0] + j * map.db[0], i * map.da[1] + j * map.db[1]);
     let mut xr = (f64::INFINITY, f64::NEG_INFINITY);
     let mut yr = (f64::INFINITY, f64::NEG_INFINITY);
-    for (i, j) in [(-0.5, -0.5), (n as f64 - 0.5, -0.5), (-0.5, n as f64 - 0.5), (n as f64 - 0.5, n as f64 - 0.5)] {
+    for (i, j) in [
+        (-0.5, -0.5),
+        (n as f64 - 0.5, -0.5),
+        (-0.5, n as f64 - 0.5),
+        (n as f64 - 0.5, n as f64 - 0.5),
+    ] {
         let p = pt(i, j);
         xr = (xr.0.min(p.0), xr.1.max(p.0));
         yr = (yr.0.min(p.1), yr.1.max(p.1));

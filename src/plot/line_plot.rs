@@ -48,7 +48,10 @@ pub fn line_plot(path: &Path, size: (u32, u32), plot: &LinePlot) -> Result<()> {
 }
 
 /// Draws `plot` into a drawing area (used to stack panels in one PNG).
-pub fn line_plot_area<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plot: &LinePlot) -> Result<()> {
+pub fn line_plot_area<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    plot: &LinePlot,
+) -> Result<()> {
     let tf = |y: f64| if plot.log_y { y.log10() } else { y };
     let keep = |y: f64| y.is_finite() && (!plot.log_y || y > 0.0);
     let mut xr = (f64::INFINITY, f64::NEG_INFINITY);
@@ -73,9 +76,17 @@ pub fn line_plot_area<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, plot: &
     if xr.1 <= xr.0 {
         xr = (xr.0 - 0.5, xr.0 + 0.5);
     }
-    let pad = if yr.1 > yr.0 { 0.06 * (yr.1 - yr.0) } else { 0.5 };
+    let pad = if yr.1 > yr.0 {
+        0.06 * (yr.1 - yr.0)
+    } else {
+        0.5
+    };
     let yr = (
-        if plot.log_y { yr.0 - pad } else { (yr.0 - pad).min(if yr.0 >= 0.0 { 0.0 } else { yr.0 - pad }) },
+        if plot.log_y {
+            yr.0 - pad
+        } else {
+            (yr.0 - pad).min(if yr.0 >= 0.0 { 0.0 } else { yr.0 - pad })
+        },
         yr.1 + pad,
     );
     let mut chart = ChartBuilder::on(area)

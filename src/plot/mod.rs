@@ -11,7 +11,7 @@ mod line_plot;
 pub use colormap::viridis;
 pub use contact_map::{contact_map, ContactMapData};
 pub use heat_map::{heat_map, HeatMap};
-pub use line_plot::{line_plot, line_plot_area, LinePlot, Series, PALETTE};
+pub use line_plot::{line_plot, line_plot_area, LinePlot, Series};
 
 use anyhow::{Context, Result};
 use std::path::Path;
@@ -40,10 +40,7 @@ pub fn register_fonts() {
 pub fn png_atomic<F>(path: &Path, size: (u32, u32), draw: F) -> Result<()>
 where
     F: FnOnce(
-        plotters::drawing::DrawingArea<
-            plotters::prelude::BitMapBackend<'_>,
-            plotters::coord::Shift,
-        >,
+        plotters::drawing::DrawingArea<plotters::prelude::BitMapBackend<'_>, plotters::coord::Shift>,
     ) -> Result<()>,
 {
     use plotters::prelude::*;

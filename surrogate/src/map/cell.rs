@@ -37,10 +37,7 @@ impl RepeatCell {
 
     /// The point `u·a + v·b` (m).
     pub fn point(&self, u: f64, v: f64) -> [f64; 2] {
-        [
-            u * self.a[0] + v * self.b[0],
-            u * self.a[1] + v * self.b[1],
-        ]
+        [u * self.a[0] + v * self.b[0], u * self.a[1] + v * self.b[1]]
     }
 
     /// Cell coordinates `(u, v)` of the point `p` (m), not wrapped.

@@ -43,7 +43,10 @@ impl PathProfile {
     }
     /// Largest pulling force along the path (N): the static-friction barrier.
     pub fn max_pull(&self) -> f64 {
-        self.f_pull.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+        self.f_pull
+            .iter()
+            .copied()
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 }
 
@@ -127,7 +130,10 @@ pub fn path_profile(
     let end = [params.distance * e[0], params.distance * e[1]];
     check_slider_stays_on_substrate(
         scene,
-        [[end[0].min(0.0), end[1].min(0.0)], [end[0].max(0.0), end[1].max(0.0)]],
+        [
+            [end[0].min(0.0), end[1].min(0.0)],
+            [end[0].max(0.0), end[1].max(0.0)],
+        ],
         "distance_um",
     )?;
     let k = scene.hertz().k();
