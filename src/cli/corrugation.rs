@@ -74,8 +74,8 @@ pub(crate) struct Row {
 impl Row {
     pub(crate) fn from_point(p: &CorrugationPoint) -> Row {
         Row {
-            alpha_deg: rad_to_deg(p.alpha),
-            direction_deg: rad_to_deg(p.direction),
+            alpha_deg: crate::output::clean(rad_to_deg(p.alpha)),
+            direction_deg: crate::output::clean(rad_to_deg(p.direction)),
             corrugation_nm: m_to_nm(p.corrugation),
             max_lateral_force_mn: n_to_mn(p.max_lateral_force),
         }

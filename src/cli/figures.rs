@@ -245,8 +245,8 @@ fn corrugation(
                     theta_deg,
                     load_mn,
                     line_deg: line.angle.to_degrees(),
-                    alpha_deg: p.alpha.to_degrees(),
-                    direction_deg: p.direction.to_degrees(),
+                    alpha_deg: crate::output::clean(p.alpha.to_degrees()),
+                    direction_deg: crate::output::clean(p.direction.to_degrees()),
                     corrugation_nm: m_to_nm(p.corrugation),
                     max_lateral_force_mn: n_to_mn(p.max_lateral_force),
                 });

@@ -94,8 +94,8 @@ pub(crate) fn landscape_csv(l: &Landscape) -> Result<String> {
         for i in 0..l.n {
             let s = l.shift(i, j);
             rows.push(Row {
-                x_um: m_to_um(s[0]),
-                y_um: m_to_um(s[1]),
+                x_um: crate::output::clean(m_to_um(s[0])),
+                y_um: crate::output::clean(m_to_um(s[1])),
                 dz_nm: m_to_nm(l.dz_at(i, j)),
             });
         }
