@@ -140,7 +140,7 @@ fn sweep(out: &Path, pattern: &str, theta_step: f64) -> Result<()> {
     pb.finish_and_clear();
     let rows = rows?;
     let base = out.join(format!("sweep_{pattern}"));
-    write_atomic(&base.with_extension("csv"), csv_text(&rows)?.as_bytes())?;
+    write_atomic(&with_ext(&base, "csv"), csv_text(&rows)?.as_bytes())?;
     let series = |f: &dyn Fn(&SweepRow) -> f64| -> Vec<Series> {
         SWEEP_LOADS_MN
             .iter()
@@ -173,7 +173,7 @@ fn sweep(out: &Path, pattern: &str, theta_step: f64) -> Result<()> {
         )],
         log_y: false,
     };
-    png_atomic(&base.with_extension("png"), (1100, 1150), |root| {
+    png_atomic(&with_ext(&base, "png"), (1100, 1150), |root| {
         let panels = root.split_evenly((2, 1));
         line_plot_area(&panels[0], &contacts)?;
         line_plot_area(&panels[1], &pmax)?;
@@ -254,7 +254,7 @@ fn corrugation(
         }
     }
     let base = out.join("corrugation_square-tri");
-    write_atomic(&base.with_extension("csv"), csv_text(&rows)?.as_bytes())?;
+    write_atomic(&with_ext(&base, "csv"), csv_text(&rows)?.as_bytes())?;
     let c = LinePlot {
         title: format!(
             "square-tri: corrugation along pulling angle α ({} µm paths)",
@@ -274,7 +274,7 @@ fn corrugation(
         hlines: vec![],
         log_y: false,
     };
-    png_atomic(&base.with_extension("png"), (1100, 1150), |root| {
+    png_atomic(&with_ext(&base, "png"), (1100, 1150), |root| {
         let panels = root.split_evenly((2, 1));
         line_plot_area(&panels[0], &c)?;
         line_plot_area(&panels[1], &f)?;
@@ -314,8 +314,8 @@ pub fn run(args: Args) -> Result<()> {
                 &solver,
                 deg_to_rad(t),
                 mn_to_n(1.4),
-                &base.with_extension("png"),
-                Some(&base.with_extension("csv")),
+                &with_ext(&base, "png"),
+                Some(&with_ext(&base, "csv")),
             )?;
         }
         eprintln!("contact maps done ({:.1} s)", t0.elapsed().as_secs_f64());
@@ -326,8 +326,8 @@ pub fn run(args: Args) -> Result<()> {
         for t in [0.0, 10.2] {
             let l = landscape_with_progress(&solver, deg_to_rad(t), mn_to_n(1.4), args.grid)?;
             let base = out.join(format!("landscape_square-tri_{}deg_1.4mN", fmt_num(t)));
-            write_atomic(&base.with_extension("csv"), landscape_csv(&l)?.as_bytes())?;
-            landscape_png(&base.with_extension("png"), &l, "square-tri")?;
+            write_atomic(&with_ext(&base, "csv"), landscape_csv(&l)?.as_bytes())?;
+            landscape_png(&with_ext(&base, "png"), &l, "square-tri")?;
         }
         eprintln!("landscapes done ({:.1} s)", t0.elapsed().as_secs_f64());
     }
@@ -343,4 +343,12 @@ pub fn run(args: Args) -> Result<()> {
         eprintln!("corrugation done ({:.1} s)", t0.elapsed().as_secs_f64());
     }
     Ok(())
+}
+
+/// `base` + `.ext` (unlike `Path::with_extension`, keeps a dotted number such as `1.4mN`).
+fn with_ext(base: &Path, ext: &str) -> PathBuf {
+    let mut s = base.as_os_str().to_owned();
+    s.push(".");
+    s.push(ext);
+    PathBuf::from(s)
 }
