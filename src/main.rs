@@ -5,6 +5,7 @@
 
 mod cli;
 mod output;
+mod plot;
 
 use clap::Parser;
 

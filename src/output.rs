@@ -59,3 +59,9 @@ pub fn csv_text<R: serde::Serialize>(rows: &[R]) -> Result<String> {
     }
     Ok(String::from_utf8(w.into_inner()?)?)
 }
+
+/// Rounds a grid or range coordinate to 1e-9 of its unit, removing the binary noise of
+/// `start + k·step` (0.06000000000000001 → 0.06) in CSV files.
+pub fn clean(v: f64) -> f64 {
+    (v * 1e9).round() / 1e9
+}

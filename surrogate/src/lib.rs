@@ -10,6 +10,7 @@
 
 pub mod contact;
 pub mod error;
+pub mod map;
 pub mod scene;
 pub mod solver;
 pub mod units;

@@ -1,0 +1,135 @@
+//! Heat map of values on a (possibly oblique) grid, with a colour bar.
+
+use super::{perr, png_atomic, viridis, FONT};
+use anyhow::Result;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// A scalar field on an N×N grid of points `origin + i·da + j·db` (plot units), row-major
+/// `values[j·N + i]`.
+pub struct HeatMap<'a> {
+    /// Title above the plot.
+    pub title: String,
+    /// x-axis label with unit.
+    pub x_label: String,
+    /// y-axis label with unit.
+    pub y_label: String,
+    /// Colour-bar label with unit.
+    pub value_label: String,
+    /// Points per side N.
+    pub n: usize,
+    /// Step between neighbouring points along i (plot units).
+    pub da: [f64; 2],
+    /// Step between neighbouring points along j (plot units).
+    pub db: [f64; 2],
+    /// Values, row-major.
+    pub values: &'a [f64],
+}
+
+/// Draws `map` to the PNG `path` (1000×820 px): one parallelogram tile per grid point coloured
+/// with viridis between the min and max value, equal axis scales, and a labelled colour bar.
+pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
+    let n = map.n;
+    let (lo, hi) = map
+        .values
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        });
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let pt = |i: f64, j: f64| (i * map.da[0] + j * map.db[0], i * map.da[1] + j * map.db[1]);
+    let mut xr = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut yr = (f64::INFINITY, f64::NEG_INFINITY);
+    for (i, j) in [
+        (-0.5, -0.5),
+        (n as f64 - 0.5, -0.5),
+        (-0.5, n as f64 - 0.5),
+        (n as f64 - 0.5, n as f64 - 0.5),
+    ] {
+        let p = pt(i, j);
+        xr = (xr.0.min(p.0), xr.1.max(p.0));
+        yr = (yr.0.min(p.1), yr.1.max(p.1));
+    }
+    // Equal aspect: plot area width/height follows the data aspect.
+    let aspect = (yr.1 - yr.0) / (xr.1 - xr.0);
+    let plot_h = 700u32;
+    let plot_w = ((plot_h as f64 - 110.0) / aspect + 120.0).clamp(380.0, 1100.0) as u32;
+    let size = (plot_w + 190, plot_h + 20);
+    png_atomic(path, size, |root| {
+        let (left, right) = root.split_horizontally(plot_w);
+        let mut chart = ChartBuilder::on(&left)
+            .caption(&map.title, (FONT, 24))
+            .margin(12)
+            .x_label_area_size(55)
+            .y_label_area_size(70)
+            .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
+            .map_err(perr("heat map"))?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(&map.x_label)
+            .y_desc(&map.y_label)
+            .label_style((FONT, 18))
+            .axis_desc_style((FONT, 20))
+            .x_label_formatter(&|v| format!("{v:.1}"))
+            .y_label_formatter(&|v| format!("{v:.1}"))
+            .draw()
+            .map_err(perr("heat map axes"))?;
+        let mut tiles = Vec::with_capacity(n * n);
+        for j in 0..n {
+            for i in 0..n {
+                let (fi, fj) = (i as f64, j as f64);
+                let c = viridis((map.values[j * n + i] - lo) / span);
+                tiles.push(Polygon::new(
+                    vec![
+                        pt(fi - 0.5, fj - 0.5),
+                        pt(fi + 0.5, fj - 0.5),
+                        pt(fi + 0.5, fj + 0.5),
+                        pt(fi - 0.5, fj + 0.5),
+                    ],
+                    c.filled(),
+                ));
+            }
+        }
+        chart.draw_series(tiles).map_err(perr("heat map tiles"))?;
+        colour_bar(&right, lo, hi, &map.value_label)?;
+        Ok(())
+    })
+}
+
+/// Draws a vertical viridis colour bar for `[lo, hi]` with a label into `area`.
+pub(crate) fn colour_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    lo: f64,
+    hi: f64,
+    label: &str,
+) -> Result<()> {
+    let hi_v = if hi > lo { hi } else { lo + 1.0 };
+    let mut bar = ChartBuilder::on(area)
+        .margin_top(50)
+        .margin_bottom(67)
+        .margin_right(10)
+        .y_label_area_size(95)
+        .build_cartesian_2d(0f64..1f64, lo..hi_v)
+        .map_err(perr("colour bar"))?;
+    bar.configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_desc(label)
+        .label_style((FONT, 17))
+        .axis_desc_style((FONT, 19))
+        .y_label_formatter(&|v| format!("{v:.3}"))
+        .draw()
+        .map_err(perr("colour bar axis"))?;
+    let steps = 200;
+    bar.draw_series((0..steps).map(|k| {
+        let a = lo + (hi_v - lo) * k as f64 / steps as f64;
+        let b = lo + (hi_v - lo) * (k + 1) as f64 / steps as f64;
+        Rectangle::new(
+            [(0.0, a), (1.0, b)],
+            viridis(k as f64 / (steps - 1) as f64).filled(),
+        )
+    }))
+    .map_err(perr("colour bar"))?;
+    Ok(())
+}
