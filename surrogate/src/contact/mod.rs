@@ -1,8 +1,10 @@
 //! Contact mechanics between slider and substrate spheres: the Hertz normal law and the search
-//! for candidate sphere pairs.
+//! for candidate sphere pairs ([`BvhSearch`], parry3d; [`GridSearch`], a uniform bucket grid).
 
+mod bvh_search;
 mod candidates;
 mod hertz;
 
+pub use bvh_search::BvhSearch;
 pub use candidates::{CandidatePair, CandidateSearch, GridSearch};
 pub use hertz::Hertz;

@@ -10,7 +10,7 @@ pub struct ContactInfo {
     pub slider: u32,
     /// Substrate sphere index (scene order).
     pub substrate: u32,
-    /// Contact point (midpoint of the two centres) `[x, y, z]` (m).
+    /// Contact point: midpoint of the slider and substrate sphere centres `[x, y, z]` (m).
     pub point: [f64; 3],
     /// Overlap δ (m), > 0.
     pub overlap: f64,
@@ -22,6 +22,10 @@ pub struct ContactInfo {
     pub p0: f64,
     /// Whether the coating of this contact has failed (p0 > P_crit).
     pub failed: bool,
+    /// Upward deflection (m) of the slider sphere against its vertical spring k_z relative to
+    /// the rigid body (compliant model: its spring force k_z·deflection balances the sphere's
+    /// contact forces); 0 for the rigid models.
+    pub deflection: f64,
 }
 
 /// Equilibrium of the slider under load W (SI).
@@ -41,10 +45,14 @@ pub struct Equilibrium {
     pub contacts: Vec<ContactInfo>,
     /// Largest p0 (Pa) over the contacts (0 if none).
     pub p_max: f64,
-    /// Residual ΣF_z − W (N).
+    /// Residual ΣF_z − W (N), recomputed from the contact list.
     pub residual: f64,
     /// Iterations the root find took.
     pub iterations: usize,
+    /// Moments of the contact forces about the disc centre `[Σ F_z·(y − y_c), Σ F_z·(x − x_c)]`
+    /// (N·m). Zero (to the solver tolerance) for rigid-tilt and compliant; for rigid-z it is the
+    /// moment the (suppressed) tilt would have to carry.
+    pub moment_residual: [f64; 2],
 }
 
 impl Equilibrium {
@@ -59,5 +67,9 @@ impl Equilibrium {
     /// Whether any contact's coating has failed (P_max > P_crit).
     pub fn coating_failed(&self) -> bool {
         self.contacts.iter().any(|c| c.failed)
+    }
+    /// |ΣF_z − W| / W: relative force-balance residual.
+    pub fn residual_rel(&self) -> f64 {
+        (self.residual / self.load).abs()
     }
 }

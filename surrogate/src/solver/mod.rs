@@ -1,15 +1,26 @@
-//! Quasi-static load sharing of the rigid slider: given the slider's lateral pose (x, y, θ) and
+//! Quasi-static load sharing of the slider: given the slider's lateral pose (x, y, θ) and
 //! the normal load W, find the height (and, where the scene needs them, tilts and compliances)
 //! at which the vertical Hertz forces of all sphere contacts carry W.
+//!
+//! Models (see [`Model`]): rigid-z (1-D safeguarded Newton), rigid-tilt (3 unknowns,
+//! damped Newton with faer), compliant (3 + n unknowns, sparse Newton with faer's
+//! sparse Cholesky).
 
+mod assemble;
+mod compliant;
 mod equilibrium;
+mod law;
 mod model;
+mod pair_set;
 mod params;
+mod rigid_tilt;
 mod rigid_z;
+#[allow(clippy::module_inception)]
 mod solver;
+mod z_root;
 
 pub use equilibrium::{ContactInfo, Equilibrium};
 pub use model::Model;
+pub use pair_set::PairSet;
 pub use params::SolverParams;
-pub use rigid_z::solve_rigid_z;
-pub use solver::{Pose, Solver};
+pub use solver::{Pose, SearchKind, Solver};

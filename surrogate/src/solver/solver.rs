@@ -1,7 +1,11 @@
 //! [`Solver`]: a scene prepared for many quasi-static solves (different θ, shifts and loads).
 
-use super::{solve_rigid_z, Equilibrium, Model, SolverParams};
-use crate::contact::{CandidateSearch, GridSearch, Hertz};
+use super::assemble::Ctx;
+use super::compliant::solve_compliant;
+use super::rigid_tilt::solve_rigid_tilt;
+use super::rigid_z::RigidZ;
+use super::{Equilibrium, Model, PairSet, SolverParams};
+use crate::contact::{BvhSearch, CandidateSearch, GridSearch, Hertz};
 use crate::error::SceneError;
 use crate::scene::Scene;
 
@@ -15,18 +19,35 @@ pub struct Pose {
     pub shift: [f64; 2],
 }
 
-/// A scene prepared for repeated solves: substrate spheres indexed once, Hertz law cached.
-/// `Sync`: share one `Solver` across rayon threads.
+/// Which candidate search finds the slider–substrate pairs. Both return identical pair lists
+/// (tested on perturbed scenes and random poses).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SearchKind {
+    /// Uniform bucket grid ([`GridSearch`]): the fast path (see benches/screen.rs).
+    #[default]
+    Grid,
+    /// parry3d bounding-volume hierarchy ([`BvhSearch`]).
+    Bvh,
+}
+
+/// A scene prepared for repeated solves: substrate spheres indexed once (grid and parry3d BVH),
+/// slider sites generated once, Hertz law cached. `Sync`: share one `Solver` across rayon threads.
 pub struct Solver {
     scene: Scene,
     hertz: Hertz,
-    search: GridSearch,
+    substrate: Vec<[f64; 3]>,
+    grid: GridSearch,
+    bvh: BvhSearch,
+    local: Vec<[f64; 2]>,
     /// Numerical knobs.
     pub params: SolverParams,
+    /// Candidate search used by [`Solver::pairs_at`].
+    pub search: SearchKind,
 }
 
 impl Solver {
-    /// Validates `scene` and indexes its substrate spheres. Cost O(N_substrate).
+    /// Validates `scene`, indexes its substrate spheres (grid O(N), BVH O(N log N)) and
+    /// generates the slider's sites.
     pub fn new(scene: &Scene) -> Result<Solver, SceneError> {
         scene.validate()?;
         let spheres = scene.substrate_spheres();
@@ -34,8 +55,12 @@ impl Solver {
         Ok(Solver {
             scene: scene.clone(),
             hertz: scene.hertz(),
-            search: GridSearch::new(&spheres, reach),
+            grid: GridSearch::new(&spheres, reach),
+            bvh: BvhSearch::new(&spheres, scene.sphere_radius),
+            substrate: spheres,
+            local: scene.slider_sites_local(),
             params: SolverParams::default(),
+            search: SearchKind::default(),
         })
     }
 
@@ -46,11 +71,26 @@ impl Solver {
 
     /// Substrate sphere centres `[x, y, h]` (m).
     pub fn substrate(&self) -> &[[f64; 3]] {
-        self.search.spheres()
+        &self.substrate
+    }
+
+    /// Number of slider spheres.
+    pub fn slider_count(&self) -> usize {
+        self.local.len()
+    }
+
+    /// The candidate search selected by [`Solver::search`].
+    pub fn candidate_search(&self) -> &dyn CandidateSearch {
+        match self.search {
+            SearchKind::Grid => &self.grid,
+            SearchKind::Bvh => &self.bvh,
+        }
     }
 
     /// The model `Auto` resolves to for this scene: rigid-z when the substrate is flat
-    /// (σ_h = 0), rigid-tilt otherwise.
+    /// (σ_h = 0; exact by inversion symmetry when the disc centre sits on a substrate site or
+    /// midway between two, and the study's set-up otherwise, whose DEM suppresses tilt),
+    /// rigid-tilt when the substrate heights are perturbed.
     pub fn auto_model(&self) -> Model {
         if self.scene.substrate.sigma_h == 0.0 {
             Model::RigidZ
@@ -59,47 +99,116 @@ impl Solver {
         }
     }
 
-    /// Equilibrium of the slider at `pose` under `load` W (N) with `model`.
-    /// Errors: non-positive/NaN load (field `load_mN`), no substrate under the slider.
-    pub fn solve(&self, pose: Pose, load: f64, model: Model) -> Result<Equilibrium, SceneError> {
-        if !(load.is_finite() && load > 0.0) {
-            return Err(SceneError::invalid(
-                "load_mN",
-                load * 1e3,
-                "must be a positive number",
-            ));
+    /// Candidate pairs (lateral distance < 2R) of the slider at `pose`. O(N_slider) with the
+    /// grid, O(N_slider log N_substrate) with the BVH. Load-independent: reuse for every load.
+    pub fn pairs_at(&self, pose: Pose) -> PairSet {
+        let (s, c) = pose.theta.sin_cos();
+        let cx = self.scene.slider.offset[0] + pose.shift[0];
+        let cy = self.scene.slider.offset[1] + pose.shift[1];
+        let slider_xy: Vec<[f64; 2]> = self
+            .local
+            .iter()
+            .map(|p| [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]])
+            .collect();
+        let mut pairs = Vec::with_capacity(slider_xy.len() * 3);
+        self.candidate_search()
+            .pairs(&slider_xy, 2.0 * self.scene.sphere_radius, &mut pairs);
+        PairSet {
+            slider_xy,
+            centre: [cx, cy],
+            pairs,
         }
-        let xy = self.scene.slider_sites_at(pose.theta, pose.shift);
-        let reach = 2.0 * self.scene.sphere_radius;
-        let mut pairs = Vec::new();
-        self.search.pairs(&xy, reach, &mut pairs);
-        let model = if model == Model::Auto {
+    }
+
+    fn ctx(&self) -> Ctx<'_> {
+        Ctx {
+            hertz: &self.hertz,
+            two_r: 2.0 * self.scene.sphere_radius,
+            coating: &self.scene.coating,
+            substrate: &self.substrate,
+            params: &self.params,
+            scale: self.scene.slider.radius.max(self.scene.sphere_radius),
+        }
+    }
+
+    fn resolve(&self, model: Model) -> Model {
+        if model == Model::Auto {
             self.auto_model()
         } else {
             model
-        };
-        match model {
-            Model::RigidZ | Model::Auto => solve_rigid_z(
-                &xy,
-                &pairs,
-                reach,
-                &self.hertz,
-                &self.scene.coating,
-                load,
-                &self.params,
-            ),
-            other => Err(SceneError::invalid(
-                "model",
-                other.name(),
-                "not implemented yet",
-            )),
         }
+    }
+
+    /// Equilibrium of the slider at `pose` under `load` W (N) with `model`.
+    /// Errors: non-positive/NaN load (field `load_mN`), no substrate under the slider, a slider
+    /// that tips over the substrate edge (tilt models).
+    pub fn solve(&self, pose: Pose, load: f64, model: Model) -> Result<Equilibrium, SceneError> {
+        check_load(load)?;
+        let ps = self.pairs_at(pose);
+        self.solve_pairs(&ps, load, model)
+    }
+
+    /// Equilibrium for one load W (N) from a prepared [`PairSet`].
+    pub fn solve_pairs(
+        &self,
+        ps: &PairSet,
+        load: f64,
+        model: Model,
+    ) -> Result<Equilibrium, SceneError> {
+        check_load(load)?;
+        let ctx = self.ctx();
+        match self.resolve(model) {
+            Model::RigidZ | Model::Auto => RigidZ::new(&ctx, ps).solve(&ctx, ps, load),
+            Model::RigidTilt => solve_rigid_tilt(&ctx, ps, load),
+            Model::Compliant => solve_compliant(&ctx, ps, load),
+        }
+    }
+
+    /// Equilibria for several loads (N) at one pose, sharing the candidate search (and, for
+    /// rigid-z, the sorted pair list). Results in the order of `loads`.
+    pub fn solve_loads(
+        &self,
+        pose: Pose,
+        loads: &[f64],
+        model: Model,
+    ) -> Vec<Result<Equilibrium, SceneError>> {
+        let ps = self.pairs_at(pose);
+        let ctx = self.ctx();
+        match self.resolve(model) {
+            Model::RigidZ | Model::Auto => {
+                let rz = RigidZ::new(&ctx, &ps);
+                loads
+                    .iter()
+                    .map(|&w| check_load(w).and_then(|_| rz.solve(&ctx, &ps, w)))
+                    .collect()
+            }
+            m => loads.iter().map(|&w| self.solve_pairs(&ps, w, m)).collect(),
+        }
+    }
+}
+
+fn check_load(load: f64) -> Result<(), SceneError> {
+    if load.is_finite() && load > 0.0 {
+        Ok(())
+    } else {
+        Err(SceneError::invalid(
+            "load_mN",
+            crate::units::n_to_mn(load),
+            "must be a positive number",
+        ))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn assert_sync<T: Sync>() {}
+
+    #[test]
+    fn solver_is_sync() {
+        assert_sync::<Solver>();
+    }
 
     #[test]
     fn tri_tri_reference() {

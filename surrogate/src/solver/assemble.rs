@@ -1,0 +1,86 @@
+//! Turns a converged state (z, tilts, deflections) into an [`Equilibrium`] with its contact list.
+
+use super::law::{pair_response, BodyPair};
+use super::{ContactInfo, Equilibrium, Model, PairSet, SolverParams};
+use crate::contact::Hertz;
+use crate::scene::Coating;
+
+/// Everything a model needs besides the pairs: the contact law, the substrate, the knobs.
+pub(crate) struct Ctx<'a> {
+    pub hertz: &'a Hertz,
+    /// Contact distance 2R (m).
+    pub two_r: f64,
+    pub coating: &'a Coating,
+    /// Substrate sphere centres `[x, y, h]` (m).
+    pub substrate: &'a [[f64; 3]],
+    pub params: &'a SolverParams,
+    /// Length scale (m) of the tilt unknowns: the slider radius (≥ sphere radius).
+    pub scale: f64,
+}
+
+/// Builds the [`Equilibrium`] from the body state `q = [ζ, L·t_x, L·t_y]` (z = z_ref + ζ):
+/// every pair with δ > 0 becomes a [`ContactInfo`] whose point is the midpoint of the two sphere
+/// centres; the residuals are recomputed from the contact forces. `defl(i)` is the upward
+/// deflection (m) of slider sphere i relative to the rigid body.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn assemble(
+    ctx: &Ctx,
+    ps: &PairSet,
+    bp: &[BodyPair],
+    zref: f64,
+    model: Model,
+    load: f64,
+    q: [f64; 3],
+    defl: &dyn Fn(u32) -> f64,
+    iterations: usize,
+) -> Equilibrium {
+    let k = ctx.hertz.k();
+    let mut contacts = Vec::new();
+    let mut p_max: f64 = 0.0;
+    let mut fsum = 0.0;
+    let mut mom = [0.0; 2];
+    for (p, b) in ps.pairs.iter().zip(bp) {
+        let w = defl(p.slider);
+        let dz = q[0] + q[1] * b.g[0] + q[2] * b.g[1] + w - b.c;
+        let r = pair_response(k, ctx.two_r, b.r2, b.ut, dz);
+        if r.fz <= 0.0 {
+            continue;
+        }
+        let arm = ps.arm(p.slider);
+        let zs = p.h + b.ut + dz;
+        let fnorm = ctx.hertz.force(r.delta);
+        let p0 = ctx.hertz.p0(r.delta);
+        p_max = p_max.max(p0);
+        fsum += r.fz;
+        mom[0] += r.fz * arm[1];
+        mom[1] += r.fz * arm[0];
+        let s = ps.slider_xy[p.slider as usize];
+        let sub = ctx.substrate[p.substrate as usize];
+        contacts.push(ContactInfo {
+            slider: p.slider,
+            substrate: p.substrate,
+            point: [
+                0.5 * (s[0] + sub[0]),
+                0.5 * (s[1] + sub[1]),
+                0.5 * (zs + p.h),
+            ],
+            overlap: r.delta,
+            force_n: fnorm,
+            force_z: r.fz,
+            p0,
+            failed: ctx.coating.failed(p0),
+            deflection: w,
+        });
+    }
+    Equilibrium {
+        model,
+        load,
+        z: zref + q[0],
+        tilt: [q[1] / ctx.scale, q[2] / ctx.scale],
+        contacts,
+        p_max,
+        residual: fsum - load,
+        iterations,
+        moment_residual: mom,
+    }
+}
