@@ -317,7 +317,11 @@ impl Sim {
         }
         f[2] -= p.load;
         let n = s.sl_x.len() as f64;
-        let mz = if rigid { self.m_cl + n * m_s } else { self.m_cl };
+        let mz = if rigid {
+            self.m_cl + n * m_s
+        } else {
+            self.m_cl
+        };
         f[2] -= mz * cv[2] * inv_tau;
         let vr = if rel { s.support_v } else { [0.0; 2] };
         f[0] -= self.m_cl * (cv[0] - vr[0]) * inv_tau;
@@ -368,7 +372,10 @@ impl Sim {
         kick(&mut s.cl_v[2], s.cl_f[2], h, mz);
         if rigid {
             let vz = s.cl_v[2];
-            s.sl_v.par_iter_mut().with_min_len(1024).for_each(|v| v[2] = vz);
+            s.sl_v
+                .par_iter_mut()
+                .with_min_len(1024)
+                .for_each(|v| v[2] = vz);
         }
     }
 
@@ -542,8 +549,13 @@ impl Sim {
             e += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + vz);
         }
         let n = s.sl_x.len() as f64;
-        let mz = if p.rigid_z { self.m_cl + n * m } else { self.m_cl };
-        e += 0.5 * self.m_cl * (s.cl_v[0].powi(2) + s.cl_v[1].powi(2)) + 0.5 * mz * s.cl_v[2].powi(2);
+        let mz = if p.rigid_z {
+            self.m_cl + n * m
+        } else {
+            self.m_cl
+        };
+        e += 0.5 * self.m_cl * (s.cl_v[0].powi(2) + s.cl_v[1].powi(2))
+            + 0.5 * mz * s.cl_v[2].powi(2);
         for o in &self.out {
             e += self.model.normal.energy(o.delta);
         }
