@@ -451,6 +451,33 @@ impl Sim {
         if !fin {
             return Err(self.unstable("non-finite particle position".into()));
         }
+        // A slider sphere torn from its control-layer site by more than a sphere radius, or a
+        // slider below the substrate plane, means the integration has blown up (the overlap
+        // bound alone misses spheres that jumped clean through the substrate).
+        let r = self.spec.sphere_radius;
+        let c = s.cl_x;
+        for (i, x) in s.sl_x.iter().enumerate() {
+            let d = [
+                x[0] - c[0] - self.site_off[i][0],
+                x[1] - c[1] - self.site_off[i][1],
+                if self.params.rigid_z {
+                    0.0
+                } else {
+                    x[2] - c[2]
+                },
+            ];
+            let m = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            if m.is_nan() || m > r {
+                return Err(self.unstable(format!(
+                    "slider sphere {i} displaced {:.4e} µm from its control-layer site (bound: one radius)",
+                    m * 1e6
+                )));
+            }
+        }
+        let h_min = self.sub_h.iter().copied().fold(f64::INFINITY, f64::min);
+        if c[2] < h_min {
+            return Err(self.unstable("the slider fell through the substrate".into()));
+        }
         let bound = self.params.overlap_bound * self.spec.sphere_radius;
         let m = self.out.iter().map(|o| o.delta).fold(0.0, f64::max);
         if m > bound {
