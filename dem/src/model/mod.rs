@@ -1,0 +1,21 @@
+//! Contact model of a slider–substrate sphere pair, composed of one sub-model per concern
+//! (as LAMMPS `pair granular`): [`normal`] (Hertz + viscoelastic damping), [`tangential`]
+//! (Mindlin history spring capped by μ·F_n, viscous damping) and [`friction`] (the law μ(p0)).
+
+pub mod constant;
+pub mod contact;
+pub mod friction;
+pub mod hertz;
+pub mod mindlin;
+pub mod normal;
+pub mod pressure_switched;
+pub mod tangential;
+
+pub use constant::Constant;
+pub use contact::{ContactModel, PairOut};
+pub use friction::{Friction, FrictionLaw};
+pub use hertz::HertzNormal;
+pub use mindlin::Mindlin;
+pub use normal::NormalModel;
+pub use pressure_switched::PressureSwitched;
+pub use tangential::TangentialModel;

@@ -1,0 +1,40 @@
+//! [`PressureSwitched`]: μ1 while p0 ≤ P_crit, μ2 once the coating has failed (p0 > P_crit).
+
+use super::FrictionLaw;
+use surrogate::Coating;
+
+/// The study's coating law: `μ = μ1` for `p0 ≤ P_crit`, `μ = μ2` for `p0 > P_crit` (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PressureSwitched {
+    /// Critical pressure (Pa).
+    pub p_crit: f64,
+    /// μ of an intact contact.
+    pub mu1: f64,
+    /// μ of a failed contact.
+    pub mu2: f64,
+}
+
+impl From<&Coating> for PressureSwitched {
+    fn from(c: &Coating) -> Self {
+        PressureSwitched {
+            p_crit: c.p_crit,
+            mu1: c.mu1,
+            mu2: c.mu2,
+        }
+    }
+}
+
+impl FrictionLaw for PressureSwitched {
+    #[inline]
+    fn mu(&self, p0: f64) -> f64 {
+        if p0 > self.p_crit {
+            self.mu2
+        } else {
+            self.mu1
+        }
+    }
+    #[inline]
+    fn failed(&self, p0: f64) -> bool {
+        p0 > self.p_crit
+    }
+}

@@ -1,0 +1,84 @@
+//! Stable time-step estimate from the stiffnesses and masses of a model.
+//!
+//! Velocity-Verlet is stable for a harmonic mode of angular frequency ω when `dt < 2/ω`,
+//! `ω = √(k/m)`. The estimate takes the largest ω over the model's stiff modes:
+//! - slider sphere against the control layer in z (full model only):
+//!   `ω² = k_z (1/m_c + 1/m_s)` (in-phase mode of all springs; m_c = control sphere mass),
+//! - slider sphere laterally: `(k_xy + S_n + k_t)/m_s`,
+//! - substrate sphere laterally: `(k_tether + S_n + k_t)/m_b`,
+//! - a contact pair: `(S_n + k_t)(1/m_s + 1/m_b)`,
+//! - the slider as a whole on its contacts in z (rigid-z): `Σ S_n / (M + N m_s)`,
+//!
+//! with contact stiffnesses `S_n = 2E*a`, `k_t = 8G*a` at the contact radius `a` of a contact
+//! at pressure `p_ref` (Hertz: `a = π p0 R_eff / (2E*)`). Cost O(1).
+
+use crate::SimParams;
+
+/// Estimated critical steps (s) and the dominating mode.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct StableStep {
+    /// `2/ω_max` (s).
+    pub dt_crit: f64,
+    /// Name of the mode with the largest ω.
+    pub mode: &'static str,
+}
+
+/// Inputs of the estimate (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StabilityInput {
+    /// Slider/substrate sphere mass (kg).
+    pub m_sphere: f64,
+    /// Control-layer sphere mass (kg).
+    pub m_control: f64,
+    /// Number of slider spheres.
+    pub n_slider: usize,
+    /// Number of contacts expected (for the rigid-z body mode).
+    pub n_contacts: usize,
+    /// E* (Pa).
+    pub e_star: f64,
+    /// G* (Pa).
+    pub g_star: f64,
+    /// R_eff (m).
+    pub r_eff: f64,
+    /// Contact pressure at which the contact stiffness is evaluated (Pa).
+    pub p_ref: f64,
+}
+
+/// The stable-step estimate for `params` (reads `rigid_z` and the spring constants).
+pub fn stable_step(inp: &StabilityInput, params: &SimParams) -> StableStep {
+    let a = std::f64::consts::PI * inp.p_ref * inp.r_eff / (2.0 * inp.e_star);
+    let sn = 2.0 * inp.e_star * a;
+    let kt = 8.0 * inp.g_star * a;
+    let ms = inp.m_sphere;
+    let mut modes: Vec<(&'static str, f64)> = vec![
+        ("slider sphere lateral", (params.k_slider_xy + sn + kt) / ms),
+        (
+            "substrate sphere lateral",
+            (params.k_substrate_xy + sn + kt) / ms,
+        ),
+        ("contact pair", (sn + kt) * 2.0 / ms),
+    ];
+    let m_body = inp.n_slider as f64 * (inp.m_control + ms);
+    if params.rigid_z {
+        modes.push((
+            "slider body on its contacts (z)",
+            inp.n_contacts as f64 * sn / m_body,
+        ));
+    } else {
+        modes.push((
+            "slider sphere vs control layer (z spring)",
+            params.k_slider_z * (1.0 / inp.m_control + 1.0 / ms),
+        ));
+        modes.push((
+            "slider sphere on contact + z spring",
+            (params.k_slider_z + sn) / ms,
+        ));
+    }
+    let (mode, w2) = modes
+        .into_iter()
+        .fold(("", 0.0), |a, b| if b.1 > a.1 { b } else { a });
+    StableStep {
+        dt_crit: 2.0 / w2.sqrt(),
+        mode,
+    }
+}

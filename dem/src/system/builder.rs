@@ -1,0 +1,118 @@
+//! Building a [`SystemSpec`] from a [`surrogate::Scene`], started from the surrogate's
+//! quasi-static equilibrium or from a gap.
+
+use super::SystemSpec;
+use crate::{DemError, SimParams};
+use surrogate::solver::{Model, Pose, Solver};
+use surrogate::Scene;
+
+/// How the slider starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Start {
+    /// At the surrogate's rigid-slider equilibrium height for the load (contacts already loaded).
+    Surrogate,
+    /// Resting `gap` (m) above the highest first-touch height, falling under the load.
+    Gap(f64),
+}
+
+/// The surrogate's answer for the same scene and load (SI), for comparison.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StartInfo {
+    /// Surrogate equilibrium height z (m).
+    pub z: f64,
+    /// Surrogate contact number.
+    pub contacts: usize,
+    /// Surrogate P_max (Pa).
+    pub p_max: f64,
+    /// Substrate spheres left out by reduction (a).
+    pub pruned: usize,
+}
+
+/// Lays out the particles of `scene` (at its own θ and offset) for `params` (load, α, travel,
+/// reductions). Cost: one surrogate solve, O(N log N).
+pub fn from_scene(
+    scene: &Scene,
+    params: &SimParams,
+    start: Start,
+) -> Result<(SystemSpec, StartInfo), DemError> {
+    let solver = Solver::new(scene)?;
+    let eq = solver.solve(
+        Pose {
+            theta: scene.slider.theta,
+            shift: [0.0, 0.0],
+        },
+        params.load,
+        Model::Auto,
+    )?;
+    let sites = scene.slider_sites();
+    let n = sites.len();
+    let mut sub = scene.substrate_spheres();
+    let all = sub.len();
+    if params.prune_substrate {
+        let c = scene.slider.offset;
+        let travel = params.support_speed * params.slide_time + params.prune_margin;
+        let e = [
+            c[0] + travel * params.alpha.cos(),
+            c[1] + travel * params.alpha.sin(),
+        ];
+        let reach = scene.slider.radius + 2.0 * scene.sphere_radius + params.prune_margin;
+        sub.retain(|p| seg_dist2([p[0], p[1]], c, e) <= reach * reach);
+    }
+    let pruned = all - sub.len();
+    let r = scene.sphere_radius;
+    let (slider_z, control_z) = match start {
+        Start::Surrogate => {
+            let mut z = vec![eq.z; n];
+            let k = if params.rigid_z {
+                f64::INFINITY
+            } else {
+                params.k_slider_z
+            };
+            let zc = eq.z - params.load / (eq.contacts.len().max(1) as f64) / k;
+            let mut touching = vec![false; n];
+            for c in &eq.contacts {
+                touching[c.slider as usize] = true;
+            }
+            for (zi, t) in z.iter_mut().zip(&touching) {
+                if !t {
+                    *zi = zc;
+                }
+            }
+            (z, zc)
+        }
+        Start::Gap(g) => {
+            let ztop = sub.iter().map(|p| p[2]).fold(f64::NEG_INFINITY, f64::max);
+            let z0 = ztop + 2.0 * r + g;
+            (vec![z0; n], z0)
+        }
+    };
+    Ok((
+        SystemSpec {
+            substrate: sub,
+            slider_sites: sites,
+            slider_z,
+            control_z,
+            sphere_radius: r,
+            material: scene.material,
+        },
+        StartInfo {
+            z: eq.z,
+            contacts: eq.contact_count(),
+            p_max: eq.p_max,
+            pruned,
+        },
+    ))
+}
+
+fn seg_dist2(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let ab = [b[0] - a[0], b[1] - a[1]];
+    let ap = [p[0] - a[0], p[1] - a[1]];
+    let l2 = ab[0] * ab[0] + ab[1] * ab[1];
+    let t = if l2 > 0.0 {
+        ((ap[0] * ab[0] + ap[1] * ab[1]) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let d = [ap[0] - t * ab[0], ap[1] - t * ab[1]];
+    d[0] * d[0] + d[1] * d[1]
+}

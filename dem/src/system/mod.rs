@@ -1,0 +1,14 @@
+//! The particle system: static description ([`SystemSpec`], built from a scene by
+//! [`from_scene`]) and the evolving [`State`].
+//!
+//! Particles: substrate spheres (x, y free and tethered to their sites, z fixed at their
+//! height), slider spheres (x, y, z; or x, y only with `rigid_z`), one rigid control layer
+//! (translation x, y, z only — see README "No tilt DOF") and a kinematic support.
+
+pub mod builder;
+pub mod spec;
+pub mod state;
+
+pub use builder::{from_scene, Start, StartInfo};
+pub use spec::SystemSpec;
+pub use state::{PairHist, PairList, State};
