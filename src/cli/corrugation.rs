@@ -38,7 +38,9 @@ pub struct Args {
     /// `start:stop:step` (inclusive).
     #[arg(long, default_value = "0:90:5", allow_hyphen_values = true)]
     alpha: String,
-    /// Contact-line angle in degrees from the substrate x axis (overrides the moiré estimate).
+    /// Contact-line angle in degrees from the substrate x axis. Default: the moiré estimate, lines
+    /// perpendicular to the shortest beat vector q = G_slider(θ) − G_substrate of the first
+    /// reciprocal shells (square-tri at θ = 0: along x); the substrate row a1 when commensurate.
     #[arg(long = "line-deg", allow_hyphen_values = true)]
     line_deg: Option<f64>,
     /// Sliding distance of each path in µm.

@@ -133,7 +133,7 @@ pub fn contact_map(path: &Path, data: &ContactMapData) -> Result<()> {
             .position(SeriesLabelPosition::UpperRight)
             .draw()
             .map_err(perr("legend"))?;
-        colour_bar(&right, p_lo, p_hi, "contact pressure p0 (GPa)")?;
+        colour_bar(&right, p_lo, p_hi, "contact pressure p0 (GPa)", 50)?;
         Ok(())
     })
 }

@@ -56,9 +56,12 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
     let plot_w = ((plot_h as f64 - 110.0) / aspect + 120.0).clamp(380.0, 1100.0) as u32;
     let size = (plot_w + 190, plot_h + 20);
     png_atomic(path, size, |root| {
+        // The title spans the whole image (heat map + colour bar) so long titles are not cut.
+        let root = root
+            .titled(&map.title, (FONT, 19))
+            .map_err(perr("heat map title"))?;
         let (left, right) = root.split_horizontally(plot_w);
         let mut chart = ChartBuilder::on(&left)
-            .caption(&map.title, (FONT, 24))
             .margin(12)
             .x_label_area_size(55)
             .y_label_area_size(70)
@@ -92,21 +95,25 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             }
         }
         chart.draw_series(tiles).map_err(perr("heat map tiles"))?;
-        colour_bar(&right, lo, hi, &map.value_label)?;
+        colour_bar(&right, lo, hi, &map.value_label, 12)?;
         Ok(())
     })
 }
 
-/// Draws a vertical viridis colour bar for `[lo, hi]` with a label into `area`.
+/// Draws a vertical viridis colour bar for `[lo, hi]` with a label into `area`, `margin_top`
+/// pixels below its top (to line up with the chart next to it).
 pub(crate) fn colour_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     lo: f64,
     hi: f64,
     label: &str,
+    margin_top: u32,
 ) -> Result<()> {
     let hi_v = if hi > lo { hi } else { lo + 1.0 };
+    // Enough decimals to tell ticks apart: span 88 → 0, 5.7 → 1, 0.3 → 2.
+    let prec = (1.0 - (hi_v - lo).log10().floor()).clamp(0.0, 4.0) as usize;
     let mut bar = ChartBuilder::on(area)
-        .margin_top(50)
+        .margin_top(margin_top)
         .margin_bottom(67)
         .margin_right(10)
         .y_label_area_size(95)
@@ -118,7 +125,7 @@ pub(crate) fn colour_bar<DB: DrawingBackend>(
         .y_desc(label)
         .label_style((FONT, 17))
         .axis_desc_style((FONT, 19))
-        .y_label_formatter(&|v| format!("{v:.3}"))
+        .y_label_formatter(&|v| format!("{v:.prec$}"))
         .draw()
         .map_err(perr("colour bar axis"))?;
     let steps = 200;

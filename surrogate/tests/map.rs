@@ -102,7 +102,7 @@ fn symmetric_scenes_give_the_same_contacts_and_p_max() {
 /// square-tri, θ = 0, 1.4 mN: the contact lines run along x (α = 0). Along them the rows of the
 /// square slider are commensurate with the substrate rows (both 3 µm) and the slider rides over
 /// every bump: the corrugation is the landscape's full range (≈ 90 nm). Perpendicular (α = 90°)
-/// the path runs along a valley of the landscape, where square (3 µm) and triangular (3√3/2 µm)
+/// the path runs along a ridge line of the landscape (constant x), where square (3 µm) and triangular (3√3/2 µm)
 /// row spacings are incommensurate: corrugation below 2 nm, more than 40× smaller.
 #[test]
 fn square_tri_contact_line_alpha_0_vs_90() {
@@ -133,7 +133,8 @@ fn square_tri_contact_line_alpha_0_vs_90() {
     assert!(c[0].max_lateral_force > 5.0 * c[1].max_lateral_force);
 }
 
-/// A path along y through x = 0 stays on the landscape's valley line x = 0 (α = 90°): its heights
+/// A path along y through x = 0 stays on the landscape's ridge line x = 0 (Δz is largest there at
+/// θ = 0; α = 90°): its heights
 /// at the grid spacing are the landscape column x = 0, and its corrugation over one period is that
 /// column's variation.
 #[test]
