@@ -192,20 +192,7 @@ pub fn save(path: &Path, sim: &Sim, samples: &[Sample]) -> Result<(), DemError> 
     s.ref_sl.put(&mut w);
     sim.out.put(&mut w);
     samples.to_vec().put(&mut w);
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(format!(".{}.tmp", std::process::id()));
-    let tmp = std::path::PathBuf::from(tmp);
-    if let Some(d) = path.parent() {
-        if !d.as_os_str().is_empty() {
-            std::fs::create_dir_all(d).map_err(|e| err(e.to_string()))?;
-        }
-    }
-    {
-        let mut f = std::fs::File::create(&tmp).map_err(|e| err(e.to_string()))?;
-        f.write_all(&w).map_err(|e| err(e.to_string()))?;
-        f.sync_all().ok();
-    }
-    std::fs::rename(&tmp, path).map_err(|e| err(e.to_string()))?;
+    surrogate::atomic_file::write_atomic(path, &w).map_err(|e| err(e.to_string()))?;
     Ok(())
 }
 

@@ -8,6 +8,7 @@
 //! to the user-facing units (µm, mN, GPa, µs, degrees) is [`units`].
 #![warn(missing_docs)]
 
+pub mod atomic_file;
 pub mod contact;
 pub mod error;
 pub mod map;
