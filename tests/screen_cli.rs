@@ -97,6 +97,9 @@ fn bad_input_names_the_field() {
     fails_naming(&["screen", "--load-mn", "NaN"], "--load-mn");
     fails_naming(&["screen", "--load-mn", "-1"], "--load-mn");
     fails_naming(&["screen", "--slider-radius-um=-5"], "slider.radius_um");
+    // The space-separated form must reach the scene validation too (not a clap parse error).
+    fails_naming(&["screen", "--slider-radius-um", "-5"], "slider.radius_um");
+    fails_naming(&["screen", "--youngs-gpa", "-100"], "youngs_GPa");
     fails_naming(&["screen", "--pattern", "hex-tri"], "pattern");
     fails_naming(&["screen", "--model", "elastic"], "model");
     fails_naming(&["screen", "--theta", "0:30"], "--theta");

@@ -17,22 +17,22 @@ pub struct SceneArgs {
     #[arg(long, value_name = "FILE.toml")]
     pub scene: Option<PathBuf>,
     /// Slider disc radius in µm (study: 93.5 triangular, 100 square).
-    #[arg(long, value_name = "UM")]
+    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
     pub slider_radius_um: Option<f64>,
     /// Substrate rectangle size in µm, `LXxLY` (study: 364x270; x is the long side).
     #[arg(long, value_name = "LXxLY")]
     pub substrate_um: Option<String>,
     /// Amplitude σ_h in µm of random substrate sphere heights, uniform in [-σ_h, σ_h] (study: 0.002, 0.01).
-    #[arg(long, value_name = "UM")]
+    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
     pub sigma_h_um: Option<f64>,
     /// Seed of the substrate height perturbation (same seed → same heights).
     #[arg(long)]
     pub seed: Option<u64>,
     /// Young's modulus in GPa (study: 100, also 50).
-    #[arg(long, value_name = "GPA")]
+    #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
     pub youngs_gpa: Option<f64>,
     /// Critical coating pressure P_crit in GPa (study: 4).
-    #[arg(long, value_name = "GPA")]
+    #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
     pub p_crit_gpa: Option<f64>,
     /// In-plane offset of the slider centre from the central substrate sphere in µm, `X,Y`.
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
