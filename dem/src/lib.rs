@@ -51,7 +51,11 @@ pub struct Prepared {
 
 /// The contact model of `scene` with damping from `params`; `friction` overrides the scene's
 /// pressure-switched coating law (e.g. a [`model::Constant`] μ for reference runs).
-pub fn contact_model(scene: &Scene, params: &SimParams, friction: Option<Friction>) -> ContactModel {
+pub fn contact_model(
+    scene: &Scene,
+    params: &SimParams,
+    friction: Option<Friction>,
+) -> ContactModel {
     ContactModel {
         normal: HertzNormal {
             hertz: scene.hertz(),
@@ -62,14 +66,21 @@ pub fn contact_model(scene: &Scene, params: &SimParams, friction: Option<Frictio
             scene.material.poisson,
             params.gamma_t,
         ),
-        friction: friction
-            .unwrap_or(Friction::PressureSwitched(PressureSwitched::from(&scene.coating))),
+        friction: friction.unwrap_or(Friction::PressureSwitched(PressureSwitched::from(
+            &scene.coating,
+        ))),
         radius_sum: 2.0 * scene.sphere_radius,
     }
 }
 
 /// Stable-step inputs for `scene` at reference pressure `p_ref` (Pa) with `n_contacts` contacts.
-pub fn stability_input(scene: &Scene, params: &SimParams, n_slider: usize, n_contacts: usize, p_ref: f64) -> StabilityInput {
+pub fn stability_input(
+    scene: &Scene,
+    params: &SimParams,
+    n_slider: usize,
+    n_contacts: usize,
+    p_ref: f64,
+) -> StabilityInput {
     let m = contact_model(scene, params, None);
     StabilityInput {
         m_sphere: scene.material.sphere_mass(scene.sphere_radius),
@@ -93,11 +104,21 @@ pub fn prepare(
     friction: Option<Friction>,
 ) -> Result<Prepared, DemError> {
     if !(params.load.is_finite() && params.load > 0.0) {
-        return Err(DemError::invalid("load_mN", params.load * 1e3, "must be positive"));
+        return Err(DemError::invalid(
+            "load_mN",
+            params.load * 1e3,
+            "must be positive",
+        ));
     }
     let (spec, info) = from_scene(scene, &params, start)?;
     let p_ref = (1.5 * info.p_max).max(scene.coating.p_crit);
-    let inp = stability_input(scene, &params, spec.slider_sites.len(), info.contacts.max(1), p_ref);
+    let inp = stability_input(
+        scene,
+        &params,
+        spec.slider_sites.len(),
+        info.contacts.max(1),
+        p_ref,
+    );
     let stable = stable_step(&inp, &params);
     let dt = params.dt.unwrap_or(params.dt_safety * stable.dt_crit);
     let model = contact_model(scene, &params, friction);

@@ -51,10 +51,7 @@ pub fn stable_step(inp: &StabilityInput, params: &SimParams) -> StableStep {
     let kt = 8.0 * inp.g_star * a;
     let ms = inp.m_sphere;
     let mut modes: Vec<(&'static str, f64)> = vec![
-        (
-            "slider sphere lateral",
-            (params.k_slider_xy + sn + kt) / ms,
-        ),
+        ("slider sphere lateral", (params.k_slider_xy + sn + kt) / ms),
         (
             "substrate sphere lateral",
             (params.k_substrate_xy + sn + kt) / ms,

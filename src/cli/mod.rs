@@ -1,6 +1,7 @@
 //! Command-line interface: one file per subcommand, sharing [`SceneArgs`] and the range parser.
 
 mod corrugation;
+mod dem_args;
 mod equilibrate;
 mod figures;
 mod landscape;

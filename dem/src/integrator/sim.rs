@@ -317,7 +317,11 @@ impl Sim {
         }
         f[2] -= p.load;
         let n = s.sl_x.len() as f64;
-        let mz = if rigid { self.m_cl + n * m_s } else { self.m_cl };
+        let mz = if rigid {
+            self.m_cl + n * m_s
+        } else {
+            self.m_cl
+        };
         f[2] -= mz * cv[2] * inv_tau;
         let vr = if rel { s.support_v } else { [0.0; 2] };
         f[0] -= self.m_cl * (cv[0] - vr[0]) * inv_tau;
@@ -368,7 +372,10 @@ impl Sim {
         kick(&mut s.cl_v[2], s.cl_f[2], h, mz);
         if rigid {
             let vz = s.cl_v[2];
-            s.sl_v.par_iter_mut().with_min_len(1024).for_each(|v| v[2] = vz);
+            s.sl_v
+                .par_iter_mut()
+                .with_min_len(1024)
+                .for_each(|v| v[2] = vz);
         }
     }
 
@@ -443,6 +450,33 @@ impl Sim {
             && s.sub_x.iter().all(|x| x.iter().all(|v| v.is_finite()));
         if !fin {
             return Err(self.unstable("non-finite particle position".into()));
+        }
+        // A slider sphere torn from its control-layer site by more than a sphere radius, or a
+        // slider below the substrate plane, means the integration has blown up (the overlap
+        // bound alone misses spheres that jumped clean through the substrate).
+        let r = self.spec.sphere_radius;
+        let c = s.cl_x;
+        for (i, x) in s.sl_x.iter().enumerate() {
+            let d = [
+                x[0] - c[0] - self.site_off[i][0],
+                x[1] - c[1] - self.site_off[i][1],
+                if self.params.rigid_z {
+                    0.0
+                } else {
+                    x[2] - c[2]
+                },
+            ];
+            let m = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            if m.is_nan() || m > r {
+                return Err(self.unstable(format!(
+                    "slider sphere {i} displaced {:.4e} µm from its control-layer site (bound: one radius)",
+                    m * 1e6
+                )));
+            }
+        }
+        let h_min = self.sub_h.iter().copied().fold(f64::INFINITY, f64::min);
+        if c[2] < h_min {
+            return Err(self.unstable("the slider fell through the substrate".into()));
         }
         let bound = self.params.overlap_bound * self.spec.sphere_radius;
         let m = self.out.iter().map(|o| o.delta).fold(0.0, f64::max);
@@ -542,8 +576,13 @@ impl Sim {
             e += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + vz);
         }
         let n = s.sl_x.len() as f64;
-        let mz = if p.rigid_z { self.m_cl + n * m } else { self.m_cl };
-        e += 0.5 * self.m_cl * (s.cl_v[0].powi(2) + s.cl_v[1].powi(2)) + 0.5 * mz * s.cl_v[2].powi(2);
+        let mz = if p.rigid_z {
+            self.m_cl + n * m
+        } else {
+            self.m_cl
+        };
+        e += 0.5 * self.m_cl * (s.cl_v[0].powi(2) + s.cl_v[1].powi(2))
+            + 0.5 * mz * s.cl_v[2].powi(2);
         for o in &self.out {
             e += self.model.normal.energy(o.delta);
         }

@@ -33,7 +33,14 @@ impl ContactModel {
     /// `v = v1 − v2` (m/s), tangential history `xi` (updated in place; reset when apart),
     /// pair effective mass `m_eff` (kg) and step `dt` (s). Cost O(1), ~3 sqrt.
     #[inline]
-    pub fn pair(&self, d: [f64; 3], v: [f64; 3], xi: &mut [f64; 3], m_eff: f64, dt: f64) -> PairOut {
+    pub fn pair(
+        &self,
+        d: [f64; 3],
+        v: [f64; 3],
+        xi: &mut [f64; 3],
+        m_eff: f64,
+        dt: f64,
+    ) -> PairOut {
         let r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         let rs = self.radius_sum;
         if r2 >= rs * rs {
@@ -52,9 +59,7 @@ impl ContactModel {
         let mu = self.friction.mu(p0);
         let vt = [v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]];
         let a = self.normal.contact_radius(delta);
-        let ft = self
-            .tangential
-            .force(xi, n, vt, a, mu * fnorm, m_eff, dt);
+        let ft = self.tangential.force(xi, n, vt, a, mu * fnorm, m_eff, dt);
         PairOut {
             force: [
                 fnorm * n[0] + ft[0],

@@ -20,7 +20,7 @@ pub fn needs_rebuild(
         .zip(ref_sub.par_iter())
         .map(|(p, q)| (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2))
         .reduce(|| 0.0, f64::max);
-    if !(a <= lim) {
+    if a.is_nan() || a > lim {
         return true;
     }
     let b = sl_x
@@ -29,7 +29,7 @@ pub fn needs_rebuild(
         .zip(ref_sl.par_iter())
         .map(|(p, q)| (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2))
         .reduce(|| 0.0, f64::max);
-    !(b <= lim)
+    b.is_nan() || b > lim
 }
 
 /// New pair list of every (slider i, substrate j) with centre distance < `cutoff` (m), sorted

@@ -96,7 +96,7 @@ pub fn run(
         }
         sim.step()?;
         let step = sim.state.step;
-        if step % every == 0 || step == total {
+        if step.is_multiple_of(every) || step == total {
             sim.check()?;
             let s = Sample::from_obs(&sim.observe());
             samples.push(s);
@@ -108,7 +108,7 @@ pub fn run(
             });
         }
         if let Some(p) = &io.xyz {
-            if io.xyz_every > 0 && step % io.xyz_every == 0 {
+            if io.xyz_every > 0 && step.is_multiple_of(io.xyz_every) {
                 super::xyz::append_frame(p, sim).map_err(|e| DemError::Checkpoint {
                     path: p.display().to_string(),
                     why: e.to_string(),
@@ -116,7 +116,7 @@ pub fn run(
             }
         }
         if let Some(p) = &io.checkpoint {
-            if io.checkpoint_every > 0 && step % io.checkpoint_every == 0 {
+            if io.checkpoint_every > 0 && step.is_multiple_of(io.checkpoint_every) {
                 checkpoint::save(p, sim, samples)?;
             }
         }

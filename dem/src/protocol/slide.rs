@@ -49,7 +49,12 @@ pub fn slide_summary(samples: &[Sample], p: &SimParams, steps: u64, wall_s: f64)
         .collect();
     let n = w.len().max(1) as f64;
     let f = w.iter().map(|s| s.spring_force_mn).sum::<f64>() / n;
-    let sd = (w.iter().map(|s| (s.spring_force_mn - f).powi(2)).sum::<f64>() / n).sqrt();
+    let sd = (w
+        .iter()
+        .map(|s| (s.spring_force_mn - f).powi(2))
+        .sum::<f64>()
+        / n)
+        .sqrt();
     let li = lock_in(&w, p.k0, p.support_speed, p.lock_in_ratio);
     let load_mn = p.load * 1e3;
     SlideSummary {

@@ -1,0 +1,352 @@
+//! The DEM engine on small scenes (seconds each in the dev profile): agreement with the
+//! surrogate, energy conservation, time-step blow-up detection, thread-count independence,
+//! checkpoint/resume, steady sliding friction and lock-in detection.
+
+use dem::model::{Constant, Friction};
+use dem::protocol::{lock_in, run, RunIo, RunKind, Sample};
+use dem::{prepare, Prepared, SimParams, Start};
+use surrogate::Scene;
+
+/// A small disc of the study's slider over a small substrate.
+fn small(pattern: &str, radius_um: f64, theta_deg: f64) -> Scene {
+    let mut s = Scene::preset(pattern).unwrap();
+    s.slider.radius = radius_um * 1e-6;
+    s.slider.theta = theta_deg.to_radians();
+    s.substrate.size = [60e-6, 60e-6];
+    s
+}
+
+/// Study's mean load per slider sphere at 1.4 mN (N), times the slider's sphere count.
+fn load_for(scene: &Scene) -> f64 {
+    1.4e-3 / 3505.0 * scene.slider_sites().len() as f64
+}
+
+fn params(scene: &Scene) -> SimParams {
+    SimParams {
+        load: load_for(scene),
+        prune_substrate: true,
+        slide_time: 0.0,
+        equilibrate_time: 3e-6,
+        sample_interval: 0.05e-6,
+        ..SimParams::default()
+    }
+}
+
+fn quiet() -> impl FnMut(&dem::protocol::Progress) {
+    |_| {}
+}
+
+#[test]
+fn equilibrium_agrees_with_the_surrogate() {
+    for (pattern, theta) in [("tri-tri", 0.0), ("square-tri", 0.0), ("tri-tri", 30.0)] {
+        let scene = small(pattern, 12.0, theta);
+        let p = params(&scene);
+        let Prepared { mut sim, start, .. } = prepare(&scene, p, Start::Surrogate, None).unwrap();
+        let mut samples = Vec::new();
+        run(
+            &mut sim,
+            RunKind::Equilibrate,
+            &RunIo::default(),
+            &mut samples,
+            &mut quiet(),
+        )
+        .unwrap();
+        let o = sim.observe();
+        eprintln!(
+            "{pattern} {theta}°: DEM {} contacts, P_max {} GPa; surrogate {} contacts, {} GPa",
+            o.contacts,
+            o.p_max * 1e-9,
+            start.contacts,
+            start.p_max * 1e-9
+        );
+        assert_eq!(o.contacts, start.contacts, "{pattern} {theta}°");
+        assert!(
+            (o.p_max / start.p_max - 1.0).abs() < 0.02,
+            "{pattern} {theta}°: DEM {} vs surrogate {}",
+            o.p_max,
+            start.p_max
+        );
+        // and the load is carried
+        assert!((o.contact_fz / sim.params.load - 1.0).abs() < 0.02);
+    }
+}
+
+/// Falling from a 20 nm gap, the damped slider settles onto the surrogate's equilibrium.
+#[test]
+fn equilibrium_from_a_gap_reaches_the_surrogate_answer() {
+    for (pattern, theta) in [("tri-tri", 0.0), ("square-tri", 10.2)] {
+        let scene = small(pattern, 12.0, theta);
+        let p = SimParams {
+            equilibrate_time: 8e-6,
+            ..params(&scene)
+        };
+        let Prepared { mut sim, start, .. } = prepare(&scene, p, Start::Gap(20e-9), None).unwrap();
+        let mut samples = Vec::new();
+        run(
+            &mut sim,
+            RunKind::Equilibrate,
+            &RunIo::default(),
+            &mut samples,
+            &mut quiet(),
+        )
+        .unwrap();
+        let o = sim.observe();
+        eprintln!(
+            "from gap, {pattern} {theta}°: DEM {} contacts, P_max {} GPa; surrogate {}, {} GPa",
+            o.contacts,
+            o.p_max * 1e-9,
+            start.contacts,
+            start.p_max * 1e-9
+        );
+        assert_eq!(o.contacts, start.contacts, "{pattern} {theta}°");
+        assert!((o.p_max / start.p_max - 1.0).abs() < 0.02);
+    }
+}
+
+#[test]
+fn undamped_run_conserves_energy() {
+    let scene = small("tri-tri", 6.0, 30.0);
+    let mut p = params(&scene);
+    p.damping_time = f64::INFINITY;
+    p.gamma_n = 0.0;
+    p.gamma_t = 0.0;
+    let Prepared {
+        mut sim, stable, ..
+    } = prepare(
+        &scene,
+        SimParams {
+            dt: None,
+            dt_safety: 0.1,
+            ..p
+        },
+        Start::Gap(2e-9),
+        Some(Friction::Constant(Constant { mu: 0.0 })),
+    )
+    .unwrap();
+    assert!(sim.dt <= 0.1 * stable.dt_crit * (1.0 + 1e-12));
+    let e0 = sim.energy();
+    let mut scale: f64 = 0.0; // largest kinetic + elastic exchange seen
+    let mut drift: f64 = 0.0;
+    for k in 0..100_000 {
+        sim.step().unwrap();
+        if k % 100 == 0 {
+            let e = sim.energy();
+            drift = drift.max((e - e0).abs());
+            // energy released by the fall: W·(Z0 − Z)
+            scale = scale.max(sim.params.load * (sim.spec.control_z - sim.state.cl_x[2]).abs());
+        }
+    }
+    eprintln!(
+        "energy: drift {drift:e} J, exchanged {scale:e} J, dt/dt_crit = {}",
+        sim.dt / stable.dt_crit
+    );
+    assert!(sim.observe().max_overlap > 0.0, "the slider never touched");
+    assert!(scale > 0.0);
+    assert!(
+        drift < 1e-3 * scale,
+        "energy drift {drift:e} J vs exchanged {scale:e} J"
+    );
+}
+
+#[test]
+fn too_large_a_step_is_reported_not_nan() {
+    let scene = small("tri-tri", 6.0, 0.0);
+    let p = params(&scene);
+    let probe = prepare(&scene, p.clone(), Start::Surrogate, None).unwrap();
+    let dt_crit = probe.stable.dt_crit;
+    let Prepared { mut sim, .. } = prepare(
+        &scene,
+        SimParams {
+            dt: Some(30.0 * dt_crit),
+            ..p
+        },
+        Start::Surrogate,
+        None,
+    )
+    .unwrap();
+    let mut samples = Vec::new();
+    let err = run(
+        &mut sim,
+        RunKind::Equilibrate,
+        &RunIo::default(),
+        &mut samples,
+        &mut quiet(),
+    )
+    .expect_err("a step 30× the stable one must be caught");
+    let msg = err.to_string();
+    assert!(msg.contains("stable") || msg.contains("crit"), "{msg}");
+    assert!(samples
+        .iter()
+        .all(|s| s.z_um.is_finite() && s.p_max_gpa.is_finite()));
+}
+
+fn slide_params(scene: &Scene) -> SimParams {
+    SimParams {
+        load: load_for(scene),
+        prune_substrate: true,
+        equilibrate_time: 0.2e-6,
+        relax_time: 0.2e-6,
+        slide_time: 0.4e-6,
+        support_speed: 1.0,
+        sample_interval: 0.02e-6,
+        ..SimParams::default()
+    }
+}
+
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    let scene = small("square-tri", 9.0, 10.2);
+    let go = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let mut sim = prepare(&scene, slide_params(&scene), Start::Surrogate, None)
+                .unwrap()
+                .sim;
+            let mut samples = Vec::new();
+            run(
+                &mut sim,
+                RunKind::Slide,
+                &RunIo::default(),
+                &mut samples,
+                &mut |_| {},
+            )
+            .unwrap();
+            (sim.state, samples)
+        })
+    };
+    let (a, sa) = go(1);
+    let (b, sb) = go(2);
+    assert!(a == b, "states differ between 1 and 2 threads");
+    assert_eq!(sa, sb);
+}
+
+#[test]
+fn checkpoint_and_resume_are_bit_identical() {
+    let scene = small("tri-tri", 6.0, 21.8);
+    let p = slide_params(&scene);
+    let fresh = || {
+        prepare(&scene, p.clone(), Start::Surrogate, None)
+            .unwrap()
+            .sim
+    };
+    // uninterrupted
+    let mut a = fresh();
+    let mut sa = Vec::new();
+    run(
+        &mut a,
+        RunKind::Slide,
+        &RunIo::default(),
+        &mut sa,
+        &mut |_| {},
+    )
+    .unwrap();
+    // interrupted: the only checkpoint is written at 60 % of the run, then a new process
+    // (a fresh Sim) resumes from it
+    let total = a.state.step;
+    let dir = std::env::temp_dir().join(format!("dem-ckpt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("run.ckpt");
+    let every = total * 3 / 5;
+    let mut b = fresh();
+    let mut sb = Vec::new();
+    let io = RunIo {
+        checkpoint: Some(path.clone()),
+        checkpoint_every: every,
+        ..RunIo::default()
+    };
+    run(&mut b, RunKind::Slide, &io, &mut sb, &mut |_| {}).unwrap();
+    let mut c = fresh();
+    let mut sc = dem::checkpoint::load(&path, &mut c).unwrap();
+    assert_eq!(c.state.step, every);
+    run(
+        &mut c,
+        RunKind::Slide,
+        &RunIo::default(),
+        &mut sc,
+        &mut |_| {},
+    )
+    .unwrap();
+    assert!(a.state == c.state, "resumed state differs");
+    assert_eq!(sa, sc);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A small slider with a constant, large μ dragged at steady state perpendicular to its contact
+/// lines (square-tri θ = 0, α = 90°: near-zero corrugation): the pulling force → μW.
+#[test]
+fn steady_sliding_force_is_mu_w() {
+    let scene = small("square-tri", 12.0, 0.0);
+    let mu = 0.3;
+    let p = SimParams {
+        alpha: 90f64.to_radians(),
+        rigid_z: true,
+        equilibrate_time: 0.5e-6,
+        relax_time: 0.5e-6,
+        slide_time: 3e-6,
+        support_speed: 1.0,
+        measure_from: 1.0 / 3.0,
+        ..slide_params(&scene)
+    };
+    let Prepared { mut sim, .. } = prepare(
+        &scene,
+        p.clone(),
+        Start::Surrogate,
+        Some(Friction::Constant(Constant { mu })),
+    )
+    .unwrap();
+    let mut samples = Vec::new();
+    run(
+        &mut sim,
+        RunKind::Slide,
+        &RunIo::default(),
+        &mut samples,
+        &mut |_| {},
+    )
+    .unwrap();
+    let s = dem::protocol::slide_summary(&samples, &p, sim.state.step, 0.0);
+    eprintln!(
+        "steady sliding: F/W = {} (μ = {mu}), contacts {}",
+        s.mu, s.mean_contacts
+    );
+    assert!(!s.locked_in);
+    assert!(
+        (s.mu / mu - 1.0).abs() < 0.05,
+        "spring force / W = {} (μ = {mu})",
+        s.mu
+    );
+}
+
+#[test]
+fn lock_in_is_detected() {
+    let mk = |t: f64, support: f64, slider: f64, f: f64| Sample {
+        t_us: t,
+        support_x_um: support,
+        slider_x_um: slider,
+        spring_force_mn: f,
+        ..Sample::default()
+    };
+    let (k0, v) = (50.0, 0.1);
+    // locked: the support advances 0.1 µm/µs, the slider stays, the force rises at K0·v
+    let locked: Vec<Sample> = (0..100)
+        .map(|k| {
+            let t = k as f64;
+            mk(t, 0.1 * t, 0.0, k0 * 0.1e-6 * t * 1e3)
+        })
+        .collect();
+    let l = lock_in(&locked, k0, v, 0.5);
+    assert!(l.locked_in);
+    assert!((l.force_slope_ratio - 1.0).abs() < 1e-9);
+    // sliding: the slider follows with a stick-slip wobble, the force is flat on average
+    let sliding: Vec<Sample> = (0..100)
+        .map(|k| {
+            let t = k as f64;
+            mk(t, 0.1 * t, 0.1 * t - 0.01 * (t * 0.7).sin(), 0.02)
+        })
+        .collect();
+    let s = lock_in(&sliding, k0, v, 0.5);
+    assert!(!s.locked_in);
+    assert!((s.advance_ratio - 1.0).abs() < 0.05);
+}

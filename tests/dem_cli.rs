@@ -1,0 +1,175 @@
+//! `superlube equilibrate` and `superlube slide` end to end on tiny scenes: files, columns, JSON
+//! keys, agreement with the surrogate, resume, bad input.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_superlube"))
+}
+
+fn tmpdir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("superlube-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+const TINY: [&str; 8] = [
+    "--pattern",
+    "square-tri",
+    "--slider-radius-um",
+    "9",
+    "--substrate-um",
+    "60x40",
+    "--load-mn",
+    "0.02",
+];
+
+fn json(path: &PathBuf) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn equilibrate_writes_series_and_summary_matching_the_surrogate() {
+    let d = tmpdir("eq");
+    let (csv, js) = (d.join("eq.csv"), d.join("eq.json"));
+    let out = bin()
+        .arg("equilibrate")
+        .args(TINY)
+        .args(["--equilibrate-us", "0.3", "--start", "gap", "--gap-nm", "1"])
+        .arg("--out")
+        .arg(&csv)
+        .arg("--json")
+        .arg(&js)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("stable step estimate"), "{err}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(
+        text.lines().next().unwrap(),
+        "t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts"
+    );
+    let j = json(&js);
+    for k in [
+        "contacts",
+        "p_max_GPa",
+        "z_um",
+        "steps",
+        "wall_s",
+        "surrogate_contacts",
+    ] {
+        assert!(j.get(k).is_some(), "missing {k}");
+    }
+    assert!(j["steps"].as_u64().unwrap() > 1000);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn slide_summary_and_resume() {
+    let d = tmpdir("slide");
+    let args = |csv: &PathBuf, js: &PathBuf| {
+        let mut c = bin();
+        c.arg("slide")
+            .args(TINY)
+            .args([
+                "--equilibrate-us",
+                "0.1",
+                "--relax-us",
+                "0.1",
+                "--slide-us",
+                "0.3",
+                "--speed-m-s",
+                "1",
+                "--rigid-z",
+                "--prune",
+            ])
+            .arg("--out")
+            .arg(csv)
+            .arg("--json")
+            .arg(js);
+        c
+    };
+    let (csv, js) = (d.join("a.csv"), d.join("a.json"));
+    let out = args(&csv, &js).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let j = json(&js);
+    for k in [
+        "friction_mN",
+        "mu",
+        "mean_contacts",
+        "max_p_max_GPa",
+        "locked_in",
+        "steps",
+        "wall_s",
+    ] {
+        assert!(j.get(k).is_some(), "missing {k}");
+    }
+    // Interrupted run: a checkpoint every 300 steps, then resumed: the same time series.
+    let ck = d.join("run.ckpt");
+    let (csv2, js2) = (d.join("b.csv"), d.join("b.json"));
+    let mut first = args(&d.join("part.csv"), &d.join("part.json"));
+    first
+        .arg("--checkpoint")
+        .arg(&ck)
+        .args(["--checkpoint-every", "300"]);
+    assert!(first.output().unwrap().status.success());
+    assert!(ck.exists());
+    let mut resumed = args(&csv2, &js2);
+    resumed.arg("--checkpoint").arg(&ck).arg("--resume");
+    let out = resumed.output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("resumed at step"));
+    assert_eq!(
+        std::fs::read_to_string(&csv).unwrap(),
+        std::fs::read_to_string(&csv2).unwrap()
+    );
+    std::fs::remove_dir_all(&d).ok();
+}
+
+fn fails_naming(args: &[&str], field: &str) {
+    let out = bin().args(args).output().unwrap();
+    assert!(!out.status.success(), "{args:?} should fail");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains(field),
+        "{args:?}: `{err}` does not name {field}"
+    );
+}
+
+#[test]
+fn bad_input_names_the_field() {
+    fails_naming(&["equilibrate", "--load-mn", "0"], "--load-mn");
+    fails_naming(&["slide", "--alpha", "270"], "--alpha");
+    fails_naming(&["slide", "--dt-us", "-1"], "--dt-us");
+    fails_naming(
+        &["equilibrate", "--slider-radius-um", "-3"],
+        "slider.radius_um",
+    );
+    fails_naming(&["slide", "--slide-us", "0"], "--slide-us");
+    // A time step far beyond the stable one is caught and reported with the stable step.
+    let mut a = vec!["equilibrate"];
+    a.extend(TINY);
+    a.extend([
+        "--equilibrate-us",
+        "0.5",
+        "--dt-us",
+        "0.01",
+        "--start",
+        "gap",
+    ]);
+    fails_naming(&a, "stable");
+}
