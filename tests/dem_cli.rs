@@ -63,6 +63,13 @@ fn equilibrate_writes_series_and_summary_matching_the_surrogate() {
         "steps",
         "wall_s",
         "surrogate_contacts",
+        "surrogate_p_max_GPa",
+        "surrogate_z_um",
+        "contacts_diff",
+        "p_max_rel_diff",
+        "z_diff_nm",
+        "dt_us",
+        "dt_crit_us",
     ] {
         assert!(j.get(k).is_some(), "missing {k}");
     }
@@ -137,6 +144,46 @@ fn slide_summary_and_resume() {
         std::fs::read_to_string(&csv).unwrap(),
         std::fs::read_to_string(&csv2).unwrap()
     );
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn xyz_snapshots_are_extended_xyz_frames() {
+    let d = tmpdir("xyz");
+    let xyz = d.join("snap.xyz");
+    let out = bin()
+        .arg("equilibrate")
+        .args(TINY)
+        .args(["--equilibrate-us", "0.05", "--xyz-every", "100"])
+        .arg("--xyz")
+        .arg(&xyz)
+        .arg("--out")
+        .arg(d.join("eq.csv"))
+        .arg("--json")
+        .arg(d.join("eq.json"))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let steps = json(&d.join("eq.json"))["steps"].as_u64().unwrap();
+    let text = std::fs::read_to_string(&xyz).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    let n: usize = lines[0].trim().parse().unwrap();
+    assert!(
+        lines[1].contains("Properties=species:S:1:pos:R:3"),
+        "{}",
+        lines[1]
+    );
+    assert!(lines[1].contains("Time="), "{}", lines[1]);
+    // every frame: count line, comment line, n particle lines of 6 fields
+    assert_eq!(lines.len() % (n + 2), 0);
+    assert_eq!((lines.len() / (n + 2)) as u64, steps / 100);
+    for l in &lines[2..n + 2] {
+        assert_eq!(l.split_whitespace().count(), 6, "{l}");
+    }
     std::fs::remove_dir_all(&d).ok();
 }
 

@@ -5,6 +5,7 @@ use super::dem_args::{DemArgs, RunInfo};
 use anyhow::Result;
 use dem::protocol::{equilibrate_summary, EquilibrateSummary, RunKind};
 use serde::Serialize;
+use surrogate::units::{m_to_nm, um_to_m};
 
 /// Options of `superlube equilibrate`.
 #[derive(clap::Args, Debug)]
@@ -23,6 +24,8 @@ struct Summary {
     contacts_diff: i64,
     /// DEM P_max / surrogate P_max − 1.
     p_max_rel_diff: f64,
+    /// DEM z − surrogate z (nm); negative: the compliant DEM slider sits lower.
+    z_diff_nm: f64,
     #[serde(flatten)]
     run: RunInfo,
 }
@@ -43,6 +46,7 @@ pub fn run(args: Args) -> Result<()> {
     let s = Summary {
         contacts_diff: result.contacts as i64 - result.surrogate_contacts as i64,
         p_max_rel_diff: result.p_max_gpa / result.surrogate_p_max_gpa - 1.0,
+        z_diff_nm: m_to_nm(um_to_m(result.z_um - result.surrogate_z_um)),
         result,
         run: f.info,
     };
