@@ -8,7 +8,6 @@ use crate::model::PairOut;
 use crate::protocol::Sample;
 use crate::system::PairHist;
 use crate::DemError;
-use std::io::Write;
 use std::path::Path;
 
 const MAGIC: &[u8; 8] = b"SLDEMCK1";
