@@ -118,9 +118,15 @@ fn slide_summary_and_resume() {
         "locked_in",
         "steps",
         "wall_s",
+        "alpha_deg",
+        "line_deg",
+        "direction_deg",
     ] {
         assert!(j.get(k).is_some(), "missing {k}");
     }
+    // square-tri at θ = 0: the contact line is the substrate row (x), so α = 0 pulls along x.
+    assert!(j["line_deg"].as_f64().unwrap().abs() < 1e-9);
+    assert!(j["direction_deg"].as_f64().unwrap().abs() < 1e-9);
     // Interrupted run: a checkpoint every 300 steps, then resumed: the same time series.
     let ck = d.join("run.ckpt");
     let (csv2, js2) = (d.join("b.csv"), d.join("b.json"));
@@ -197,10 +203,50 @@ fn fails_naming(args: &[&str], field: &str) {
     );
 }
 
+/// α is measured from the contact line, as in `superlube corrugation`: the moiré estimate by
+/// default, `--line-deg` when given.
+#[test]
+fn alpha_is_measured_from_the_contact_line() {
+    let d = tmpdir("alpha");
+    let direction = |extra: &[&str]| {
+        let js = d.join("eq.json");
+        let out = bin()
+            .arg("equilibrate")
+            .args(TINY)
+            .args(["--equilibrate-us", "0.01", "--rigid-z", "--alpha", "90"])
+            .args(extra)
+            .arg("--out")
+            .arg(d.join("eq.csv"))
+            .arg("--json")
+            .arg(&js)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let j = json(&js);
+        assert_eq!(j["alpha_deg"].as_f64().unwrap(), 90.0);
+        (
+            j["line_deg"].as_f64().unwrap(),
+            j["direction_deg"].as_f64().unwrap(),
+        )
+    };
+    let (line, dir) = direction(&["--line-deg", "10"]);
+    assert!((line - 10.0).abs() < 1e-9 && (dir - 100.0).abs() < 1e-9);
+    // square-tri at θ = 10.2°: the moiré lines run at −46.1° (see the corrugation figure).
+    let (line, dir) = direction(&["--theta", "10.2"]);
+    assert!((line + 46.1).abs() < 0.1, "line {line}");
+    assert!((dir - (line + 90.0)).abs() < 1e-9);
+    std::fs::remove_dir_all(&d).ok();
+}
+
 #[test]
 fn bad_input_names_the_field() {
     fails_naming(&["equilibrate", "--load-mn", "0"], "--load-mn");
     fails_naming(&["slide", "--alpha", "270"], "--alpha");
+    fails_naming(&["slide", "--line-deg", "nan"], "--line-deg");
     fails_naming(&["slide", "--dt-us", "-1"], "--dt-us");
     fails_naming(
         &["equilibrate", "--slider-radius-um", "-3"],

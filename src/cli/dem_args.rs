@@ -11,7 +11,8 @@ use dem::{prepare, Prepared, SimParams, Start};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use serde::Serialize;
 use std::path::PathBuf;
-use surrogate::units::{deg_to_rad, mn_to_n, s_to_us, us_to_s, NM};
+use surrogate::map::{contact_line_direction, MapParams};
+use surrogate::units::{deg_to_rad, mn_to_n, rad_to_deg, s_to_us, us_to_s, NM};
 use surrogate::Scene;
 
 /// How the slider starts.
@@ -40,9 +41,9 @@ pub struct DemArgs {
         allow_hyphen_values = true
     )]
     pub load_mn: f64,
-    /// Pulling angle α in degrees from the substrate x axis (the substrate row direction, which is
-    /// the contact line of square-tri at θ = 0; `superlube corrugation` reports the contact line
-    /// of other scenes), |α| ≤ 180.
+    /// Pulling angle α in degrees from the slider's contact line (as in `superlube corrugation`),
+    /// |α| ≤ 180: α = 90 pulls perpendicular to the contact lines. The pulling direction from the
+    /// substrate x axis is line + α; both are printed and reported in the JSON summary.
     #[arg(
         long,
         value_name = "DEG",
@@ -50,6 +51,11 @@ pub struct DemArgs {
         allow_hyphen_values = true
     )]
     pub alpha: f64,
+    /// Contact-line angle in degrees from the substrate x axis. Default: the moiré estimate of
+    /// `superlube corrugation` (square-tri at θ = 0: along x, 0°; the substrate row a1 when the
+    /// lattices are commensurate).
+    #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
+    pub line_deg: Option<f64>,
     /// Equilibration time under load in µs (control layer held laterally).
     #[arg(
         long = "equilibrate-us",
@@ -118,6 +124,12 @@ pub struct RunInfo {
     pub dt_crit_us: f64,
     /// Mode that sets the critical step.
     pub dt_crit_mode: &'static str,
+    /// Pulling angle α from the contact line (degrees).
+    pub alpha_deg: f64,
+    /// Contact-line angle from the substrate x axis (degrees).
+    pub line_deg: f64,
+    /// Pulling direction from the substrate x axis = line + α (degrees).
+    pub direction_deg: f64,
     /// Moving particles (substrate + slider + control body).
     pub particles: usize,
     /// Substrate spheres left out by `--prune`.
@@ -161,6 +173,12 @@ impl DemArgs {
         if !(self.alpha.is_finite() && self.alpha.abs() <= 180.0) {
             bail!("`--alpha`: {}° is outside [-180, 180] degrees", self.alpha);
         }
+        let line = match self.line_deg {
+            Some(l) if !l.is_finite() => bail!("`--line-deg`: {l} is not a finite angle"),
+            Some(l) => deg_to_rad(l),
+            None => contact_line_direction(&scene, scene.slider.theta, &MapParams::default()).angle,
+        };
+        let direction = line + deg_to_rad(self.alpha);
         positive(self.equilibrate_us, "--equilibrate-us")?;
         positive(self.sample_us, "--sample-us")?;
         if let Some(dt) = self.dt_us {
@@ -174,7 +192,7 @@ impl DemArgs {
         let p = SimParams {
             dt: self.dt_us.map(us_to_s),
             load: mn_to_n(self.load_mn),
-            alpha: deg_to_rad(self.alpha),
+            alpha: direction,
             equilibrate_time: us_to_s(self.equilibrate_us),
             relax_time: us_to_s(relax_us),
             slide_time: us_to_s(slide_us),
@@ -203,6 +221,17 @@ impl DemArgs {
             s_to_us(sim.dt),
             sim.particles(),
             prepared.start.pruned
+        );
+        eprintln!(
+            "pulling direction: {:.3}° from x = contact line {:.3}° ({}) + α {:.3}°",
+            rad_to_deg(sim.params.alpha),
+            rad_to_deg(sim.params.alpha) - self.alpha,
+            if self.line_deg.is_some() {
+                "given by --line-deg"
+            } else {
+                "moiré estimate"
+            },
+            self.alpha
         );
         if sim.dt > prepared.stable.dt_crit {
             eprintln!(
@@ -265,7 +294,11 @@ impl DemArgs {
         write_or_stdout(self.out.as_deref(), &csv_text(&samples)?)?;
         res?;
         let steps = sim.state.step - first;
+        let direction_deg = rad_to_deg(sim.params.alpha);
         let info = RunInfo {
+            alpha_deg: self.alpha,
+            line_deg: direction_deg - self.alpha,
+            direction_deg,
             dt_us: s_to_us(sim.dt),
             dt_crit_us: s_to_us(prepared.stable.dt_crit),
             dt_crit_mode: prepared.stable.mode,
