@@ -6,35 +6,48 @@ use super::SolverParams;
 use crate::contact::Hertz;
 use crate::error::SceneError;
 
-/// Pairs sorted by their touch height (relative to z_ref), descending, so the pairs active at
-/// height ζ are a prefix. Build once per pair set (and tilt), solve for many loads.
+/// The pairs of one pair set at fixed tilt, prepared for the root find. Build once per pair set
+/// (and tilt), solve for many loads.
 pub(crate) struct ZRoot {
-    /// `(c, r2, u_t)`: touch height relative to z_ref (m), lateral distance² (m²), touch gap (m).
-    act: Vec<(f64, f64, f64)>,
+    /// `(c, r2, u_t)`: touch height relative to z_ref (m), lateral distance² (m²), touch gap (m),
+    /// in pair order (unsorted).
+    all: Vec<(f64, f64, f64)>,
+    /// Highest touch height (m): the top of the first bracket.
+    c_max: f64,
     k: f64,
     two_r: f64,
 }
 
+/// The pairs of `all` that touch below ζ = `floor`, sorted by touch height, descending, so the
+/// pairs active at any ζ ≥ `floor` are a prefix. O(P + A log A) for A selected pairs.
+fn select(all: &[(f64, f64, f64)], floor: f64, act: &mut Vec<(f64, f64, f64)>) {
+    act.clear();
+    act.extend(all.iter().copied().filter(|p| p.0 > floor));
+    act.sort_by(|a, b| b.0.total_cmp(&a.0));
+}
+
 impl ZRoot {
-    /// Sorts the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m). O(P log P).
+    /// Takes the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m). O(P).
     pub fn new(pairs: &[BodyPair], q12: [f64; 2], two_r: f64, hertz: &Hertz) -> ZRoot {
-        let mut act: Vec<(f64, f64, f64)> = pairs
+        let all: Vec<(f64, f64, f64)> = pairs
             .iter()
             .map(|p| (p.c - q12[0] * p.g[0] - q12[1] * p.g[1], p.r2, p.ut))
             .collect();
-        act.sort_by(|a, b| b.0.total_cmp(&a.0));
+        let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
         ZRoot {
-            act,
+            all,
+            c_max,
             k: hertz.k(),
             two_r,
         }
     }
 
-    /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m). O(active pairs).
-    fn eval(&self, zeta: f64) -> (f64, f64) {
+    /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m) over `act` (sorted, descending, as from
+    /// [`select`]). O(active pairs).
+    fn eval(&self, act: &[(f64, f64, f64)], zeta: f64) -> (f64, f64) {
         let mut f = 0.0;
         let mut df = 0.0;
-        for &(c, r2, ut) in &self.act {
+        for &(c, r2, ut) in act {
             if c <= zeta {
                 break;
             }
@@ -49,27 +62,32 @@ impl ZRoot {
     ///
     /// ΣF_z is non-increasing in ζ, so Newton's method inside a shrinking bracket converges from
     /// any start; bisection takes over whenever a Newton step leaves the bracket (grazing contacts
-    /// where dF/dz → 0). Typically < 15 iterations of O(active pairs) each.
+    /// where dF/dz → 0). Typically < 15 iterations of O(active pairs) each, after one O(P) pass
+    /// per bracket doubling that keeps only the pairs above the lower bracket (the others cannot
+    /// touch at the root, since ΣF_z is non-increasing): no sort of all P candidate pairs.
     pub fn solve(
         &self,
         load: f64,
         hertz: &Hertz,
         params: &SolverParams,
     ) -> Result<(f64, usize), SceneError> {
-        if self.act.is_empty() {
+        if self.all.is_empty() {
             return Err(SceneError::NoEquilibrium(
                 "no substrate sphere lies under any slider sphere (slider off the substrate?)"
                     .into(),
             ));
         }
-        let z_hi0 = self.act[0].0;
+        let z_hi0 = self.c_max;
         let mut z_hi = z_hi0;
-        // Lower bracket: step down by the overlap one on-top contact needs for W, doubling.
+        // Lower bracket: step down by the overlap one on-top contact needs for W, doubling. Only
+        // the pairs touching above z_lo can carry load anywhere in the bracket [z_lo, z_hi].
         let mut step = hertz.overlap_for_force(load).max(1e-30 * self.two_r);
         let mut z_lo = z_hi - step;
         let mut iters = 0;
+        let mut act = Vec::new();
         loop {
-            let (f, _) = self.eval(z_lo);
+            select(&self.all, z_lo, &mut act);
+            let (f, _) = self.eval(&act, z_lo);
             if f >= load {
                 break;
             }
@@ -88,7 +106,7 @@ impl ZRoot {
         let w23 = load.powf(2.0 / 3.0);
         loop {
             iters += 1;
-            let (f, df) = self.eval(z);
+            let (f, df) = self.eval(&act, z);
             let g = f - load;
             if g.abs() <= tol {
                 return Ok((z, iters));
@@ -117,8 +135,8 @@ impl ZRoot {
             if z_hi - z_lo <= 4.0 * f64::EPSILON * scale || iters > params.max_iter {
                 // Bracket exhausted at machine precision: accept the better end point if it
                 // balances the load to 1e-9 (the documented guarantee), else fail loudly.
-                let (fl, _) = self.eval(z_lo);
-                let (fh, _) = self.eval(z_hi);
+                let (fl, _) = self.eval(&act, z_lo);
+                let (fh, _) = self.eval(&act, z_hi);
                 let (zb, fb) = if (fl - load).abs() <= (fh - load).abs() {
                     (z_lo, fl)
                 } else {
