@@ -1,18 +1,10 @@
 //! `superlube equilibrate` and `superlube slide` end to end on tiny scenes: files, columns, JSON
 //! keys, agreement with the surrogate, resume, bad input.
 
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
+
 use std::path::PathBuf;
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_superlube"))
-}
-
-fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("superlube-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 const TINY: [&str; 8] = [
     "--pattern",
@@ -43,11 +35,7 @@ fn equilibrate_writes_series_and_summary_matching_the_surrogate() {
         .arg(&js)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("stable step estimate"), "{err}");
     let text = std::fs::read_to_string(&csv).unwrap();
@@ -104,11 +92,7 @@ fn slide_summary_and_resume() {
     };
     let (csv, js) = (d.join("a.csv"), d.join("a.json"));
     let out = args(&csv, &js).output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let j = json(&js);
     for k in [
         "friction_mN",
@@ -140,11 +124,7 @@ fn slide_summary_and_resume() {
     let mut resumed = args(&csv2, &js2);
     resumed.arg("--checkpoint").arg(&ck).arg("--resume");
     let out = resumed.output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     assert!(String::from_utf8_lossy(&out.stderr).contains("resumed at step"));
     assert_eq!(
         std::fs::read_to_string(&csv).unwrap(),
@@ -169,11 +149,7 @@ fn xyz_snapshots_are_extended_xyz_frames() {
         .arg(d.join("eq.json"))
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let steps = json(&d.join("eq.json"))["steps"].as_u64().unwrap();
     let text = std::fs::read_to_string(&xyz).unwrap();
     let lines: Vec<&str> = text.lines().collect();
@@ -191,16 +167,6 @@ fn xyz_snapshots_are_extended_xyz_frames() {
         assert_eq!(l.split_whitespace().count(), 6, "{l}");
     }
     std::fs::remove_dir_all(&d).ok();
-}
-
-fn fails_naming(args: &[&str], field: &str) {
-    let out = bin().args(args).output().unwrap();
-    assert!(!out.status.success(), "{args:?} should fail");
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains(field),
-        "{args:?}: `{err}` does not name {field}"
-    );
 }
 
 /// α is measured from the contact line, as in `superlube corrugation`: the moiré estimate by
@@ -221,11 +187,7 @@ fn alpha_is_measured_from_the_contact_line() {
             .arg(&js)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert_ok(&out);
         let j = json(&js);
         assert_eq!(j["alpha_deg"].as_f64().unwrap(), 90.0);
         (

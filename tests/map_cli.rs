@@ -1,16 +1,7 @@
 //! `superlube landscape` and `superlube corrugation` end to end: columns, files, bad input.
 
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_superlube"))
-}
-
-fn tmpdir(name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("superlube-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
 
 #[test]
 fn landscape_writes_csv_and_png() {
@@ -34,11 +25,7 @@ fn landscape_writes_csv_and_png() {
         .arg(&png)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     assert_eq!(lines.next().unwrap(), "x_um,y_um,dz_nm");
@@ -77,11 +64,7 @@ fn corrugation_columns_and_contact_line_result() {
         ])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let mut lines = text.lines();
     assert!(lines
@@ -96,16 +79,6 @@ fn corrugation_columns_and_contact_line_result() {
     assert_eq!(rows[1][0], 90.0);
     // Along the contact line: tens of nm; across it: below 2 nm.
     assert!(rows[0][2] > 50.0 && rows[1][2] < 2.0, "{rows:?}");
-}
-
-fn fails_naming(args: &[&str], field: &str) {
-    let out = bin().args(args).output().unwrap();
-    assert!(!out.status.success(), "{args:?} should fail");
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains(field),
-        "{args:?}: `{err}` does not name {field}"
-    );
 }
 
 #[test]

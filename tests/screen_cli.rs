@@ -1,10 +1,7 @@
 //! `superlube screen` end to end: CSV header, reference row, per-contact list, bad input.
 
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_superlube"))
-}
+mod common;
+use common::{assert_ok, bin, fails_naming};
 
 const HEADER: &str = "pattern,theta_deg,load_mN,contacts,p_max_GPa,z_um,coating_failed";
 
@@ -22,11 +19,7 @@ fn reference_row_and_header() {
         ])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let mut lines = text.lines();
     assert!(lines.next().unwrap().starts_with(&format!("{HEADER},")));
@@ -51,11 +44,7 @@ fn default_is_square_tri_and_contacts_out() {
         .arg(&cts)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = std::fs::read_to_string(&csv).unwrap();
     let row: Vec<String> = text
         .lines()
@@ -78,17 +67,6 @@ fn default_is_square_tri_and_contacts_out() {
         .sum();
     assert!(f > 2000.0, "{f} µN"); // normal forces ≥ vertical share of 2.1 mN
     std::fs::remove_dir_all(&dir).ok();
-}
-
-fn fails_naming(args: &[&str], field: &str) {
-    let out = bin().args(args).output().unwrap();
-    assert!(!out.status.success(), "{args:?} should fail");
-    assert_ne!(out.status.code(), Some(0));
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains(field),
-        "{args:?}: `{err}` does not name {field}"
-    );
 }
 
 #[test]
