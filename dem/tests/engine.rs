@@ -36,38 +36,55 @@ fn quiet() -> impl FnMut(&dem::protocol::Progress) {
     |_| {}
 }
 
+/// Equilibrates `scene` from `start` and asserts the DEM equilibrium matches the surrogate's:
+/// same contact number, P_max within 2 %, the load carried by the contacts within 2 %.
+fn assert_settles_on_the_surrogate(scene: &Scene, p: SimParams, start: Start, label: &str) {
+    let Prepared {
+        mut sim,
+        start: surrogate,
+        ..
+    } = prepare(scene, p, start, None).unwrap();
+    let mut samples = Vec::new();
+    run(
+        &mut sim,
+        RunKind::Equilibrate,
+        &RunIo::default(),
+        &mut samples,
+        &mut quiet(),
+    )
+    .unwrap();
+    let o = sim.observe();
+    eprintln!(
+        "{label}: DEM {} contacts, P_max {} GPa; surrogate {} contacts, {} GPa",
+        o.contacts,
+        o.p_max * 1e-9,
+        surrogate.contacts,
+        surrogate.p_max * 1e-9
+    );
+    assert_eq!(o.contacts, surrogate.contacts, "{label}");
+    assert!(
+        (o.p_max / surrogate.p_max - 1.0).abs() < 0.02,
+        "{label}: DEM {} vs surrogate {}",
+        o.p_max,
+        surrogate.p_max
+    );
+    assert!(
+        (o.contact_fz / sim.params.load - 1.0).abs() < 0.02,
+        "{label}: load not carried"
+    );
+}
+
 #[test]
 fn equilibrium_agrees_with_the_surrogate() {
     for (pattern, theta) in [("tri-tri", 0.0), ("square-tri", 0.0), ("tri-tri", 30.0)] {
         let scene = small(pattern, 12.0, theta);
         let p = params(&scene);
-        let Prepared { mut sim, start, .. } = prepare(&scene, p, Start::Surrogate, None).unwrap();
-        let mut samples = Vec::new();
-        run(
-            &mut sim,
-            RunKind::Equilibrate,
-            &RunIo::default(),
-            &mut samples,
-            &mut quiet(),
-        )
-        .unwrap();
-        let o = sim.observe();
-        eprintln!(
-            "{pattern} {theta}°: DEM {} contacts, P_max {} GPa; surrogate {} contacts, {} GPa",
-            o.contacts,
-            o.p_max * 1e-9,
-            start.contacts,
-            start.p_max * 1e-9
+        assert_settles_on_the_surrogate(
+            &scene,
+            p,
+            Start::Surrogate,
+            &format!("{pattern} {theta}°"),
         );
-        assert_eq!(o.contacts, start.contacts, "{pattern} {theta}°");
-        assert!(
-            (o.p_max / start.p_max - 1.0).abs() < 0.02,
-            "{pattern} {theta}°: DEM {} vs surrogate {}",
-            o.p_max,
-            start.p_max
-        );
-        // and the load is carried
-        assert!((o.contact_fz / sim.params.load - 1.0).abs() < 0.02);
     }
 }
 
@@ -80,26 +97,8 @@ fn equilibrium_from_a_gap_reaches_the_surrogate_answer() {
             equilibrate_time: 8e-6,
             ..params(&scene)
         };
-        let Prepared { mut sim, start, .. } = prepare(&scene, p, Start::Gap(20e-9), None).unwrap();
-        let mut samples = Vec::new();
-        run(
-            &mut sim,
-            RunKind::Equilibrate,
-            &RunIo::default(),
-            &mut samples,
-            &mut quiet(),
-        )
-        .unwrap();
-        let o = sim.observe();
-        eprintln!(
-            "from gap, {pattern} {theta}°: DEM {} contacts, P_max {} GPa; surrogate {}, {} GPa",
-            o.contacts,
-            o.p_max * 1e-9,
-            start.contacts,
-            start.p_max * 1e-9
-        );
-        assert_eq!(o.contacts, start.contacts, "{pattern} {theta}°");
-        assert!((o.p_max / start.p_max - 1.0).abs() < 0.02);
+        let label = format!("from gap, {pattern} {theta}°");
+        assert_settles_on_the_surrogate(&scene, p, Start::Gap(20e-9), &label);
     }
 }
 
