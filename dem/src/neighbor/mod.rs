@@ -2,8 +2,8 @@
 //! list with skin ([`build_pairs`]), rebuilt only when some particle has moved more than half
 //! the skin ([`needs_rebuild`]). Contact history is carried across rebuilds keyed by (i, j).
 
-pub mod cell_list;
 pub mod pairs;
 
-pub use cell_list::CellList;
 pub use pairs::{build_pairs, needs_rebuild};
+/// The cell list is shared with the quasi-static pair search.
+pub use surrogate::contact::CellList;

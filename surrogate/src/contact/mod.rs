@@ -1,10 +1,12 @@
 //! Contact mechanics between slider and substrate spheres: the Hertz normal law and the search
-//! for candidate sphere pairs ([`BvhSearch`], parry3d; [`GridSearch`], a uniform bucket grid).
+//! for candidate sphere pairs ([`BvhSearch`], parry3d; [`GridSearch`], a uniform bucket grid on a [`CellList`]).
 
 mod bvh_search;
 mod candidates;
+mod cell_list;
 mod hertz;
 
 pub use bvh_search::BvhSearch;
 pub use candidates::{CandidatePair, CandidateSearch, GridSearch};
+pub use cell_list::CellList;
 pub use hertz::Hertz;

@@ -1,4 +1,5 @@
-//! [`CellList`]: uniform 2-D bucket grid over the substrate spheres' (x, y).
+//! [`CellList`]: uniform 2-D bucket grid over the substrate spheres' (x, y), shared by the
+//! quasi-static pair search ([`super::GridSearch`]) and the DEM neighbour list.
 
 /// Uniform grid with cell size ≥ the list cutoff; CSR storage (`start`, `items`). Build O(n),
 /// query O(1) per point (3×3 cells).
@@ -60,26 +61,31 @@ impl CellList {
 
     /// Calls `f(index)` for every binned point in the 3×3 cells around `p` (superset of the
     /// points within one cell size of `p`).
-    pub fn for_near(&self, p: [f64; 2], mut f: impl FnMut(u32)) {
+    pub fn for_near(&self, p: [f64; 2], f: impl FnMut(u32)) {
+        self.for_within_cells(p, 1, f);
+    }
+
+    /// Calls `f(index)` for every binned point in the (2·span + 1)² cells around `p` (superset of
+    /// the points within `span` cell sizes of `p`), row by row, in binning order within a cell.
+    pub fn for_within_cells(&self, p: [f64; 2], span: i64, mut f: impl FnMut(u32)) {
         let fi = ((p[0] - self.origin[0]) / self.cell).floor();
         let fj = ((p[1] - self.origin[1]) / self.cell).floor();
         if !(fi.is_finite() && fj.is_finite()) {
             return;
         }
         let (ci, cj) = (fi as i64, fj as i64);
-        for j in cj - 1..=cj + 1 {
-            if j < 0 || j >= self.ny as i64 {
-                continue;
-            }
-            for i in ci - 1..=ci + 1 {
-                if i < 0 || i >= self.nx as i64 {
-                    continue;
-                }
+        for j in (cj - span).max(0)..=(cj + span).min(self.ny as i64 - 1) {
+            for i in (ci - span).max(0)..=(ci + span).min(self.nx as i64 - 1) {
                 let c = j as usize * self.nx + i as usize;
                 for &n in &self.items[self.start[c] as usize..self.start[c + 1] as usize] {
                     f(n);
                 }
             }
         }
+    }
+
+    /// Cell size (m).
+    pub fn cell(&self) -> f64 {
+        self.cell
     }
 }
