@@ -228,3 +228,53 @@ fn bad_input_names_the_field() {
     ]);
     fails_naming(&a, "stable");
 }
+
+/// A commensurate slider resting in the hollows of the substrate (tri-tri, θ = 0, slider sites
+/// over the triangle centroids) is held by the interlocking: the slowly loading spring cannot drag
+/// it within the window, so the run is reported `locked_in`, the spring force rising at K0·v.
+#[test]
+fn commensurate_slider_in_the_hollows_locks_in() {
+    let d = tmpdir("lockin");
+    let js = d.join("lock.json");
+    let out = bin()
+        .args([
+            "slide",
+            "--pattern",
+            "tri-tri",
+            "--theta",
+            "0",
+            "--slider-radius-um",
+            "6",
+            "--substrate-um",
+            "40x30",
+            "--offset-um",
+            "1.5,0.8660254",
+            "--load-mn",
+            "0.05",
+            "--rigid-z",
+            "--prune",
+            "--speed-m-s",
+            "0.01",
+            "--equilibrate-us",
+            "1",
+            "--relax-us",
+            "1",
+            "--slide-us",
+            "10",
+        ])
+        .arg("--out")
+        .arg(d.join("lock.csv"))
+        .arg("--json")
+        .arg(&js)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let j = json(&js);
+    let ratio = j["advance_ratio"].as_f64().unwrap();
+    let slope = j["force_slope_ratio"].as_f64().unwrap();
+    assert_eq!(j["locked_in"], serde_json::Value::Bool(true), "{j}");
+    assert!(ratio.abs() < 0.1, "advance ratio {ratio}");
+    assert!((slope - 1.0).abs() < 0.1, "force slope / K0·v = {slope}");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("LOCKED IN"));
+    std::fs::remove_dir_all(&d).ok();
+}
