@@ -349,3 +349,42 @@ fn lock_in_is_detected() {
     assert!(!s.locked_in);
     assert!((s.advance_ratio - 1.0).abs() < 0.05);
 }
+
+/// Leaving out the substrate spheres the slider can never reach changes nothing: the sliding time
+/// series with and without pruning are identical to the last bit.
+#[test]
+fn pruning_the_substrate_is_exact() {
+    let scene = small("square-tri", 9.0, 10.2);
+    let series = |prune: bool| {
+        let p = SimParams {
+            prune_substrate: prune,
+            rigid_z: true,
+            relax_time: 0.3e-6,
+            slide_time: 1.5e-6,
+            ..slide_params(&scene)
+        };
+        let Prepared { mut sim, start, .. } = prepare(&scene, p, Start::Surrogate, None).unwrap();
+        let mut samples = Vec::new();
+        run(
+            &mut sim,
+            RunKind::Slide,
+            &RunIo::default(),
+            &mut samples,
+            &mut |_| {},
+        )
+        .unwrap();
+        (samples, start.pruned)
+    };
+    let (full, none_pruned) = series(false);
+    let (pruned, n_pruned) = series(true);
+    assert_eq!(none_pruned, 0);
+    assert!(
+        n_pruned > 0,
+        "nothing was pruned: the test would prove nothing"
+    );
+    assert!(full.iter().any(|s| s.contacts > 0));
+    assert_eq!(full.len(), pruned.len());
+    for (a, b) in full.iter().zip(&pruned) {
+        assert_eq!(format!("{a:?}"), format!("{b:?}"));
+    }
+}
