@@ -32,6 +32,20 @@ fn params(scene: &Scene) -> SimParams {
     }
 }
 
+/// Runs the slide protocol of `sim` to the end and returns its samples.
+fn run_slide(sim: &mut dem::Sim) -> Vec<Sample> {
+    let mut samples = Vec::new();
+    run(
+        sim,
+        RunKind::Slide,
+        &RunIo::default(),
+        &mut samples,
+        &mut |_| {},
+    )
+    .unwrap();
+    samples
+}
+
 fn quiet() -> impl FnMut(&dem::protocol::Progress) {
     |_| {}
 }
@@ -204,15 +218,7 @@ fn results_do_not_depend_on_the_thread_count() {
             let mut sim = prepare(&scene, slide_params(&scene), Start::Surrogate, None)
                 .unwrap()
                 .sim;
-            let mut samples = Vec::new();
-            run(
-                &mut sim,
-                RunKind::Slide,
-                &RunIo::default(),
-                &mut samples,
-                &mut |_| {},
-            )
-            .unwrap();
+            let samples = run_slide(&mut sim);
             (sim.state, samples)
         })
     };
@@ -233,15 +239,7 @@ fn checkpoint_and_resume_are_bit_identical() {
     };
     // uninterrupted
     let mut a = fresh();
-    let mut sa = Vec::new();
-    run(
-        &mut a,
-        RunKind::Slide,
-        &RunIo::default(),
-        &mut sa,
-        &mut |_| {},
-    )
-    .unwrap();
+    let sa = run_slide(&mut a);
     // interrupted: the only checkpoint is written at 60 % of the run, then a new process
     // (a fresh Sim) resumes from it
     let total = a.state.step;
@@ -296,15 +294,7 @@ fn steady_sliding_force_is_mu_w() {
         Some(Friction::Constant(Constant { mu })),
     )
     .unwrap();
-    let mut samples = Vec::new();
-    run(
-        &mut sim,
-        RunKind::Slide,
-        &RunIo::default(),
-        &mut samples,
-        &mut |_| {},
-    )
-    .unwrap();
+    let samples = run_slide(&mut sim);
     let s = dem::protocol::slide_summary(&samples, &p, sim.state.step, 0.0);
     eprintln!(
         "steady sliding: F/W = {} (μ = {mu}), contacts {}",
@@ -364,15 +354,7 @@ fn pruning_the_substrate_is_exact() {
             ..slide_params(&scene)
         };
         let Prepared { mut sim, start, .. } = prepare(&scene, p, Start::Surrogate, None).unwrap();
-        let mut samples = Vec::new();
-        run(
-            &mut sim,
-            RunKind::Slide,
-            &RunIo::default(),
-            &mut samples,
-            &mut |_| {},
-        )
-        .unwrap();
+        let samples = run_slide(&mut sim);
         (samples, start.pruned)
     };
     let (full, none_pruned) = series(false);

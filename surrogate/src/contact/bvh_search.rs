@@ -1,6 +1,7 @@
 //! [`BvhSearch`]: candidate pairs from a parry3d bounding-volume hierarchy over the substrate
 //! spheres.
 
+use super::candidates::push_if_within;
 use super::{CandidatePair, CandidateSearch};
 use parry3d_f64::bounding_volume::Aabb;
 use parry3d_f64::math::Vector;
@@ -70,18 +71,7 @@ impl CandidateSearch for BvhSearch {
             );
             local.clear();
             for k in self.bvh.intersect_aabb(&query) {
-                let q = self.spheres[k as usize];
-                let dx = q[0] - p[0];
-                let dy = q[1] - p[1];
-                let r2 = dx * dx + dy * dy;
-                if r2 < r2max {
-                    local.push(CandidatePair {
-                        slider: si as u32,
-                        substrate: k,
-                        r2,
-                        h: q[2],
-                    });
-                }
+                push_if_within(&mut local, si, *p, k, self.spheres[k as usize], r2max);
             }
             local.sort_by_key(|c| c.substrate);
             out.extend_from_slice(&local);

@@ -23,6 +23,30 @@ pub trait CandidateSearch: Sync {
     fn pairs(&self, slider_xy: &[[f64; 2]], reach: f64, out: &mut Vec<CandidatePair>);
 }
 
+/// Appends the pair (slider `si` at `p`, substrate `k` at `q = [x, y, h]`) to `out` if their
+/// lateral distance² is below `r2max` (m²).
+#[inline]
+pub(crate) fn push_if_within(
+    out: &mut Vec<CandidatePair>,
+    si: usize,
+    p: [f64; 2],
+    k: u32,
+    q: [f64; 3],
+    r2max: f64,
+) {
+    let dx = q[0] - p[0];
+    let dy = q[1] - p[1];
+    let r2 = dx * dx + dy * dy;
+    if r2 < r2max {
+        out.push(CandidatePair {
+            slider: si as u32,
+            substrate: k,
+            r2,
+            h: q[2],
+        });
+    }
+}
+
 /// Uniform bucket grid over the substrate spheres. Build O(n); query O(1) per slider sphere.
 #[derive(Debug, Clone)]
 pub struct GridSearch {
@@ -54,18 +78,7 @@ impl CandidateSearch for GridSearch {
         for (si, p) in slider_xy.iter().enumerate() {
             local.clear();
             self.cells.for_within_cells(*p, span, |k| {
-                let q = self.spheres[k as usize];
-                let dx = q[0] - p[0];
-                let dy = q[1] - p[1];
-                let r2 = dx * dx + dy * dy;
-                if r2 < r2max {
-                    local.push(CandidatePair {
-                        slider: si as u32,
-                        substrate: k,
-                        r2,
-                        h: q[2],
-                    });
-                }
+                push_if_within(&mut local, si, *p, k, self.spheres[k as usize], r2max)
             });
             local.sort_by_key(|c| c.substrate);
             out.extend_from_slice(&local);
