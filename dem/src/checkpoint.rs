@@ -16,36 +16,22 @@ trait Bin: Sized {
     fn put(&self, w: &mut Vec<u8>);
     fn get(r: &mut &[u8]) -> Option<Self>;
 }
-impl Bin for f64 {
-    fn put(&self, w: &mut Vec<u8>) {
-        w.extend_from_slice(&self.to_le_bytes());
-    }
-    fn get(r: &mut &[u8]) -> Option<Self> {
-        let (a, b) = r.split_at_checked(8)?;
-        *r = b;
-        Some(f64::from_le_bytes(a.try_into().ok()?))
-    }
+/// Little-endian fixed-size numbers.
+macro_rules! bin_le {
+    ($($t:ty),*) => {$(
+        impl Bin for $t {
+            fn put(&self, w: &mut Vec<u8>) {
+                w.extend_from_slice(&self.to_le_bytes());
+            }
+            fn get(r: &mut &[u8]) -> Option<Self> {
+                let (a, b) = r.split_at_checked(std::mem::size_of::<$t>())?;
+                *r = b;
+                Some(<$t>::from_le_bytes(a.try_into().ok()?))
+            }
+        }
+    )*};
 }
-impl Bin for u64 {
-    fn put(&self, w: &mut Vec<u8>) {
-        w.extend_from_slice(&self.to_le_bytes());
-    }
-    fn get(r: &mut &[u8]) -> Option<Self> {
-        let (a, b) = r.split_at_checked(8)?;
-        *r = b;
-        Some(u64::from_le_bytes(a.try_into().ok()?))
-    }
-}
-impl Bin for u32 {
-    fn put(&self, w: &mut Vec<u8>) {
-        w.extend_from_slice(&self.to_le_bytes());
-    }
-    fn get(r: &mut &[u8]) -> Option<Self> {
-        let (a, b) = r.split_at_checked(4)?;
-        *r = b;
-        Some(u32::from_le_bytes(a.try_into().ok()?))
-    }
-}
+bin_le!(f64, u64, u32);
 impl Bin for bool {
     fn put(&self, w: &mut Vec<u8>) {
         w.push(*self as u8);

@@ -198,7 +198,7 @@ pub fn run(args: Args) -> Result<()> {
         for (w, r) in loads.iter().zip(rs) {
             failures += r.is_err() as usize;
             // Ranges are computed as start + k·step: round off the binary noise (1e-9 deg, mN).
-            let clean = |v: f64| (v * 1e9).round() / 1e9;
+            let clean = crate::output::clean;
             rows.push(row(&scene.pattern, clean(*t), clean(*w), r, model));
         }
     }

@@ -316,22 +316,15 @@ impl Sim {
             }
         }
         f[2] -= p.load;
-        let n = s.sl_x.len() as f64;
-        let mz = if rigid {
-            self.m_cl + n * m_s
-        } else {
-            self.m_cl
-        };
+        let mz = z_mass(self.m_cl, m_s, s.sl_x.len(), rigid);
         f[2] -= mz * cv[2] * inv_tau;
         let vr = if rel { s.support_v } else { [0.0; 2] };
         f[0] -= self.m_cl * (cv[0] - vr[0]) * inv_tau;
         f[1] -= self.m_cl * (cv[1] - vr[1]) * inv_tau;
         if s.spring_on {
-            let (sa, ca) = p.alpha.sin_cos();
-            let ax = s.support[0] - p.support_lead * ca;
-            let ay = s.support[1] - p.support_lead * sa;
-            f[0] += p.k0 * (ax - cx[0]);
-            f[1] += p.k0 * (ay - cx[1]);
+            let d = spring_stretch(p, s.support, cx);
+            f[0] += p.k0 * d[0];
+            f[1] += p.k0 * d[1];
         }
         s.cl_f = f;
     }
@@ -360,8 +353,7 @@ impl Sim {
                     kick(&mut v[2], f[2], h, m);
                 }
             });
-        let n = s.sl_x.len() as f64;
-        let mz = if rigid { self.m_cl + n * m } else { self.m_cl };
+        let mz = z_mass(self.m_cl, m, s.sl_x.len(), rigid);
         if s.held_xy {
             s.cl_v[0] = 0.0;
             s.cl_v[1] = 0.0;
@@ -518,12 +510,10 @@ impl Sim {
         let p = &self.params;
         let s = &mut self.state;
         if s.spring_on {
-            let (sa, ca) = p.alpha.sin_cos();
-            let ax = s.support[0] - p.support_lead * ca;
-            let ay = s.support[1] - p.support_lead * sa;
-            // spring is at rest length when attached: adds 0 (kept for clarity)
-            s.cl_f[0] += p.k0 * (ax - s.cl_x[0]);
-            s.cl_f[1] += p.k0 * (ay - s.cl_x[1]);
+            // the spring is at rest length when attached: adds 0 up to rounding
+            let d = spring_stretch(p, s.support, s.cl_x);
+            s.cl_f[0] += p.k0 * d[0];
+            s.cl_f[1] += p.k0 * d[1];
         }
     }
 
@@ -575,12 +565,7 @@ impl Sim {
             let vz = if p.rigid_z { 0.0 } else { v[2] * v[2] };
             e += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + vz);
         }
-        let n = s.sl_x.len() as f64;
-        let mz = if p.rigid_z {
-            self.m_cl + n * m
-        } else {
-            self.m_cl
-        };
+        let mz = z_mass(self.m_cl, m, s.sl_x.len(), p.rigid_z);
         e += 0.5 * self.m_cl * (s.cl_v[0].powi(2) + s.cl_v[1].powi(2))
             + 0.5 * mz * s.cl_v[2].powi(2);
         for o in &self.out {
@@ -601,11 +586,7 @@ impl Sim {
         }
         e += p.load * s.cl_x[2];
         if s.spring_on {
-            let (sa, ca) = p.alpha.sin_cos();
-            let d = [
-                s.support[0] - p.support_lead * ca - s.cl_x[0],
-                s.support[1] - p.support_lead * sa - s.cl_x[1],
-            ];
+            let d = spring_stretch(p, s.support, s.cl_x);
             e += 0.5 * p.k0 * (d[0] * d[0] + d[1] * d[1]);
         }
         e
@@ -620,4 +601,26 @@ impl Sim {
     pub fn mu_at(&self, p0: f64) -> f64 {
         self.model.friction.mu(p0)
     }
+}
+
+/// Mass (kg) that moves with the control layer in z: the layer alone, or with `rigid_z` the layer
+/// plus its `n` slider spheres of mass `m_s`.
+#[inline]
+fn z_mass(m_cl: f64, m_s: f64, n: usize, rigid_z: bool) -> f64 {
+    if rigid_z {
+        m_cl + n as f64 * m_s
+    } else {
+        m_cl
+    }
+}
+
+/// Pulling-spring stretch (m): the spring's rest anchor (the support moved back by the lead along
+/// α) minus the control layer's centre `cl`, in x and y. The spring force is K0 times this.
+#[inline]
+fn spring_stretch(p: &SimParams, support: [f64; 2], cl: [f64; 3]) -> [f64; 2] {
+    let (sa, ca) = p.alpha.sin_cos();
+    [
+        support[0] - p.support_lead * ca - cl[0],
+        support[1] - p.support_lead * sa - cl[1],
+    ]
 }
