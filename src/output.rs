@@ -1,7 +1,6 @@
 //! Atomic output: every file is written to a temporary sibling and renamed into place, so an
 //! interrupted run never leaves a half-written result.
 
-
 use anyhow::{Context, Result};
 use std::io::Write;
 use std::path::Path;
