@@ -84,15 +84,29 @@ impl Row {
     }
 }
 
+/// Validates one pulling angle α (degrees from the contact line, finite, |α| ≤ 180) and returns
+/// it in radians.
+pub(crate) fn check_alpha(v: f64) -> Result<f64> {
+    if !(v.is_finite() && v.abs() <= 180.0) {
+        bail!("`--alpha`: {v}° is outside [-180, 180] degrees");
+    }
+    Ok(deg_to_rad(v))
+}
+
+/// Validates `--line-deg` (degrees from the substrate x axis, finite) and returns it in radians.
+pub(crate) fn check_line_deg(line_deg: Option<f64>) -> Result<Option<f64>> {
+    match line_deg {
+        Some(l) if !l.is_finite() => bail!("`--line-deg`: {l} is not a finite angle"),
+        l => Ok(l.map(deg_to_rad)),
+    }
+}
+
 /// Parses and validates `--alpha` (degrees, |α| ≤ 180) into radians.
 pub(crate) fn parse_alphas(text: &str) -> Result<Vec<f64>> {
-    let a = parse_list_or_range(text, "--alpha")?;
-    for &v in &a {
-        if v.abs() > 180.0 {
-            bail!("`--alpha`: {v}° is outside [-180, 180] degrees");
-        }
-    }
-    Ok(a.into_iter().map(deg_to_rad).collect())
+    parse_list_or_range(text, "--alpha")?
+        .into_iter()
+        .map(check_alpha)
+        .collect()
 }
 
 /// Path parameters from the distance and step flags (µm).
@@ -116,18 +130,11 @@ pub fn run(args: Args) -> Result<()> {
     let alphas = parse_alphas(&args.alpha)?;
     let (theta, load) = theta_load(args.theta, args.load_mn)?;
     let params = path_params(args.distance_um, args.step_um, args.grid)?;
-    if let Some(l) = args.line_deg {
-        if !l.is_finite() {
-            bail!("`--line-deg`: {l} is not a finite angle");
-        }
-    }
+    let given_line = check_line_deg(args.line_deg)?;
     let scene = args.scene.scene()?;
     let solver = Solver::new(&scene)?;
     let line = contact_line_direction(&scene, theta, &params);
-    let line_angle = match args.line_deg {
-        Some(d) => deg_to_rad(d),
-        None => line.angle,
-    };
+    let line_angle = given_line.unwrap_or(line.angle);
     eprintln!(
         "contact line: {:.3}° from x ({}; moiré estimate {:.3}°{}, line spacing {:.2} µm)",
         rad_to_deg(line_angle),

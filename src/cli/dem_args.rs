@@ -2,6 +2,7 @@
 //! tier): scene → [`dem::prepare`] → [`dem::protocol::run`] (progress bar, checkpoints,
 //! snapshots) → time series and summary files.
 
+use super::corrugation::{check_alpha, check_line_deg};
 use super::SceneArgs;
 use crate::output::{csv_text, write_atomic, write_or_stdout};
 use anyhow::{bail, Context, Result};
@@ -170,15 +171,12 @@ impl DemArgs {
         }
         scene.slider.theta = deg_to_rad(theta);
         positive(self.load_mn, "--load-mn")?;
-        if !(self.alpha.is_finite() && self.alpha.abs() <= 180.0) {
-            bail!("`--alpha`: {}° is outside [-180, 180] degrees", self.alpha);
-        }
-        let line = match self.line_deg {
-            Some(l) if !l.is_finite() => bail!("`--line-deg`: {l} is not a finite angle"),
-            Some(l) => deg_to_rad(l),
+        let alpha = check_alpha(self.alpha)?;
+        let line = match check_line_deg(self.line_deg)? {
+            Some(l) => l,
             None => contact_line_direction(&scene, scene.slider.theta, &MapParams::default()).angle,
         };
-        let direction = line + deg_to_rad(self.alpha);
+        let direction = line + alpha;
         positive(self.equilibrate_us, "--equilibrate-us")?;
         positive(self.sample_us, "--sample-us")?;
         if let Some(dt) = self.dt_us {
