@@ -164,7 +164,7 @@ impl DemArgs {
     /// The scene (with θ applied) and the knobs; `relax_us`/`slide_us`/`speed` only for slide.
     pub fn setup(&self, relax_us: f64, slide_us: f64, speed: f64) -> Result<(Scene, SimParams)> {
         let file = self.scene.scene_file()?;
-        let mut scene = self.scene.scene()?;
+        let mut scene = file.into_scene()?;
         let theta = self.theta.or(file.slider.theta_deg).unwrap_or(0.0);
         if !theta.is_finite() {
             bail!("`--theta`: {theta} must be finite");
