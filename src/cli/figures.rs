@@ -6,7 +6,7 @@ use super::landscape::{
     contact_map_files, fmt_num, landscape_csv, landscape_png, landscape_with_progress, progress,
 };
 use crate::output::{csv_text, write_atomic};
-use crate::plot::{line_plot_area, png_atomic, LinePlot, Series};
+use crate::plot::{stacked_line_plots, LinePlot, Series};
 use anyhow::{bail, Result};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -173,12 +173,7 @@ fn sweep(out: &Path, pattern: &str, theta_step: f64) -> Result<()> {
         )],
         log_y: false,
     };
-    png_atomic(&with_ext(&base, "png"), (1100, 1150), |root| {
-        let panels = root.split_evenly((2, 1));
-        line_plot_area(&panels[0], &contacts)?;
-        line_plot_area(&panels[1], &pmax)?;
-        Ok(())
-    })
+    stacked_line_plots(&with_ext(&base, "png"), (1100, 1150), &[&contacts, &pmax])
 }
 
 fn corrugation(
@@ -274,12 +269,7 @@ fn corrugation(
         hlines: vec![],
         log_y: false,
     };
-    png_atomic(&with_ext(&base, "png"), (1100, 1150), |root| {
-        let panels = root.split_evenly((2, 1));
-        line_plot_area(&panels[0], &c)?;
-        line_plot_area(&panels[1], &f)?;
-        Ok(())
-    })
+    stacked_line_plots(&with_ext(&base, "png"), (1100, 1150), &[&c, &f])
 }
 
 /// Runs `superlube figures`.

@@ -47,6 +47,17 @@ pub fn line_plot(path: &Path, size: (u32, u32), plot: &LinePlot) -> Result<()> {
     png_atomic(path, size, |root| line_plot_area(&root, plot))
 }
 
+/// Draws `panels` stacked top to bottom, equal heights, into the PNG `path` of `size` pixels.
+pub fn stacked_line_plots(path: &Path, size: (u32, u32), panels: &[&LinePlot]) -> Result<()> {
+    png_atomic(path, size, |root| {
+        let areas = root.split_evenly((panels.len(), 1));
+        for (area, plot) in areas.iter().zip(panels) {
+            line_plot_area(area, plot)?;
+        }
+        Ok(())
+    })
+}
+
 /// Draws `plot` into a drawing area (used to stack panels in one PNG).
 pub fn line_plot_area<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,

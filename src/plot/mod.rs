@@ -11,7 +11,7 @@ mod line_plot;
 pub use colormap::viridis;
 pub use contact_map::{contact_map, ContactMapData};
 pub use heat_map::{heat_map, HeatMap};
-pub use line_plot::{line_plot, line_plot_area, LinePlot, Series};
+pub use line_plot::{line_plot, stacked_line_plots, LinePlot, Series};
 
 use anyhow::{Context, Result};
 use std::path::Path;
