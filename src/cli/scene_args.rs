@@ -37,6 +37,14 @@ pub struct SceneArgs {
     /// In-plane offset of the slider centre from the central substrate sphere in µm, `X,Y`.
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub offset_um: Option<String>,
+    /// Slider mount (tilt of the control layer), obeyed by every tier: `locked` (no tilt),
+    /// `free` (tilts with no restoring moment) or `springs` (the study's anti-tilt springs K1
+    /// between opposing halves of the control layer) [default: springs, K1 = 1e6 N/m].
+    #[arg(long, value_name = "MOUNT")]
+    pub tilt: Option<String>,
+    /// Anti-tilt spring stiffness K1 in N/m of `--tilt springs` (study: 1e6).
+    #[arg(long = "tilt-k1-n-m", value_name = "N_M", allow_hyphen_values = true)]
+    pub tilt_k1_n_m: Option<f64>,
 }
 
 impl SceneArgs {
@@ -51,6 +59,8 @@ impl SceneArgs {
             ..Default::default()
         };
         o.slider.radius_um = self.slider_radius_um;
+        o.slider.tilt = self.tilt.clone();
+        o.slider.tilt_k1_n_m = self.tilt_k1_n_m;
         o.substrate.sigma_h_um = self.sigma_h_um;
         o.substrate.seed = self.seed;
         o.material.youngs_gpa = self.youngs_gpa;

@@ -17,4 +17,4 @@ pub mod solver;
 pub mod units;
 
 pub use error::SceneError;
-pub use scene::{Coating, Lattice, Material, Scene, SceneFile, SliderSpec, SubstrateSpec};
+pub use scene::{Coating, Lattice, Material, Mount, Scene, SceneFile, SliderSpec, SubstrateSpec};

@@ -9,6 +9,8 @@
 //! radius_um = 100.0
 //! theta_deg = 0.0
 //! offset_um = [0.0, 0.0]
+//! tilt = "springs"                # locked | free | springs (study: springs, K1 = 1e6 N/m)
+//! tilt_k1_N_m = 1e6
 //! lattice = { kind = "square", spacing_um = 3.0 }
 //! [substrate]
 //! size_um = [364.0, 270.0]
@@ -25,7 +27,7 @@
 //! mu2 = 0.5
 //! ```
 
-use super::{Lattice, Scene};
+use super::{Lattice, Mount, Scene};
 use crate::error::SceneError;
 use crate::units::{deg_to_rad, gcm3_to_kgm3, gpa_to_pa, um_to_m};
 use serde::{Deserialize, Serialize};
@@ -109,6 +111,12 @@ pub struct SliderFile {
     pub theta_deg: Option<f64>,
     /// Disc centre relative to the central substrate sphere (µm).
     pub offset_um: Option<[f64; 2]>,
+    /// Slider mount: `locked` (no tilt), `free` (tilts freely) or `springs` (the study's
+    /// anti-tilt springs between opposing halves of the control layer; default).
+    pub tilt: Option<String>,
+    /// Anti-tilt spring stiffness K1 (N/m) of `tilt = "springs"` (study: 1e6).
+    #[serde(rename = "tilt_k1_N_m")]
+    pub tilt_k1_n_m: Option<f64>,
 }
 
 /// Substrate overrides (user units).
@@ -182,14 +190,36 @@ impl SceneFile {
         })
     }
 
-    /// Reads and parses a TOML file.
+    /// Reads and parses a TOML file. A scene file is a few hundred bytes: anything larger than
+    /// [`SceneFile::MAX_BYTES`] (e.g. `/dev/zero`, a data file given by mistake) is refused after
+    /// reading at most that many bytes, so memory stays bounded whatever the path names.
     pub fn read(path: &std::path::Path) -> Result<SceneFile, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::File {
+        use std::io::Read;
+        let err = |msg: String| SceneError::File {
             path: path.display().to_string(),
-            msg: e.to_string(),
-        })?;
+            msg,
+        };
+        let f = std::fs::File::open(path).map_err(|e| err(e.to_string()))?;
+        if f.metadata().map(|m| m.is_dir()).unwrap_or(false) {
+            return Err(err("is a directory, not a TOML scene file".into()));
+        }
+        let mut bytes = Vec::new();
+        f.take(Self::MAX_BYTES + 1)
+            .read_to_end(&mut bytes)
+            .map_err(|e| err(e.to_string()))?;
+        if bytes.len() as u64 > Self::MAX_BYTES {
+            return Err(err(format!(
+                "larger than {} kB: not a scene file (a scene file is a short TOML text)",
+                Self::MAX_BYTES / 1000
+            )));
+        }
+        let text = String::from_utf8(bytes)
+            .map_err(|_| err("is not UTF-8 text: not a TOML scene file".into()))?;
         Self::from_toml(&text, &path.display().to_string())
     }
+
+    /// Largest scene file accepted by [`SceneFile::read`] (bytes).
+    pub const MAX_BYTES: u64 = 1_000_000;
 
     /// Overlays every field set in `other` on `self` (`other` wins).
     pub fn merge(mut self, other: &SceneFile) -> SceneFile {
@@ -202,6 +232,8 @@ impl SceneFile {
         take!(slider.radius_um);
         take!(slider.theta_deg);
         take!(slider.offset_um);
+        take!(slider.tilt);
+        take!(slider.tilt_k1_n_m);
         take!(substrate.lattice);
         take!(substrate.size_um);
         take!(substrate.sigma_h_um);
@@ -233,6 +265,13 @@ impl SceneFile {
         }
         if let Some(v) = self.slider.offset_um {
             s.slider.offset = v.map(um_to_m);
+        }
+        if self.slider.tilt.is_some() || self.slider.tilt_k1_n_m.is_some() {
+            s.slider.mount = Mount::parse(
+                self.slider.tilt.as_deref().unwrap_or("springs"),
+                self.slider.tilt_k1_n_m,
+                "slider.tilt",
+            )?;
         }
         if let Some(l) = &self.substrate.lattice {
             s.substrate.lattice = l.to_lattice("substrate.lattice")?;
@@ -292,6 +331,27 @@ mod tests {
         assert!((s.slider.theta - 10f64.to_radians()).abs() < 1e-15);
         assert_eq!(s.substrate.lattice, Lattice::square(3e-6));
         assert_eq!(s.pattern, "tri-tri*");
+        assert_eq!(s.slider.mount, Mount::Springs { k1: 1e6 });
+        let f = SceneFile::from_toml("[slider]\ntilt = 'free'\n", "x.toml").unwrap();
+        assert_eq!(f.into_scene().unwrap().slider.mount, Mount::Free);
+        let f = SceneFile::from_toml("[slider]\ntilt_k1_N_m = 2e5\n", "x.toml").unwrap();
+        assert_eq!(
+            f.into_scene().unwrap().slider.mount,
+            Mount::Springs { k1: 2e5 }
+        );
+        let e = SceneFile::from_toml("[slider]\ntilt = 'loose'\n", "x.toml")
+            .unwrap()
+            .into_scene()
+            .unwrap_err();
+        assert!(e.to_string().contains("slider.tilt"), "{e}");
+    }
+
+    #[test]
+    fn dev_zero_and_directories_are_refused() {
+        let e = SceneFile::read(std::path::Path::new("/dev/zero")).unwrap_err();
+        assert!(e.to_string().contains("not a scene file"), "{e}");
+        let e = SceneFile::read(std::path::Path::new("/")).unwrap_err();
+        assert!(e.to_string().contains("directory"), "{e}");
     }
 
     #[test]

@@ -4,10 +4,12 @@
 mod file;
 mod lattice;
 mod material;
+mod mount;
 #[allow(clippy::module_inception)]
 mod scene;
 
 pub use file::{CoatingFile, LatticeFile, MaterialFile, SceneFile, SliderFile, SubstrateFile};
 pub use lattice::Lattice;
 pub use material::{Coating, Material};
+pub use mount::{Mount, STUDY_K1};
 pub use scene::{Scene, SliderSpec, SubstrateSpec, PATTERNS};

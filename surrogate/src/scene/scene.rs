@@ -1,6 +1,6 @@
 //! [`Scene`]: the full description of one slider–substrate pair (SI units).
 
-use super::{Coating, Lattice, Material};
+use super::{Coating, Lattice, Material, Mount};
 use crate::contact::Hertz;
 use crate::error::SceneError;
 use rand::{Rng, SeedableRng};
@@ -20,6 +20,9 @@ pub struct SliderSpec {
     pub theta: f64,
     /// In-plane position of the disc centre relative to the substrate sphere at the origin (m).
     pub offset: [f64; 2],
+    /// How the control layer may tilt (both tiers obey it). Default: the study's anti-tilt
+    /// springs K1 = 10⁶ N/m.
+    pub mount: Mount,
 }
 
 /// The substrate: a rectangle of lattice sites centred on a site at the origin.
@@ -80,6 +83,7 @@ impl Scene {
                 radius: r,
                 theta: 0.0,
                 offset: [0.0, 0.0],
+                mount: Mount::default(),
             },
             substrate: SubstrateSpec {
                 lattice: sb,
@@ -159,6 +163,20 @@ impl Scene {
                 ),
             ));
         }
+        self.slider.mount.validate("slider.tilt")?;
+        if self.slider.radius > 0.5 * lx.min(ly) {
+            return Err(SceneError::invalid(
+                "slider.radius_um",
+                self.slider.radius * um,
+                &format!(
+                    "the slider disc (diameter {} µm) does not fit on the {}x{} µm substrate; \
+                     use a smaller slider or a larger substrate (substrate.size_um)",
+                    2.0 * self.slider.radius * um,
+                    lx * um,
+                    ly * um
+                ),
+            ));
+        }
         let [ox, oy] = self.slider.offset;
         if ox.abs() > 0.5 * lx || oy.abs() > 0.5 * ly {
             return Err(SceneError::invalid(
@@ -174,6 +192,40 @@ impl Scene {
         self.material.validate()?;
         self.coating.validate()?;
         Ok(())
+    }
+
+    /// A warning when the slider disc at its offset hangs over the substrate edge (some slider
+    /// spheres have no substrate under them: edge effects, no longer the periodic interface),
+    /// `None` when it lies wholly over the substrate. Valid scenes may overhang; commands report
+    /// this warning in their log and outputs.
+    pub fn edge_warning(&self) -> Option<String> {
+        let r = self.slider.radius;
+        let [lx, ly] = self.substrate.size;
+        let [ox, oy] = self.slider.offset;
+        let over_x = (ox.abs() + r - 0.5 * lx).max(0.0);
+        let over_y = (oy.abs() + r - 0.5 * ly).max(0.0);
+        if over_x > 0.0 || over_y > 0.0 {
+            Some(format!(
+                "the slider (radius {} µm at offset [{}, {}] µm) hangs {:.3} µm over the edge of \
+                 the {}x{} µm substrate: edge effects, not the periodic interface",
+                r * 1e6,
+                ox * 1e6,
+                oy * 1e6,
+                over_x.max(over_y) * 1e6,
+                lx * 1e6,
+                ly * 1e6
+            ))
+        } else {
+            None
+        }
+    }
+
+    /// Rotational stiffness tensor (N·m/rad) of the slider mount at rotation `theta` (rad):
+    /// [`Mount::tilt_stiffness`] of the slider's sites. Zero for `free` and `locked`.
+    pub fn tilt_stiffness_at(&self, theta: f64) -> [[f64; 2]; 2] {
+        self.slider
+            .mount
+            .tilt_stiffness(&self.slider_sites_local(), theta)
     }
 
     /// Hertz law of one slider–substrate sphere pair.
@@ -266,10 +318,36 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("slider.offset_um"));
+        let mut s = Scene::preset("tri-tri").unwrap();
+        s.substrate.size = [2e-6, 2e-6];
+        s.slider.radius = 15e-6;
+        let e = s.validate().unwrap_err().to_string();
+        assert!(
+            e.contains("slider.radius_um") && e.contains("does not fit"),
+            "{e}"
+        );
+        let mut s = Scene::preset("tri-tri").unwrap();
+        s.slider.mount = Mount::Springs { k1: f64::NAN };
+        assert!(s
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("slider.tilt_k1_N_m"));
         assert!(Scene::preset("hex-tri")
             .unwrap_err()
             .to_string()
             .contains("pattern"));
+    }
+
+    #[test]
+    fn edge_warning_only_when_overhanging() {
+        let mut s = Scene::preset("tri-tri").unwrap();
+        assert!(s.edge_warning().is_none());
+        s.substrate.size = [60e-6, 60e-6];
+        s.slider.radius = 15e-6;
+        s.slider.offset = [25e-6, 0.0];
+        s.validate().unwrap();
+        assert!(s.edge_warning().unwrap().contains("hangs 10.000 µm over"));
     }
 
     #[test]
