@@ -167,7 +167,20 @@ pub fn run(a: Args) -> Result<()> {
         alpha_and_line: Some((alpha, line)),
         ..ExportOptions::default()
     };
-    let ex = export_lammps(&scene, &params, &opts)?;
+    // Make sure the output directory can be made before the work; remove it again (if this run
+    // made it and it is still empty) when the export fails.
+    let created = !a.out.exists();
+    std::fs::create_dir_all(&a.out)
+        .with_context(|| format!("`--out`: cannot create the directory {}", a.out.display()))?;
+    let ex = match export_lammps(&scene, &params, &opts) {
+        Ok(ex) => ex,
+        Err(e) => {
+            if created {
+                let _ = std::fs::remove_dir(&a.out);
+            }
+            return Err(e.into());
+        }
+    };
     ex.write(&a.out)
         .with_context(|| format!("`--out`: writing into {}", a.out.display()))?;
     let m = &ex.meta;
