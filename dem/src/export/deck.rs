@@ -177,7 +177,7 @@ pub fn render(d: &DeckInputs) -> String {
     w!("# Other deviations from the Rust DEM (dem/lammps/README.md): the anisotropic slider ties are two");
     w!("# harmonic bonds (exact to first order; the axial bond's tension T adds a lateral stiffness");
     w!(
-        "# T/{} um); the control layer is a LAMMPS rigid body of two sub-layers of 1 um spheres.",
+        "# T/{} um); the control layer is a LAMMPS rigid body of two sub-layers of control spheres.",
         N(d.tie_length)
     );
     w!("#");
