@@ -5,10 +5,12 @@
 //!   two-sphere collision (`collision_v0.2_undamped.csv`, 100+ contact samples);
 //! * the closed-form Hertz contact duration against the LAMMPS one (`collision_summary.csv`);
 //! * the study scenes of `surrogate::Scene` (sphere counts, rigid-z contacts, P_max and height)
-//!   against `dem/lammps/gen_scene.py`, the independent Python re-implementation that writes the
-//!   LAMMPS data files (`rigid_z_python.csv`);
-//! * `#[ignore]`d: re-run LAMMPS on the study scene (`dem/lammps/run_peer.sh`, needs `lmp`) and
-//!   check its equilibrium against the surrogate.
+//!   against the values an independent Python re-implementation of the scene wrote
+//!   (`rigid_z_python.csv`, frozen: that generator, `gen_scene.py`, was replaced by
+//!   `superlube export-lammps`, which writes the Rust scene itself);
+//! * `#[ignore]`d: export the study scene and run LAMMPS on it (`dem/lammps/run_peer.sh`, needs
+//!   `lmp`), and check its equilibrium against the surrogate. The exported deck's own checks
+//!   against LAMMPS run in CI: `tests/lammps_export.rs`.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -152,7 +154,8 @@ fn lammps_equilibrium_matches_surrogate() {
         .arg(script)
         .env("STEPS", "200")
         .env("RANKS", "1")
-        .env("TIES", "bond")
+        .env("MOUNT", "locked")
+        .env("SUPERLUBE", env!("CARGO_BIN_EXE_superlube"))
         .output()
         .expect("run run_peer.sh");
     assert!(

@@ -12,11 +12,17 @@ converted to the CSV column units named in each header):
   drag:      sphere pressed with F_n = 10 uN on a fixed sphere, pulled by a K_d = 1e3 N/m spring
              whose anchor moves at 0.01 m/s for 2 us, mu = 0.5 and 0.01, gamma_n = gamma_t = 0.1
              -> reference/drag_mu<mu>.csv (every 100 steps) + reference/drag_summary.csv
-  equilibrate (only with --with-scene, ~6 min each on one core): the study scene in.equilibrate.lmp,
-             ties = bond, 10 us at dt = 5e-5 us (the 1 us prefix agrees with dt = 1e-5 us to 1e-5),
-             square-tri theta 0 at 1.4 mN and tri-tri theta 30 at 2.1 mN, mu = 0.01
-             -> reference/equilibrate_<case>.csv (t_us,contacts,p_max_GPa,z_um,zc_um every 0.1 us)
-                + reference/equilibrate_summary.csv (with the rigid-z start for comparison)
+  equilibrate (only with --with-scene, a few minutes each on one core): the study scene exported
+             by `superlube export-lammps` (mount locked, the rigid translating control layer of the
+             earlier peer scripts), 10 us at dt = 5e-5 us, square-tri theta 0 at 1.4 mN and tri-tri
+             theta 30 at 2.1 mN, mu = 0.01
+             -> reference/equilibrate_<case>.csv (t_us,contacts,p_max_GPa,z_um every 0.1 us)
+                + reference/equilibrate_summary.csv (with the surrogate's start for comparison)
+             The superlube binary: $SUPERLUBE, else `superlube` on the PATH, else
+             `cargo run --release` in the repository.
+  reference/rigid_z_python.csv is frozen: it was written by the former Python re-implementation
+  of the scene (gen_scene.py, replaced by the export) and tests/lammps_peer.rs keeps checking the
+  Rust scene against it.
 Standard library only.
 """
 
@@ -143,33 +149,38 @@ def drag_case(mu, gamma_n=0.1, gamma_t=0.1, Fn=1.0e4, Kd=1.0e6, vd=0.01, dt=1e-5
     ]
 
 
+def superlube():
+    """The command that runs the superlube binary."""
+    if os.environ.get("SUPERLUBE"):
+        return [os.environ["SUPERLUBE"]]
+    for d in os.environ.get("PATH", "").split(os.pathsep):
+        if os.access(os.path.join(d, "superlube"), os.X_OK):
+            return ["superlube"]
+    root = os.path.dirname(os.path.dirname(HERE))
+    return ["cargo", "run", "--release", "--quiet", "--manifest-path", os.path.join(root, "Cargo.toml"), "--"]
+
+
 def equilibrate_case(pattern, theta, load, dt=5e-5, us=10.0):
     name = f"{pattern}_{theta:g}deg_{load:g}mN"
     with tempfile.TemporaryDirectory() as td:
-        for f in os.listdir(HERE):
-            if f.startswith("in.") and f.endswith(".lmp"):
-                with open(os.path.join(HERE, f)) as a, open(os.path.join(td, f), "w") as b:
-                    b.write(a.read())
-        data = os.path.join(td, "scene.data")
-        j = json.loads(subprocess.run(
-            [sys.executable, os.path.join(HERE, "gen_scene.py"), "--ties", "bond", "--pattern", pattern,
-             "--theta-deg", str(theta), "--load-mN", str(load), "--out", data],
-            check=True, capture_output=True, text=True).stdout)
-        csv = os.path.join(td, "eq.csv")
-        steps = round(us / dt)
-        args = ["lmp", "-in", "in.equilibrate.lmp", "-log", "none", "-screen", "none"]
-        for k, v in dict(ties="bond", data=data, load_mN=load, dt=dt, steps=steps,
-                         every=round(0.1 / dt), csv=csv).items():
-            args += ["-var", k, str(v)]
-        subprocess.run(args, cwd=td, check=True)
-        with open(csv) as f:
+        subprocess.run(
+            superlube() + ["export-lammps", "--pattern", pattern, "--theta", str(theta), "--load-mn", str(load),
+                           "--tilt", "locked", "--dt-us", str(dt), "--equilibrate-us", str(us), "--relax-us", "0",
+                           "--slide-us", "0", "--sample-us", "0.1", "--dump-us", "0", "--out", td],
+            check=True)
+        with open(os.path.join(td, "export.json")) as f:
+            meta = json.load(f)
+        subprocess.run(["lmp", "-in", "in.superlube.lmp", "-log", "none", "-screen", "none"], cwd=td, check=True)
+        with open(os.path.join(td, "timeseries.csv")) as f:
             lines = [ln.strip() for ln in f if ln.strip()]
     head = lines[0].lstrip("# ").split(",")
-    rows = [ln.split(",") for ln in lines[1:]]
-    write_csv(os.path.join(REF, f"equilibrate_{name}.csv"), head, rows)
+    keep = [head.index(c) for c in ("t_us", "contacts", "p_max_GPa", "z_um")]
+    rows = [[r[i] for i in keep] for r in (ln.split(",") for ln in lines[1:])]
+    write_csv(os.path.join(REF, f"equilibrate_{name}.csv"), ["t_us", "contacts", "p_max_GPa", "z_um"], rows)
     last = rows[-1]
+    sur = meta["surrogate"]
     return [name, pattern, theta, load, dt, us, int(float(last[1])), float(last[2]), float(last[3]),
-            j["rigid_contacts"], j["rigid_p_max_GPa"], j["rigid_z_um"]]
+            sur["contacts"], sur["p_max_GPa"], sur["z_um"]]
 
 
 def main():
@@ -179,7 +190,7 @@ def main():
         write_csv(
             os.path.join(REF, "equilibrate_summary.csv"),
             ["case", "pattern", "theta_deg", "load_mN", "dt_us", "time_us", "contacts", "p_max_GPa", "z_um",
-             "rigid_z_contacts", "rigid_z_p_max_GPa", "rigid_z_z_um"],
+             "surrogate_contacts", "surrogate_p_max_GPa", "surrogate_z_um"],
             eq,
         )
         for r in eq:
@@ -203,25 +214,7 @@ def main():
          "stick_stiffness_N_m", "mindlin_8Ga_N_m"],
         dr,
     )
-    # the Python rigid-z start heights of gen_scene.py (an independent re-implementation of the
-    # scene geometry and of the surrogate's RigidZ model), for tests/lammps_peer.rs
-    rz = []
-    for pattern, theta, load in [("tri-tri", 0.0, 3.86), ("square-tri", 0.0, 1.4), ("tri-tri", 30.0, 2.1),
-                                 ("square-tri", 10.0, 0.35)]:
-        out = subprocess.run(
-            [sys.executable, os.path.join(HERE, "gen_scene.py"), "--pattern", pattern, "--theta-deg",
-             str(theta), "--load-mN", str(load), "--out", os.devnull],
-            check=True, capture_output=True, text=True).stdout
-        j = json.loads(out)
-        rz.append([pattern, theta, load, j["n_substrate"], j["n_slider"], j["rigid_contacts"],
-                   j["rigid_p_max_GPa"], j["rigid_z_um"]])
-    write_csv(
-        os.path.join(REF, "rigid_z_python.csv"),
-        ["pattern", "theta_deg", "load_mN", "substrate_spheres", "slider_spheres", "contacts",
-         "p_max_GPa", "z_um"],
-        rz,
-    )
-    for r in col + dr + rz:
+    for r in col + dr:
         print(*r, sep=",")
 
 

@@ -22,6 +22,7 @@
 
 pub mod checkpoint;
 pub mod error;
+pub mod export;
 pub mod integrator;
 pub mod model;
 pub mod neighbor;

@@ -3,7 +3,9 @@
 mod corrugation;
 mod dem_args;
 mod equilibrate;
+mod export_lammps;
 mod figures;
+mod lammps_check;
 mod landscape;
 mod range;
 mod scene_args;
@@ -40,6 +42,10 @@ enum Command {
     Equilibrate(equilibrate::Args),
     /// Dynamic DEM sliding simulation: friction force and coefficient.
     Slide(slide::Args),
+    /// Write the Tier-2 model as a LAMMPS data file and input deck (run it with MPI LAMMPS).
+    ExportLammps(export_lammps::Args),
+    /// Contacts, P_max and the contacts above P_crit in the contact dump of an exported run.
+    LammpsCheck(lammps_check::Args),
 }
 
 /// Runs the parsed command line.
@@ -51,5 +57,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Figures(a) => figures::run(a),
         Command::Equilibrate(a) => equilibrate::run(a),
         Command::Slide(a) => slide::run(a),
+        Command::ExportLammps(a) => export_lammps::run(a),
+        Command::LammpsCheck(a) => lammps_check::run(a),
     }
 }

@@ -1,0 +1,206 @@
+//! `superlube export-lammps`: the Tier-2 model of one (θ, α, W) as a LAMMPS data file and input
+//! deck (engine: `dem::export`), to run with MPI LAMMPS on a cluster.
+
+use super::corrugation::{check_alpha, check_line_deg};
+use super::SceneArgs;
+use anyhow::{bail, Context, Result};
+use dem::export::{export_lammps, files, ExportOptions};
+use dem::SimParams;
+use std::path::PathBuf;
+use surrogate::map::{contact_line_direction, MapParams};
+use surrogate::units::{deg_to_rad, mn_to_n, us_to_s};
+
+/// Options of `superlube export-lammps`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    theta: Option<f64>,
+    /// Normal load W in mN.
+    #[arg(
+        long = "load-mn",
+        value_name = "MN",
+        default_value_t = 1.4,
+        allow_hyphen_values = true
+    )]
+    load_mn: f64,
+    /// Pulling angle α in degrees from the slider's contact line (as in `superlube slide`).
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    alpha: f64,
+    /// Contact-line angle in degrees from the substrate x axis [default: the moiré estimate].
+    #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
+    line_deg: Option<f64>,
+    /// Equilibration time under load in µs.
+    #[arg(
+        long = "equilibrate-us",
+        value_name = "US",
+        default_value_t = 10.0,
+        allow_hyphen_values = true
+    )]
+    equilibrate_us: f64,
+    /// Relaxation time in µs with the pulling spring attached (0: none).
+    #[arg(
+        long = "relax-us",
+        value_name = "US",
+        default_value_t = 10.0,
+        allow_hyphen_values = true
+    )]
+    relax_us: f64,
+    /// Sliding time in µs (0: equilibrate/relax only). Friction = mean spring force over the
+    /// last 2/3.
+    #[arg(
+        long = "slide-us",
+        value_name = "US",
+        default_value_t = 300.0,
+        allow_hyphen_values = true
+    )]
+    slide_us: f64,
+    /// Support speed in m/s.
+    #[arg(
+        long = "speed-m-s",
+        value_name = "M_S",
+        default_value_t = 0.1,
+        allow_hyphen_values = true
+    )]
+    speed_m_s: f64,
+    /// Time step in µs [default: 0.25 × the Rust engine's stable-step estimate, as `slide`].
+    #[arg(long = "dt-us", value_name = "US", allow_hyphen_values = true)]
+    dt_us: Option<f64>,
+    /// Time-series interval in µs.
+    #[arg(
+        long = "sample-us",
+        value_name = "US",
+        default_value_t = 0.1,
+        allow_hyphen_values = true
+    )]
+    sample_us: f64,
+    /// Contact-dump interval in µs (for `superlube lammps-check`); 0 = no dump.
+    #[arg(
+        long = "dump-us",
+        value_name = "US",
+        default_value_t = 1.0,
+        allow_hyphen_values = true
+    )]
+    dump_us: f64,
+    /// Constant friction coefficient of every contact [default: the coating's μ1]. LAMMPS cannot
+    /// switch μ at P_crit; `superlube lammps-check` shows where that matters.
+    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
+    mu: Option<f64>,
+    /// Leave out substrate spheres the slider can never touch along its path (as `slide --prune`).
+    #[arg(long)]
+    prune: bool,
+    /// Output directory (created if missing): scene.data, in.superlube.lmp, README.md, export.json.
+    #[arg(long, value_name = "DIR")]
+    out: PathBuf,
+}
+
+fn number(v: f64, flag: &str, positive: bool) -> Result<()> {
+    let ok = v.is_finite() && if positive { v > 0.0 } else { v >= 0.0 };
+    if !ok {
+        let what = if positive { "positive" } else { "non-negative" };
+        bail!("`{flag}`: {v} must be a {what} number");
+    }
+    Ok(())
+}
+
+/// Runs `superlube export-lammps`.
+pub fn run(a: Args) -> Result<()> {
+    if a.out.exists() && !a.out.is_dir() {
+        bail!("`--out`: {} exists and is not a directory", a.out.display());
+    }
+    number(a.load_mn, "--load-mn", true)?;
+    number(a.equilibrate_us, "--equilibrate-us", true)?;
+    number(a.relax_us, "--relax-us", false)?;
+    number(a.slide_us, "--slide-us", false)?;
+    number(a.speed_m_s, "--speed-m-s", false)?;
+    if a.slide_us > 0.0 && a.speed_m_s <= 0.0 {
+        bail!("`--speed-m-s`: must be positive for a sliding run (or use --slide-us 0)");
+    }
+    number(a.sample_us, "--sample-us", true)?;
+    number(a.dump_us, "--dump-us", false)?;
+    if let Some(dt) = a.dt_us {
+        number(dt, "--dt-us", true)?;
+    }
+    if let Some(mu) = a.mu {
+        number(mu, "--mu", false)?;
+    }
+    let alpha = check_alpha(a.alpha)?;
+    let line_given = check_line_deg(a.line_deg)?;
+    let file = a.scene.scene_file()?;
+    let mut scene = file.into_scene()?;
+    let theta = a.theta.or(file.slider.theta_deg).unwrap_or(0.0);
+    if !theta.is_finite() {
+        bail!("`--theta`: {theta} must be finite");
+    }
+    scene.slider.theta = deg_to_rad(theta);
+    scene.validate()?;
+    if let Some(w) = scene.edge_warning() {
+        eprintln!("warning: {w}");
+    }
+    let line = match line_given {
+        Some(l) => l,
+        None => contact_line_direction(&scene, scene.slider.theta, &MapParams::default()).angle,
+    };
+    let params = SimParams {
+        dt: a.dt_us.map(us_to_s),
+        load: mn_to_n(a.load_mn),
+        alpha: line + alpha,
+        equilibrate_time: us_to_s(a.equilibrate_us),
+        relax_time: us_to_s(a.relax_us),
+        slide_time: us_to_s(a.slide_us),
+        support_speed: a.speed_m_s,
+        sample_interval: us_to_s(a.sample_us),
+        prune_substrate: a.prune,
+        ..SimParams::default()
+    };
+    let opts = ExportOptions {
+        mu: a.mu.unwrap_or(scene.coating.mu1),
+        dump_interval: us_to_s(a.dump_us),
+        command: std::env::args().collect::<Vec<_>>().join(" "),
+        alpha_and_line: Some((alpha, line)),
+        ..ExportOptions::default()
+    };
+    // Make sure the output directory can be made before the work; remove it again (if this run
+    // made it and it is still empty) when the export fails.
+    let created = !a.out.exists();
+    std::fs::create_dir_all(&a.out)
+        .with_context(|| format!("`--out`: cannot create the directory {}", a.out.display()))?;
+    let ex = match export_lammps(&scene, &params, &opts) {
+        Ok(ex) => ex,
+        Err(e) => {
+            if created {
+                let _ = std::fs::remove_dir(&a.out);
+            }
+            return Err(e.into());
+        }
+    };
+    ex.write(&a.out)
+        .with_context(|| format!("`--out`: writing into {}", a.out.display()))?;
+    let m = &ex.meta;
+    eprintln!(
+        "export-lammps: {} LAMMPS atoms, dt = {:.4e} µs, {} steps (equilibrate {}, relax {}, slide {}), constant μ = {} → {}",
+        m.atoms,
+        m.dt_us,
+        m.steps.total(),
+        m.steps.equilibrate,
+        m.steps.relax,
+        m.steps.slide,
+        m.mu,
+        a.out.display()
+    );
+    eprintln!(
+        "run: cd {} && lmp -in {} (MPI: mpirun -np N lmp -in {}); check the deck: lmp -in {} -var nsteps 0",
+        a.out.display(),
+        files::DECK,
+        files::DECK,
+        files::DECK
+    );
+    Ok(())
+}
