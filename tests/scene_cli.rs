@@ -162,13 +162,28 @@ fn every_command_reports_the_edge_overhang() {
         ),
     ];
     for (cmd, extra, field) in cases {
-        let out = bin().arg(cmd).args(scene).args(extra).output().unwrap();
+        let csv = d.join(format!("{cmd}.csv"));
+        let out = bin()
+            .arg(cmd)
+            .args(scene)
+            .args(extra)
+            .arg("--out")
+            .arg(&csv)
+            .output()
+            .unwrap();
         assert!(!out.status.success());
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
             err.contains("over the edge") && err.contains(field),
             "{cmd}: {err}"
         );
+        // Refused before any row: no output, no partial file left behind.
+        let left: Vec<_> = std::fs::read_dir(&d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .filter(|n| n.starts_with(cmd))
+            .collect();
+        assert!(left.is_empty(), "{cmd}: {left:?}");
     }
     std::fs::remove_dir_all(&d).ok();
 }

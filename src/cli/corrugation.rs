@@ -112,13 +112,19 @@ pub fn run(a: Args) -> Result<()> {
         sc.warnings.clone(),
     );
     let t0 = std::time::Instant::now();
-    let mut csv = outs.stream_csv("--out", a.out.as_deref())?;
+    // The rows are kept in memory only for the plot.
     let mut rows: Vec<CorrugationRow> = Vec::new();
-    corrugation(&sc.scene, &params, &mut Tee(&mut csv, &mut rows), &rep)?;
-    outs.commit_csv("--out", a.out.as_deref(), csv);
+    let keep = a.plot.is_some();
+    outs.stream("--out", a.out.as_deref(), |csv| {
+        if keep {
+            corrugation(&sc.scene, &params, &mut Tee(csv, &mut rows), &rep)
+        } else {
+            corrugation(&sc.scene, &params, csv, &rep)
+        }
+    })?;
     rep.note(&format!(
         "corrugation: {} directions in {:.2} s",
-        rows.len(),
+        params.alphas.len(),
         t0.elapsed().as_secs_f64()
     ));
     if let Some(p) = &a.plot {

@@ -90,21 +90,23 @@ pub fn run(a: Args) -> Result<()> {
         sc.warnings.clone(),
     );
     let t0 = std::time::Instant::now();
-    let mut csv = outs.stream_csv("--out", a.out.as_deref())?;
+    // Δz is kept in memory only for the heat map.
     let mut dz = DzOnly(Vec::new());
+    let keep = a.plot.is_some();
     let spill = a.out.as_deref().map(spill_path);
-    let stats = if a.plot.is_some() {
-        landscape(
-            &sc.scene,
-            &params,
-            spill.as_deref(),
-            &mut Tee(&mut csv, &mut dz),
-            &rep,
-        )?
-    } else {
-        landscape(&sc.scene, &params, spill.as_deref(), &mut csv, &rep)?
-    };
-    outs.commit_csv("--out", a.out.as_deref(), csv);
+    let stats = outs.stream("--out", a.out.as_deref(), |csv| {
+        if keep {
+            landscape(
+                &sc.scene,
+                &params,
+                spill.as_deref(),
+                &mut Tee(csv, &mut dz),
+                &rep,
+            )
+        } else {
+            landscape(&sc.scene, &params, spill.as_deref(), csv, &rep)
+        }
+    })?;
     let c = &stats.cell;
     rep.note(&format!(
         "landscape: {}x{} grid over the {} cell {:.4}x{:.4} µm, Δz range {:.4} nm, edge mismatch {:.2e} nm, {:.2} s",

@@ -95,9 +95,9 @@ pub fn run(a: Args) -> Result<()> {
         },
         sc.warnings.clone(),
     );
-    let mut sink = outs.stream_csv("--out", a.out.as_deref())?;
-    let stats = screen(&sc.scene, &params, &mut sink, &rep)?;
-    outs.commit_csv("--out", a.out.as_deref(), sink);
+    let stats = outs.stream("--out", a.out.as_deref(), |csv| {
+        screen(&sc.scene, &params, csv, &rep)
+    })?;
     if let Some(path) = &a.contacts_out {
         let cp = ContactsParams {
             theta: params.thetas[0],

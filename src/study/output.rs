@@ -189,6 +189,40 @@ impl Outputs {
         }
     }
 
+    /// Streams a CSV for `path` (`None` = stdout) through `run`: [`Outputs::stream_csv`], then
+    /// [`Outputs::commit_csv`] when `run` succeeds, or [`Outputs::abandon_csv`] when it fails
+    /// (its error is returned).
+    pub fn stream<T>(
+        &mut self,
+        role: &str,
+        path: Option<&Path>,
+        run: impl FnOnce(&mut CsvSink) -> Result<T>,
+    ) -> Result<T> {
+        let mut sink = self.stream_csv(role, path)?;
+        match run(&mut sink) {
+            Ok(v) => {
+                self.commit_csv(role, path, sink);
+                Ok(v)
+            }
+            Err(e) => {
+                self.abandon_csv(path, sink);
+                Err(e)
+            }
+        }
+    }
+
+    /// Gives up a streamed CSV after a failed run: a partial file without rows (and its
+    /// sidecar) is removed; one with rows is kept for a later resume.
+    pub fn abandon_csv(&self, path: Option<&Path>, sink: CsvSink) {
+        let rows = sink.rows();
+        drop(sink);
+        if let (Some(p), 0) = (path, rows) {
+            let partial = partial_path(p);
+            let _ = std::fs::remove_file(sidecar_path(&partial));
+            let _ = std::fs::remove_file(partial);
+        }
+    }
+
     /// Writes `bytes` to `path` atomically (`None` = stdout) with its sidecar; `rows` = data
     /// rows of a CSV. A failure (also of producing `bytes`) is recorded and the run goes on.
     pub fn write(
