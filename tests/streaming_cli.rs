@@ -87,7 +87,7 @@ fn interrupted_stream_keeps_a_partial_file() {
     let mut child = bin()
         .arg("screen")
         .args(TINY)
-        .args(["--theta", "0:30:0.0005", "--load-mn", "0.01,0.02"])
+        .args(["--theta", "0:30:0.0002", "--load-mn", "0.01,0.02"])
         .arg("--out")
         .arg(&out)
         .stderr(Stdio::null())
@@ -101,7 +101,7 @@ fn interrupted_stream_keeps_a_partial_file() {
         if n > 100 || t0.elapsed().as_secs() > 60 {
             break;
         }
-        std::thread::sleep(std::time::Duration::from_millis(20));
+        std::thread::sleep(std::time::Duration::from_millis(5));
     }
     child.kill().unwrap();
     child.wait().unwrap();
@@ -113,7 +113,7 @@ fn interrupted_stream_keeps_a_partial_file() {
     // Row k is data line k + 1, in the sweep's order (θ outer, load inner).
     for (k, l) in lines[1..lines.len() - 1].iter().enumerate() {
         let f: Vec<&str> = l.split(',').collect();
-        let theta = (k / 2) as f64 * 0.0005;
+        let theta = (k / 2) as f64 * 0.0002;
         assert!(
             (f[1].parse::<f64>().unwrap() - theta).abs() < 1e-9,
             "row {k}: {l}"
