@@ -1,17 +1,27 @@
-//! `superlube`: screen, map and confirm patterned superlubric interfaces.
-//!
-//! Data flows one way: scene (crate `surrogate::scene`) → contacts → load sharing
-//! (`surrogate::solver`) or dynamics (crate `dem`) → results → reports and figures (this crate).
-
-mod cli;
-mod output;
-mod plot;
+//! The `superlube` binary: parses the command line and runs one command of
+//! [`superlube::cli`].
 
 use clap::Parser;
+use superlube::cli;
+
+/// Whether `e` was caused by writing to a closed pipe (`superlube screen | head`).
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+            || c.downcast_ref::<csv::Error>().is_some_and(
+                |ce| matches!(ce.kind(), csv::ErrorKind::Io(io) if io.kind() == std::io::ErrorKind::BrokenPipe),
+            )
+    })
+}
 
 fn main() {
     let cli = cli::Cli::parse();
     if let Err(e) = cli::run(cli) {
+        if is_broken_pipe(&e) {
+            // The reader went away (`| head`): stop quietly, like other Unix tools.
+            std::process::exit(0);
+        }
         eprintln!("error: {e:#}");
         std::process::exit(2);
     }

@@ -67,18 +67,19 @@ fn corrugation_columns_and_contact_line_result() {
     assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let mut lines = text.lines();
-    assert!(lines
-        .next()
-        .unwrap()
-        .starts_with("alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN"));
+    // One corrugation schema for the command and the figure.
+    assert_eq!(
+        lines.next().unwrap(),
+        "theta_deg,load_mN,line_deg,alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN"
+    );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 2);
-    assert_eq!(rows[0][0], 0.0);
-    assert_eq!(rows[1][0], 90.0);
+    assert_eq!(&rows[0][..4], &[0.0, 1.4, 0.0, 0.0]);
+    assert_eq!(rows[1][3], 90.0);
     // Along the contact line: tens of nm; across it: below 2 nm.
-    assert!(rows[0][2] > 50.0 && rows[1][2] < 2.0, "{rows:?}");
+    assert!(rows[0][5] > 50.0 && rows[1][5] < 2.0, "{rows:?}");
 }
 
 #[test]

@@ -1,20 +1,19 @@
-//! Options and the run loop shared by `superlube equilibrate` and `superlube slide` (the DEM
-//! tier): scene → [`dem::prepare`] → [`dem::protocol::run`] (progress bar, checkpoints,
-//! snapshots) → time series and summary files.
+//! Flags shared by `superlube equilibrate` and `superlube slide` (the DEM tier), turned into a
+//! scene and [`DemParams`], and the writing of their outputs.
 
-use super::corrugation::{check_alpha, check_line_deg};
-use super::SceneArgs;
-use crate::output::{csv_text, write_atomic, write_or_stdout};
-use anyhow::{bail, Context, Result};
+use super::{checks, SceneArgs};
+use crate::study::dem_run::{DemOutcome, DemParams};
+use crate::study::sink::csv_bytes;
+use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs};
+use anyhow::Result;
 use dem::model::{Constant, Friction};
-use dem::protocol::{run, step_counts, Progress, RunIo, RunKind, Sample};
-use dem::{prepare, Prepared, SimParams, Start};
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use dem::protocol::RunIo;
+use dem::{SimParams, Start};
 use serde::Serialize;
 use std::path::PathBuf;
-use surrogate::map::{contact_line_direction, MapParams};
-use surrogate::units::{deg_to_rad, mn_to_n, rad_to_deg, s_to_us, us_to_s, NM};
-use surrogate::Scene;
+use surrogate::units::{us_to_s, NM};
+
+use super::scene_args::Resolved;
 
 /// How the slider starts.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,7 +33,7 @@ pub struct DemArgs {
     /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub theta: Option<f64>,
-    /// Normal load W in mN.
+    /// Normal load W in mN (> 0).
     #[arg(
         long = "load-mn",
         value_name = "MN",
@@ -57,7 +56,7 @@ pub struct DemArgs {
     /// lattices are commensurate).
     #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
     pub line_deg: Option<f64>,
-    /// Equilibration time under load in µs (control layer held laterally).
+    /// Equilibration time under load in µs (control layer held laterally; > 0).
     #[arg(
         long = "equilibrate-us",
         value_name = "US",
@@ -65,14 +64,19 @@ pub struct DemArgs {
         allow_hyphen_values = true
     )]
     pub equilibrate_us: f64,
-    /// Time step in µs [default: 0.25 × the estimated stable step, printed at start].
+    /// Time step in µs (> 0) [default: 0.25 × the estimated stable step, printed at start].
     #[arg(long = "dt-us", value_name = "US", allow_hyphen_values = true)]
     pub dt_us: Option<f64>,
-    /// Start at the surrogate's equilibrium or from a gap.
+    /// How the slider starts: at the surrogate's equilibrium, or from a gap of `--gap-nm`.
     #[arg(long, value_enum, default_value_t = StartKind::Surrogate)]
     pub start: StartKind,
-    /// Gap in nm above first touch for `--start gap`.
-    #[arg(long = "gap-nm", value_name = "NM", default_value_t = 20.0)]
+    /// Gap in nm above first touch for `--start gap` (> 0).
+    #[arg(
+        long = "gap-nm",
+        value_name = "NM",
+        default_value_t = 20.0,
+        allow_hyphen_values = true
+    )]
     pub gap_nm: f64,
     /// Reduction: slider spheres move rigidly with the control layer in z (replaces the stiff
     /// 10⁶ N/m z-springs; allows a ~30× larger time step).
@@ -81,27 +85,36 @@ pub struct DemArgs {
     /// Reduction: leave out substrate spheres that the slider can never touch along its path.
     #[arg(long)]
     pub prune: bool,
-    /// Constant friction coefficient for every contact instead of the coating's pressure-switched
-    /// μ1/μ2 (reference runs).
-    #[arg(long, value_name = "MU")]
+    /// Constant friction coefficient (≥ 0) for every contact instead of the coating's
+    /// pressure-switched μ1/μ2 (reference runs).
+    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
     pub mu: Option<f64>,
-    /// Sampling interval of the time series in µs.
-    #[arg(long = "sample-us", value_name = "US", default_value_t = 0.1)]
+    /// Sampling interval of the time series in µs (> 0).
+    #[arg(
+        long = "sample-us",
+        value_name = "US",
+        default_value_t = 0.1,
+        allow_hyphen_values = true
+    )]
     pub sample_us: f64,
-    /// Time-series CSV (written atomically); stdout if absent.
+    /// Time-series CSV `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,
+    /// failed_contacts` (written atomically, with a sidecar FILE.csv.meta.json); stdout if
+    /// absent.
     #[arg(long, value_name = "FILE.csv")]
     pub out: Option<PathBuf>,
-    /// JSON summary file (written atomically); printed to stdout if absent and `--out` is given.
+    /// JSON summary file (written atomically, with a sidecar); printed to stdout if absent and
+    /// `--out` is given, to stderr if both are absent.
     #[arg(long, value_name = "FILE.json")]
     pub json: Option<PathBuf>,
     /// Checkpoint file, written atomically every `--checkpoint-every` steps.
     #[arg(long, value_name = "FILE")]
     pub checkpoint: Option<PathBuf>,
-    /// Steps between checkpoints.
+    /// Steps between checkpoints (≥ 1).
     #[arg(
         long = "checkpoint-every",
         value_name = "STEPS",
-        default_value_t = 100_000
+        default_value_t = 100_000,
+        allow_negative_numbers = true
     )]
     pub checkpoint_every: u64,
     /// Continue from `--checkpoint` if it exists (same inputs required; bit-identical result).
@@ -110,233 +123,140 @@ pub struct DemArgs {
     /// Extended-XYZ snapshot file (OVITO reads it); one frame every `--xyz-every` steps.
     #[arg(long, value_name = "FILE.xyz")]
     pub xyz: Option<PathBuf>,
-    /// Steps between snapshots.
-    #[arg(long = "xyz-every", value_name = "STEPS", default_value_t = 10_000)]
+    /// Steps between snapshots (≥ 1).
+    #[arg(
+        long = "xyz-every",
+        value_name = "STEPS",
+        default_value_t = 10_000,
+        allow_negative_numbers = true
+    )]
     pub xyz_every: u64,
 }
 
-/// Run facts reported in every JSON summary.
-#[derive(Debug, Serialize)]
-#[allow(non_snake_case)]
-pub struct RunInfo {
-    /// Time step used (µs).
-    pub dt_us: f64,
-    /// Estimated critical step (µs) and its dominating mode.
-    pub dt_crit_us: f64,
-    /// Mode that sets the critical step.
-    pub dt_crit_mode: &'static str,
-    /// Pulling angle α from the contact line (degrees).
-    pub alpha_deg: f64,
-    /// Contact-line angle from the substrate x axis (degrees).
-    pub line_deg: f64,
-    /// Pulling direction from the substrate x axis = line + α (degrees).
-    pub direction_deg: f64,
-    /// Moving particles (substrate + slider + control body).
-    pub particles: usize,
-    /// Substrate spheres left out by `--prune`.
-    pub pruned_substrate: usize,
-    /// Particle-steps per wall second.
-    pub particle_steps_per_s: f64,
-    /// Reductions in use.
-    pub rigid_z: bool,
-    /// Substrate pruning in use.
-    pub prune: bool,
-}
-
-/// A finished run: the engine, its samples and facts.
-pub struct Finished {
-    pub prepared: Prepared,
-    pub samples: Vec<Sample>,
-    pub steps_this_process: u64,
-    pub wall_s: f64,
-    pub info: RunInfo,
-}
-
-fn positive(v: f64, field: &str) -> Result<f64> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        bail!("`{field}`: {v} must be a positive number")
-    }
-}
-
 impl DemArgs {
-    /// The scene (with θ applied) and the knobs; `relax_us`/`slide_us`/`speed` only for slide.
-    pub fn setup(&self, relax_us: f64, slide_us: f64, speed: f64) -> Result<(Scene, SimParams)> {
-        let file = self.scene.scene_file()?;
-        let mut scene = file.into_scene()?;
-        let theta = self.theta.or(file.slider.theta_deg).unwrap_or(0.0);
-        if !theta.is_finite() {
-            bail!("`--theta`: {theta} must be finite");
-        }
-        scene.slider.theta = deg_to_rad(theta);
-        positive(self.load_mn, "--load-mn")?;
-        let alpha = check_alpha(self.alpha)?;
-        let line = match check_line_deg(self.line_deg)? {
-            Some(l) => l,
-            None => contact_line_direction(&scene, scene.slider.theta, &MapParams::default()).angle,
+    /// The validated scene (θ applied) and the run parameters; `relax_us`, `slide_us` (µs) and
+    /// `speed` (m/s) only for slide. Every flag is checked here, and every output path, before
+    /// any work.
+    pub fn setup(&self, relax_us: f64, slide_us: f64, speed: f64) -> Result<(Resolved, DemParams)> {
+        let sc = self.scene.resolve(self.theta)?;
+        let load = checks::load(self.load_mn)?;
+        let alpha = checks::alpha(self.alpha)?;
+        let line = checks::line_deg(self.line_deg)?;
+        let equilibrate = checks::time_us(self.equilibrate_us, "--equilibrate-us")?;
+        let sample = checks::time_us(self.sample_us, "--sample-us")?;
+        let dt = self
+            .dt_us
+            .map(|dt| checks::time_us(dt, "--dt-us"))
+            .transpose()?;
+        let friction = self
+            .mu
+            .map(|mu| checks::non_negative(mu, "--mu"))
+            .transpose()?
+            .map(|mu| Friction::Constant(Constant { mu }));
+        let gap = checks::positive(self.gap_nm, "--gap-nm")? * NM;
+        let start = match self.start {
+            StartKind::Surrogate => Start::Surrogate,
+            StartKind::Gap => Start::Gap(gap),
         };
-        let direction = line + alpha;
-        positive(self.equilibrate_us, "--equilibrate-us")?;
-        positive(self.sample_us, "--sample-us")?;
-        if let Some(dt) = self.dt_us {
-            positive(dt, "--dt-us")?;
-        }
-        if let Some(mu) = self.mu {
-            if !(mu.is_finite() && mu >= 0.0) {
-                bail!("`--mu`: {mu} must be a non-negative number");
-            }
-        }
-        let p = SimParams {
-            dt: self.dt_us.map(us_to_s),
-            load: mn_to_n(self.load_mn),
-            alpha: direction,
-            equilibrate_time: us_to_s(self.equilibrate_us),
+        checks::every(self.checkpoint_every, "--checkpoint-every", "checkpoint")?;
+        checks::every(self.xyz_every, "--xyz-every", "snapshot")?;
+        check_outputs(&[
+            ("--out", self.out.as_deref()),
+            ("--json", self.json.as_deref()),
+            ("--checkpoint", self.checkpoint.as_deref()),
+            ("--xyz", self.xyz.as_deref()),
+        ])?;
+        let sim = SimParams {
+            dt,
+            load,
+            equilibrate_time: equilibrate,
             relax_time: us_to_s(relax_us),
             slide_time: us_to_s(slide_us),
             support_speed: speed,
-            sample_interval: us_to_s(self.sample_us),
+            sample_interval: sample,
             rigid_z: self.rigid_z,
             prune_substrate: self.prune,
             ..SimParams::default()
         };
-        Ok((scene, p))
-    }
-
-    /// Prepares, resumes if asked, runs `kind` with a progress bar, writes the time series.
-    pub fn execute(&self, scene: &Scene, params: SimParams, kind: RunKind) -> Result<Finished> {
-        let start = match self.start {
-            StartKind::Surrogate => Start::Surrogate,
-            StartKind::Gap => Start::Gap(positive(self.gap_nm, "--gap-nm")? * NM),
-        };
-        let friction = self.mu.map(|mu| Friction::Constant(Constant { mu }));
-        let mut prepared = prepare(scene, params, start, friction)?;
-        let sim = &mut prepared.sim;
-        eprintln!(
-            "stable step estimate: {:.4e} µs ({}); using dt = {:.4e} µs; {} particles ({} substrate spheres pruned)",
-            s_to_us(prepared.stable.dt_crit),
-            prepared.stable.mode,
-            s_to_us(sim.dt),
-            sim.particles(),
-            prepared.start.pruned
-        );
-        eprintln!(
-            "pulling direction: {:.3}° from x = contact line {:.3}° ({}) + α {:.3}°",
-            rad_to_deg(sim.params.alpha),
-            rad_to_deg(sim.params.alpha) - self.alpha,
-            if self.line_deg.is_some() {
-                "given by --line-deg"
-            } else {
-                "moiré estimate"
+        let params = DemParams {
+            sim,
+            alpha,
+            line,
+            start,
+            friction,
+            io: RunIo {
+                checkpoint: self.checkpoint.clone(),
+                checkpoint_every: self.checkpoint_every,
+                xyz: self.xyz.clone(),
+                xyz_every: self.xyz_every,
             },
-            self.alpha
-        );
-        if sim.dt > prepared.stable.dt_crit {
-            eprintln!(
-                "warning: dt = {:.4e} µs exceeds the stable step estimate {:.4e} µs; the run will stop if it blows up",
-                s_to_us(sim.dt),
-                s_to_us(prepared.stable.dt_crit)
-            );
-        }
-        let mut samples = Vec::new();
-        if self.resume {
-            let path = self
-                .checkpoint
-                .as_ref()
-                .expect("clap: --resume requires --checkpoint");
-            if path.exists() {
-                samples = dem::checkpoint::load(path, sim)
-                    .with_context(|| format!("resuming from {}", path.display()))?;
-                eprintln!(
-                    "resumed at step {} (t = {:.3} µs)",
-                    sim.state.step,
-                    s_to_us(sim.state.t)
-                );
+            resume: if self.resume {
+                self.checkpoint.clone()
             } else {
-                eprintln!("no checkpoint at {} yet: starting fresh", path.display());
-            }
-        }
-        let (ne, nr, ns, _) = step_counts(sim, kind);
-        let total = ne + nr + ns;
-        let first = sim.state.step;
-        let pb = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
-        pb.set_style(
-            ProgressStyle::with_template(
-                "{prefix} {bar:30} {percent:>3}% t = {msg} µs [{elapsed_precise} < {eta_precise}]",
-            )
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+                None
+            },
+        };
+        Ok((sc, params))
+    }
+
+    /// The outputs of a run of `workflow`.
+    pub fn outputs(&self, workflow: &str, sc: &Resolved, p: &DemParams) -> Outputs {
+        Outputs::new(
+            Inputs {
+                workflow: workflow.into(),
+                scene: Some(scene_file(&sc.scene)),
+                params: record::dem(&sc.scene, p),
+            },
+            sc.warnings.clone(),
+        )
+    }
+
+    /// Writes the time series (whatever happened: everything sampled is kept), the summary
+    /// (`--json`, else stdout when the series went to `--out`, else stderr) and the snapshot
+    /// file's sidecar; then reports every failed output, or the run's own error.
+    pub fn write<T: Serialize>(
+        &self,
+        mut outs: Outputs,
+        out: DemOutcome,
+        summary: Option<&T>,
+    ) -> Result<()> {
+        outs.write(
+            "--out",
+            self.out.as_deref(),
+            csv_bytes(&out.samples),
+            Some(out.samples.len() as u64),
         );
-        pb.set_prefix(match kind {
-            RunKind::Equilibrate => "equilibrate",
-            RunKind::Slide => "slide",
-        });
-        pb.set_position(first);
-        let io = RunIo {
-            checkpoint: self.checkpoint.clone(),
-            checkpoint_every: self.checkpoint_every,
-            xyz: self.xyz.clone(),
-            xyz_every: self.xyz_every,
-        };
-        let t0 = std::time::Instant::now();
-        let res = run(sim, kind, &io, &mut samples, &mut |p: &Progress| {
-            pb.set_position(p.step);
-            pb.set_message(format!(
-                "{:.2}/{:.2}",
-                p.sample.t_us,
-                s_to_us(sim_total_time(total, p))
-            ));
-        });
-        pb.finish_and_clear();
-        let wall_s = t0.elapsed().as_secs_f64();
-        // Whatever happened, keep the time series computed so far.
-        write_or_stdout(self.out.as_deref(), &csv_text(&samples)?)?;
-        res?;
-        let steps = sim.state.step - first;
-        let direction_deg = rad_to_deg(sim.params.alpha);
-        let info = RunInfo {
-            alpha_deg: self.alpha,
-            line_deg: direction_deg - self.alpha,
-            direction_deg,
-            dt_us: s_to_us(sim.dt),
-            dt_crit_us: s_to_us(prepared.stable.dt_crit),
-            dt_crit_mode: prepared.stable.mode,
-            particles: sim.particles(),
-            pruned_substrate: prepared.start.pruned,
-            particle_steps_per_s: steps as f64 * sim.particles() as f64 / wall_s.max(1e-9),
-            rigid_z: self.rigid_z,
-            prune: self.prune,
-        };
-        Ok(Finished {
-            prepared,
-            samples,
-            steps_this_process: steps,
-            wall_s,
-            info,
-        })
-    }
-
-    /// Writes the JSON summary to `--json`, or to stdout when the time series went to `--out`.
-    pub fn write_summary<T: Serialize>(&self, summary: &T) -> Result<()> {
-        let text = serde_json::to_string_pretty(summary)? + "\n";
-        match (&self.json, &self.out) {
-            (Some(p), _) => write_atomic(p, text.as_bytes()),
-            (None, Some(_)) => {
-                print!("{text}");
-                Ok(())
-            }
-            (None, None) => {
-                eprint!("{text}");
-                Ok(())
+        if let Some(s) = summary {
+            let text = serde_json::to_string_pretty(s).map(|t| t + "\n");
+            match (&self.json, &self.out) {
+                (Some(p), _) => outs.write(
+                    "--json",
+                    Some(p),
+                    text.map(String::into_bytes).map_err(Into::into),
+                    None,
+                ),
+                (None, Some(_)) => outs.write(
+                    "--json",
+                    None,
+                    text.map(String::into_bytes).map_err(Into::into),
+                    None,
+                ),
+                (None, None) => eprint!("{}", text.unwrap_or_default()),
             }
         }
-    }
-}
-
-fn sim_total_time(total: u64, p: &Progress) -> f64 {
-    // simulated end time (s) from the current sample's time per step
-    if p.step == 0 {
-        0.0
-    } else {
-        us_to_s(p.sample.t_us) / p.step as f64 * total as f64
+        if let Some(x) = &self.xyz {
+            if x.exists() {
+                outs.sidecar("--xyz", x, None);
+            }
+        }
+        let written = outs.finish();
+        if let Some(e) = out.error {
+            return Err(anyhow::Error::new(e).context(match written {
+                Ok(()) => "the run stopped early (the time series up to the failure was written)"
+                    .to_string(),
+                Err(w) => format!("the run stopped early; also: {w:#}"),
+            }));
+        }
+        written
     }
 }

@@ -1,5 +1,9 @@
-//! Command-line interface: one file per subcommand, sharing [`SceneArgs`] and the range parser.
+//! Command-line interface: one file per subcommand. Each parses its flags into a scene
+//! ([`SceneArgs::resolve`], the same resolution for every command) and the parameters of one
+//! workflow of [`crate::study`], checks the output paths and the run's size, calls that one
+//! workflow function, and writes its files.
 
+mod checks;
 mod corrugation;
 mod dem_args;
 mod equilibrate;
@@ -20,7 +24,9 @@ use clap::{Parser, Subcommand};
 
 /// superlube: fast screening and DEM confirmation of patterned superlubric interfaces.
 ///
-/// Units on the command line and in files: µm, mN, GPa, µs, degrees (names say so).
+/// Units on the command line and in files: µm, nm, mN, µN, GPa, µs, degrees (names say so).
+/// Every output file FILE gets a sidecar FILE.meta.json with the resolved scene, the parameters,
+/// the command line and a hash of the inputs.
 #[derive(Parser, Debug)]
 #[command(name = "superlube", version, about, long_about = None)]
 pub struct Cli {
@@ -36,7 +42,7 @@ enum Command {
     Landscape(landscape::Args),
     /// Corrugation and static-friction barrier along pulling directions α (quasi-static).
     Corrugation(corrugation::Args),
-    /// Regenerate the screening study's figures into `figures/`.
+    /// Regenerate the screening study's figures (PNG + CSV) into `figures/`.
     Figures(figures::Args),
     /// Dynamic DEM equilibration under load (orientation study), compared with the surrogate.
     Equilibrate(equilibrate::Args),
@@ -59,5 +65,60 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Slide(a) => slide::run(a),
         Command::ExportLammps(a) => export_lammps::run(a),
         Command::LammpsCheck(a) => lammps_check::run(a),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    /// `--help` explains every option: each has a help text, and each physical quantity names
+    /// its unit.
+    #[test]
+    fn every_option_has_help_with_units() {
+        let cli = Cli::command();
+        for sub in cli.get_subcommands() {
+            for arg in sub.get_arguments() {
+                let id = arg.get_id().as_str();
+                if id == "help" || id == "version" {
+                    continue;
+                }
+                let help = arg
+                    .get_long_help()
+                    .or(arg.get_help())
+                    .map(|h| h.to_string())
+                    .unwrap_or_default();
+                assert!(
+                    help.len() >= 20,
+                    "`{} --{id}` has no real help text: `{help}`",
+                    sub.get_name()
+                );
+                let long = arg.get_long().unwrap_or("");
+                for (suffix, unit) in [
+                    ("-um", "µm"),
+                    ("-nm", "nm"),
+                    ("-mn", "mN"),
+                    ("-us", "µs"),
+                    ("-gpa", "GPa"),
+                    ("-deg", "degrees"),
+                    ("theta", "degrees"),
+                    ("alpha", "degrees"),
+                ] {
+                    if long.ends_with(suffix) {
+                        assert!(
+                            help.contains(unit),
+                            "`{} --{long}`: help does not name the unit {unit}: `{help}`",
+                            sub.get_name()
+                        );
+                    }
+                }
+                assert!(
+                    !help.contains("\"Scene files\""),
+                    "`{} --{long}` refers to a README section that does not exist",
+                    sub.get_name()
+                );
+            }
+        }
     }
 }

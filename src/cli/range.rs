@@ -2,9 +2,14 @@
 
 use anyhow::{bail, Result};
 
-/// Parses a comma-separated list (`0,21.8,30`) or an inclusive range `start:stop:step`
-/// (`0:30:0.1` → 301 values, computed as `start + k·step` to avoid drift). `flag` names the
-/// option in errors.
+/// Most values one list or range may expand to.
+pub const MAX_VALUES: usize = 10_000_000;
+
+/// Parses a comma-separated list (`0,21.8,30`: the values as typed) or an inclusive range
+/// `start:stop:step` (`0:30:0.1` → 301 values). Range values are `start + k·step` rounded to 12
+/// significant digits of the range's scale max(|start|, |stop|, step), so they are the decimal
+/// numbers meant (0.3, not 0.30000000000000004) and a row of a range sweep is the same as a run
+/// at that single value. `flag` names the option in errors.
 pub fn parse_list_or_range(text: &str, flag: &str) -> Result<Vec<f64>> {
     let text = text.trim();
     if text.is_empty() {
@@ -32,13 +37,28 @@ pub fn parse_list_or_range(text: &str, flag: &str) -> Result<Vec<f64>> {
         if b < a {
             bail!("`{flag}`: stop < start in `{text}`");
         }
-        let n = ((b - a) / s + 1e-9).floor() as usize;
-        if n > 10_000_000 {
-            bail!("`{flag}`: range `{text}` has too many values");
+        let n = ((b - a) / s + 1e-9).floor();
+        if n >= MAX_VALUES as f64 {
+            bail!(
+                "`{flag}`: range `{text}` has {n:.0} values, more than {MAX_VALUES}; use a larger step"
+            );
         }
-        Ok((0..=n).map(|k| a + k as f64 * s).collect())
+        let scale = a.abs().max(b.abs()).max(s);
+        let decimals = (11 - scale.log10().floor() as i32).clamp(0, 330) as usize;
+        Ok((0..=n as usize)
+            .map(|k| {
+                let v = a + k as f64 * s;
+                let c: f64 = format!("{v:.decimals$}").parse().unwrap_or(v);
+                if c == 0.0 {
+                    0.0
+                } else {
+                    c
+                }
+            })
+            .collect())
     } else {
-        text.split(',').map(num).collect()
+        let v: Vec<f64> = text.split(',').map(num).collect::<Result<_>>()?;
+        Ok(v)
     }
 }
 
@@ -54,7 +74,20 @@ mod tests {
         );
         let r = parse_list_or_range("0:30:0.1", "--theta").unwrap();
         assert_eq!(r.len(), 301);
-        assert!((r[300] - 30.0).abs() < 1e-9);
+        assert_eq!(r[3], 0.3);
+        assert_eq!(r[300], 30.0);
+        for (k, v) in r.iter().enumerate() {
+            assert_eq!(*v, format!("{}.{}", k / 10, k % 10).parse::<f64>().unwrap());
+        }
+        assert_eq!(
+            parse_list_or_range("-1:1:0.5", "--alpha").unwrap(),
+            vec![-1.0, -0.5, 0.0, 0.5, 1.0]
+        );
+        assert_eq!(parse_list_or_range("-1:1:0.1", "--alpha").unwrap()[10], 0.0);
+        assert_eq!(
+            parse_list_or_range("1e-20:3e-20:1e-20", "--load-mn").unwrap(),
+            vec![1e-20, 2e-20, 3e-20]
+        );
         assert!(parse_list_or_range("0:30", "--theta")
             .unwrap_err()
             .to_string()
@@ -65,5 +98,6 @@ mod tests {
             .contains("--load-mn"));
         assert!(parse_list_or_range("1:0:1", "--theta").is_err());
         assert!(parse_list_or_range("", "--theta").is_err());
+        assert!(parse_list_or_range("0:30:0.000000001", "--theta").is_err());
     }
 }

@@ -1,4 +1,4 @@
-//! Scene flags shared by every subcommand.
+//! Scene flags shared by every subcommand, and the one scene resolution every command uses.
 
 use anyhow::{bail, Context, Result};
 use clap::Args;
@@ -9,32 +9,36 @@ use surrogate::{Scene, SceneFile};
 /// overrides the `--pattern` preset.
 #[derive(Args, Debug, Clone, Default)]
 pub struct SceneArgs {
-    /// Pattern pair shorthand `slider-substrate`: tri-tri, square-tri, square-square, tri-square.
-    /// The reference study's geometry (3 µm spheres, 3505-sphere slider, 364x270 µm substrate).
-    #[arg(long)]
+    /// Pattern pair `slider-substrate`: tri-tri, square-tri, square-square or tri-square, with
+    /// the reference study's geometry (3 µm spheres at 3 µm spacing, 3505-sphere slider,
+    /// 364x270 µm substrate) [default: the scene file's pattern, else square-tri].
+    #[arg(long, value_name = "PATTERN")]
     pub pattern: Option<String>,
-    /// Scene file (TOML, user units); see README "Scene files". Flags below override it.
+    /// Scene file (TOML, user units; see the README section "Scenes"). The flags below
+    /// override it.
     #[arg(long, value_name = "FILE.toml")]
     pub scene: Option<PathBuf>,
     /// Slider disc radius in µm (study: 93.5 triangular, 100 square).
     #[arg(long, value_name = "UM", allow_hyphen_values = true)]
     pub slider_radius_um: Option<f64>,
     /// Substrate rectangle size in µm, `LXxLY` (study: 364x270; x is the long side).
-    #[arg(long, value_name = "LXxLY")]
+    #[arg(long, value_name = "LXxLY", allow_hyphen_values = true)]
     pub substrate_um: Option<String>,
-    /// Amplitude σ_h in µm of random substrate sphere heights, uniform in [-σ_h, σ_h] (study: 0.002, 0.01).
+    /// Amplitude σ_h in µm of random substrate sphere heights, uniform in [-σ_h, σ_h]
+    /// (study: 0.002, 0.01).
     #[arg(long, value_name = "UM", allow_hyphen_values = true)]
     pub sigma_h_um: Option<f64>,
-    /// Seed of the substrate height perturbation (same seed → same heights).
-    #[arg(long)]
+    /// Seed (a non-negative integer) of the substrate height perturbation: same seed → same
+    /// heights.
+    #[arg(long, value_name = "SEED", allow_negative_numbers = true)]
     pub seed: Option<u64>,
-    /// Young's modulus in GPa (study: 100, also 50).
+    /// Young's modulus E in GPa (study: 100, also 50).
     #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
     pub youngs_gpa: Option<f64>,
     /// Critical coating pressure P_crit in GPa (study: 4).
     #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
     pub p_crit_gpa: Option<f64>,
-    /// In-plane offset of the slider centre from the central substrate sphere in µm, `X,Y`.
+    /// In-plane offset in µm of the slider centre from the central substrate sphere, `X,Y`.
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub offset_um: Option<String>,
     /// Slider mount (tilt of the control layer), obeyed by every tier: `locked` (no tilt),
@@ -47,10 +51,28 @@ pub struct SceneArgs {
     pub tilt_k1_n_m: Option<f64>,
 }
 
+/// A validated scene and what every command must report about it.
+#[derive(Debug, Clone)]
+pub struct Resolved {
+    /// The SI scene (validated by `Scene::validate`).
+    pub scene: Scene,
+    /// Warnings to log and record (e.g. the slider hanging over the substrate edge).
+    pub warnings: Vec<String>,
+}
+
+impl Resolved {
+    /// Logs the warnings (through the command's reporter).
+    pub fn log(&self, p: &dyn crate::study::Progress) {
+        for w in &self.warnings {
+            p.note(&format!("warning: {w}"));
+        }
+    }
+}
+
 impl SceneArgs {
     /// The [`SceneFile`] these flags describe (file, then flags on top).
     pub fn scene_file(&self) -> Result<SceneFile> {
-        let mut f = match &self.scene {
+        let f = match &self.scene {
             Some(p) => SceneFile::read(p)?,
             None => SceneFile::default(),
         };
@@ -70,15 +92,12 @@ impl SceneArgs {
             if parts.len() != 2 {
                 bail!("`--substrate-um`: `{s}` must be LXxLY, e.g. 364x270");
             }
-            let lx: f64 = parts[0]
-                .trim()
-                .parse()
-                .with_context(|| format!("`--substrate-um`: `{}` is not a number", parts[0]))?;
-            let ly: f64 = parts[1]
-                .trim()
-                .parse()
-                .with_context(|| format!("`--substrate-um`: `{}` is not a number", parts[1]))?;
-            o.substrate.size_um = Some([lx, ly]);
+            let num = |t: &str| -> Result<f64> {
+                t.trim()
+                    .parse()
+                    .with_context(|| format!("`--substrate-um`: `{t}` is not a number"))
+            };
+            o.substrate.size_um = Some([num(parts[0])?, num(parts[1])?]);
         }
         if let Some(s) = &self.offset_um {
             let v = super::parse_list_or_range(s, "--offset-um")?;
@@ -87,12 +106,26 @@ impl SceneArgs {
             }
             o.slider.offset_um = Some([v[0], v[1]]);
         }
-        f = f.merge(&o);
-        Ok(f)
+        Ok(f.merge(&o))
     }
 
-    /// The validated SI scene.
-    pub fn scene(&self) -> Result<Scene> {
-        Ok(self.scene_file()?.into_scene()?)
+    /// THE scene resolution of every command: preset ← scene file ← flags, with `theta_deg`
+    /// (a command's `--theta` for one orientation) overriding the file's `slider.theta_deg`;
+    /// validated ([`Scene::validate`]: every field, the slider must fit on the substrate), and
+    /// the edge warning collected ([`Scene::edge_warning`]).
+    pub fn resolve(&self, theta_deg: Option<f64>) -> Result<Resolved> {
+        let mut file = self.scene_file()?;
+        if let Some(t) = theta_deg {
+            if !t.is_finite() {
+                bail!("`--theta`: {t} is not a finite angle in degrees");
+            }
+            file.slider.theta_deg = Some(t);
+        }
+        let scene = file.into_scene()?;
+        scene.validate()?;
+        Ok(Resolved {
+            warnings: scene.edge_warning().into_iter().collect(),
+            scene,
+        })
     }
 }

@@ -1,10 +1,11 @@
 //! Plot helpers (plotters, bitmap backend): heat maps with a colour bar, line plots and contact
 //! maps. Every PNG is drawn in memory and written atomically with
-//! [`crate::output::write_atomic`]. Text uses the bundled DejaVu Sans, registered once by
+//! [`surrogate::atomic_file::write_atomic`]. Text uses the bundled DejaVu Sans, registered once by
 //! [`register_fonts`].
 
 mod colormap;
 mod contact_map;
+pub mod figures;
 mod heat_map;
 mod line_plot;
 
@@ -36,7 +37,7 @@ pub fn register_fonts() {
 }
 
 /// Draws with `draw` into an RGB image of `size` pixels and writes it as a PNG at `path`
-/// atomically ([`crate::output::write_atomic`]: temporary sibling, then rename), encoded with the
+/// atomically ([`surrogate::atomic_file::write_atomic`]: temporary sibling, then rename), encoded with the
 /// best zlib compression and adaptive filtering (plotters' own encoder compresses fast and
 /// poorly: a 1150×960 contact map took ~1.4 MB); if that is still above 250 kB the image is
 /// re-encoded with a 256-colour palette ([`quantize`]), which keeps every figure ≤ 300 kB.
@@ -64,7 +65,8 @@ where
         bytes = encode_png(&indices, size, Some(&palette))
             .with_context(|| format!("encoding {}", path.display()))?;
     }
-    crate::output::write_atomic(path, &bytes)
+    surrogate::atomic_file::write_atomic(path, &bytes)
+        .with_context(|| format!("writing {}", path.display()))
 }
 
 /// An RGB PNG larger than this (bytes) is re-encoded with a 256-colour palette ([`quantize`]).

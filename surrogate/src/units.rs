@@ -56,6 +56,10 @@ pub fn s_to_us(v: f64) -> f64 {
 pub fn gcm3_to_kgm3(v: f64) -> f64 {
     v * G_PER_CM3
 }
+/// kg/m³ → g/cm³.
+pub fn kgm3_to_gcm3(v: f64) -> f64 {
+    v / G_PER_CM3
+}
 /// degrees → radians.
 pub fn deg_to_rad(v: f64) -> f64 {
     v.to_radians()

@@ -1,0 +1,103 @@
+//! Flag checks shared by the commands: each error names the flag and the rule, before any work.
+
+use super::parse_list_or_range;
+use anyhow::{bail, Result};
+use surrogate::units::{deg_to_rad, mn_to_n, um_to_m, us_to_s};
+
+/// `v` must be finite and > 0.
+pub fn positive(v: f64, flag: &str) -> Result<f64> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        bail!("`{flag}`: {v} must be a positive number")
+    }
+}
+
+/// `v` must be finite and ≥ 0.
+pub fn non_negative(v: f64, flag: &str) -> Result<f64> {
+    if v.is_finite() && v >= 0.0 {
+        Ok(v)
+    } else {
+        bail!("`{flag}`: {v} must be a non-negative number")
+    }
+}
+
+/// A step count that must be at least 1.
+pub fn every(v: u64, flag: &str, what: &str) -> Result<u64> {
+    if v == 0 {
+        bail!("`{flag}`: 0 would never write a {what}; give a number of steps ≥ 1");
+    }
+    Ok(v)
+}
+
+/// One load in mN (> 0) → N.
+pub fn load(v: f64) -> Result<f64> {
+    if !(v.is_finite() && v > 0.0) {
+        bail!("`--load-mn`: {v} must be a positive load in mN");
+    }
+    Ok(mn_to_n(v))
+}
+
+/// `--load-mn` list or range (each > 0) → N.
+pub fn loads(text: &str) -> Result<Vec<f64>> {
+    parse_list_or_range(text, "--load-mn")?
+        .into_iter()
+        .map(load)
+        .collect()
+}
+
+/// `--theta` list or range (degrees) → rad.
+pub fn thetas(text: &str) -> Result<Vec<f64>> {
+    Ok(parse_list_or_range(text, "--theta")?
+        .into_iter()
+        .map(deg_to_rad)
+        .collect())
+}
+
+/// One pulling angle α (degrees from the contact line, |α| ≤ 180) → rad.
+pub fn alpha(v: f64) -> Result<f64> {
+    if !(v.is_finite() && v.abs() <= 180.0) {
+        bail!("`--alpha`: {v}° is outside [-180, 180] degrees");
+    }
+    Ok(deg_to_rad(v))
+}
+
+/// `--alpha` list or range → rad.
+pub fn alphas(text: &str) -> Result<Vec<f64>> {
+    parse_list_or_range(text, "--alpha")?
+        .into_iter()
+        .map(alpha)
+        .collect()
+}
+
+/// `--line-deg` (finite degrees from the substrate x axis) → rad.
+pub fn line_deg(v: Option<f64>) -> Result<Option<f64>> {
+    match v {
+        Some(l) if !l.is_finite() => bail!("`--line-deg`: {l} is not a finite angle"),
+        l => Ok(l.map(deg_to_rad)),
+    }
+}
+
+/// `--distance-um` and `--step-um` → (m, m).
+pub fn path(distance_um: f64, step_um: f64) -> Result<(f64, f64)> {
+    if !(distance_um.is_finite() && distance_um > 0.0) {
+        bail!("`--distance-um`: {distance_um} must be a positive distance in µm");
+    }
+    if !(step_um.is_finite() && step_um > 0.0 && step_um <= distance_um) {
+        bail!("`--step-um`: {step_um} must be positive and at most --distance-um");
+    }
+    Ok((um_to_m(distance_um), um_to_m(step_um)))
+}
+
+/// `--grid` (≥ 2: both cell edges are included).
+pub fn grid(n: usize) -> Result<usize> {
+    if n < 2 {
+        bail!("`--grid`: {n} must be at least 2 (both cell edges are included)");
+    }
+    Ok(n)
+}
+
+/// A time in µs that must be positive → s.
+pub fn time_us(v: f64, flag: &str) -> Result<f64> {
+    Ok(us_to_s(positive(v, flag)?))
+}

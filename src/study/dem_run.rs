@@ -1,0 +1,202 @@
+//! The DEM run shared by the equilibrate and slide workflows: scene → [`dem::prepare`] →
+//! (resume from a checkpoint) → [`dem::protocol::run`] with progress (phase, simulated time) →
+//! the time series and the run facts. The summaries are made by [`super::equilibrate`] and
+//! [`super::slide`].
+
+use super::corrugation::{contact_line, LineChoice};
+use super::progress::Progress;
+use super::rows::{label, DemCase, DemSample, RunInfo};
+use anyhow::{Context, Result};
+use dem::model::Friction;
+use dem::protocol::{run, step_counts, Phase, RunIo, RunKind};
+use dem::{prepare, Prepared, SimParams, Start};
+use std::path::PathBuf;
+use surrogate::units::{n_to_mn, rad_to_deg, s_to_us};
+use surrogate::Scene;
+
+/// Parameters of a DEM run (SI).
+#[derive(Debug, Clone)]
+pub struct DemParams {
+    /// Every engine knob. Its `alpha` (pulling direction from the x axis) is set by the run to
+    /// contact line + [`DemParams::alpha`].
+    pub sim: SimParams,
+    /// Pulling angle α from the slider's contact line (rad).
+    pub alpha: f64,
+    /// Contact-line angle (rad from x); `None`: the moiré estimate.
+    pub line: Option<f64>,
+    /// How the slider starts.
+    pub start: Start,
+    /// A friction law replacing the coating's pressure-switched μ (e.g. constant μ).
+    pub friction: Option<Friction>,
+    /// Checkpoints and snapshots.
+    pub io: RunIo,
+    /// Continue from this checkpoint if it exists (same inputs; bit-identical result).
+    pub resume: Option<PathBuf>,
+}
+
+/// A finished (or failed) DEM run.
+pub struct DemOutcome {
+    /// The engine and its start facts.
+    pub prepared: Prepared,
+    /// The time series (also when the run failed: everything sampled until then).
+    pub samples: Vec<DemSample>,
+    /// Steps taken by this process (after a resume: since the checkpoint).
+    pub steps_this_process: u64,
+    /// Wall time of this process's steps (s).
+    pub wall_s: f64,
+    /// Run facts for the summary.
+    pub info: RunInfo,
+    /// Pattern, θ, W.
+    pub case: DemCase,
+    /// Why the run stopped early, if it did.
+    pub error: Option<dem::DemError>,
+}
+
+/// The pulling direction (rad from x) of `p` for `scene`, and the line it is measured from.
+pub fn direction(scene: &Scene, p: &DemParams) -> (LineChoice, f64) {
+    let line = contact_line(scene, p.line);
+    (line, line.angle + p.alpha)
+}
+
+/// The phase of step `step` of a run with phase lengths `(ne, nr)`.
+fn phase_at(step: u64, ne: u64, nr: u64) -> Phase {
+    if step < ne {
+        Phase::Equilibrate
+    } else if step < ne + nr {
+        Phase::Relax
+    } else {
+        Phase::Slide
+    }
+}
+
+fn phase_name(p: Phase) -> &'static str {
+    match p {
+        Phase::Equilibrate => "equilibrate",
+        Phase::Relax => "relax",
+        Phase::Slide => "slide",
+    }
+}
+
+/// Prepares, resumes if asked, and runs protocol `kind` of `scene` with `p`, reporting the
+/// phase and simulated time through `progress`. Errors before the first step (bad inputs, a
+/// checkpoint that does not match) are returned; a failure during the run is in
+/// [`DemOutcome::error`] with the samples up to it.
+pub fn run_dem(
+    scene: &Scene,
+    p: &DemParams,
+    kind: RunKind,
+    progress: &dyn Progress,
+) -> Result<DemOutcome> {
+    let (line, dir) = direction(scene, p);
+    let mut sim_params = p.sim.clone();
+    sim_params.alpha = dir;
+    let mut prepared = prepare(scene, sim_params, p.start, p.friction)?;
+    let sim = &mut prepared.sim;
+    progress.note(&format!(
+        "stable step estimate: {:.4e} µs ({}); using dt = {:.4e} µs; {} particles ({} substrate spheres pruned)",
+        s_to_us(prepared.stable.dt_crit),
+        prepared.stable.mode,
+        s_to_us(sim.dt),
+        sim.particles(),
+        prepared.start.pruned
+    ));
+    progress.note(&format!(
+        "pulling direction: {:.3}° from x = contact line {:.3}° ({}) + α {:.3}°",
+        rad_to_deg(dir),
+        rad_to_deg(line.angle),
+        if line.given {
+            "given by --line-deg"
+        } else {
+            "moiré estimate"
+        },
+        rad_to_deg(p.alpha)
+    ));
+    if sim.dt > prepared.stable.dt_crit {
+        progress.note(&format!(
+            "warning: dt = {:.4e} µs exceeds the stable step estimate {:.4e} µs; the run will stop if it blows up",
+            s_to_us(sim.dt),
+            s_to_us(prepared.stable.dt_crit)
+        ));
+    }
+    let mut samples = Vec::new();
+    if let Some(path) = &p.resume {
+        if path.exists() {
+            samples = dem::checkpoint::load(path, sim)
+                .with_context(|| format!("resuming from {}", path.display()))?;
+            progress.note(&format!(
+                "resumed at step {} (t = {:.3} µs)",
+                sim.state.step,
+                s_to_us(sim.state.t)
+            ));
+        } else {
+            progress.note(&format!(
+                "no checkpoint at {} yet: starting fresh",
+                path.display()
+            ));
+        }
+    }
+    let (ne, nr, ns, _) = step_counts(sim, kind);
+    let total = ne + nr + ns;
+    let first = sim.state.step;
+    let t_end = s_to_us(total as f64 * sim.dt);
+    progress.stage(
+        match kind {
+            RunKind::Equilibrate => "equilibrate",
+            RunKind::Slide => "slide",
+        },
+        total,
+        "steps",
+    );
+    progress.update(
+        first,
+        &format!(
+            "{}, t = {:.2}/{:.2} µs",
+            phase_name(phase_at(first, ne, nr)),
+            s_to_us(sim.state.t),
+            t_end
+        ),
+    );
+    let t0 = std::time::Instant::now();
+    let res = run(sim, kind, &p.io, &mut samples, &mut |q| {
+        progress.update(
+            q.step,
+            &format!(
+                "{}, t = {:.2}/{:.2} µs",
+                phase_name(q.phase),
+                q.sample.t_us,
+                t_end
+            ),
+        );
+    });
+    progress.finish();
+    let wall_s = t0.elapsed().as_secs_f64();
+    let steps = sim.state.step - first;
+    let alpha_deg = label(rad_to_deg(p.alpha));
+    let info = RunInfo {
+        alpha_deg,
+        line_deg: rad_to_deg(dir) - alpha_deg,
+        direction_deg: rad_to_deg(dir),
+        dt_us: s_to_us(sim.dt),
+        dt_crit_us: s_to_us(prepared.stable.dt_crit),
+        dt_crit_mode: prepared.stable.mode,
+        particles: sim.particles(),
+        pruned_substrate: prepared.start.pruned,
+        particle_steps_per_s: steps as f64 * sim.particles() as f64 / wall_s.max(1e-9),
+        rigid_z: sim.params.rigid_z,
+        prune: sim.params.prune_substrate,
+    };
+    let case = DemCase {
+        pattern: scene.pattern.clone(),
+        theta_deg: label(rad_to_deg(scene.slider.theta)),
+        load_mn: label(n_to_mn(sim.params.load)),
+    };
+    Ok(DemOutcome {
+        prepared,
+        samples,
+        steps_this_process: steps,
+        wall_s,
+        info,
+        case,
+        error: res.err(),
+    })
+}

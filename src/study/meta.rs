@@ -1,0 +1,338 @@
+//! Run metadata: what every output file records about the run that made it.
+//!
+//! Every file a command writes, `F`, gets a JSON sidecar `F.meta.json` (written atomically next
+//! to it; a streaming output's partial file `F.partial` gets `F.partial.meta.json` while it runs).
+//! The CSV columns stay plain; the sidecar holds:
+//!
+//! - `tool`, `version`: `superlube` and its version;
+//! - `workflow`: `screen`, `landscape`, `corrugation`, `figures/…`, `equilibrate`, `slide`;
+//! - `command_line`: the exact arguments (the program name written as `superlube`);
+//! - `scene`: the full resolved scene in user units as a [`SceneFile`] (every field set; the
+//!   lattices only when they differ from the pattern's preset), and `scene_toml`: the same as a
+//!   ready-to-use `--scene` file (`jq -r .scene_toml F.meta.json > scene.toml`);
+//! - `params`: the workflow's parameters in user units;
+//! - `input_hash`: `sha256:` of the canonical JSON of (tool, version, workflow, scene, params):
+//!   the inputs that determine the rows, without timestamps, paths or the command line, so two
+//!   outputs of the same sweep (shards, a resumed run, a cached design stage) have the same hash;
+//! - `warnings` (e.g. [`surrogate::Scene::edge_warning`]), `file`, `role` (the flag that named
+//!   the file), `rows` (data rows of a CSV), `complete` (false for a partial file).
+
+use serde::Serialize;
+use sha2::{Digest, Sha256};
+use surrogate::scene::{CoatingFile, LatticeFile, MaterialFile, SliderFile, SubstrateFile};
+use surrogate::units::{
+    gcm3_to_kgm3, gpa_to_pa, kgm3_to_gcm3, m_to_um, pa_to_gpa, rad_to_deg, um_to_m,
+};
+use surrogate::{Lattice, Mount, Scene, SceneFile};
+
+/// The tool's version (Cargo package version).
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// The sidecar of an output file: `F` → `F.meta.json`.
+pub fn sidecar_path(path: &std::path::Path) -> std::path::PathBuf {
+    let mut s = path.as_os_str().to_owned();
+    s.push(".meta.json");
+    std::path::PathBuf::from(s)
+}
+
+/// The inputs of a run: what determines its rows.
+#[derive(Debug, Clone, Serialize)]
+pub struct Inputs {
+    /// Workflow name (`screen`, `landscape`, …).
+    pub workflow: String,
+    /// The resolved scene in user units (`None` for workflows that use several built-in scenes).
+    pub scene: Option<SceneFile>,
+    /// Workflow parameters in user units.
+    pub params: serde_json::Value,
+}
+
+impl Inputs {
+    /// `sha256:<hex>` of the canonical JSON of tool, version and these inputs.
+    pub fn hash(&self) -> String {
+        #[derive(Serialize)]
+        struct Canon<'a> {
+            tool: &'a str,
+            version: &'a str,
+            inputs: &'a Inputs,
+        }
+        // serde_json writes struct fields in declaration order and map keys sorted
+        // (`serde_json::Value` objects are BTreeMaps): the text is canonical.
+        let text = serde_json::to_vec(&Canon {
+            tool: "superlube",
+            version: VERSION,
+            inputs: self,
+        })
+        .unwrap_or_default();
+        let digest = Sha256::digest(&text);
+        let hex: String = digest.iter().map(|b| format!("{b:02x}")).collect();
+        format!("sha256:{hex}")
+    }
+}
+
+/// A sidecar's content (see the module docs).
+#[derive(Debug, Clone, Serialize)]
+pub struct RunMeta {
+    /// Always `superlube`.
+    pub tool: &'static str,
+    /// Tool version.
+    pub version: &'static str,
+    /// Workflow name.
+    pub workflow: String,
+    /// File this sidecar describes (file name only).
+    pub file: String,
+    /// The command-line flag that named the file (`--out`, `--json`, …).
+    pub role: String,
+    /// `false` while the file is a partial stream.
+    pub complete: bool,
+    /// Data rows of a CSV file.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rows: Option<u64>,
+    /// Hash of the inputs (see [`Inputs::hash`]).
+    pub input_hash: String,
+    /// The exact command line.
+    pub command_line: Vec<String>,
+    /// Warnings about the inputs (edge overhang, …).
+    pub warnings: Vec<String>,
+    /// Resolved scene (user units), reloadable as a `--scene` file.
+    pub scene: Option<SceneFile>,
+    /// The same scene as TOML text.
+    pub scene_toml: Option<String>,
+    /// Workflow parameters (user units).
+    pub params: serde_json::Value,
+}
+
+impl RunMeta {
+    /// The sidecar of `file` (written under `role`) for a run with `inputs`.
+    pub fn new(
+        inputs: &Inputs,
+        warnings: &[String],
+        file: &std::path::Path,
+        role: &str,
+    ) -> RunMeta {
+        RunMeta {
+            tool: "superlube",
+            version: VERSION,
+            workflow: inputs.workflow.clone(),
+            file: file
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default(),
+            role: role.to_string(),
+            complete: true,
+            rows: None,
+            input_hash: inputs.hash(),
+            command_line: command_line(),
+            warnings: warnings.to_vec(),
+            scene: inputs.scene.clone(),
+            scene_toml: inputs.scene.as_ref().and_then(|s| toml::to_string(s).ok()),
+            params: inputs.params.clone(),
+        }
+    }
+
+    /// Pretty JSON text with a final newline.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
+    }
+}
+
+/// The process's arguments, the program name written as `superlube`.
+pub fn command_line() -> Vec<String> {
+    let mut v: Vec<String> = std::env::args_os()
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    if let Some(first) = v.first_mut() {
+        *first = "superlube".into();
+    }
+    v
+}
+
+/// The shortest decimal user value `u` (trying 1 to 17 significant digits of `to_user(si)`) whose
+/// conversion back, `to_si(u)`, is exactly `si`; `to_user(si)` if none is. Makes a recorded
+/// scene reload to the identical SI scene.
+fn exact_user(si: f64, to_user: impl Fn(f64) -> f64, to_si: impl Fn(f64) -> f64) -> f64 {
+    let u = to_user(si);
+    if !u.is_finite() {
+        return u;
+    }
+    for digits in 0..17 {
+        if let Ok(c) = format!("{u:.digits$e}").parse::<f64>() {
+            if to_si(c) == si {
+                return c;
+            }
+        }
+    }
+    // No decimal converts back exactly (e.g. a preset's 364e-6 m is not 364 × 1e-6): the nearest
+    // neighbouring double that does.
+    for k in 1..=8u64 {
+        for c in [
+            f64::from_bits(u.to_bits().wrapping_add(k)),
+            f64::from_bits(u.to_bits().wrapping_sub(k)),
+        ] {
+            if c.is_finite() && to_si(c) == si {
+                return c;
+            }
+        }
+    }
+    u
+}
+
+fn um(si: f64) -> f64 {
+    exact_user(si, m_to_um, um_to_m)
+}
+
+fn um2(v: [f64; 2]) -> [f64; 2] {
+    [um(v[0]), um(v[1])]
+}
+
+/// A lattice in user units: its named kind when it is exactly that kind's lattice, else oblique.
+fn lattice_file(l: &Lattice) -> LatticeFile {
+    let s = um(l.a1[0]);
+    let named = [
+        ("triangular", Lattice::triangular(um_to_m(s))),
+        ("square", Lattice::square(um_to_m(s))),
+    ];
+    for (kind, cand) in named {
+        if cand == *l {
+            return LatticeFile {
+                kind: kind.into(),
+                spacing_um: Some(s),
+                ..Default::default()
+            };
+        }
+    }
+    let sy = um(l.a2[1]);
+    if Lattice::rectangular(um_to_m(s), um_to_m(sy)) == *l {
+        return LatticeFile {
+            kind: "rectangular".into(),
+            spacing_um: Some(s),
+            spacing_y_um: Some(sy),
+            ..Default::default()
+        };
+    }
+    LatticeFile {
+        kind: "oblique".into(),
+        a1_um: Some(um2(l.a1)),
+        a2_um: Some(um2(l.a2)),
+        ..Default::default()
+    }
+}
+
+/// The full scene in user units, reloadable: `scene_file(s).into_scene() == s` (tested for the
+/// presets and modified scenes). The lattices are written only when the scene's pattern says a
+/// file changed them (`pattern*` or `custom`); otherwise the pattern's preset defines them.
+pub fn scene_file(s: &Scene) -> SceneFile {
+    let base = s.pattern.trim_end_matches('*');
+    let custom_lattices = s.pattern.ends_with('*') || s.pattern == "custom";
+    let (tilt, k1) = match s.slider.mount {
+        Mount::Springs { k1 } => ("springs", Some(k1)),
+        m => (m.name(), None),
+    };
+    SceneFile {
+        pattern: (s.pattern != "custom").then(|| base.to_string()),
+        sphere_diameter_um: Some(exact_user(
+            s.sphere_radius,
+            |r| m_to_um(2.0 * r),
+            |d| um_to_m(d) / 2.0,
+        )),
+        slider: SliderFile {
+            lattice: custom_lattices.then(|| lattice_file(&s.slider.lattice)),
+            radius_um: Some(um(s.slider.radius)),
+            theta_deg: Some(exact_user(s.slider.theta, rad_to_deg, f64::to_radians)),
+            offset_um: Some(um2(s.slider.offset)),
+            tilt: Some(tilt.into()),
+            tilt_k1_n_m: k1,
+        },
+        substrate: SubstrateFile {
+            lattice: custom_lattices.then(|| lattice_file(&s.substrate.lattice)),
+            size_um: Some(um2(s.substrate.size)),
+            sigma_h_um: Some(um(s.substrate.sigma_h)),
+            seed: Some(s.substrate.seed),
+        },
+        material: MaterialFile {
+            youngs_gpa: Some(exact_user(s.material.youngs, pa_to_gpa, gpa_to_pa)),
+            poisson: Some(s.material.poisson),
+            density_g_cm3: Some(exact_user(s.material.density, kgm3_to_gcm3, gcm3_to_kgm3)),
+        },
+        coating: CoatingFile {
+            p_crit_gpa: Some(exact_user(s.coating.p_crit, pa_to_gpa, gpa_to_pa)),
+            mu1: Some(s.coating.mu1),
+            mu2: Some(s.coating.mu2),
+        },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Same scene: equal, except lengths that no user-unit number converts to exactly (the
+    /// presets' `364e-6` m is not `364 × 1e-6`), which must agree to 1 ulp.
+    fn same(a: &Scene, b: &Scene) {
+        let close = |x: f64, y: f64| (x - y).abs() <= 2.0 * f64::EPSILON * x.abs().max(y.abs());
+        let mut b2 = b.clone();
+        for k in 0..2 {
+            assert!(
+                close(a.substrate.size[k], b.substrate.size[k]),
+                "{a:?} {b:?}"
+            );
+            b2.substrate.size[k] = a.substrate.size[k];
+        }
+        assert_eq!(a, &b2);
+    }
+
+    fn round_trips(s: &Scene) {
+        let f = scene_file(s);
+        same(&f.into_scene().unwrap(), s);
+        let toml = toml::to_string(&f).unwrap();
+        let g = SceneFile::from_toml(&toml, "sidecar").unwrap();
+        let reloaded = g.into_scene().unwrap();
+        same(&reloaded, s);
+        // Recording the reloaded scene gives the same record (and hash).
+        assert_eq!(scene_file(&reloaded), f, "{toml}");
+    }
+
+    #[test]
+    fn recorded_scenes_reload_exactly() {
+        for p in surrogate::scene::PATTERNS {
+            round_trips(&Scene::preset(p).unwrap());
+        }
+        let f = SceneFile::from_toml(
+            "pattern = 'tri-tri'\nsphere_diameter_um = 2.7\n[slider]\nradius_um = 31.3\ntheta_deg = 10.2\n\
+             offset_um = [1.1, -0.4]\ntilt = 'free'\n[substrate]\nsigma_h_um = 0.002\nseed = 7\n\
+             lattice = { kind = 'oblique', a1_um = [3.0, 0.0], a2_um = [1.0, 2.8] }\n\
+             [material]\nyoungs_GPa = 50\ndensity_g_cm3 = 2.2\n[coating]\np_crit_GPa = 3.3\nmu1 = 0.02\n",
+            "t",
+        )
+        .unwrap();
+        round_trips(&f.into_scene().unwrap());
+        let f = SceneFile::from_toml(
+            "[slider]\nlattice = { kind = 'rectangular', spacing_um = 2.9, spacing_y_um = 3.3 }\n\
+             tilt_k1_N_m = 2.5e5\n[substrate]\nlattice = { kind = 'square', spacing_um = 3.1 }\n",
+            "t",
+        )
+        .unwrap();
+        let s = f.into_scene().unwrap();
+        assert_eq!(s.pattern, "custom");
+        round_trips(&s);
+    }
+
+    #[test]
+    fn hash_depends_on_inputs_only() {
+        let s = Scene::preset("tri-tri").unwrap();
+        let a = Inputs {
+            workflow: "screen".into(),
+            scene: Some(scene_file(&s)),
+            params: serde_json::json!({"load_mN": [1.4]}),
+        };
+        let mut b = a.clone();
+        assert_eq!(a.hash(), b.hash());
+        assert!(a.hash().starts_with("sha256:") && a.hash().len() == 7 + 64);
+        b.params = serde_json::json!({"load_mN": [1.5]});
+        assert_ne!(a.hash(), b.hash());
+        let mut s2 = s.clone();
+        s2.substrate.seed = 2;
+        b = a.clone();
+        b.scene = Some(scene_file(&s2));
+        assert_ne!(a.hash(), b.hash());
+    }
+}

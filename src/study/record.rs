@@ -1,0 +1,116 @@
+//! Each workflow's parameters in user units, as recorded in the sidecars (`params`) and hashed
+//! into `input_hash` ([`super::meta`]).
+
+use super::contacts::ContactsParams;
+use super::corrugation::CorrugationParams;
+use super::dem_run::DemParams;
+use super::landscape::LandscapeParams;
+use super::rows::{clean, label};
+use super::screen::ScreenParams;
+use serde_json::{json, Value};
+use sha2::{Digest, Sha256};
+use surrogate::units::{m_to_um, n_to_mn, rad_to_deg, s_to_us};
+
+/// Longest axis written out value by value; longer ones are recorded as count, first, last and
+/// the sha256 of their values (still exact for the hash, without a 100 MB sidecar).
+pub const MAX_LISTED: usize = 1000;
+
+/// A sweep axis in user units.
+pub fn axis(values: &[f64]) -> Value {
+    if values.len() <= MAX_LISTED {
+        return json!(values);
+    }
+    let mut h = Sha256::new();
+    for v in values {
+        h.update(v.to_le_bytes());
+    }
+    let hex: String = h.finalize().iter().map(|b| format!("{b:02x}")).collect();
+    json!({
+        "count": values.len(),
+        "first": values[0],
+        "last": values[values.len() - 1],
+        "values_sha256": hex,
+    })
+}
+
+fn search_name(s: surrogate::solver::SearchKind) -> &'static str {
+    match s {
+        surrogate::solver::SearchKind::Grid => "grid",
+        surrogate::solver::SearchKind::Bvh => "bvh",
+    }
+}
+
+/// `screen`: θ (degrees) and W (mN) axes, model, search.
+pub fn screen(p: &ScreenParams) -> Value {
+    let t: Vec<f64> = p.thetas.iter().map(|&t| label(rad_to_deg(t))).collect();
+    let w: Vec<f64> = p.loads.iter().map(|&w| label(n_to_mn(w))).collect();
+    json!({
+        "theta_deg": axis(&t),
+        "load_mN": axis(&w),
+        "model": p.model.name(),
+        "search": search_name(p.search),
+    })
+}
+
+/// One configuration's contact list: θ, W, model, search.
+pub fn contacts(p: &ContactsParams) -> Value {
+    json!({
+        "theta_deg": label(rad_to_deg(p.theta)),
+        "load_mN": label(n_to_mn(p.load)),
+        "model": p.model.name(),
+        "search": search_name(p.search),
+    })
+}
+
+/// `landscape`: W and the grid (θ is in the scene).
+pub fn landscape(p: &LandscapeParams) -> Value {
+    json!({
+        "load_mN": label(n_to_mn(p.load)),
+        "grid": p.grid,
+    })
+}
+
+/// `corrugation`: W, α axis (degrees), contact line, path, method (θ is in the scene).
+pub fn corrugation(p: &CorrugationParams) -> Value {
+    let a: Vec<f64> = p.alphas.iter().map(|&a| clean(rad_to_deg(a))).collect();
+    json!({
+        "load_mN": label(n_to_mn(p.load)),
+        "alpha_deg": axis(&a),
+        "line_deg": p.line.map(rad_to_deg),
+        "distance_um": label(m_to_um(p.distance)),
+        "step_um": label(m_to_um(p.step)),
+        "method": p.method,
+        "grid": p.grid,
+    })
+}
+
+/// `equilibrate` / `slide`: load, α, line, protocol times, start, reductions, friction, every
+/// engine knob (θ is in the scene).
+pub fn dem(scene: &surrogate::Scene, p: &DemParams) -> Value {
+    let mut engine = p.sim.clone();
+    engine.alpha = super::dem_run::direction(scene, p).1;
+    let s = &engine;
+    json!({
+        "load_mN": label(n_to_mn(s.load)),
+        "alpha_deg": label(rad_to_deg(p.alpha)),
+        "line_deg": p.line.map(rad_to_deg),
+        "equilibrate_us": label(s_to_us(s.equilibrate_time)),
+        "relax_us": label(s_to_us(s.relax_time)),
+        "slide_us": label(s_to_us(s.slide_time)),
+        "speed_m_s": s.support_speed,
+        "dt_us": s.dt.map(|d| label(s_to_us(d))),
+        "sample_us": label(s_to_us(s.sample_interval)),
+        "start": match p.start {
+            dem::Start::Surrogate => json!("surrogate"),
+            dem::Start::Gap(g) => json!({"gap_nm": label(surrogate::units::m_to_nm(g))}),
+        },
+        "rigid_z": s.rigid_z,
+        "prune": s.prune_substrate,
+        "friction": match &p.friction {
+            None => json!("coating (pressure-switched mu1/mu2)"),
+            Some(dem::model::Friction::Constant(c)) => json!({"constant_mu": c.mu}),
+            Some(f) => json!(format!("{f:?}")),
+        },
+        "engine_si": s,
+    })
+}

@@ -1,0 +1,321 @@
+//! The output row types: ONE struct and ONE CSV/JSON schema per kind of row, used by every
+//! command that writes that kind of row. Columns and keys are in user units and say so in their
+//! names; the values are converted from SI with `surrogate::units` here and nowhere else.
+//!
+//! | row | written by | columns |
+//! |---|---|---|
+//! | [`ScreenRow`] | `screen --out`, `figures` (sweep_*.csv) | `pattern,theta_deg,load_mN,contacts,p_max_GPa,z_um,coating_failed,failed_contacts,tilt_x_urad,tilt_y_urad,model,residual_rel,iterations,error` |
+//! | [`ContactRow`] | `screen --contacts-out`, `landscape --contacts-out`, `figures` (contact_map_*.csv) | `slider_index,substrate_index,x_um,y_um,z_um,overlap_nm,force_uN,p0_GPa,failed` |
+//! | [`LandscapeRow`] | `landscape --out`, `figures` (landscape_*.csv) | `x_um,y_um,dz_nm` |
+//! | [`CorrugationRow`] | `corrugation --out`, `figures` (corrugation_square-tri.csv) | `theta_deg,load_mN,line_deg,alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN` |
+//! | [`DemSample`] | `equilibrate --out`, `slide --out` | `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts` |
+//! | [`EquilibrateReport`], [`SlideReport`] | `equilibrate --json`, `slide --json` | JSON objects (keys documented on the fields) |
+
+use serde::Serialize;
+use surrogate::solver::{ContactInfo, Equilibrium, Model};
+use surrogate::units::{m_to_nm, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, UN};
+
+pub use dem::protocol::Sample as DemSample;
+pub use dem::protocol::{EquilibrateSummary, SlideSummary};
+
+/// Rounds a grid or range coordinate to 1e-9 of its unit, removing the binary noise of
+/// `start + k·step` (0.06000000000000001 → 0.06). Used for the landscape grid (µm) and the
+/// pulling angles α and directions (degrees): 1e-9 µm and 1e-9° are far below any physical
+/// resolution.
+pub fn clean(v: f64) -> f64 {
+    (v * 1e9).round() / 1e9
+}
+
+/// A value converted to user units for a row label (θ in degrees, W in mN), rounded to 12
+/// significant digits: removes the noise of the SI round trip (10.200000000000001 → 10.2) at
+/// any magnitude, so a load of 1e-20 mN prints as `1e-20`, never `0.0`.
+pub fn label(v: f64) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    format!("{v:.11e}").parse().unwrap_or(v)
+}
+
+/// One configuration (θ, W) of an orientation × load screen. The leading seven columns are the
+/// screening answer; units in the names.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[allow(non_snake_case)]
+pub struct ScreenRow {
+    /// Pattern pair name (`slider-substrate`; `*` = a preset whose lattices a scene file changed,
+    /// `custom` = lattices from a scene file without preset).
+    pub pattern: String,
+    /// Slider orientation θ (degrees).
+    pub theta_deg: f64,
+    /// Normal load W (mN).
+    pub load_mN: f64,
+    /// Contact number (pairs with overlap > 0).
+    pub contacts: Option<usize>,
+    /// Largest Hertz pressure p0 (GPa).
+    pub p_max_GPa: Option<f64>,
+    /// Slider sphere-centre plane height at the disc centre (µm), 3 µm at first on-top touch.
+    pub z_um: Option<f64>,
+    /// Whether P_max exceeds P_crit.
+    pub coating_failed: Option<bool>,
+    /// Number of contacts with p0 > P_crit.
+    pub failed_contacts: Option<usize>,
+    /// Tilt about x (µrad).
+    pub tilt_x_urad: Option<f64>,
+    /// Tilt about y (µrad).
+    pub tilt_y_urad: Option<f64>,
+    /// Model used.
+    pub model: String,
+    /// |ΣF_z − W| / W.
+    pub residual_rel: Option<f64>,
+    /// Solver iterations.
+    pub iterations: Option<usize>,
+    /// Empty, or why this configuration has no equilibrium (the other columns are then empty).
+    pub error: String,
+}
+
+impl ScreenRow {
+    /// The row of configuration (θ rad, W N) from the solver's answer; `model` is the model
+    /// asked for (reported when the solve failed).
+    pub fn new(
+        pattern: &str,
+        theta: f64,
+        load: f64,
+        r: &Result<Equilibrium, surrogate::SceneError>,
+        model: Model,
+    ) -> ScreenRow {
+        let mut row = ScreenRow {
+            pattern: pattern.to_string(),
+            theta_deg: label(rad_to_deg(theta)),
+            load_mN: label(n_to_mn(load)),
+            contacts: None,
+            p_max_GPa: None,
+            z_um: None,
+            coating_failed: None,
+            failed_contacts: None,
+            tilt_x_urad: None,
+            tilt_y_urad: None,
+            model: model.name().to_string(),
+            residual_rel: None,
+            iterations: None,
+            error: String::new(),
+        };
+        match r {
+            Ok(e) => {
+                row.contacts = Some(e.contact_count());
+                row.p_max_GPa = Some(pa_to_gpa(e.p_max));
+                row.z_um = Some(m_to_um(e.z));
+                row.coating_failed = Some(e.coating_failed());
+                row.failed_contacts = Some(e.failed_count());
+                row.tilt_x_urad = Some(e.tilt[0] * 1e6);
+                row.tilt_y_urad = Some(e.tilt[1] * 1e6);
+                row.model = e.model.name().to_string();
+                row.residual_rel = Some(e.residual_rel());
+                row.iterations = Some(e.iterations);
+            }
+            Err(err) => row.error = err.to_string(),
+        }
+        row
+    }
+}
+
+/// One slider–substrate contact of an equilibrium (the per-contact list behind contact maps).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[allow(non_snake_case)]
+pub struct ContactRow {
+    /// Index of the slider sphere (order of `Scene::slider_sites_local`).
+    pub slider_index: u32,
+    /// Index of the substrate sphere (order of `Scene::substrate_spheres`).
+    pub substrate_index: u32,
+    /// Contact point x (µm, substrate frame).
+    pub x_um: f64,
+    /// Contact point y (µm).
+    pub y_um: f64,
+    /// Contact point z (µm).
+    pub z_um: f64,
+    /// Overlap δ (nm).
+    pub overlap_nm: f64,
+    /// Normal force F_n (µN).
+    pub force_uN: f64,
+    /// Hertz pressure p0 (GPa).
+    pub p0_GPa: f64,
+    /// Whether p0 > P_crit (coating failed at this contact).
+    pub failed: bool,
+}
+
+impl ContactRow {
+    /// The row of one contact.
+    pub fn new(c: &ContactInfo) -> ContactRow {
+        ContactRow {
+            slider_index: c.slider,
+            substrate_index: c.substrate,
+            x_um: m_to_um(c.point[0]),
+            y_um: m_to_um(c.point[1]),
+            z_um: m_to_um(c.point[2]),
+            overlap_nm: m_to_nm(c.overlap),
+            force_uN: c.force_n / UN,
+            p0_GPa: pa_to_gpa(c.p0),
+            failed: c.failed,
+        }
+    }
+
+    /// Every contact of an equilibrium, in the solver's order.
+    pub fn all(eq: &Equilibrium) -> Vec<ContactRow> {
+        eq.contacts.iter().map(ContactRow::new).collect()
+    }
+}
+
+/// One grid point of a Δz landscape.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LandscapeRow {
+    /// Shift x of the slider centre from its default placement (µm).
+    pub x_um: f64,
+    /// Shift y (µm).
+    pub y_um: f64,
+    /// Δz = z − min z over the grid (nm).
+    pub dz_nm: f64,
+}
+
+impl LandscapeRow {
+    /// The row of shift `shift` (m) with `dz` (m).
+    pub fn new(shift: [f64; 2], dz: f64) -> LandscapeRow {
+        LandscapeRow {
+            x_um: clean(m_to_um(shift[0])),
+            y_um: clean(m_to_um(shift[1])),
+            dz_nm: m_to_nm(dz),
+        }
+    }
+}
+
+/// Corrugation felt along one pulling direction α.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CorrugationRow {
+    /// Slider orientation θ (degrees).
+    pub theta_deg: f64,
+    /// Normal load W (mN).
+    #[serde(rename = "load_mN")]
+    pub load_mn: f64,
+    /// Contact-line angle from the substrate x axis (degrees) that α is measured from.
+    pub line_deg: f64,
+    /// Pulling angle α from the contact line (degrees).
+    pub alpha_deg: f64,
+    /// Path direction from the substrate x axis = line + α (degrees).
+    pub direction_deg: f64,
+    /// Peak-to-peak slider height along the path (nm).
+    pub corrugation_nm: f64,
+    /// Largest quasi-static pulling force along the path: the static-friction barrier (mN).
+    #[serde(rename = "max_lateral_force_mN")]
+    pub max_lateral_force_mn: f64,
+}
+
+impl CorrugationRow {
+    /// The row of a corrugation point at θ (rad), W (N), contact line `line` (rad).
+    pub fn new(
+        theta: f64,
+        load: f64,
+        line: f64,
+        p: &surrogate::map::CorrugationPoint,
+    ) -> CorrugationRow {
+        CorrugationRow {
+            theta_deg: label(rad_to_deg(theta)),
+            load_mn: label(n_to_mn(load)),
+            line_deg: rad_to_deg(line),
+            alpha_deg: clean(rad_to_deg(p.alpha)),
+            direction_deg: clean(rad_to_deg(p.direction)),
+            corrugation_nm: m_to_nm(p.corrugation),
+            max_lateral_force_mn: n_to_mn(p.max_lateral_force),
+        }
+    }
+}
+
+/// Facts of a DEM run reported in every DEM summary (user units).
+#[derive(Debug, Clone, Serialize)]
+pub struct RunInfo {
+    /// Time step used (µs).
+    pub dt_us: f64,
+    /// Estimated critical step (µs).
+    pub dt_crit_us: f64,
+    /// Mode that sets the critical step.
+    pub dt_crit_mode: &'static str,
+    /// Pulling angle α from the contact line (degrees).
+    pub alpha_deg: f64,
+    /// Contact-line angle from the substrate x axis (degrees).
+    pub line_deg: f64,
+    /// Pulling direction from the substrate x axis = line + α (degrees).
+    pub direction_deg: f64,
+    /// Moving particles (substrate + slider + control body).
+    pub particles: usize,
+    /// Substrate spheres left out by `--prune`.
+    pub pruned_substrate: usize,
+    /// Particle-steps per wall second.
+    pub particle_steps_per_s: f64,
+    /// Slider spheres rigid in z (reduction).
+    pub rigid_z: bool,
+    /// Substrate pruning in use.
+    pub prune: bool,
+}
+
+/// What a DEM summary says about its configuration (user units): enough to tell two summaries
+/// apart without the sidecar.
+#[derive(Debug, Clone, Serialize)]
+pub struct DemCase {
+    /// Pattern pair name.
+    pub pattern: String,
+    /// Slider orientation θ (degrees).
+    pub theta_deg: f64,
+    /// Normal load W (mN).
+    #[serde(rename = "load_mN")]
+    pub load_mn: f64,
+}
+
+/// JSON summary of `superlube equilibrate`: the case, the DEM state at the end, the surrogate's
+/// answer, their differences and the run facts.
+#[derive(Debug, Clone, Serialize)]
+pub struct EquilibrateReport {
+    /// Pattern, θ, W.
+    #[serde(flatten)]
+    pub case: DemCase,
+    /// DEM state at the end and the surrogate's answer.
+    #[serde(flatten)]
+    pub result: EquilibrateSummary,
+    /// DEM contacts − surrogate contacts.
+    pub contacts_diff: i64,
+    /// DEM P_max / surrogate P_max − 1.
+    pub p_max_rel_diff: f64,
+    /// DEM z − surrogate z (nm); negative: the compliant DEM slider sits lower.
+    pub z_diff_nm: f64,
+    /// Run facts.
+    #[serde(flatten)]
+    pub run: RunInfo,
+}
+
+/// JSON summary of `superlube slide`: the case, friction and lock-in, and the run facts.
+#[derive(Debug, Clone, Serialize)]
+pub struct SlideReport {
+    /// Pattern, θ, W.
+    #[serde(flatten)]
+    pub case: DemCase,
+    /// Friction, contacts, lock-in over the measuring window.
+    #[serde(flatten)]
+    pub result: SlideSummary,
+    /// Run facts.
+    #[serde(flatten)]
+    pub run: RunInfo,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn labels_keep_tiny_values_and_drop_conversion_noise() {
+        assert_eq!(label(1e-20), 1e-20);
+        assert_eq!(label(10.200000000000001), 10.2);
+        assert_eq!(label(0.30000000000000004), 0.3);
+        assert_eq!(label(-3.0), -3.0);
+        assert_eq!(label(0.0), 0.0);
+        for v in [0.35, 1.4, 2.1, 3.86, 21.8, 1e-12, 123456.789] {
+            let si = surrogate::units::mn_to_n(v);
+            assert_eq!(label(n_to_mn(si)), v);
+            assert_eq!(label(rad_to_deg(v.to_radians())), v);
+        }
+    }
+}

@@ -1,0 +1,189 @@
+//! One scene resolution and validation for every command (issue 7, items 2 and 3): the scene
+//! file's θ is honoured by every command, flags override the file, a slider that does not fit
+//! on the substrate is refused by every command before any work, and an overhanging slider is
+//! reported by every command in its log and in its sidecar.
+
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
+
+/// `landscape` and `corrugation` honour `slider.theta_deg` of a scene file (they used the
+/// θ = 0 landscape: 94.8 nm range instead of 5.7 nm at 10.2°), and `--theta` overrides it.
+#[test]
+fn scene_file_theta_is_honoured_by_the_map_commands() {
+    let d = tmpdir("scene-theta");
+    let toml = d.join("s.toml");
+    std::fs::write(
+        &toml,
+        "pattern = 'square-tri'\n[slider]\ntheta_deg = 10.2\n",
+    )
+    .unwrap();
+    let run = |args: &[&str]| {
+        let out = bin().args(args).output().unwrap();
+        assert_ok(&out);
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let t = toml.to_str().unwrap();
+    let range = |csv: &str| {
+        csv.lines()
+            .skip(1)
+            .map(|l| l.split(',').nth(2).unwrap().parse::<f64>().unwrap())
+            .fold(0.0, f64::max)
+    };
+    let from_file = run(&["landscape", "--scene", t, "--grid", "7"]);
+    let from_flag = run(&[
+        "landscape",
+        "--pattern",
+        "square-tri",
+        "--theta",
+        "10.2",
+        "--grid",
+        "7",
+    ]);
+    let overridden = run(&["landscape", "--scene", t, "--theta", "0", "--grid", "7"]);
+    assert_eq!(from_file, from_flag);
+    assert!(range(&from_file) < 10.0, "θ = 10.2°: {}", range(&from_file));
+    assert!(range(&overridden) > 30.0, "θ = 0: {}", range(&overridden));
+    let corr = |extra: &[&str]| {
+        let mut a = vec![
+            "corrugation",
+            "--alpha",
+            "0",
+            "--distance-um",
+            "3",
+            "--step-um",
+            "0.5",
+        ];
+        a.extend(extra);
+        run(&a)
+    };
+    let from_file = corr(&["--scene", t]);
+    assert_eq!(from_file, corr(&["--theta", "10.2"]));
+    assert!(
+        from_file.lines().nth(1).unwrap().starts_with("10.2,1.4,"),
+        "{from_file}"
+    );
+    assert!(corr(&["--scene", t, "--theta", "0"])
+        .lines()
+        .nth(1)
+        .unwrap()
+        .starts_with("0.0,1.4,"));
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// A slider far larger than the substrate is refused by every command, naming the field, before
+/// any work (screen used to answer 1 contact at 21.8 GPa).
+#[test]
+fn every_command_refuses_a_slider_that_does_not_fit() {
+    let bad = [
+        "--substrate-um",
+        "2x2",
+        "--slider-radius-um",
+        "15",
+        "--load-mn",
+        "10",
+    ];
+    for cmd in ["screen", "landscape", "corrugation", "equilibrate", "slide"] {
+        let mut a = vec![cmd];
+        a.extend(bad);
+        if cmd == "screen" {
+            a.extend(["--theta", "0"]);
+        }
+        fails_naming(&a, "slider.radius_um");
+    }
+}
+
+/// A slider hanging over the substrate edge is allowed but reported: in the log and in the
+/// sidecar's `warnings`.
+#[test]
+fn every_command_reports_the_edge_overhang() {
+    let d = tmpdir("scene-edge");
+    let scene = [
+        "--pattern",
+        "square-tri",
+        "--slider-radius-um",
+        "9",
+        "--substrate-um",
+        "40x40",
+        "--offset-um",
+        "14,0",
+        "--load-mn",
+        "0.02",
+    ];
+    let cases: [(&str, &[&str]); 3] = [
+        ("screen", &["--theta", "0,10"]),
+        ("equilibrate", &["--equilibrate-us", "0.01", "--rigid-z"]),
+        (
+            "slide",
+            &[
+                "--equilibrate-us",
+                "0.01",
+                "--relax-us",
+                "0.01",
+                "--slide-us",
+                "0.01",
+                "--rigid-z",
+            ],
+        ),
+    ];
+    for (cmd, extra) in cases {
+        let csv = d.join(format!("{cmd}.csv"));
+        let out = bin()
+            .arg(cmd)
+            .args(scene)
+            .args(extra)
+            .arg("--out")
+            .arg(&csv)
+            .output()
+            .unwrap();
+        assert_ok(&out);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("warning:") && err.contains("over the edge"),
+            "{cmd}: {err}"
+        );
+        let meta: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(d.join(format!("{cmd}.csv.meta.json"))).unwrap(),
+        )
+        .unwrap();
+        let w = meta["warnings"].as_array().unwrap();
+        assert!(
+            w.iter()
+                .any(|w| w.as_str().unwrap().contains("over the edge")),
+            "{cmd}: {meta}"
+        );
+    }
+    // The map commands refuse such a scene (a landscape would not be periodic) after the warning.
+    let cases: [(&str, &[&str], &str); 2] = [
+        ("landscape", &["--grid", "3"], "offset_um"),
+        (
+            "corrugation",
+            &["--alpha", "0", "--distance-um", "3"],
+            "distance_um",
+        ),
+    ];
+    for (cmd, extra, field) in cases {
+        let csv = d.join(format!("{cmd}.csv"));
+        let out = bin()
+            .arg(cmd)
+            .args(scene)
+            .args(extra)
+            .arg("--out")
+            .arg(&csv)
+            .output()
+            .unwrap();
+        assert!(!out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("over the edge") && err.contains(field),
+            "{cmd}: {err}"
+        );
+        // Refused before any row: no output, no partial file left behind.
+        let left: Vec<_> = std::fs::read_dir(&d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .filter(|n| n.starts_with(cmd))
+            .collect();
+        assert!(left.is_empty(), "{cmd}: {left:?}");
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
