@@ -1,7 +1,7 @@
 //! `superlube export-lammps`: the Tier-2 model of one (θ, α, W) as a LAMMPS data file and input
 //! deck (engine: `dem::export`), to run with MPI LAMMPS on a cluster.
 
-use super::corrugation::{check_alpha, check_line_deg};
+use super::checks::{alpha as check_alpha, line_deg as check_line_deg};
 use super::SceneArgs;
 use anyhow::{bail, Context, Result};
 use dem::export::{export_lammps, files, ExportOptions};
@@ -18,7 +18,7 @@ pub struct Args {
     /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     theta: Option<f64>,
-    /// Normal load W in mN.
+    /// Normal load W in mN, applied to the control layer.
     #[arg(
         long = "load-mn",
         value_name = "MN",

@@ -1,7 +1,8 @@
 //! `superlube lammps-check`: reads the contact dump of an exported LAMMPS run and reports the
 //! contacts, P_max and the contacts above P_crit per frame (engine: `dem::export::check`).
 
-use crate::output::write_or_stdout;
+use crate::study::meta::Inputs;
+use crate::study::output::{check_outputs, Outputs};
 use anyhow::{bail, Context, Result};
 use dem::export::{check_dump, files, ExportMeta, FailedContact};
 use std::io::{BufReader, Write};
@@ -27,6 +28,10 @@ pub struct Args {
 
 /// Runs `superlube lammps-check`.
 pub fn run(a: Args) -> Result<()> {
+    check_outputs(&[
+        ("--out", a.out.as_deref()),
+        ("--failed-out", a.failed_out.as_deref()),
+    ])?;
     if !a.dump.is_file() {
         bail!("`DUMP`: {} is not a readable file", a.dump.display());
     }
@@ -67,16 +72,35 @@ pub fn run(a: Args) -> Result<()> {
         }
         Ok(())
     })?;
-    let frames = String::from_utf8(frames.into_inner()?)?;
-    write_or_stdout(a.out.as_deref(), &frames)?;
+    let mut outs = Outputs::new(
+        Inputs {
+            workflow: "lammps-check".into(),
+            scene: None,
+            params: serde_json::json!({
+                "dump": a.dump.display().to_string(),
+                "export": serde_json::to_value(&meta)?,
+            }),
+        },
+        Vec::new(),
+    );
+    let n_frames = summary.frames as u64;
+    outs.write(
+        "frames",
+        a.out.as_deref(),
+        frames.into_inner().map_err(anyhow::Error::from),
+        Some(n_frames),
+    );
     if let Some(p) = &a.failed_out {
-        let mut text = String::from_utf8(failed.into_inner()?)?;
-        if text.is_empty() {
-            text = "step,t_us,slider_index,substrate_index,p0_GPa\n".into();
-        }
-        crate::output::write_atomic(p, text.as_bytes())?;
+        let text = failed.into_inner().map_err(anyhow::Error::from).map(|b| {
+            if b.is_empty() {
+                b"step,t_us,slider_index,substrate_index,p0_GPa\n".to_vec()
+            } else {
+                b
+            }
+        });
+        outs.write("failed", Some(p), text, None);
     }
     let mut err = std::io::stderr().lock();
     write!(err, "lammps-check: {}", summary.text())?;
-    Ok(())
+    outs.finish()
 }

@@ -41,6 +41,7 @@ pub mod progress;
 pub mod record;
 pub mod rows;
 pub mod screen;
+pub mod shard;
 pub mod sink;
 pub mod slide;
 
@@ -48,3 +49,4 @@ pub use budget::Estimate;
 pub use meta::Inputs;
 pub use output::{check_outputs, Outputs};
 pub use progress::{Progress, Reporter};
+pub use shard::Shard;
