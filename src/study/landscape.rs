@@ -249,11 +249,11 @@ pub fn landscape(
 ) -> Result<LandscapeStats> {
     let spill_path = match spill {
         Some(p) => p.to_path_buf(),
-        None => std::env::temp_dir().join(format!(
-            "superlube-landscape-{}-{:?}.z",
-            std::process::id(),
-            std::thread::current().id()
-        )),
+        None => {
+            static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+            let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            std::env::temp_dir().join(format!("superlube-landscape-{}-{k}.z", std::process::id()))
+        }
     };
     let result = (|| {
         let file = std::fs::File::create(&spill_path)

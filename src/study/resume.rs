@@ -13,6 +13,8 @@ use super::meta::{input_differences, Inputs, Sidecar};
 use super::sink::partial_path;
 use super::sweep::ShardInfo;
 use anyhow::{bail, Context, Result};
+use std::collections::VecDeque;
+use std::io::{BufReader, Read, Seek, SeekFrom};
 use std::path::Path;
 
 /// The part of a partial file a resumed run keeps.
@@ -126,8 +128,8 @@ pub fn inspect(
     run_items: usize,
 ) -> Result<Option<Kept>> {
     let partial = partial_path(out);
-    let bytes = match std::fs::read(&partial) {
-        Ok(b) => b,
+    let mut file = match std::fs::File::open(&partial) {
+        Ok(f) => f,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
         Err(e) => return Err(e).with_context(|| format!("reading {}", partial.display())),
     };
@@ -151,11 +153,10 @@ pub fn inspect(
             partial.display()
         )
     };
-    let whole = match bytes.iter().rposition(|&b| b == b'\n') {
-        Some(i) => i + 1,
-        None => 0,
-    };
-    let torn = (bytes.len() - whole) as u64;
+    let len = file.metadata()?.len();
+    let whole = end_of_last_line(&mut file, len)
+        .with_context(|| format!("reading {}", partial.display()))?;
+    let torn = len - whole;
     if whole == 0 {
         // Empty, or only a torn header: start the file again.
         return Ok(Some(Kept {
@@ -167,52 +168,114 @@ pub fn inspect(
             dropped_rows: 0,
         }));
     }
-    let body = &bytes[..whole];
-    if let Some(i) = body.iter().position(|&b| b == 0) {
-        return Err(damaged(format!("a NUL byte at offset {i}")));
-    }
+    // Stream the complete lines (memory flat in the file's size): the end of each of the last
+    // rows_per_item + 1 rows is kept, enough to cut back to an item boundary.
+    file.seek(SeekFrom::Start(0))?;
     let mut r = csv::ReaderBuilder::new()
         .has_headers(true)
         .flexible(false)
-        .from_reader(body);
-    let header = r
-        .byte_headers()
-        .map_err(|e| damaged(format!("header: {e}")))?
-        .clone();
-    if header.is_empty() || header.iter().all(|f| f.is_empty()) {
+        .from_reader(NulCheck::new(BufReader::new(file.take(whole))));
+    let nul = |r: &csv::Reader<NulCheck<_>>| {
+        r.get_ref()
+            .nul_at
+            .map(|at| damaged(format!("a NUL byte at offset {at}, as a crash can leave")))
+    };
+    let header = match r.byte_headers() {
+        Ok(h) => h.clone(),
+        Err(e) => return Err(nul(&r).unwrap_or_else(|| damaged(format!("header: {e}")))),
+    };
+    if let Some(e) = nul(&r) {
+        return Err(e);
+    }
+    if header.iter().all(|f| f.is_empty()) {
         return Err(damaged("no header line".into()));
     }
-    let mut ends = vec![r.position().byte()];
-    let max_rows = (run_items as u64).saturating_mul(rows_per_item as u64);
+    let rpi = rows_per_item.max(1) as u64;
+    let max_rows = (run_items as u64).saturating_mul(rpi);
+    let mut ends: VecDeque<u64> = VecDeque::from([r.position().byte()]);
+    let mut rows = 0u64;
     let mut rec = csv::ByteRecord::new();
     loop {
         match r.read_byte_record(&mut rec) {
             Ok(true) => {}
             Ok(false) => break,
             Err(e) => {
-                return Err(damaged(format!(
-                    "row {} (line {}): {e}",
-                    ends.len(),
-                    ends.len() + 1
-                )))
+                return Err(nul(&r).unwrap_or_else(|| {
+                    damaged(format!("row {} (line {}): {e}", rows + 1, rows + 2))
+                }))
             }
         }
-        ends.push(r.position().byte());
-        if ends.len() as u64 - 1 > max_rows {
+        rows += 1;
+        if let Some(e) = nul(&r) {
+            return Err(e);
+        }
+        if rows > max_rows {
             return Err(damaged(format!("more rows than this run's {max_rows}")));
         }
+        ends.push_back(r.position().byte());
+        if ends.len() as u64 > rpi + 1 {
+            ends.pop_front();
+        }
     }
-    let rows = ends.len() as u64 - 1;
-    let items = (rows / rows_per_item.max(1) as u64) as usize;
-    let keep_rows = items as u64 * rows_per_item as u64;
+    let items = rows / rpi;
+    let keep_rows = items * rpi;
+    // ends[k] is the end of row rows − (ends.len() − 1) + k
+    let first = rows + 1 - ends.len() as u64;
     Ok(Some(Kept {
-        bytes: ends[keep_rows as usize],
+        bytes: ends[(keep_rows - first) as usize],
         header: true,
         rows: keep_rows,
-        items,
+        items: items as usize,
         torn_bytes: torn,
         dropped_rows: rows - keep_rows,
     }))
+}
+
+/// A reader that notes the offset of the first NUL byte read through it.
+struct NulCheck<R> {
+    inner: R,
+    offset: u64,
+    nul_at: Option<u64>,
+}
+
+impl<R> NulCheck<R> {
+    fn new(inner: R) -> Self {
+        NulCheck {
+            inner,
+            offset: 0,
+            nul_at: None,
+        }
+    }
+}
+
+impl<R: Read> Read for NulCheck<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        if self.nul_at.is_none() {
+            if let Some(i) = buf[..n].iter().position(|&b| b == 0) {
+                self.nul_at = Some(self.offset + i as u64);
+            }
+        }
+        self.offset += n as u64;
+        Ok(n)
+    }
+}
+
+/// The length of `file` (`len` bytes) up to and including its last newline (0 if none).
+fn end_of_last_line(file: &mut std::fs::File, len: u64) -> std::io::Result<u64> {
+    let mut end = len;
+    let mut buf = vec![0u8; 64 * 1024];
+    while end > 0 {
+        let start = end.saturating_sub(buf.len() as u64);
+        let chunk = &mut buf[..(end - start) as usize];
+        file.seek(SeekFrom::Start(start))?;
+        file.read_exact(chunk)?;
+        if let Some(i) = chunk.iter().rposition(|&b| b == b'\n') {
+            return Ok(start + i as u64 + 1);
+        }
+        end = start;
+    }
+    Ok(0)
 }
 
 /// Whether `out` is already the complete output of this sweep and shard (its sidecar says
