@@ -134,6 +134,16 @@ fn scripts_say_what_slurm_needs() {
         !array.contains("--partition") && !array.contains("--account"),
         "{array}"
     );
+    // The size guard holds per task: 3·10⁶ solves are refused in one run, but not in 4 shards.
+    let big = sweep("screen", &["--theta", "0:30:0.00002", "--load-mn", "1,2"]);
+    let job4 = d.join("job4");
+    let o = slurm(&big, &["--shards", "1", "--out", job4.to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--force"));
+    assert_ok(&slurm(
+        &big,
+        &["--shards", "4", "--out", job4.to_str().unwrap()],
+    ));
     // slurm's options may come before the command too
     let job3 = d.join("job3");
     let o = bin()
@@ -337,7 +347,7 @@ fn bad_flags_are_refused_before_writing() {
     );
     refused(
         &["slide", "--shards", "2", "--out", j],
-        &["screen, landscape or corrugation"],
+        &["screen, landscape, corrugation (got `slide`)"],
     );
     std::fs::remove_dir_all(&d).ok();
 }

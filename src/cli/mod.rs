@@ -71,6 +71,10 @@ pub struct SweepPlan {
     pub estimate: Estimate,
 }
 
+/// The sweep commands (those with `--shard`/`--resume`, which `superlube slurm` runs); each has
+/// an arm in [`prepare_sweep`].
+const SWEEP_COMMANDS: [&str; 3] = ["screen", "landscape", "corrugation"];
+
 /// Every check of a sweep command line (`screen`, `landscape`, `corrugation`), as running it
 /// would do them, without running it. `Ok(None)`: not a sweep command.
 fn prepare_sweep(command: Command) -> Result<Option<(&'static str, SweepPlan)>> {

@@ -1,7 +1,7 @@
 //! `superlube slurm <command> [its flags] --shards N --out DIR`: checks the sweep command line
 //! exactly as running it would, then writes the Slurm scripts of [`crate::study::slurm`].
 
-use super::{prepare_sweep, Cli, SweepPlan};
+use super::{prepare_sweep, Cli, SweepPlan, SWEEP_COMMANDS};
 use crate::study::slurm::{format_time, job, shard_file, valid_time, SlurmParams};
 use crate::study::{check_outputs, Inputs, Outputs, Progress, Reporter};
 use anyhow::{bail, Context, Result};
@@ -158,7 +158,8 @@ fn check_sweep(words: &[String]) -> Result<(&'static str, SweepPlan)> {
     match prepare_sweep(cli.command)? {
         Some(p) => Ok(p),
         None => bail!(
-            "`superlube slurm` runs sweeps: screen, landscape or corrugation (got `{}`)",
+            "`superlube slurm` runs sweeps: {} (got `{}`)",
+            SWEEP_COMMANDS.join(", "),
             words.first().map_or("", String::as_str)
         ),
     }
@@ -236,16 +237,24 @@ pub fn run(a: Args) -> Result<()> {
             dir.display()
         );
     }
-    let Some(command) = rest.first().cloned() else {
-        bail!("no sweep command given (screen, landscape or corrugation)");
-    };
+    let command = rest.first().cloned().unwrap_or_default();
+    if !SWEEP_COMMANDS.contains(&command.as_str()) {
+        bail!(
+            "`superlube slurm` runs sweeps: {} (got `{command}`)",
+            SWEEP_COMMANDS.join(", ")
+        );
+    }
     let args: Vec<String> = rest[1..].to_vec();
-    // 1. The sweep command as the user gave it, on its own (the same errors as running it).
+    // 1. The sweep command as the user gave it, on its own (the same errors as running it; the
+    //    size guard is left to step 2: each task is held to it for its own shard).
     let mut words = rest.clone();
     words.extend([
         "--out".into(),
         shard_file(&dir, &command, 0, 1).to_string_lossy().into(),
     ]);
+    if !rest.iter().any(|w| w == "--force") {
+        words.push("--force".into());
+    }
     let (name, whole) = check_sweep(&words)?;
     // 2. Enough items for the shards, then task 0's exact command line.
     whole.sweep.shard(

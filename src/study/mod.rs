@@ -60,9 +60,9 @@
 //!    shard and past the resumed rows) and pushes their rows in order, e.g. by calling the
 //!    workflow on the slice `params.list[items]`; the progress stage should count those items,
 //!    so a resumed run shows what it computed;
-//! 4. add the command to `prepare_sweep` in `src/cli/mod.rs` (a `prepare(args) -> Prepared`
-//!    doing every check without running, with `Prepared::plan()`), and `superlube slurm` can
-//!    run it as an array job.
+//! 4. add the command to `SWEEP_COMMANDS` and `prepare_sweep` in `src/cli/mod.rs` (a
+//!    `prepare(args) -> Prepared` doing every check without running, with `Prepared::plan()`),
+//!    and `superlube slurm` can run it as an array job.
 //!
 //! A sweep whose final rows need the whole sweep (like the landscape's min z) writes per-item
 //! rows from which they follow, under its own schema name, and adds that schema's merge in
