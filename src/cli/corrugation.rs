@@ -1,13 +1,20 @@
 //! `superlube corrugation`: flags → [`crate::study::corrugation::corrugation`] → CSV (streamed)
 //! and line plot, each with its sidecar.
 
-use super::{checks, SceneArgs};
+use super::scene_args::Resolved;
+use super::sweep_args::SweepArgs;
+use super::{checks, SceneArgs, SweepPlan};
 use crate::plot::figures::corrugation_png;
-use crate::study::corrugation::{corrugation, estimate, CorrugationParams, Method};
+use crate::study::corrugation::{
+    check_paths, contact_line, corrugation, estimate, CorrugationParams, Method,
+};
 use crate::study::rows::CorrugationRow;
 use crate::study::sink::Tee;
-use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs, Progress, Reporter};
-use anyhow::{bail, Result};
+use crate::study::{
+    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Progress, Reporter, Sweep,
+    SweepRun,
+};
+use anyhow::{bail, Context, Result};
 use std::path::PathBuf;
 
 /// Options of `superlube corrugation`.
@@ -75,10 +82,37 @@ pub struct Args {
     /// refused with its estimated time, memory and output size.
     #[arg(long)]
     force: bool,
+    #[command(flatten)]
+    sweep: SweepArgs,
+}
+
+/// A checked `superlube corrugation`, ready to run.
+pub struct Prepared {
+    a: Args,
+    sc: Resolved,
+    params: CorrugationParams,
+    run: SweepRun,
+    estimate: Estimate,
+}
+
+impl Prepared {
+    /// The sweep and its cost (for `superlube slurm`).
+    pub fn plan(&self) -> SweepPlan {
+        SweepPlan {
+            sweep: self.run.sweep.clone(),
+            estimate: self.estimate.clone(),
+        }
+    }
 }
 
 /// Runs `superlube corrugation`.
 pub fn run(a: Args) -> Result<()> {
+    execute(prepare(a)?)
+}
+
+/// Every check of `superlube corrugation`, before any work: flags, scene, every path, outputs,
+/// size.
+pub fn prepare(a: Args) -> Result<Prepared> {
     let alphas = checks::alphas(&a.alpha)?;
     let load = checks::load(a.load_mn)?;
     let (distance, step) = checks::path(a.distance_um, a.step_um)?;
@@ -99,8 +133,41 @@ pub fn run(a: Args) -> Result<()> {
         method: a.method,
         grid: a.grid,
     };
+    let run = a.sweep.run(
+        Sweep {
+            items: params.alphas.len(),
+            rows_per_item: 1,
+            unit: "α",
+            schema: "corrugation",
+        },
+        a.out.as_deref(),
+        &a.plot.as_ref().map_or(vec![], |_| vec!["--plot"]),
+    )?;
     check_outputs(&[("--out", a.out.as_deref()), ("--plot", a.plot.as_deref())])?;
-    estimate(&sc.scene, &params).check(a.force)?;
+    // Every path of the sweep (not only this shard's) must stay over the substrate.
+    if let Err(e) = check_paths(&sc.scene, &params, &contact_line(&sc.scene, params.line)) {
+        sc.log(&Reporter::stderr()); // the edge warning explains the refusal
+        return Err(e);
+    }
+    let estimate = match params.method {
+        // the landscape is computed whole by every shard
+        Method::Landscape => estimate(&sc.scene, &params),
+        Method::Direct => estimate(&sc.scene, &params).part(run.range().len(), params.alphas.len()),
+    };
+    estimate.check(a.force)?;
+    Ok(Prepared {
+        a,
+        sc,
+        params,
+        run,
+        estimate,
+    })
+}
+
+fn execute(p: Prepared) -> Result<()> {
+    let Prepared {
+        a, sc, params, run, ..
+    } = p;
     let rep = Reporter::stderr();
     sc.log(&rep);
     let mut outs = Outputs::new(
@@ -112,21 +179,31 @@ pub fn run(a: Args) -> Result<()> {
         sc.warnings.clone(),
     );
     let t0 = std::time::Instant::now();
-    // The rows are kept in memory only for the plot.
+    // The rows are kept in memory only for the plot (a resumed run reads them back from --out).
     let mut rows: Vec<CorrugationRow> = Vec::new();
-    let keep = a.plot.is_some();
-    outs.stream("--out", a.out.as_deref(), |csv| {
+    let keep = a.plot.is_some() && !run.resume;
+    let mut computed = 0;
+    outs.stream_sweep("--out", a.out.as_deref(), &run, &rep, |items, csv| {
+        computed = items.len();
+        let part = CorrugationParams {
+            alphas: params.alphas[items].to_vec(),
+            ..params.clone()
+        };
         if keep {
-            corrugation(&sc.scene, &params, &mut Tee(csv, &mut rows), &rep)
+            corrugation(&sc.scene, &part, &mut Tee(csv, &mut rows), &rep)
         } else {
-            corrugation(&sc.scene, &params, csv, &rep)
+            corrugation(&sc.scene, &part, csv, &rep)
         }
     })?;
     rep.note(&format!(
-        "corrugation: {} directions in {:.2} s",
-        params.alphas.len(),
+        "corrugation: {computed} directions in {:.2} s",
         t0.elapsed().as_secs_f64()
     ));
+    if let (Some(out), true, true) = (a.out.as_deref(), a.plot.is_some(), run.resume) {
+        rows = csv::Reader::from_path(out)
+            .and_then(|mut r| r.deserialize().collect())
+            .with_context(|| format!("reading {} back for the plot", out.display()))?;
+    }
     if let Some(p) = &a.plot {
         outs.attempt("--plot", p, || {
             corrugation_png(p, &sc.scene, &rows, a.distance_um)

@@ -1,15 +1,25 @@
 //! `superlube landscape`: flags → [`crate::study::landscape::landscape`] → CSV (streamed),
 //! heat map, contact map, each with its sidecar.
 
-use super::{checks, SceneArgs};
+use super::scene_args::Resolved;
+use super::sweep_args::SweepArgs;
+use super::{checks, SceneArgs, SweepPlan};
 use crate::plot::figures::{contact_map_png, landscape_png};
 use crate::study::contacts::{contacts, ContactsParams};
-use crate::study::landscape::{estimate, landscape, spill_path, LandscapeParams};
+use crate::study::landscape::{
+    self as workflow, estimate, finish, heights, landscape, spill_path, LandscapeParams,
+    LandscapeStats,
+};
+use crate::study::meta::sidecar_path;
+use crate::study::resume::is_complete;
 use crate::study::rows::{ContactRow, LandscapeRow};
 use crate::study::sink::{csv_bytes, RowSink, Tee};
-use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs, Progress, Reporter};
+use crate::study::{
+    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Progress, Reporter, Shard,
+    SweepRun,
+};
 use anyhow::Result;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use surrogate::solver::{Model, SearchKind};
 use surrogate::units::{m_to_nm, m_to_um};
 
@@ -35,7 +45,9 @@ pub struct Args {
     grid: usize,
     /// CSV output `x_um,y_um,dz_nm` (shift of the slider centre from its default placement in
     /// µm, and Δz = z − min z in nm), row-major with x fastest; streamed through
-    /// FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent.
+    /// FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent. The heights are
+    /// kept in FILE.csv.z until Δz can be computed. With `--shard`: that shard's rows
+    /// `x_um,y_um,z_um` (the exact height z in µm), which `superlube merge` turns into Δz.
     #[arg(long, value_name = "FILE.csv")]
     out: Option<PathBuf>,
     /// Heat-map PNG of Δz (nm) over the cell (axes in µm).
@@ -53,6 +65,27 @@ pub struct Args {
     /// with its estimated time, memory and output size.
     #[arg(long)]
     force: bool,
+    #[command(flatten)]
+    sweep: SweepArgs,
+}
+
+/// A checked `superlube landscape`, ready to run.
+pub struct Prepared {
+    a: Args,
+    sc: Resolved,
+    params: LandscapeParams,
+    run: SweepRun,
+    estimate: Estimate,
+}
+
+impl Prepared {
+    /// The sweep and its cost (for `superlube slurm`).
+    pub fn plan(&self) -> SweepPlan {
+        SweepPlan {
+            sweep: self.run.sweep.clone(),
+            estimate: self.estimate.clone(),
+        }
+    }
 }
 
 /// Keeps only Δz (nm) of each row, for the heat map.
@@ -67,18 +100,90 @@ impl RowSink<LandscapeRow> for DzOnly {
 
 /// Runs `superlube landscape`.
 pub fn run(a: Args) -> Result<()> {
+    execute(prepare(a)?)
+}
+
+/// Every check of `superlube landscape`, before any work: flags, scene, outputs, size.
+pub fn prepare(a: Args) -> Result<Prepared> {
     let sc = a.scene.resolve(a.theta)?;
     let params = LandscapeParams {
         load: checks::load(a.load_mn)?,
         grid: checks::grid(a.grid)?,
     };
+    let extras: Vec<&str> = [
+        ("--plot", a.plot.is_some()),
+        ("--contact-map", a.contact_map.is_some()),
+        ("--contacts-out", a.contacts_out.is_some()),
+    ]
+    .iter()
+    .filter(|(_, given)| *given)
+    .map(|(flag, _)| *flag)
+    .collect();
+    let run = a
+        .sweep
+        .run(workflow::sweep(&params), a.out.as_deref(), &extras)?;
     check_outputs(&[
         ("--out", a.out.as_deref()),
         ("--plot", a.plot.as_deref()),
         ("--contact-map", a.contact_map.as_deref()),
         ("--contacts-out", a.contacts_out.as_deref()),
     ])?;
-    estimate(&sc.scene, &params, a.plot.is_some()).check(a.force)?;
+    let estimate =
+        estimate(&sc.scene, &params, a.plot.is_some()).part(run.range().len(), run.sweep.items);
+    estimate.check(a.force)?;
+    Ok(Prepared {
+        a,
+        sc,
+        params,
+        run,
+        estimate,
+    })
+}
+
+/// The heights of the whole grid into the spill file `OUT.z` (resumable: `--resume` continues
+/// `OUT.z.partial`, or skips the pass when `OUT.z` is complete), then Δz into `OUT`.
+fn whole_to_file(
+    outs: &mut Outputs,
+    out: &Path,
+    sc: &Resolved,
+    params: &LandscapeParams,
+    resume: bool,
+    rows: &mut dyn RowSink<LandscapeRow>,
+    rep: &Reporter,
+) -> Result<LandscapeStats> {
+    let z = spill_path(out);
+    let zrun = SweepRun::new(workflow::sweep(params), Some(Shard::ALL), resume)?;
+    if resume && is_complete(&z, outs.inputs(), zrun.shard.as_ref(), zrun.rows()) {
+        rep.note(&format!(
+            "resuming: the heights in {} are complete; computing Δz",
+            z.display()
+        ));
+    } else {
+        outs.stream_sweep("--out", Some(&z), &zrun, rep, |items, csv| {
+            heights(&sc.scene, params, items, csv, rep)
+        })?;
+    }
+    let h = outs.stream("--out", Some(out), |csv| {
+        finish(params.grid, std::slice::from_ref(&z), &mut Tee(csv, rows))
+    })?;
+    let _ = std::fs::remove_file(&z);
+    let _ = std::fs::remove_file(sidecar_path(&z));
+    Ok(workflow::stats(workflow::cell(&sc.scene), &h))
+}
+
+/// A sink that drops every row.
+struct Discard;
+
+impl RowSink<LandscapeRow> for Discard {
+    fn push(&mut self, _: &LandscapeRow) -> Result<()> {
+        Ok(())
+    }
+}
+
+fn execute(p: Prepared) -> Result<()> {
+    let Prepared {
+        a, sc, params, run, ..
+    } = p;
     let rep = Reporter::stderr();
     sc.log(&rep);
     let mut outs = Outputs::new(
@@ -90,23 +195,34 @@ pub fn run(a: Args) -> Result<()> {
         sc.warnings.clone(),
     );
     let t0 = std::time::Instant::now();
+    if let (Some(shard), Some(out)) = (&run.shard, a.out.as_deref()) {
+        // A shard: its block of heights, merged into Δz by `superlube merge`.
+        outs.stream_sweep("--out", Some(out), &run, &rep, |items, csv| {
+            heights(&sc.scene, &params, items, csv, &rep)
+        })?;
+        rep.note(&format!(
+            "landscape shard {}: grid points {}..{} of {} (heights z; `superlube merge` of all {} shards writes Δz), {:.2} s",
+            shard.label(),
+            shard.item_range[0],
+            shard.item_range[1],
+            shard.items,
+            shard.count,
+            t0.elapsed().as_secs_f64()
+        ));
+        return outs.finish();
+    }
     // Δz is kept in memory only for the heat map.
     let mut dz = DzOnly(Vec::new());
-    let keep = a.plot.is_some();
-    let spill = a.out.as_deref().map(spill_path);
-    let stats = outs.stream("--out", a.out.as_deref(), |csv| {
-        if keep {
-            landscape(
-                &sc.scene,
-                &params,
-                spill.as_deref(),
-                &mut Tee(csv, &mut dz),
-                &rep,
-            )
-        } else {
-            landscape(&sc.scene, &params, spill.as_deref(), csv, &rep)
+    let mut none = Discard;
+    let keep: &mut dyn RowSink<LandscapeRow> = if a.plot.is_some() { &mut dz } else { &mut none };
+    let stats = match a.out.as_deref() {
+        Some(out) if std::fs::metadata(out).map_or(true, |m| m.is_file()) => {
+            whole_to_file(&mut outs, out, &sc, &params, run.resume, keep, &rep)?
         }
-    })?;
+        out => outs.stream("--out", out, |csv| {
+            landscape(&sc.scene, &params, None, &mut Tee(csv, keep), &rep)
+        })?,
+    };
     let c = &stats.cell;
     rep.note(&format!(
         "landscape: {}x{} grid over the {} cell {:.4}x{:.4} µm, Δz range {:.4} nm, edge mismatch {:.2e} nm, {:.2} s",

@@ -11,14 +11,18 @@ mod export_lammps;
 mod figures;
 mod lammps_check;
 mod landscape;
+mod merge;
 mod range;
 mod scene_args;
 mod screen;
 mod slide;
+mod slurm;
+mod sweep_args;
 
 pub use range::parse_list_or_range;
 pub use scene_args::SceneArgs;
 
+use crate::study::{Estimate, Sweep};
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
@@ -52,6 +56,34 @@ enum Command {
     ExportLammps(export_lammps::Args),
     /// Contacts, P_max and the contacts above P_crit in the contact dump of an exported run.
     LammpsCheck(lammps_check::Args),
+    /// Join the shard files of one sweep (`--shard i/n` outputs) into the unsharded output.
+    Merge(merge::Args),
+    /// Write Slurm scripts that run a sweep as an array job (one shard per task) plus a merge.
+    Slurm(slurm::Args),
+}
+
+/// A checked sweep command: its items and cost (what `superlube slurm` needs to cut it).
+#[derive(Debug, Clone)]
+pub struct SweepPlan {
+    /// The sweep's items.
+    pub sweep: Sweep,
+    /// Cost of the part this command line computes (its shard).
+    pub estimate: Estimate,
+}
+
+/// The sweep commands (those with `--shard`/`--resume`, which `superlube slurm` runs); each has
+/// an arm in [`prepare_sweep`].
+const SWEEP_COMMANDS: [&str; 3] = ["screen", "landscape", "corrugation"];
+
+/// Every check of a sweep command line (`screen`, `landscape`, `corrugation`), as running it
+/// would do them, without running it. `Ok(None)`: not a sweep command.
+fn prepare_sweep(command: Command) -> Result<Option<(&'static str, SweepPlan)>> {
+    Ok(Some(match command {
+        Command::Screen(a) => ("screen", screen::prepare(a)?.plan()),
+        Command::Landscape(a) => ("landscape", landscape::prepare(a)?.plan()),
+        Command::Corrugation(a) => ("corrugation", corrugation::prepare(a)?.plan()),
+        _ => return Ok(None),
+    }))
 }
 
 /// Runs the parsed command line.
@@ -65,6 +97,8 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Slide(a) => slide::run(a),
         Command::ExportLammps(a) => export_lammps::run(a),
         Command::LammpsCheck(a) => lammps_check::run(a),
+        Command::Merge(a) => merge::run(a),
+        Command::Slurm(a) => slurm::run(a),
     }
 }
 

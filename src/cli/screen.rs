@@ -1,11 +1,15 @@
 //! `superlube screen`: flags → [`crate::study::screen::screen`] → CSV (streamed) + sidecar.
 
-use super::{checks, SceneArgs};
+use super::scene_args::Resolved;
+use super::sweep_args::SweepArgs;
+use super::{checks, SceneArgs, SweepPlan};
 use crate::study::contacts::{contacts, ContactsParams};
 use crate::study::rows::ContactRow;
 use crate::study::screen::{estimate, screen, ScreenParams};
 use crate::study::sink::csv_bytes;
-use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs, Reporter};
+use crate::study::{
+    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Reporter, Sweep, SweepRun,
+};
 use anyhow::{bail, Result};
 use std::path::PathBuf;
 use surrogate::solver::{Model, SearchKind};
@@ -50,10 +54,36 @@ pub struct Args {
     /// refused with its estimated time, memory and output size.
     #[arg(long)]
     force: bool,
+    #[command(flatten)]
+    sweep: SweepArgs,
+}
+
+/// A checked `superlube screen`, ready to run.
+pub struct Prepared {
+    a: Args,
+    sc: Resolved,
+    params: ScreenParams,
+    run: SweepRun,
+    estimate: Estimate,
+}
+
+impl Prepared {
+    /// The sweep and its cost (for `superlube slurm`).
+    pub fn plan(&self) -> SweepPlan {
+        SweepPlan {
+            sweep: self.run.sweep.clone(),
+            estimate: self.estimate.clone(),
+        }
+    }
 }
 
 /// Runs `superlube screen`.
 pub fn run(a: Args) -> Result<()> {
+    execute(prepare(a)?)
+}
+
+/// Every check of `superlube screen`, before any work: flags, scene, outputs, size.
+pub fn prepare(a: Args) -> Result<Prepared> {
     let sc = a.scene.resolve(None)?;
     let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {
         (Some(t), _) => checks::thetas(t)?,
@@ -77,11 +107,37 @@ pub fn run(a: Args) -> Result<()> {
             params.loads.len()
         );
     }
+    let run = a.sweep.run(
+        Sweep {
+            items: params.thetas.len(),
+            rows_per_item: params.loads.len(),
+            unit: "θ",
+            schema: "screen",
+        },
+        a.out.as_deref(),
+        &a.contacts_out
+            .as_ref()
+            .map_or(vec![], |_| vec!["--contacts-out"]),
+    )?;
     check_outputs(&[
         ("--out", a.out.as_deref()),
         ("--contacts-out", a.contacts_out.as_deref()),
     ])?;
-    estimate(&sc.scene, &params).check(a.force)?;
+    let estimate = estimate(&sc.scene, &params).part(run.range().len(), params.thetas.len());
+    estimate.check(a.force)?;
+    Ok(Prepared {
+        a,
+        sc,
+        params,
+        run,
+        estimate,
+    })
+}
+
+fn execute(p: Prepared) -> Result<()> {
+    let Prepared {
+        a, sc, params, run, ..
+    } = p;
     let rep = Reporter::stderr();
     sc.log(&rep);
     // θ is swept: the recorded scene keeps the scene file's θ only if it is the sweep.
@@ -95,8 +151,12 @@ pub fn run(a: Args) -> Result<()> {
         },
         sc.warnings.clone(),
     );
-    let stats = outs.stream("--out", a.out.as_deref(), |csv| {
-        screen(&sc.scene, &params, csv, &rep)
+    let stats = outs.stream_sweep("--out", a.out.as_deref(), &run, &rep, |items, csv| {
+        let part = ScreenParams {
+            thetas: params.thetas[items].to_vec(),
+            ..params.clone()
+        };
+        screen(&sc.scene, &part, csv, &rep)
     })?;
     if let Some(path) = &a.contacts_out {
         let cp = ContactsParams {
@@ -115,8 +175,11 @@ pub fn run(a: Args) -> Result<()> {
         outs.write("--contacts-out", Some(path), bytes, n);
     }
     outs.finish()?;
-    if stats.failures == stats.rows {
-        bail!("no configuration has an equilibrium");
+    // Only a run that computed every row of the sweep can say that none has an equilibrium.
+    if let Some(stats) = stats {
+        if run.is_whole() && stats.rows == run.rows() && stats.failures == stats.rows {
+            bail!("no configuration has an equilibrium");
+        }
     }
     Ok(())
 }

@@ -58,6 +58,28 @@ impl Estimate {
         }
     }
 
+    /// The estimate of `part` of `whole` equal work items of this sweep (a shard, or what a
+    /// resumed run has left): solves, time and output scale, memory does not.
+    pub fn part(&self, part: usize, whole: usize) -> Estimate {
+        let f = if whole == 0 {
+            1.0
+        } else {
+            part as f64 / whole as f64
+        };
+        Estimate {
+            flags: self.flags.clone(),
+            solves: (self.solves as f64 * f).ceil() as u64,
+            seconds: self.seconds * f,
+            memory_bytes: self.memory_bytes,
+            output_bytes: self.output_bytes * f,
+        }
+    }
+
+    /// The estimated wall time (s) on `threads` threads instead of this process's.
+    pub fn seconds_on(&self, threads: usize) -> f64 {
+        self.seconds * rayon::current_num_threads().max(1) as f64 / threads.max(1) as f64
+    }
+
     /// One-line description: solves, time, memory, output size.
     pub fn describe(&self) -> String {
         format!(

@@ -125,6 +125,24 @@ pub fn estimate(scene: &Scene, p: &CorrugationParams) -> Estimate {
     )
 }
 
+/// Checks that the slider stays over the substrate along the path of every α of `p` from the
+/// contact line `line` (field `distance_um` named otherwise). No solve.
+pub fn check_paths(scene: &Scene, p: &CorrugationParams, line: &LineChoice) -> Result<()> {
+    for &alpha in &p.alphas {
+        let d = line.angle + alpha;
+        let end = [p.distance * d.cos(), p.distance * d.sin()];
+        check_slider_stays_on_substrate(
+            scene,
+            [
+                [end[0].min(0.0), end[1].min(0.0)],
+                [end[0].max(0.0), end[1].max(0.0)],
+            ],
+            "distance_um",
+        )?;
+    }
+    Ok(())
+}
+
 /// Runs the corrugation sweep of `scene` at its θ, pushing one [`CorrugationRow`] per α in
 /// order; returns the contact line used.
 pub fn corrugation(
@@ -139,18 +157,7 @@ pub fn corrugation(
     let line = contact_line(scene, p.line);
     progress.note(&line.describe());
     // Every path must stay over the substrate: checked for all α before the first solve.
-    for &alpha in &p.alphas {
-        let d = line.angle + alpha;
-        let end = [p.distance * d.cos(), p.distance * d.sin()];
-        check_slider_stays_on_substrate(
-            scene,
-            [
-                [end[0].min(0.0), end[1].min(0.0)],
-                [end[0].max(0.0), end[1].max(0.0)],
-            ],
-            "distance_um",
-        )?;
-    }
+    check_paths(scene, p, &line)?;
     match p.method {
         Method::Direct => {
             progress.stage(

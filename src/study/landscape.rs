@@ -1,19 +1,30 @@
 //! The landscape workflow: the equilibrium height Δz(x, y) = z − min z of the slider translated
 //! over one repeat cell of the substrate, on an N×N grid (both cell edges included).
 //!
-//! Two passes, memory flat in N: (1) solve the grid in row-major order (x fastest), parallel over
-//! a bounded window of points, appending each height z as 8 bytes to a spill file (`OUT.z.partial`
-//! next to the output, or a temporary file for stdout); (2) read the heights back, once for
-//! min z and the periodicity check, once to push the [`LandscapeRow`]s. The rows are
-//! bit-identical to `surrogate::map::compute_landscape` (same poses, same solver calls).
+//! Two passes, memory flat in N:
+//! 1. [`heights`]: solve grid points `k` (row-major, x fastest) in order, parallel over a bounded
+//!    window, pushing one [`LandscapeZRow`] (shift and exact z) per point. The whole grid goes to
+//!    a spill file (`OUT.z.partial`, renamed `OUT.z` when complete, next to the output; a
+//!    temporary file for stdout); a shard (`--shard i/n`) streams its block of points to its own
+//!    `--out` instead.
+//! 2. [`finish`]: read the z rows of the whole grid back (one spill file, or the shards in order
+//!    — `superlube merge` calls the same function), once for min z and the periodicity check,
+//!    once to push the [`LandscapeRow`]s.
+//!
+//! Sharding and resuming work on pass 1's z rows: Δz needs the global min z, which no shard
+//! knows, so shards write z and the merge computes Δz. z is written as its exact decimal in µm
+//! ([`super::rows::exact_um`]), so the Δz rows of a merge are byte-identical to an unsharded
+//! run's, and both are bit-identical to `surrogate::map::compute_landscape` (same poses, same
+//! solver calls).
 
 use super::budget::Estimate;
 use super::progress::Progress;
-use super::rows::LandscapeRow;
+use super::rows::{LandscapeRow, LandscapeZRow};
 use super::sink::RowSink;
-use anyhow::{Context, Result};
+use super::sweep::{Sweep, LANDSCAPE_Z};
+use anyhow::{bail, Context, Result};
 use rayon::prelude::*;
-use std::io::{BufReader, BufWriter, Read, Seek, SeekFrom, Write};
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 use surrogate::map::{check_slider_stays_on_substrate, MapParams, RepeatCell};
 use surrogate::solver::{Model, Pose, Solver};
@@ -56,26 +67,46 @@ pub fn estimate(scene: &Scene, p: &LandscapeParams, plot: bool) -> Estimate {
     )
 }
 
-/// The spill file of an output `OUT`: `OUT.z.partial`.
+/// The sweep of pass 1: N² grid points, one z row each.
+pub fn sweep(p: &LandscapeParams) -> Sweep {
+    Sweep {
+        items: p.grid.saturating_mul(p.grid),
+        rows_per_item: 1,
+        unit: "grid points",
+        schema: LANDSCAPE_Z,
+    }
+}
+
+/// The spill file of an output `OUT`: `OUT.z` (streamed through `OUT.z.partial`).
 pub fn spill_path(out: &Path) -> PathBuf {
     let mut s = out.as_os_str().to_owned();
-    s.push(".z.partial");
+    s.push(".z");
     PathBuf::from(s)
 }
 
-/// Computes the landscape of `scene` at its θ, pushing N² [`LandscapeRow`]s (row-major, x
-/// fastest) into `rows`. `spill` is where the heights are kept between the passes (`None`: a
-/// temporary file in the system's temp directory); it is removed at the end.
+/// The repeat cell of `scene`'s substrate and the grid shift (m) of point `k` of an N×N grid.
+fn grid(scene: &Scene, n: usize) -> (RepeatCell, impl Fn(usize) -> [f64; 2]) {
+    let cell =
+        RepeatCell::for_lattice(&scene.substrate.lattice, MapParams::default().max_cell_mult);
+    let shift = move |k: usize| {
+        let d = (n - 1) as f64;
+        cell.point((k % n) as f64 / d, (k / n) as f64 / d)
+    };
+    (cell, shift)
+}
+
+/// Pass 1: the heights of grid points `items` (row-major, x fastest; a part of `0..N²`), one
+/// [`LandscapeZRow`] each, pushed in order. Returns the repeat cell.
 ///
 /// Errors (before any solve): `grid` < 2, a non-finite θ, the slider leaving the substrate
 /// somewhere over the cell (field `offset_um`); then a failed solve or sink.
-pub fn landscape(
+pub fn heights(
     scene: &Scene,
     p: &LandscapeParams,
-    spill: Option<&Path>,
-    rows: &mut dyn RowSink<LandscapeRow>,
+    items: Range<usize>,
+    rows: &mut dyn RowSink<LandscapeZRow>,
     progress: &dyn Progress,
-) -> Result<LandscapeStats> {
+) -> Result<RepeatCell> {
     let n = p.grid;
     let theta = scene.slider.theta;
     if n < 2 {
@@ -89,102 +120,174 @@ pub fn landscape(
     if !theta.is_finite() {
         return Err(SceneError::invalid("theta_deg", theta.to_degrees(), "must be finite").into());
     }
+    if items.end > n * n {
+        bail!("grid points {items:?} outside the {n}×{n} grid");
+    }
     let solver = Solver::new(scene)?;
-    let cell =
-        RepeatCell::for_lattice(&scene.substrate.lattice, MapParams::default().max_cell_mult);
+    let (cell, shift) = grid(scene, n);
     check_slider_stays_on_substrate(scene, cell.bounding_box(), "offset_um")?;
-    let shift = |k: usize| {
-        let d = (n - 1) as f64;
-        cell.point((k % n) as f64 / d, (k / n) as f64 / d)
-    };
+    progress.stage("landscape", items.len() as u64, "grid points");
+    let win = 64 * rayon::current_num_threads().max(1);
+    let mut k0 = items.start;
+    while k0 < items.end {
+        let k1 = (k0 + win).min(items.end);
+        let z: Result<Vec<f64>, SceneError> = (k0..k1)
+            .into_par_iter()
+            .map(|k| {
+                let eq = solver.solve(
+                    Pose {
+                        theta,
+                        shift: shift(k),
+                    },
+                    p.load,
+                    Model::Auto,
+                )?;
+                progress.advance(1);
+                Ok(eq.z)
+            })
+            .collect();
+        for (k, z) in (k0..k1).zip(z?) {
+            rows.push(&LandscapeZRow::new(shift(k), z))?;
+        }
+        k0 = k1;
+    }
+    progress.finish();
+    Ok(cell)
+}
+
+/// What pass 2 finds in the heights of the whole grid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HeightStats {
+    /// Points per side.
+    pub n: usize,
+    /// min z (m).
+    pub z_min: f64,
+    /// max z − min z (m).
+    pub range: f64,
+    /// Largest |z| difference between opposite cell edges (m).
+    pub edge_mismatch: f64,
+}
+
+/// Reads the z rows of `files` in order (together the whole N×N grid, `n` = N).
+fn read_heights(
+    n: usize,
+    files: &[PathBuf],
+    f: &mut dyn FnMut(usize, &LandscapeZRow) -> Result<()>,
+) -> Result<()> {
+    let total = n * n;
+    let mut k = 0;
+    for path in files {
+        let mut r = csv::Reader::from_path(path)
+            .with_context(|| format!("reading the heights in {}", path.display()))?;
+        for row in r.deserialize::<LandscapeZRow>() {
+            let row = row.with_context(|| format!("reading the heights in {}", path.display()))?;
+            if k >= total {
+                bail!(
+                    "{}: more height rows than the {n}×{n} grid has ({total})",
+                    path.display()
+                );
+            }
+            f(k, &row)?;
+            k += 1;
+        }
+    }
+    if k != total {
+        bail!("{k} height rows for a {n}×{n} grid (expected {total})");
+    }
+    Ok(())
+}
+
+/// Pass 2: turns the z rows of the whole N×N grid (`n` = N), held by `files` in order, into the
+/// [`LandscapeRow`]s (Δz = z − min z), pushed in order. Used by [`landscape`] on its spill file
+/// and by `superlube merge` on a landscape's shards.
+pub fn finish(
+    n: usize,
+    files: &[PathBuf],
+    rows: &mut dyn RowSink<LandscapeRow>,
+) -> Result<HeightStats> {
+    let (mut zmin, mut zmax, mut mismatch) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
+    let mut first_row = Vec::with_capacity(n);
+    let mut row_start = 0.0;
+    read_heights(n, files, &mut |k, r| {
+        let z = r.z;
+        zmin = zmin.min(z);
+        zmax = zmax.max(z);
+        let (i, j) = (k % n, k / n);
+        if j == 0 {
+            first_row.push(z);
+        }
+        if j == n - 1 {
+            mismatch = mismatch.max((first_row[i] - z).abs());
+        }
+        if i == 0 {
+            row_start = z;
+        }
+        if i == n - 1 {
+            mismatch = mismatch.max((row_start - z).abs());
+        }
+        Ok(())
+    })?;
+    read_heights(n, files, &mut |_, r| rows.push(&r.dz_row(zmin)))?;
+    Ok(HeightStats {
+        n,
+        z_min: zmin,
+        range: zmax - zmin,
+        edge_mismatch: mismatch,
+    })
+}
+
+/// Computes the landscape of `scene` at its θ in one process, pushing N² [`LandscapeRow`]s
+/// (row-major, x fastest) into `rows`: [`heights`] of the whole grid into the spill file `spill`
+/// (`None`: a temporary file in the system's temp directory; removed at the end), then
+/// [`finish`].
+pub fn landscape(
+    scene: &Scene,
+    p: &LandscapeParams,
+    spill: Option<&Path>,
+    rows: &mut dyn RowSink<LandscapeRow>,
+    progress: &dyn Progress,
+) -> Result<LandscapeStats> {
     let spill_path = match spill {
         Some(p) => p.to_path_buf(),
-        None => std::env::temp_dir().join(format!(
-            "superlube-landscape-{}.z.partial",
-            std::process::id()
-        )),
+        None => {
+            static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+            let k = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            std::env::temp_dir().join(format!("superlube-landscape-{}-{k}.z", std::process::id()))
+        }
     };
     let result = (|| {
-        let file = std::fs::File::options()
-            .read(true)
-            .write(true)
-            .create(true)
-            .truncate(true)
-            .open(&spill_path)
+        let file = std::fs::File::create(&spill_path)
             .with_context(|| format!("creating {}", spill_path.display()))?;
-        // Pass 1: heights, streamed to the spill file in order.
-        let total = n * n;
-        progress.stage("landscape", total as u64, "grid points");
-        let mut w = BufWriter::new(&file);
-        let win = 64 * rayon::current_num_threads().max(1);
-        let mut k0 = 0;
-        while k0 < total {
-            let k1 = (k0 + win).min(total);
-            let z: Result<Vec<f64>, SceneError> = (k0..k1)
-                .into_par_iter()
-                .map(|k| {
-                    let eq = solver.solve(
-                        Pose {
-                            theta,
-                            shift: shift(k),
-                        },
-                        p.load,
-                        Model::Auto,
-                    )?;
-                    progress.advance(1);
-                    Ok(eq.z)
-                })
-                .collect();
-            for z in z? {
-                w.write_all(&z.to_le_bytes())?;
+        let mut z = csv::Writer::from_writer(std::io::BufWriter::new(file));
+        struct Spill<'a, W: std::io::Write>(&'a mut csv::Writer<W>);
+        impl<W: std::io::Write> RowSink<LandscapeZRow> for Spill<'_, W> {
+            fn push(&mut self, r: &LandscapeZRow) -> Result<()> {
+                self.0.serialize(r)?;
+                Ok(())
             }
-            k0 = k1;
         }
-        w.flush()?;
-        drop(w);
-        progress.finish();
-        // Pass 2a: min, max and the edge mismatch (first row kept to compare with the last).
-        let read = |f: &mut dyn FnMut(usize, f64) -> Result<()>| -> Result<()> {
-            let mut r = BufReader::new(&file);
-            r.seek(SeekFrom::Start(0))?;
-            let mut b = [0u8; 8];
-            for k in 0..total {
-                r.read_exact(&mut b)?;
-                f(k, f64::from_le_bytes(b))?;
-            }
-            Ok(())
-        };
-        let (mut zmin, mut zmax, mut mismatch) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
-        let mut first_row = Vec::with_capacity(n);
-        let mut row_start = 0.0;
-        read(&mut |k, z| {
-            zmin = zmin.min(z);
-            zmax = zmax.max(z);
-            let (i, j) = (k % n, k / n);
-            if j == 0 {
-                first_row.push(z);
-            }
-            if j == n - 1 {
-                mismatch = mismatch.max((first_row[i] - z).abs());
-            }
-            if i == 0 {
-                row_start = z;
-            }
-            if i == n - 1 {
-                mismatch = mismatch.max((row_start - z).abs());
-            }
-            Ok(())
-        })?;
-        // Pass 2b: the rows.
-        read(&mut |k, z| rows.push(&LandscapeRow::new(shift(k), z - zmin)))?;
-        Ok(LandscapeStats {
-            cell,
-            n,
-            z_min: zmin,
-            range: zmax - zmin,
-            edge_mismatch: mismatch,
-        })
+        let cell = heights(scene, p, 0..p.grid * p.grid, &mut Spill(&mut z), progress)?;
+        z.flush()?;
+        drop(z);
+        let h = finish(p.grid, std::slice::from_ref(&spill_path), rows)?;
+        Ok(stats(cell, &h))
     })();
     let _ = std::fs::remove_file(&spill_path);
     result
+}
+
+/// The summary of a landscape over `cell` with heights `h`.
+pub fn stats(cell: RepeatCell, h: &HeightStats) -> LandscapeStats {
+    LandscapeStats {
+        cell,
+        n: h.n,
+        z_min: h.z_min,
+        range: h.range,
+        edge_mismatch: h.edge_mismatch,
+    }
+}
+
+/// The repeat cell a landscape of `scene` maps.
+pub fn cell(scene: &Scene) -> RepeatCell {
+    grid(scene, 2).0
 }

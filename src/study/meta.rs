@@ -15,9 +15,17 @@
 //!   the inputs that determine the rows, without timestamps, paths or the command line, so two
 //!   outputs of the same sweep (shards, a resumed run, a cached design stage) have the same hash;
 //! - `warnings` (e.g. [`surrogate::Scene::edge_warning`]), `file`, `role` (the flag that named
-//!   the file), `rows` (data rows of a CSV), `complete` (false for a partial file).
+//!   the file), `rows` (data rows of a CSV), `complete` (false for a partial file);
+//! - `shard` (only for the output of `--shard i/n`): a [`ShardInfo`] — shard index and count,
+//!   the sweep's item count, this shard's items, rows per item, row schema — recorded beside the
+//!   unchanged `input_hash`, so `superlube merge` can check that shards belong to one sweep;
+//! - `merged_from` (only for the output of `superlube merge`): the shard files merged.
+//!
+//! [`Sidecar`] reads a sidecar back (resume and merge checks).
 
-use serde::Serialize;
+use super::sweep::ShardInfo;
+use anyhow::{bail, Context, Result};
+use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 use surrogate::scene::{CoatingFile, LatticeFile, MaterialFile, SliderFile, SubstrateFile};
 use surrogate::units::{
@@ -99,6 +107,12 @@ pub struct RunMeta {
     pub scene_toml: Option<String>,
     /// Workflow parameters (user units).
     pub params: serde_json::Value,
+    /// The shard of the sweep this file holds (`--shard i/n`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shard: Option<ShardInfo>,
+    /// The shard files a `superlube merge` output was made from.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub merged_from: Option<Vec<String>>,
 }
 
 impl RunMeta {
@@ -126,6 +140,8 @@ impl RunMeta {
             scene: inputs.scene.clone(),
             scene_toml: inputs.scene.as_ref().and_then(|s| toml::to_string(s).ok()),
             params: inputs.params.clone(),
+            shard: None,
+            merged_from: None,
         }
     }
 
@@ -133,6 +149,114 @@ impl RunMeta {
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
     }
+}
+
+/// A sidecar read back from its JSON (the fields the resume and merge checks need).
+#[derive(Debug, Clone, Deserialize)]
+pub struct Sidecar {
+    /// `superlube`.
+    pub tool: String,
+    /// Version of the tool that wrote it.
+    pub version: String,
+    /// Workflow name.
+    pub workflow: String,
+    /// Whether the file is complete (false: a partial stream).
+    pub complete: bool,
+    /// Data rows.
+    #[serde(default)]
+    pub rows: Option<u64>,
+    /// Hash of the inputs.
+    pub input_hash: String,
+    /// Warnings recorded.
+    #[serde(default)]
+    pub warnings: Vec<String>,
+    /// Resolved scene (user units).
+    #[serde(default)]
+    pub scene: Option<SceneFile>,
+    /// Parameters (user units).
+    #[serde(default)]
+    pub params: serde_json::Value,
+    /// The shard, for a `--shard` output.
+    #[serde(default)]
+    pub shard: Option<ShardInfo>,
+}
+
+impl Sidecar {
+    /// Reads the sidecar of `file` (`file.meta.json`). Errors name the sidecar and why.
+    pub fn of(file: &std::path::Path) -> Result<Sidecar> {
+        let path = sidecar_path(file);
+        let text = match std::fs::read_to_string(&path) {
+            Ok(t) => t,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => bail!(
+                "{} has no sidecar {} (needed to check which sweep it belongs to)",
+                file.display(),
+                path.display()
+            ),
+            Err(e) => return Err(e).with_context(|| format!("reading {}", path.display())),
+        };
+        let s: Sidecar = serde_json::from_str(&text)
+            .with_context(|| format!("{} is not a superlube sidecar", path.display()))?;
+        if s.tool != "superlube" {
+            bail!("{} was not written by superlube", path.display());
+        }
+        Ok(s)
+    }
+
+    /// The inputs recorded (workflow, scene, parameters): hashing them again must give
+    /// `input_hash` when the tool version is this one and the sidecar was not edited.
+    pub fn inputs(&self) -> Inputs {
+        Inputs {
+            workflow: self.workflow.clone(),
+            scene: self.scene.clone(),
+            params: self.params.clone(),
+        }
+    }
+}
+
+/// Where two recorded inputs differ: up to `max` JSON paths (`params.load_mN`,
+/// `scene.slider.theta_deg`, …) with both values, for "belongs to another sweep" messages.
+pub fn input_differences(a: &Inputs, b: &Inputs, max: usize) -> Vec<String> {
+    fn walk(path: &str, a: &serde_json::Value, b: &serde_json::Value, out: &mut Vec<String>) {
+        use serde_json::Value;
+        match (a, b) {
+            (Value::Object(x), Value::Object(y)) => {
+                let keys: std::collections::BTreeSet<&String> = x.keys().chain(y.keys()).collect();
+                for k in keys {
+                    let sub = if path.is_empty() {
+                        k.clone()
+                    } else {
+                        format!("{path}.{k}")
+                    };
+                    walk(
+                        &sub,
+                        x.get(k).unwrap_or(&Value::Null),
+                        y.get(k).unwrap_or(&Value::Null),
+                        out,
+                    );
+                }
+            }
+            _ if a != b => {
+                let short = |v: &Value| {
+                    let t = v.to_string();
+                    if t.chars().count() > 60 {
+                        format!("{}…", t.chars().take(60).collect::<String>())
+                    } else {
+                        t
+                    }
+                };
+                out.push(format!("{path}: {} vs {}", short(a), short(b)));
+            }
+            _ => {}
+        }
+    }
+    let (x, y) = (
+        serde_json::to_value(a).unwrap_or_default(),
+        serde_json::to_value(b).unwrap_or_default(),
+    );
+    let mut out = Vec::new();
+    walk("", &x, &y, &mut out);
+    out.truncate(max);
+    out
 }
 
 /// The process's arguments, the program name written as `superlube`.

@@ -18,15 +18,55 @@
 //!
 //! Shared pieces: [`progress`] (the callback trait and the terminal/log reporter), [`sink`] (row
 //! sinks, streaming CSV through `OUT.partial`), [`output`] (path checks before the run, writing
-//! every output with its sidecar, failures collected), [`meta`] (the sidecar: resolved scene,
-//! parameters, command line, input hash), [`record`] (parameters in user units for the sidecar),
-//! [`rows`] (ONE row type and schema per kind of output), [`budget`] (cost estimate and the size
-//! guard behind `--force`).
+//! every output with its sidecar, failures collected, [`SweepRun`] streaming), [`meta`] (the
+//! sidecar: resolved scene, parameters, command line, input hash, shard), [`record`]
+//! (parameters in user units for the sidecar), [`rows`] (ONE row type and schema per kind of
+//! output), [`budget`] (cost estimate and the size guard behind `--force`), [`sweep`],
+//! [`shard`], [`resume`], [`merge`] (sharded and resumed sweeps, below), [`slurm`] (the job
+//! scripts of `superlube slurm`).
 //!
 //! Adding a workflow (e.g. a `design` or `friction` study): a file here with a `…Params` struct,
 //! an `estimate` for the size guard, a `record` entry, a row type in [`rows`] if it writes rows,
 //! and a function `(scene, &params, sink, &dyn Progress) -> Result<stats>` that may call the
 //! workflows above; then a thin command in `src/cli/`.
+//!
+//! ## Sweeps: `--shard i/n`, `--resume`, `superlube merge`, `superlube slurm`
+//!
+//! Every sweep follows one contract ([`sweep`]): **N items in a fixed order, item `i` giving
+//! exactly `r` rows** (rows `i·r .. (i+1)·r`), computed independently of which process computes
+//! it. Sharding cuts the items into contiguous blocks ([`Shard::range`]); resuming keeps the
+//! complete items of `OUT.partial` ([`resume`]); merging concatenates the shards in order
+//! ([`merge`]). The shard goes into the output's sidecar as a [`ShardInfo`], the sweep's
+//! `input_hash` stays that of the unsharded run (the inputs, not the shard, are hashed), so
+//! `merge` can check that files belong together and write the unsharded run's sidecar.
+//!
+//! | sweep | item | rows per item | shard rows (schema) | merge |
+//! |---|---|---|---|---|
+//! | `screen` | one θ | number of loads | [`rows::ScreenRow`] (`screen`) | concatenation |
+//! | `landscape` | one grid point | 1 | [`rows::LandscapeZRow`] (`landscape-z`: exact z) | [`landscape::finish`]: Δz = z − min z over all shards |
+//! | `corrugation` | one α | 1 | [`rows::CorrugationRow`] (`corrugation`) | concatenation |
+//!
+//! Plugging in a new sweep (a `friction` sweep, a DEM batch of θ/α/W/seeds, a design's DEM
+//! stage) takes a few lines in its command (see `src/cli/screen.rs`):
+//!
+//! 1. flatten `SweepArgs` (`--shard`, `--resume`) into the command's clap `Args`;
+//! 2. describe the sweep: `Sweep { items, rows_per_item, unit: "runs", schema: "friction" }`
+//!    (the schema name is free; any schema whose rows are final per item merges by
+//!    concatenation), and get the run with `args.sweep.run(sweep, out, &[other output flags])`
+//!    — it parses `--shard`, refuses `--shard` without `--out` or with outputs a shard cannot
+//!    write, and refuses more shards than items;
+//! 3. stream through [`Outputs::stream_sweep`]`(role, out, &run, &progress, |items, sink| …)`:
+//!    the closure computes exactly the items `items` (a sub-range of `0..N`, already cut to the
+//!    shard and past the resumed rows) and pushes their rows in order, e.g. by calling the
+//!    workflow on the slice `params.list[items]`; the progress stage should count those items,
+//!    so a resumed run shows what it computed;
+//! 4. add the command to `SWEEP_COMMANDS` and `prepare_sweep` in `src/cli/mod.rs` (a
+//!    `prepare(args) -> Prepared` doing every check without running, with `Prepared::plan()`),
+//!    and `superlube slurm` can run it as an array job.
+//!
+//! A sweep whose final rows need the whole sweep (like the landscape's min z) writes per-item
+//! rows from which they follow, under its own schema name, and adds that schema's merge in
+//! [`merge::merge`] — used by its unsharded run too, so both give the same bytes.
 
 pub mod budget;
 pub mod contacts;
@@ -35,18 +75,23 @@ pub mod dem_run;
 pub mod equilibrate;
 pub mod figures;
 pub mod landscape;
+pub mod merge;
 pub mod meta;
 pub mod output;
 pub mod progress;
 pub mod record;
+pub mod resume;
 pub mod rows;
 pub mod screen;
 pub mod shard;
 pub mod sink;
 pub mod slide;
+pub mod slurm;
+pub mod sweep;
 
 pub use budget::Estimate;
 pub use meta::Inputs;
-pub use output::{check_outputs, Outputs};
+pub use output::{check_outputs, Outputs, SweepRun};
 pub use progress::{Progress, Reporter};
 pub use shard::Shard;
+pub use sweep::{ShardInfo, Sweep};

@@ -5,15 +5,66 @@
 //!    directory exists (or can be created under an existing, writable directory), the path is
 //!    not a directory, no two flags name the same file. All problems are reported at once, each
 //!    with its flag.
-//! 2. [`Outputs`] during and after the run: [`Outputs::stream_csv`] / [`Outputs::commit_csv`]
-//!    for streamed rows, [`Outputs::write`] / [`Outputs::attempt`] for files written in one
-//!    piece. A failed write is recorded and the others are still written; [`Outputs::finish`]
+//! 2. [`Outputs`] during and after the run: [`Outputs::stream_sweep`] for a sweep's rows (with
+//!    `--shard` and `--resume`, see [`SweepRun`]), [`Outputs::stream_csv`] /
+//!    [`Outputs::commit_csv`] for other streamed rows, [`Outputs::write`] / [`Outputs::attempt`]
+//!    for files written in one piece. A failed write is recorded and the others are still written; [`Outputs::finish`]
 //!    then reports every failure and makes the command exit non-zero.
 
 use super::meta::{sidecar_path, Inputs, RunMeta};
+use super::progress::Progress;
+use super::resume;
+use super::shard::Shard;
 use super::sink::{partial_path, CsvSink, StreamFile};
+use super::sweep::{ShardInfo, Sweep};
 use anyhow::{bail, Result};
+use std::ops::Range;
 use std::path::{Path, PathBuf};
+
+/// How one process runs a sweep: the sweep, its shard (`--shard i/n`; `None` = the whole
+/// sweep, unsharded) and whether it continues an interrupted run (`--resume`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SweepRun {
+    /// The sweep's items.
+    pub sweep: Sweep,
+    /// The shard record (also written into the output's sidecar).
+    pub shard: Option<ShardInfo>,
+    /// Continue from `OUT.partial`.
+    pub resume: bool,
+}
+
+impl SweepRun {
+    /// The run of `shard` of `sweep` (`--shard` named in errors: more shards than items).
+    pub fn new(sweep: Sweep, shard: Option<Shard>, resume: bool) -> Result<SweepRun> {
+        let shard = match shard {
+            Some(s) => Some(sweep.shard(s, "--shard")?),
+            None => None,
+        };
+        Ok(SweepRun {
+            sweep,
+            shard,
+            resume,
+        })
+    }
+
+    /// The items this process is responsible for.
+    pub fn range(&self) -> Range<usize> {
+        self.shard
+            .as_ref()
+            .map_or(0..self.sweep.items, ShardInfo::range)
+    }
+
+    /// Rows of this process's output when complete.
+    pub fn rows(&self) -> u64 {
+        (self.range().len() as u64).saturating_mul(self.sweep.rows_per_item as u64)
+    }
+
+    /// Whether it runs the whole sweep in one go (no shard, nothing resumed): only then do the
+    /// rows it computes cover the sweep.
+    pub fn is_whole(&self) -> bool {
+        self.shard.is_none()
+    }
+}
 
 /// Checks that each `(flag, path)` with a path can be written (see the module docs). The error
 /// lists every unwritable path with its flag.
@@ -43,6 +94,18 @@ pub fn check_outputs(outputs: &[(&str, Option<&Path>)]) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// Whether `a` and `b` name the same file (lexically, after making them absolute; or the same
+/// existing file).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    if normalise(a) == normalise(b) {
+        return true;
+    }
+    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(x), Ok(y)) => x == y,
+        _ => false,
+    }
 }
 
 /// The path made absolute (lexically) for duplicate detection.
@@ -211,6 +274,93 @@ impl Outputs {
         }
     }
 
+    /// Streams the rows of `run` into `path` (`None` = stdout): opens `path.partial` — fresh, or,
+    /// with `run.resume`, the checked partial file of an interrupted run ([`resume::inspect`]),
+    /// cut to its complete items — writes its sidecar (with the shard), calls
+    /// `work(items, sink)` on the items still to compute (not at all when none are left) and
+    /// commits, or abandons the partial file when `work` fails (its error is returned).
+    /// `Ok(None)`: nothing was left to compute.
+    pub fn stream_sweep<T>(
+        &mut self,
+        role: &str,
+        path: Option<&Path>,
+        run: &SweepRun,
+        progress: &dyn Progress,
+        work: impl FnOnce(Range<usize>, &mut CsvSink) -> Result<T>,
+    ) -> Result<Option<T>> {
+        let range = run.range();
+        let shard = run.shard.as_ref();
+        let regular = path.is_some_and(is_regular_target);
+        let kept = match (run.resume, path) {
+            (true, Some(p)) if regular => {
+                resume::inspect(p, &self.inputs, shard, run.sweep.rows_per_item, range.len())?
+            }
+            (true, _) => {
+                bail!("`--resume` needs `--out FILE` (the file whose partial output it continues)")
+            }
+            (false, _) => None,
+        };
+        let (mut sink, done) = match (kept, path) {
+            (Some(k), Some(p)) if k.header => {
+                progress.note(&k.describe(&partial_path(p), run.sweep.unit, range.len()));
+                (
+                    CsvSink::resumed(StreamFile::resume(p, k.bytes)?, k.rows),
+                    k.items,
+                )
+            }
+            (kept, _) => {
+                if let (None, Some(p)) = (kept, path) {
+                    if regular && partial_path(p).exists() {
+                        progress.note(&format!(
+                            "note: replacing {} left by an interrupted run (pass --resume to continue it instead)",
+                            partial_path(p).display()
+                        ));
+                    }
+                } else if let (Some(_), Some(p)) = (kept, path) {
+                    progress.note(&format!(
+                        "resuming {}: no complete row yet; starting from the beginning",
+                        partial_path(p).display()
+                    ));
+                }
+                (CsvSink::new(StreamFile::create(path)?), 0)
+            }
+        };
+        if let (Some(p), true) = (path, regular) {
+            let partial = partial_path(p);
+            let mut m = self.meta(&partial, role, None, false);
+            m.shard = run.shard.clone();
+            self.write_sidecar(&partial, &m)?;
+        }
+        let todo = range.start + done..range.end;
+        let result = if todo.is_empty() {
+            Ok(None)
+        } else {
+            work(todo, &mut sink).map(Some)
+        };
+        match result {
+            Ok(v) => {
+                let res = sink.commit().and_then(|rows| match path {
+                    Some(p) if regular => {
+                        let mut m = self.meta(p, role, Some(rows), true);
+                        m.shard = run.shard.clone();
+                        self.write_sidecar(p, &m)?;
+                        let _ = std::fs::remove_file(sidecar_path(&partial_path(p)));
+                        Ok(())
+                    }
+                    _ => Ok(()),
+                });
+                if let Err(e) = res {
+                    self.fail(role, path, e);
+                }
+                Ok(v)
+            }
+            Err(e) => {
+                self.abandon_csv(path, sink);
+                Err(e)
+            }
+        }
+    }
+
     /// Gives up a streamed CSV after a failed run: a partial file without rows (and its
     /// sidecar) is removed; one with rows is kept for a later resume.
     pub fn abandon_csv(&self, path: Option<&Path>, sink: CsvSink) {
@@ -263,6 +413,24 @@ impl Outputs {
     pub fn sidecar(&mut self, role: &str, path: &Path, rows: Option<u64>) {
         if is_regular_target(path) {
             if let Err(e) = self.write_sidecar(path, &self.meta(path, role, rows, true)) {
+                self.fail(role, Some(path), e);
+            }
+        }
+    }
+
+    /// Writes the sidecar of `path` (written by other means) after `edit` changed it (e.g. a
+    /// merge recording `merged_from`); a failure is recorded.
+    pub fn sidecar_with(
+        &mut self,
+        role: &str,
+        path: &Path,
+        rows: Option<u64>,
+        edit: impl FnOnce(&mut RunMeta),
+    ) {
+        if is_regular_target(path) {
+            let mut m = self.meta(path, role, rows, true);
+            edit(&mut m);
+            if let Err(e) = self.write_sidecar(path, &m) {
                 self.fail(role, Some(path), e);
             }
         }

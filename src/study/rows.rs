@@ -7,11 +7,12 @@
 //! | [`ScreenRow`] | `screen --out`, `figures` (sweep_*.csv) | `pattern,theta_deg,load_mN,contacts,p_max_GPa,z_um,coating_failed,failed_contacts,tilt_x_urad,tilt_y_urad,model,residual_rel,iterations,error` |
 //! | [`ContactRow`] | `screen --contacts-out`, `landscape --contacts-out`, `figures` (contact_map_*.csv) | `slider_index,substrate_index,x_um,y_um,z_um,overlap_nm,force_uN,p0_GPa,failed` |
 //! | [`LandscapeRow`] | `landscape --out`, `figures` (landscape_*.csv) | `x_um,y_um,dz_nm` |
+//! | [`LandscapeZRow`] | `landscape --shard i/n --out` (a shard, merged by `superlube merge`), the landscape's spill file | `x_um,y_um,z_um` (z exact, see [`exact_um`]) |
 //! | [`CorrugationRow`] | `corrugation --out`, `figures` (corrugation_square-tri.csv) | `theta_deg,load_mN,line_deg,alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN` |
 //! | [`DemSample`] | `equilibrate --out`, `slide --out` | `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts` |
 //! | [`EquilibrateReport`], [`SlideReport`] | `equilibrate --json`, `slide --json` | JSON objects (keys documented on the fields) |
 
-use serde::Serialize;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use surrogate::solver::{ContactInfo, Equilibrium, Model};
 use surrogate::units::{m_to_nm, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, UN};
 
@@ -185,8 +186,103 @@ impl LandscapeRow {
     }
 }
 
+/// The exact decimal text of a length `v` (m) in µm: the shortest decimal that reads back as
+/// exactly `v` in metres (Rust's round-trip `{:e}`), with its decimal point moved six places
+/// (plain notation while the exponent is in −7..21, else `d.ddde±N`). So the text is `v` in µm
+/// to ≤ 1 ulp for any reader, and [`parse_exact_um`] gives back `v` bit for bit — which
+/// `m_to_um`/`um_to_m` do not guarantee (×10⁶ then ×10⁻⁶ is not an identity on doubles).
+pub fn exact_um(v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return format!("{v}"); // NaN, inf, 0, -0
+    }
+    let s = format!("{v:e}");
+    let (mant, exp) = s.split_once('e').unwrap_or((&s, "0"));
+    let exp = exp.parse::<i32>().unwrap_or(0) + 6;
+    let (sign, mant) = match mant.strip_prefix('-') {
+        Some(m) => ("-", m),
+        None => ("", mant),
+    };
+    // value = d0.d1d2… × 10^exp
+    let digits: String = mant.chars().filter(|c| *c != '.').collect();
+    if !(-7..21).contains(&exp) {
+        return format!("{sign}{mant}e{exp}");
+    }
+    if exp < 0 {
+        let zeros = "0".repeat((-exp - 1) as usize);
+        return format!("{sign}0.{zeros}{digits}");
+    }
+    let int_len = exp as usize + 1;
+    if digits.len() <= int_len {
+        format!("{sign}{digits}{}", "0".repeat(int_len - digits.len()))
+    } else {
+        format!("{sign}{}.{}", &digits[..int_len], &digits[int_len..])
+    }
+}
+
+/// Reads [`exact_um`]'s text (µm) back to the exact length in metres. Errors name `what`.
+pub fn parse_exact_um(text: &str, what: &str) -> anyhow::Result<f64> {
+    let t = text.trim();
+    let bad = || anyhow::anyhow!("{what}: `{t}` is not a length in µm");
+    // Move the decimal point back six places in the text, then parse once (correctly rounded):
+    // the decimal read is the one written, so the double is the one written.
+    let m_text = match t.split_once(['e', 'E']) {
+        Some((m, e)) => format!("{m}e{}", e.parse::<i32>().map_err(|_| bad())? - 6),
+        None if t.chars().any(|c| c.is_ascii_digit()) => format!("{t}e-6"),
+        None => t.to_string(), // NaN, inf
+    };
+    m_text.parse::<f64>().map_err(|_| bad())
+}
+
+fn ser_exact_um<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(&exact_um(*v))
+}
+
+fn de_exact_um<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    let t = String::deserialize(d)?;
+    parse_exact_um(&t, "z_um").map_err(serde::de::Error::custom)
+}
+
+/// One grid point's equilibrium height z (not yet Δz): the row of a landscape shard and of the
+/// landscape's spill file. Δz = z − min z needs the minimum over the whole grid, so a shard
+/// writes z, exactly ([`exact_um`]), and `superlube merge` (or the landscape's second pass)
+/// turns the z rows of the whole grid into [`LandscapeRow`]s.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LandscapeZRow {
+    /// Shift x of the slider centre from its default placement (µm).
+    pub x_um: f64,
+    /// Shift y (µm).
+    pub y_um: f64,
+    /// Equilibrium height z (m), written in µm as the exact decimal of [`exact_um`].
+    #[serde(
+        rename = "z_um",
+        serialize_with = "ser_exact_um",
+        deserialize_with = "de_exact_um"
+    )]
+    pub z: f64,
+}
+
+impl LandscapeZRow {
+    /// The row of shift `shift` (m) with height `z` (m).
+    pub fn new(shift: [f64; 2], z: f64) -> LandscapeZRow {
+        LandscapeZRow {
+            x_um: clean(m_to_um(shift[0])),
+            y_um: clean(m_to_um(shift[1])),
+            z,
+        }
+    }
+
+    /// The Δz row of this point, given the grid's min z (m).
+    pub fn dz_row(&self, z_min: f64) -> LandscapeRow {
+        LandscapeRow {
+            x_um: self.x_um,
+            y_um: self.y_um,
+            dz_nm: m_to_nm(self.z - z_min),
+        }
+    }
+}
+
 /// Corrugation felt along one pulling direction α.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CorrugationRow {
     /// Slider orientation θ (degrees).
     pub theta_deg: f64,
@@ -304,6 +400,51 @@ pub struct SlideReport {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn exact_um_reads_back_bit_for_bit() {
+        assert_eq!(exact_um(2.9996590468644904e-6), "2.9996590468644904");
+        assert_eq!(exact_um(3e-6), "3");
+        assert_eq!(exact_um(1.5e-4), "150");
+        assert_eq!(exact_um(-2.5e-13), "-0.00000025");
+        assert_eq!(exact_um(1e-20), "1e-14");
+        assert_eq!(exact_um(0.0), "0");
+        let mut x: u64 = 0x9e3779b97f4a7c15;
+        let check = |v: f64| {
+            let t = exact_um(v);
+            let back = parse_exact_um(&t, "z").unwrap();
+            assert_eq!(back.to_bits(), v.to_bits(), "{v:e} → {t} → {back:e}");
+            // and the text is v in µm to 1 ulp (away from overflow and subnormals)
+            let um: f64 = t.parse().unwrap();
+            if (1e-290..1e290).contains(&v.abs()) {
+                assert!(
+                    (um - m_to_um(v)).abs() <= 2.0 * f64::EPSILON * um.abs(),
+                    "{v:e} {t}"
+                );
+            }
+        };
+        for _ in 0..20000 {
+            // xorshift: heights around 3 µm, and arbitrary doubles
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            check(3e-6 * (1.0 - (x >> 11) as f64 / (1u64 << 53) as f64 * 1e-3));
+            let any = f64::from_bits(x);
+            if any.is_finite() {
+                check(any);
+            }
+        }
+        // m_to_um/um_to_m alone would not do: some heights do not survive the round trip.
+        let lossy = (0..20000)
+            .map(|k| 2.99e-6 + k as f64 * 1.3e-17)
+            .filter(|&z| surrogate::units::um_to_m(m_to_um(z)) != z)
+            .count();
+        assert!(lossy > 0);
+        assert!(parse_exact_um("abc", "z_um")
+            .unwrap_err()
+            .to_string()
+            .contains("z_um"));
+    }
 
     #[test]
     fn labels_keep_tiny_values_and_drop_conversion_noise() {

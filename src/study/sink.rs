@@ -13,7 +13,14 @@
 //! [`super::meta`]). A later `--resume` can check that sidecar's `input_hash`, drop a trailing
 //! incomplete line and continue at row `k`; `--shard i/n` can write a contiguous block of row
 //! indices and `merge` concatenate blocks: the order is fixed by the inputs, never by the thread
-//! count.
+//! count. [`StreamFile::resume`] reopens a checked partial file (see [`super::resume`]) and
+//! [`CsvSink::resumed`] appends to it without a second header.
+//!
+//! ## Test hook
+//! `SUPERLUBE_TEST_KILL_AFTER_ROWS=N` (tests only) makes a streamed file behave like a process
+//! killed mid-write: after this process has written `N` rows into a partial file, it flushes
+//! them, writes the first half of the next row's line, and exits at once with status 137, no
+//! clean-up run (the interrupted-and-resumed tests use it to stop at a known row).
 
 use anyhow::{Context, Result};
 use serde::Serialize;
@@ -102,6 +109,28 @@ impl StreamFile {
         })
     }
 
+    /// Reopens the partial file `OUT.partial` of an interrupted run for appending, cut to its
+    /// first `keep` bytes (the complete rows kept by [`super::resume`]).
+    pub fn resume(out: &Path, keep: u64) -> Result<StreamFile> {
+        let tmp = partial_path(out);
+        let f = std::fs::OpenOptions::new()
+            .write(true)
+            .open(&tmp)
+            .with_context(|| format!("opening {}", tmp.display()))?;
+        f.set_len(keep)
+            .with_context(|| format!("cutting {} to its complete rows", tmp.display()))?;
+        let mut f = f;
+        use std::io::Seek;
+        f.seek(std::io::SeekFrom::End(0))?;
+        Ok(StreamFile {
+            w: Box::new(BufWriter::new(f)),
+            target: Target::File {
+                out: out.to_path_buf(),
+                tmp,
+            },
+        })
+    }
+
     /// The file the stream ends up in (`None` for stdout).
     pub fn path(&self) -> Option<&Path> {
         match &self.target {
@@ -150,15 +179,67 @@ impl Write for StreamFile {
 pub struct CsvSink {
     w: csv::Writer<StreamFile>,
     rows: u64,
+    /// Rows written by this process (for the test hook).
+    written: u64,
+    kill_after: Option<u64>,
+}
+
+/// `SUPERLUBE_TEST_KILL_AFTER_ROWS` (see the module docs).
+fn kill_after() -> Option<u64> {
+    std::env::var("SUPERLUBE_TEST_KILL_AFTER_ROWS")
+        .ok()
+        .and_then(|v| v.parse().ok())
 }
 
 impl CsvSink {
     /// CSV over `stream`.
     pub fn new(stream: StreamFile) -> CsvSink {
+        CsvSink::build(csv::Writer::from_writer(stream), 0)
+    }
+
+    /// CSV appended to a resumed `stream` that already holds the header and `rows` rows.
+    pub fn resumed(stream: StreamFile, rows: u64) -> CsvSink {
+        CsvSink::build(
+            csv::WriterBuilder::new()
+                .has_headers(false)
+                .from_writer(stream),
+            rows,
+        )
+    }
+
+    fn build(w: csv::Writer<StreamFile>, rows: u64) -> CsvSink {
+        let kill_after = if w.get_ref().is_regular_file() {
+            kill_after()
+        } else {
+            None
+        };
         CsvSink {
-            w: csv::Writer::from_writer(stream),
-            rows: 0,
+            w,
+            rows,
+            written: 0,
+            kill_after,
         }
+    }
+
+    /// The test hook: half of `row`'s line after the rows so far, then exit without clean-up.
+    fn die_mid_row<R: Serialize>(&mut self, row: &R) -> ! {
+        let mut line = csv::WriterBuilder::new()
+            .has_headers(false)
+            .from_writer(Vec::new());
+        let _ = line.serialize(row);
+        let bytes = line.into_inner().unwrap_or_default();
+        let w = std::mem::replace(
+            &mut self.w,
+            csv::Writer::from_writer(StreamFile {
+                w: Box::new(std::io::sink()),
+                target: Target::Stdout,
+            }),
+        );
+        if let Ok(mut s) = w.into_inner() {
+            let _ = s.write_all(&bytes[..bytes.len() / 2]);
+            let _ = s.flush();
+        }
+        std::process::exit(137);
     }
 
     /// Rows written so far.
@@ -186,8 +267,12 @@ impl CsvSink {
 
 impl<R: Serialize> RowSink<R> for CsvSink {
     fn push(&mut self, row: &R) -> Result<()> {
+        if self.kill_after == Some(self.written) {
+            self.die_mid_row(row);
+        }
         self.w.serialize(row)?;
         self.rows += 1;
+        self.written += 1;
         Ok(())
     }
 }
