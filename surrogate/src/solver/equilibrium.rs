@@ -49,9 +49,15 @@ pub struct Equilibrium {
     pub residual: f64,
     /// Iterations the root find took.
     pub iterations: usize,
-    /// Moments of the contact forces about the disc centre `[Σ F_z·(y − y_c), Σ F_z·(x − x_c)]`
-    /// (N·m). Zero (to the solver tolerance) for rigid-tilt and compliant; for rigid-z it is the
-    /// moment the (suppressed) tilt would have to carry.
+    /// Moment of the contact forces about the disc centre, about the x and y axes,
+    /// `M_c = [Σ F_z·(y − y_c), −Σ F_z·(x − x_c)]` (N·m): the generalized force conjugate to the
+    /// tilts `[t_x, t_y]` (a positive M_c[0] tilts the slider towards positive t_x).
+    pub contact_moment: [f64; 2],
+    /// Unbalanced moment `M_c − K_t·t` (N·m) with the mount's rotational stiffness K_t
+    /// ([`crate::Scene::tilt_stiffness_at`]): zero to the solver tolerance (`moment_rtol`·W·L)
+    /// for rigid-tilt and compliant under a `free` or `springs` mount, where the moment balance
+    /// is `M_c = K_t·t`. For rigid-z (t = 0) it equals `M_c`: the moment a locked mount carries,
+    /// and the test `Model::Auto` uses to decide whether rigid-z is exact for a tilting mount.
     pub moment_residual: [f64; 2],
 }
 
