@@ -187,3 +187,41 @@ fn bad_input_names_the_field() {
         assert!(e.to_string().contains("offset"), "{e}");
     }
 }
+
+/// The path's pulling force is the derivative of the enthalpy V = U_Hertz + W·z along the path
+/// (locked mount: no tilt energy), checked by central differences on a fine path across a ridge
+/// of the square-tri θ = 0 landscape (skipping the valley, where the contacts change partners
+/// and F_pull jumps from −F_max to +F_max within one step). Before this check the contact sum used half the
+/// lateral centre offset and reported half the force.
+#[test]
+fn pulling_force_is_the_enthalpy_slope() {
+    let mut sc = Scene::preset("square-tri").unwrap();
+    sc.slider.mount = surrogate::Mount::Locked;
+    let s = Solver::new(&sc).unwrap();
+    let p = MapParams {
+        distance: 1.5e-6,
+        step: 0.01e-6,
+        ..MapParams::default()
+    };
+    let pr = path_profile(&s, 0.0, W, 0.0, &p, &|| {}).unwrap();
+    let v = |j: usize| pr.energy[j] + W * pr.z[j];
+    let fmax = pr.max_pull();
+    assert!(fmax > 1e-4, "{fmax}");
+    let mut checked = 0;
+    for k in 1..pr.s.len() - 1 {
+        let jump =
+            (pr.f_pull[k + 1] - pr.f_pull[k]).abs() + (pr.f_pull[k] - pr.f_pull[k - 1]).abs();
+        if jump > 0.1 * fmax {
+            continue;
+        }
+        checked += 1;
+        let dv = (v(k + 1) - v(k - 1)) / (pr.s[k + 1] - pr.s[k - 1]);
+        assert!(
+            (pr.f_pull[k] - dv).abs() < 0.01 * fmax,
+            "s = {} µm: F_pull {} vs dV/ds {dv}",
+            pr.s[k] * 1e6,
+            pr.f_pull[k]
+        );
+    }
+    assert!(checked > 140, "{checked}");
+}

@@ -10,9 +10,10 @@
 //! With the enthalpy `V(s) = U_Hertz(s, z*) + W·z*` (elastic energy plus the work against the
 //! load), `∂V/∂z = 0` at equilibrium gives `F_pull = dV/ds = W·dz*/ds + dU/ds`. For stiff contacts
 //! (δ ≪ R) the elastic term is small and `F_pull ≈ W·dz*/ds`: the rigid-slider
-//! relation. The direct path reports the exact contact sum; the landscape fast path reports the
-//! rigid-limit `W·dz/ds` of the interpolated landscape. Both are checked against each other in
-//! the tests.
+//! relation. (When the slider tilts against its mount, V also holds the mount energy ½tᵀK_t t;
+//! the envelope theorem still gives `F_pull = dV/ds`.) The direct path reports the exact contact
+//! sum (tested against the finite-difference dV/ds); the landscape fast path reports the
+//! rigid-limit `W·dz/ds` of the interpolated landscape.
 
 use super::{check_slider_stays_on_substrate, Landscape, MapParams};
 use crate::error::SceneError;
@@ -28,7 +29,8 @@ pub struct PathProfile {
     pub s: Vec<f64>,
     /// Slider height z (m) at each sample.
     pub z: Vec<f64>,
-    /// Quasi-static pulling force along the path, `F_pull = −Σ F_n (Δr·e)/D` (N).
+    /// Quasi-static pulling force along the path, `F_pull = −Σ F_n (Δr·e)/D` (N), Δr the lateral
+    /// slider-minus-substrate centre offset and D the centre distance of each contact.
     pub f_pull: Vec<f64>,
     /// Elastic (Hertz) energy `U = Σ (2/5) k δ^{5/2}` stored in the contacts (J).
     pub energy: Vec<f64>,
@@ -137,7 +139,6 @@ pub fn path_profile(
         "distance_um",
     )?;
     let k = scene.hertz().k();
-    let radius_sum = 2.0 * scene.sphere_radius;
     let sub = solver.substrate();
     let rows: Result<Vec<(f64, f64, f64, u32)>, SceneError> = s
         .par_iter()
@@ -147,10 +148,8 @@ pub fn path_profile(
             let mut f = 0.0;
             let mut u = 0.0;
             for c in &eq.contacts {
-                let q = sub[c.substrate as usize];
-                let d = radius_sum - c.overlap;
-                let dr = [c.point[0] - q[0], c.point[1] - q[1]];
-                f -= c.force_n * (dr[0] * e[0] + dr[1] * e[1]) / d;
+                let n = c.normal(sub[c.substrate as usize]);
+                f -= c.force_n * (n[0] * e[0] + n[1] * e[1]);
                 u += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
             }
             progress();

@@ -28,6 +28,22 @@ pub struct ContactInfo {
     pub deflection: f64,
 }
 
+impl ContactInfo {
+    /// Unit contact normal `n` (from the substrate sphere centre to the slider sphere centre),
+    /// given the substrate sphere centre `[x, y, h]` (m) of this pair (the slider sphere centre
+    /// is `2·point − substrate`). The contact force on the slider is `force_n·n`, so
+    /// `force_z = force_n·n_z` and its lateral part is `force_n·(n_x, n_y)`. O(1).
+    pub fn normal(&self, substrate: [f64; 3]) -> [f64; 3] {
+        let d = [
+            2.0 * (self.point[0] - substrate[0]),
+            2.0 * (self.point[1] - substrate[1]),
+            2.0 * (self.point[2] - substrate[2]),
+        ];
+        let inv = 1.0 / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        [d[0] * inv, d[1] * inv, d[2] * inv]
+    }
+}
+
 /// Equilibrium of the slider under load W (SI).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Equilibrium {
