@@ -6,7 +6,7 @@ use super::compliant::solve_compliant;
 use super::rigid_tilt::{assemble_tilt, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
-use crate::contact::{BvhSearch, CandidateSearch, GridSearch, Hertz};
+use crate::contact::{BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz};
 use crate::error::SceneError;
 use crate::scene::{rotate_tilt_stiffness, Scene};
 
@@ -119,9 +119,8 @@ impl Solver {
         Ok(())
     }
 
-    /// Candidate pairs (lateral distance < 2R) of the slider at `pose`. O(N_slider) with the
-    /// grid, O(N_slider log N_substrate) with the BVH. Load-independent: reuse for every load.
-    pub fn pairs_at(&self, pose: Pose) -> PairSet {
+    /// Slider sphere centres `[x, y]` (m) and the disc centre at `pose`. O(N_slider).
+    fn slider_xy_at(&self, pose: Pose) -> (Vec<[f64; 2]>, [f64; 2]) {
         let (s, c) = pose.theta.sin_cos();
         let cx = self.scene.slider.offset[0] + pose.shift[0];
         let cy = self.scene.slider.offset[1] + pose.shift[1];
@@ -130,12 +129,58 @@ impl Solver {
             .iter()
             .map(|p| [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]])
             .collect();
+        (slider_xy, [cx, cy])
+    }
+
+    /// Candidate pairs (lateral distance < 2R) of the slider at `pose`. O(N_slider) with the
+    /// grid, O(N_slider log N_substrate) with the BVH. Load-independent: reuse for every load.
+    pub fn pairs_at(&self, pose: Pose) -> PairSet {
+        self.pairs_within(pose, 0.0)
+    }
+
+    /// Candidate pairs of the slider at `pose` with lateral distance < 2R + `extra` (m): a
+    /// superset of the pairs of every pose with the same θ whose shift lies within `extra` of
+    /// `pose.shift`. Turn it into the pairs of such a pose with [`Solver::pairs_from`] (a path
+    /// then searches once per segment instead of once per sample).
+    pub fn pairs_within(&self, pose: Pose, extra: f64) -> PairSet {
+        let (slider_xy, centre) = self.slider_xy_at(pose);
         let mut pairs = Vec::with_capacity(slider_xy.len() * 3);
-        self.candidate_search()
-            .pairs(&slider_xy, 2.0 * self.scene.sphere_radius, &mut pairs);
+        self.candidate_search().pairs(
+            &slider_xy,
+            2.0 * self.scene.sphere_radius + extra.max(0.0),
+            &mut pairs,
+        );
         PairSet {
             slider_xy,
-            centre: [cx, cy],
+            centre,
+            theta: pose.theta,
+            pairs,
+        }
+    }
+
+    /// The pairs of `pose` (lateral distance < 2R) taken from `near`, a [`Solver::pairs_within`]
+    /// set of the same θ built with `extra` ≥ the distance between the two shifts: identical to
+    /// [`Solver::pairs_at`]`(pose)` (same order, same r² arithmetic), without a candidate search.
+    /// O(pairs of `near`).
+    pub fn pairs_from(&self, near: &PairSet, pose: Pose) -> PairSet {
+        let (slider_xy, centre) = self.slider_xy_at(pose);
+        let reach = 2.0 * self.scene.sphere_radius;
+        let r2max = reach * reach;
+        let pairs = near
+            .pairs
+            .iter()
+            .filter_map(|c| {
+                let p = slider_xy[c.slider as usize];
+                let q = self.substrate[c.substrate as usize];
+                let dx = q[0] - p[0];
+                let dy = q[1] - p[1];
+                let r2 = dx * dx + dy * dy;
+                (r2 < r2max).then_some(CandidatePair { r2, ..*c })
+            })
+            .collect();
+        PairSet {
+            slider_xy,
+            centre,
             theta: pose.theta,
             pairs,
         }
