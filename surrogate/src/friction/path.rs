@@ -4,8 +4,7 @@
 use super::FrictionParams;
 use crate::error::SceneError;
 use crate::scene::Lattice;
-use crate::solver::{Model, Pose, Solver};
-use rayon::prelude::*;
+use crate::solver::{Model, Solver, StraightPath};
 
 /// The shortest substrate lattice vector `T = m·a1 + n·a2` along the unit direction `e` (within
 /// the angle `tol`, rad, and pointing along +e) with `|T| ≤ max_len` (m): its length (m), the
@@ -57,9 +56,9 @@ pub(crate) struct Sample {
 }
 
 /// Solves every sample `s` (m) of the path from the scene's placement along the unit direction
-/// `e` at rotation `theta` (rad) and load `load` (N) with [`Model::Auto`], and reduces each
-/// equilibrium to a [`Sample`]. Parallel over segments of `params.segment` length, each sharing
-/// one candidate search ([`Solver::pairs_within`] / [`Solver::pairs_from`]); deterministic.
+/// `e` at rotation `theta` (rad) and load `load` (N) with [`Model::Auto`]
+/// ([`Solver::solve_along`], one candidate search per `params.segment` of path, parallel,
+/// deterministic), and reduces each equilibrium to a [`Sample`].
 pub(crate) fn solve_samples(
     solver: &Solver,
     theta: f64,
@@ -68,68 +67,53 @@ pub(crate) fn solve_samples(
     s: &[f64],
     params: &FrictionParams,
 ) -> Result<Vec<Sample>, SceneError> {
-    let per_seg = ((params.segment / params.step).round() as usize).max(1);
-    let chunks: Vec<&[f64]> = s.chunks(per_seg).collect();
     let scene = solver.scene();
     let k = scene.hertz().k();
     let kt = solver.tilt_stiffness_at(theta);
     let coat = scene.coating;
     let sub = solver.substrate();
-    let out: Result<Vec<Vec<Sample>>, SceneError> = chunks
-        .par_iter()
-        .map(|chunk| {
-            let (a, b) = (chunk[0], chunk[chunk.len() - 1]);
-            let mid = 0.5 * (a + b);
-            let at = |si: f64| Pose {
-                theta,
-                shift: [si * e[0], si * e[1]],
-            };
-            // Every sample of the chunk lies within half its span (plus round-off) of the middle.
-            let near = solver.pairs_within(at(mid), 0.5 * (b - a) * (1.0 + 1e-9) + 1e-15);
-            chunk
-                .iter()
-                .map(|&si| {
-                    let ps = solver.pairs_from(&near, at(si));
-                    let eq = solver.solve_pairs(&ps, load, Model::Auto)?;
-                    let mut smp = Sample {
-                        v: load * eq.z
-                            + 0.5
-                                * (eq.tilt[0] * (kt[0][0] * eq.tilt[0] + kt[0][1] * eq.tilt[1])
-                                    + eq.tilt[1] * (kt[1][0] * eq.tilt[0] + kt[1][1] * eq.tilt[1])),
-                        p_max: eq.p_max,
-                        contacts: eq.contact_count(),
-                        ..Sample::default()
-                    };
-                    let mut i = 0;
-                    while i < eq.contacts.len() {
-                        // contacts come grouped by slider sphere
-                        let sl = eq.contacts[i].slider;
-                        let mut n_i = 0.0;
-                        while i < eq.contacts.len() && eq.contacts[i].slider == sl {
-                            let c = &eq.contacts[i];
-                            let n = c.normal(sub[c.substrate as usize]);
-                            let en = n[0] * e[0] + n[1] * e[1];
-                            let mu = if coat.failed(c.p0) {
-                                coat.mu2
-                            } else {
-                                coat.mu1
-                            };
-                            smp.v += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
-                            smp.f_pull -= c.force_n * en;
-                            smp.coating += mu * c.force_n * (1.0 - en * en).max(0.0).sqrt();
-                            if c.failed {
-                                smp.failed_load += c.force_z;
-                            }
-                            n_i += 1.0;
-                            i += 1;
-                        }
-                        smp.k_lateral +=
-                            1.0 / (1.0 / params.k_slider_xy + 1.0 / (n_i * params.k_substrate_xy));
-                    }
-                    Ok(smp)
-                })
-                .collect()
-        })
-        .collect();
-    Ok(out?.into_iter().flatten().collect())
+    let path = StraightPath {
+        theta,
+        e,
+        s,
+        segment: params.segment,
+    };
+    solver.solve_along(path, load, Model::Auto, |_, eq| {
+        let t = eq.tilt;
+        let mut smp = Sample {
+            v: load * eq.z
+                + 0.5
+                    * (t[0] * (kt[0][0] * t[0] + kt[0][1] * t[1])
+                        + t[1] * (kt[1][0] * t[0] + kt[1][1] * t[1])),
+            p_max: eq.p_max,
+            contacts: eq.contact_count(),
+            ..Sample::default()
+        };
+        let mut i = 0;
+        while i < eq.contacts.len() {
+            // contacts come grouped by slider sphere
+            let sl = eq.contacts[i].slider;
+            let mut n_i = 0.0;
+            while i < eq.contacts.len() && eq.contacts[i].slider == sl {
+                let c = &eq.contacts[i];
+                let n = c.normal(sub[c.substrate as usize]);
+                let en = n[0] * e[0] + n[1] * e[1];
+                let mu = if coat.failed(c.p0) {
+                    coat.mu2
+                } else {
+                    coat.mu1
+                };
+                smp.v += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
+                smp.f_pull -= c.force_n * en;
+                smp.coating += mu * c.force_n * (1.0 - en * en).max(0.0).sqrt();
+                if c.failed {
+                    smp.failed_load += c.force_z;
+                }
+                n_i += 1.0;
+                i += 1;
+            }
+            smp.k_lateral += 1.0 / (1.0 / params.k_slider_xy + 1.0 / (n_i * params.k_substrate_xy));
+        }
+        smp
+    })
 }

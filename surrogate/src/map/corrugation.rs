@@ -17,8 +17,7 @@
 
 use super::{check_slider_stays_on_substrate, Landscape, MapParams};
 use crate::error::SceneError;
-use crate::solver::{Model, Pose, Solver};
-use rayon::prelude::*;
+use crate::solver::{Model, Solver, StraightPath};
 
 /// Equilibrium along one straight path from the scene's offset (SI).
 #[derive(Debug, Clone, PartialEq)]
@@ -113,7 +112,8 @@ pub fn check_alpha(alpha: f64) -> Result<(), SceneError> {
 
 /// Solves the equilibrium along the straight path `shift = s·(cos φ, sin φ)`, s ∈ [0, L]
 /// (`params.distance`, sampled every ≤ `params.step`), at rotation `theta` (rad) and load `load`
-/// (N), with [`Model::Auto`]. Parallel over samples (deterministic). `progress` is called per
+/// (N), with [`Model::Auto`] ([`Solver::solve_along`]: one candidate search per
+/// `params.segment` of path, parallel over segments, deterministic). `progress` is called per
 /// solved sample. Cost: L/step + 1 solves.
 ///
 /// Errors: bad distance/step, the slider leaving the substrate along the path (field
@@ -140,23 +140,23 @@ pub fn path_profile(
     )?;
     let k = scene.hertz().k();
     let sub = solver.substrate();
-    let rows: Result<Vec<(f64, f64, f64, u32)>, SceneError> = s
-        .par_iter()
-        .map(|&si| {
-            let shift = [si * e[0], si * e[1]];
-            let eq = solver.solve(Pose { theta, shift }, load, Model::Auto)?;
-            let mut f = 0.0;
-            let mut u = 0.0;
-            for c in &eq.contacts {
-                let n = c.normal(sub[c.substrate as usize]);
-                f -= c.force_n * (n[0] * e[0] + n[1] * e[1]);
-                u += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
-            }
-            progress();
-            Ok((eq.z, f, u, eq.contact_count() as u32))
-        })
-        .collect();
-    let rows = rows?;
+    let path = StraightPath {
+        theta,
+        e,
+        s: &s,
+        segment: params.segment,
+    };
+    let rows = solver.solve_along(path, load, Model::Auto, |_, eq| {
+        let mut f = 0.0;
+        let mut u = 0.0;
+        for c in &eq.contacts {
+            let n = c.normal(sub[c.substrate as usize]);
+            f -= c.force_n * (n[0] * e[0] + n[1] * e[1]);
+            u += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
+        }
+        progress();
+        (eq.z, f, u, eq.contact_count() as u32)
+    })?;
     Ok(PathProfile {
         direction,
         s,

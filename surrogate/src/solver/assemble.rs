@@ -55,7 +55,7 @@ pub(crate) fn assemble(
     model: Model,
     load: f64,
     q: [f64; 3],
-    defl: &dyn Fn(u32) -> f64,
+    defl: impl Fn(u32) -> f64,
     iterations: usize,
 ) -> Equilibrium {
     let k = ctx.hertz.k();

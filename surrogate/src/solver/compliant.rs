@@ -259,7 +259,7 @@ pub(crate) fn solve_compliant(
         Model::Compliant,
         load,
         sys.q(&x),
-        &|i| defl[i as usize],
+        |i| defl[i as usize],
         iters,
     ))
 }

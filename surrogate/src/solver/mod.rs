@@ -9,6 +9,7 @@
 //! a `locked` mount has no tilt unknowns. [`Model::Auto`] solves rigid-z and escalates to
 //! rigid-tilt only where the rigid-z answer leaves a moment (see `auto.rs`).
 
+mod along;
 mod assemble;
 mod auto;
 mod compliant;
@@ -23,6 +24,7 @@ mod rigid_z;
 mod solver;
 mod z_root;
 
+pub use along::StraightPath;
 pub use equilibrium::{ContactInfo, Equilibrium};
 pub use model::Model;
 pub use pair_set::PairSet;

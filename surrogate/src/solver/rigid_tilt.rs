@@ -172,17 +172,7 @@ pub(crate) fn assemble_tilt(
     q: [f64; 3],
     iters: usize,
 ) -> Equilibrium {
-    assemble(
-        ctx,
-        ps,
-        bp,
-        zref,
-        Model::RigidTilt,
-        load,
-        q,
-        &|_| 0.0,
-        iters,
-    )
+    assemble(ctx, ps, bp, zref, Model::RigidTilt, load, q, |_| 0.0, iters)
 }
 
 /// Converged `[ζ, L·t_x, L·t_y]` and iterations, from the rigid-z start.

@@ -48,7 +48,7 @@ impl RigidZ {
             Model::RigidZ,
             load,
             [zeta, 0.0, 0.0],
-            &|_| 0.0,
+            |_| 0.0,
             iters,
         )
     }

@@ -9,21 +9,18 @@ use crate::error::SceneError;
 /// The pairs of one pair set at fixed tilt, prepared for the root find. Build once per pair set
 /// (and tilt), solve for many loads.
 pub(crate) struct ZRoot {
-    /// `(c, r2, u_t, j)`: touch height relative to z_ref (m), lateral distance² (m²), touch gap
-    /// (m), index of the pair, in pair order (unsorted).
-    all: Vec<Entry>,
+    /// `(c, r2, u_t)`: touch height relative to z_ref (m), lateral distance² (m²), touch gap (m),
+    /// in pair order (unsorted).
+    all: Vec<(f64, f64, f64)>,
     /// Highest touch height (m): the top of the first bracket.
     c_max: f64,
     k: f64,
     two_r: f64,
 }
 
-/// One pair in the root find: touch height c (m), lateral distance² (m²), touch gap (m), pair index.
-type Entry = (f64, f64, f64, u32);
-
 /// The pairs of `all` that touch below ζ = `floor`, sorted by touch height, descending, so the
 /// pairs active at any ζ ≥ `floor` are a prefix. O(P + A log A) for A selected pairs.
-fn select(all: &[Entry], floor: f64, act: &mut Vec<Entry>) {
+fn select(all: &[(f64, f64, f64)], floor: f64, act: &mut Vec<(f64, f64, f64)>) {
     act.clear();
     act.extend(all.iter().copied().filter(|p| p.0 > floor));
     act.sort_by(|a, b| b.0.total_cmp(&a.0));
@@ -32,17 +29,9 @@ fn select(all: &[Entry], floor: f64, act: &mut Vec<Entry>) {
 impl ZRoot {
     /// Takes the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m). O(P).
     pub fn new(pairs: &[BodyPair], q12: [f64; 2], two_r: f64, hertz: &Hertz) -> ZRoot {
-        let all: Vec<Entry> = pairs
+        let all: Vec<(f64, f64, f64)> = pairs
             .iter()
-            .enumerate()
-            .map(|(j, p)| {
-                (
-                    p.c - q12[0] * p.g[0] - q12[1] * p.g[1],
-                    p.r2,
-                    p.ut,
-                    j as u32,
-                )
-            })
+            .map(|p| (p.c - q12[0] * p.g[0] - q12[1] * p.g[1], p.r2, p.ut))
             .collect();
         let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
         ZRoot {
@@ -55,10 +44,10 @@ impl ZRoot {
 
     /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m) over `act` (sorted, descending, as from
     /// [`select`]). O(active pairs).
-    fn eval(&self, act: &[Entry], zeta: f64) -> (f64, f64) {
+    fn eval(&self, act: &[(f64, f64, f64)], zeta: f64) -> (f64, f64) {
         let mut f = 0.0;
         let mut df = 0.0;
-        for &(c, r2, ut, _) in act {
+        for &(c, r2, ut) in act {
             if c <= zeta {
                 break;
             }
@@ -82,32 +71,6 @@ impl ZRoot {
         hertz: &Hertz,
         params: &SolverParams,
     ) -> Result<(f64, usize), SceneError> {
-        self.solve_touching(load, hertz, params, &mut Vec::new())
-    }
-
-    /// [`ZRoot::solve`], also filling `touching` with the indices (in pair order of the slice
-    /// given to [`ZRoot::new`]) of the pairs that touch at the root (c > ζ), in descending order
-    /// of touch height: O(touching) extra, so a caller can sum over the contacts without a pass
-    /// over every candidate pair.
-    pub fn solve_touching(
-        &self,
-        load: f64,
-        hertz: &Hertz,
-        params: &SolverParams,
-        touching: &mut Vec<u32>,
-    ) -> Result<(f64, usize), SceneError> {
-        touching.clear();
-        let (z, iters, act) = self.root(load, hertz, params)?;
-        touching.extend(act.iter().take_while(|e| e.0 > z).map(|e| e.3));
-        Ok((z, iters))
-    }
-
-    fn root(
-        &self,
-        load: f64,
-        hertz: &Hertz,
-        params: &SolverParams,
-    ) -> Result<(f64, usize, Vec<Entry>), SceneError> {
         if self.all.is_empty() {
             return Err(SceneError::NoEquilibrium(
                 "no substrate sphere lies under any slider sphere (slider off the substrate?)"
@@ -146,7 +109,7 @@ impl ZRoot {
             let (f, df) = self.eval(&act, z);
             let g = f - load;
             if g.abs() <= tol {
-                return Ok((z, iters, act));
+                return Ok((z, iters));
             }
             if g > 0.0 {
                 z_lo = z;
@@ -185,7 +148,7 @@ impl ZRoot {
                         fb - load
                     )));
                 }
-                return Ok((zb, iters, act));
+                return Ok((zb, iters));
             }
         }
     }
