@@ -74,6 +74,7 @@ pub(crate) fn solve_samples(
     let sub = solver.substrate();
     let path = StraightPath {
         theta,
+        origin: [0.0, 0.0],
         e,
         s,
         segment: params.segment,

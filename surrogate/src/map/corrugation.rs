@@ -142,6 +142,7 @@ pub fn path_profile(
     let sub = solver.substrate();
     let path = StraightPath {
         theta,
+        origin: [0.0, 0.0],
         e,
         s: &s,
         segment: params.segment,

@@ -5,11 +5,14 @@ use super::{Equilibrium, Model, Pose, Solver};
 use crate::error::SceneError;
 use rayon::prelude::*;
 
-/// A straight path of slider poses: shifts `s·e` from the scene's placement at rotation θ.
+/// A straight path of slider poses: shifts `origin + s·e` from the scene's placement at
+/// rotation θ.
 #[derive(Debug, Clone, Copy)]
 pub struct StraightPath<'a> {
     /// Slider rotation θ (rad).
     pub theta: f64,
+    /// Shift (m) of the sample at s = 0 from the scene's placement.
+    pub origin: [f64; 2],
     /// Unit direction e of the path in the substrate plane.
     pub e: [f64; 2],
     /// Distances s (m) of the samples along the path, ascending.
@@ -40,6 +43,7 @@ impl Solver {
     {
         let StraightPath {
             theta,
+            origin,
             e,
             s,
             segment,
@@ -59,7 +63,7 @@ impl Solver {
         };
         let at = |si: f64| Pose {
             theta,
-            shift: [si * e[0], si * e[1]],
+            shift: [origin[0] + si * e[0], origin[1] + si * e[1]],
         };
         let out: Result<Vec<Vec<T>>, SceneError> = s
             .par_chunks(per)
