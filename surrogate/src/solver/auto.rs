@@ -11,7 +11,7 @@
 //! `RigidTilt` in [`Equilibrium::model`].
 
 use super::assemble::Ctx;
-use super::rigid_tilt::{assemble_tilt, tilt_from, NearSet};
+use super::rigid_tilt::{assemble_tilt, max_lever, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, PairSet};
 use crate::error::SceneError;
@@ -38,7 +38,7 @@ pub(crate) fn solve_auto(
     if !ctx.tilts || moment_negligible(ctx, load, eq.moment_residual) {
         return Ok(eq);
     }
-    let near = NearSet::new(&rz.bp, zeta);
+    let near = NearSet::new(&rz.bp, zeta, max_lever(ctx, ps));
     let (q, it) = tilt_from(ctx, &rz.bp, &near, load, zeta)?;
     Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, load, q, iters + it))
 }

@@ -155,7 +155,7 @@ pub(crate) fn solve_compliant(
 ) -> Result<Equilibrium, SceneError> {
     let (bp, zref) = body_pairs(ctx, ps);
     let (q0, it0) = if ctx.tilts {
-        rigid_tilt_state(ctx, &bp, load)?
+        rigid_tilt_state(ctx, ps, &bp, load)?
     } else {
         let (z, it) =
             ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz).solve(load, ctx.hertz, ctx.params)?;

@@ -158,7 +158,7 @@ pub(crate) fn solve_rigid_tilt(
     load: f64,
 ) -> Result<Equilibrium, SceneError> {
     let (bp, zref) = body_pairs(ctx, ps);
-    let (q, iters) = rigid_tilt_state(ctx, &bp, load)?;
+    let (q, iters) = rigid_tilt_state(ctx, ps, &bp, load)?;
     Ok(assemble_tilt(ctx, ps, &bp, zref, load, q, iters))
 }
 
@@ -178,12 +178,13 @@ pub(crate) fn assemble_tilt(
 /// Converged `[ζ, L·t_x, L·t_y]` and iterations, from the rigid-z start.
 pub(crate) fn rigid_tilt_state(
     ctx: &Ctx,
+    ps: &PairSet,
     bp: &[BodyPair],
     load: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
     let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
     let (z0, it0) = zr.solve(load, ctx.hertz, ctx.params)?;
-    let near = NearSet::new(bp, z0);
+    let near = NearSet::new(bp, z0, max_lever(ctx, ps));
     let (q, it1) = tilt_from(ctx, bp, &near, load, z0)?;
     Ok((q, it0 + it1))
 }
@@ -197,38 +198,31 @@ pub(crate) struct NearSet {
     pub pairs: Vec<BodyPair>,
     /// ζ₀ − band (m).
     floor: f64,
-    /// Largest |g| over the pairs left out.
-    gmax_far: f64,
+    /// Bound on |g| = |arm|/L over every pair.
+    gmax: f64,
     /// Whether no pair was left out.
     complete: bool,
 }
 
 impl NearSet {
-    /// The working set of `bp` around the rigid-z state `z0` (m).
-    pub fn new(bp: &[BodyPair], z0: f64) -> NearSet {
+    /// The working set of `bp` around the rigid-z state `z0` (m); `gmax` bounds |g| over every
+    /// pair ([`max_lever`]).
+    pub fn new(bp: &[BodyPair], z0: f64, gmax: f64) -> NearSet {
         let band = NEAR_BAND * (-z0).max(0.0);
         let floor = z0 - band;
-        let mut pairs = Vec::new();
-        let mut g2max: f64 = 0.0;
-        for p in bp {
-            if p.c > floor {
-                pairs.push(*p);
-            } else {
-                g2max = g2max.max(p.g[0] * p.g[0] + p.g[1] * p.g[1]);
-            }
-        }
+        let pairs: Vec<BodyPair> = bp.iter().filter(|p| p.c > floor).copied().collect();
         NearSet {
             complete: pairs.len() == bp.len() || band == 0.0,
             pairs,
             floor,
-            gmax_far: g2max.sqrt(),
+            gmax,
         }
     }
 
     /// Whether a pair of `bp` left out of the set touches at state `q`: O(1) when the bound
     /// `ζ − |q₁₂|·max|g| > floor` rules it out, else one O(P) pass.
     fn misses_a_contact(&self, bp: &[BodyPair], q: [f64; 3]) -> bool {
-        if self.complete || q[0] - (q[1] * q[1] + q[2] * q[2]).sqrt() * self.gmax_far > self.floor {
+        if self.complete || q[0] - (q[1] * q[1] + q[2] * q[2]).sqrt() * self.gmax > self.floor {
             return false;
         }
         bp.iter()
@@ -273,6 +267,17 @@ pub(crate) fn tilt_from(
     let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r, ctx.hertz);
     let (z, it2) = zr.solve(load, ctx.hertz, ctx.params)?;
     Ok(([z, q[1], q[2]], it1 + it2))
+}
+
+/// Bound on the lever `|g| = |arm|/L` of every pair of `ps`: the largest slider-sphere distance
+/// from the disc centre over L (plus round-off). O(slider spheres).
+pub(crate) fn max_lever(ctx: &Ctx, ps: &PairSet) -> f64 {
+    let mut r2: f64 = 0.0;
+    for p in &ps.slider_xy {
+        let (dx, dy) = (p[0] - ps.centre[0], p[1] - ps.centre[1]);
+        r2 = r2.max(dx * dx + dy * dy);
+    }
+    r2.sqrt() / ctx.scale * (1.0 + 1e-12)
 }
 
 /// Width of the tilt Newton's working set in units of the deepest rigid-z overlap (see

@@ -3,7 +3,7 @@
 use super::assemble::Ctx;
 use super::auto::solve_auto;
 use super::compliant::solve_compliant;
-use super::rigid_tilt::{assemble_tilt, solve_rigid_tilt, tilt_from, NearSet};
+use super::rigid_tilt::{assemble_tilt, max_lever, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
 use crate::contact::{BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz};
@@ -269,7 +269,7 @@ impl Solver {
                             Model::RigidZ => rz.solve(&ctx, ps, w),
                             _ => {
                                 let (z0, it0) = rz.zr.solve(w, ctx.hertz, ctx.params)?;
-                                let near = NearSet::new(&rz.bp, z0);
+                                let near = NearSet::new(&rz.bp, z0, max_lever(&ctx, ps));
                                 let (q, it1) = tilt_from(&ctx, &rz.bp, &near, w, z0)?;
                                 Ok(assemble_tilt(&ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
                             }
