@@ -68,6 +68,11 @@ impl Solver {
         let out: Result<Vec<Vec<T>>, SceneError> = s
             .par_chunks(per)
             .map(|chunk| {
+                if let [si] = chunk {
+                    // a segment of one sample: a plain search
+                    let ps = self.pairs_at(at(*si));
+                    return Ok(vec![f(*si, self.solve_pairs(&ps, load, model)?)]);
+                }
                 let (a, b) = (chunk[0], chunk[chunk.len() - 1]);
                 // every sample of the chunk lies within half its span (plus round-off) of the middle
                 let reach = 0.5 * (b - a).abs() * (1.0 + 1e-9) + 1e-15;
