@@ -104,7 +104,7 @@ fn main() {
     if !convergence {
         return;
     }
-    println!("\nconvergence: default vs step/2, step/4, and (quasi-periodic paths) length ×2, ×4");
+    println!("\nconvergence: default vs step/2, step/4, and (quasi-periodic paths) length ×2, length ×3 with step/2");
     println!("| configuration | W (mN) | variant | μ_est | μ_coat | μ_PT | η | rel. diff. μ_est vs finest |");
     println!("|---|---|---|---|---|---|---|---|");
     for &(label, pattern, th, al, sh, seed) in CONFIGS {
@@ -137,9 +137,9 @@ fn main() {
                     },
                 ),
                 (
-                    "length ×4, step/2",
+                    "length ×3, step/2",
                     FrictionParams {
-                        length: 4.0 * p.length,
+                        length: 3.0 * p.length,
                         step: p.step / 2.0,
                         ..p
                     },
