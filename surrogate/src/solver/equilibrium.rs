@@ -54,7 +54,7 @@ pub struct Equilibrium {
     /// Height z (m) of the slider's sphere-centre plane (at its centre) above the substrate's
     /// unperturbed sphere-centre plane. 2R at first touch of an on-top pair.
     pub z: f64,
-    /// Tilts `[about x, about y]` (rad): slider sphere i sits at z + tilt[0]·y_i − tilt[1]·x_i
+    /// Tilts `[about x, about y]` (rad): slider sphere i sits at `z + tilt[0]·y_i − tilt[1]·x_i`
     /// relative to the disc centre. Zero for the rigid-z model.
     pub tilt: [f64; 2],
     /// Touching pairs (δ > 0), in slider-then-substrate index order.
@@ -67,7 +67,7 @@ pub struct Equilibrium {
     pub iterations: usize,
     /// Moment of the contact forces about the disc centre, about the x and y axes,
     /// `M_c = [Σ F_z·(y − y_c), −Σ F_z·(x − x_c)]` (N·m): the generalized force conjugate to the
-    /// tilts `[t_x, t_y]` (a positive M_c[0] tilts the slider towards positive t_x).
+    /// tilts `[t_x, t_y]` (a positive `M_c[0]` tilts the slider towards positive t_x).
     pub contact_moment: [f64; 2],
     /// Unbalanced moment `M_c − K_t·t` (N·m) with the mount's rotational stiffness K_t
     /// ([`crate::Scene::tilt_stiffness_at`]): zero to the solver tolerance (`moment_rtol`·W·L)
