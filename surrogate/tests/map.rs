@@ -78,7 +78,9 @@ fn symmetric_scenes_give_the_same_contacts_and_p_max() {
             assert!((e.z - eqs[0].z).abs() < 1e-15);
         }
     }
-    // The landscape of square-tri at θ = 0 is mirror-symmetric: Δz(x, y) = Δz(x, −y).
+    // The landscape of square-tri at θ = 0 is mirror-symmetric: Δz(x, y) = Δz(x, −y) (the
+    // landscape solves with auto, which tilts against the mount's springs off the symmetric
+    // poses; the mirror flips the tilt, not z).
     let s = solver("square-tri");
     let l = compute_landscape(&s, 0.0, W, &params(5), &|| {}).unwrap();
     for i in 0..5 {
@@ -91,7 +93,7 @@ fn symmetric_scenes_give_the_same_contacts_and_p_max() {
                         shift: [x, -y],
                     },
                     W,
-                    Model::RigidZ,
+                    Model::Auto,
                 )
                 .unwrap();
             assert!((m.z - l.z_at(i, j)).abs() < 1e-15, "({i},{j})");
@@ -184,4 +186,42 @@ fn bad_input_names_the_field() {
         let e = compute_landscape(&s, 0.0, W, &params(3), &|| {}).unwrap_err();
         assert!(e.to_string().contains("offset"), "{e}");
     }
+}
+
+/// The path's pulling force is the derivative of the enthalpy V = U_Hertz + W·z along the path
+/// (locked mount: no tilt energy), checked by central differences on a fine path across a ridge
+/// of the square-tri θ = 0 landscape (skipping the valley, where the contacts change partners
+/// and F_pull jumps from −F_max to +F_max within one step). Before this check the contact sum used half the
+/// lateral centre offset and reported half the force.
+#[test]
+fn pulling_force_is_the_enthalpy_slope() {
+    let mut sc = Scene::preset("square-tri").unwrap();
+    sc.slider.mount = surrogate::Mount::Locked;
+    let s = Solver::new(&sc).unwrap();
+    let p = MapParams {
+        distance: 1.5e-6,
+        step: 0.01e-6,
+        ..MapParams::default()
+    };
+    let pr = path_profile(&s, 0.0, W, 0.0, &p, &|| {}).unwrap();
+    let v = |j: usize| pr.energy[j] + W * pr.z[j];
+    let fmax = pr.max_pull();
+    assert!(fmax > 1e-4, "{fmax}");
+    let mut checked = 0;
+    for k in 1..pr.s.len() - 1 {
+        let jump =
+            (pr.f_pull[k + 1] - pr.f_pull[k]).abs() + (pr.f_pull[k] - pr.f_pull[k - 1]).abs();
+        if jump > 0.1 * fmax {
+            continue;
+        }
+        checked += 1;
+        let dv = (v(k + 1) - v(k - 1)) / (pr.s[k + 1] - pr.s[k - 1]);
+        assert!(
+            (pr.f_pull[k] - dv).abs() < 0.01 * fmax,
+            "s = {} µm: F_pull {} vs dV/ds {dv}",
+            pr.s[k] * 1e6,
+            pr.f_pull[k]
+        );
+    }
+    assert!(checked > 140, "{checked}");
 }

@@ -94,6 +94,38 @@ fn bvh_and_grid_find_identical_pairs() {
     }
 }
 
+/// A path shares one wider candidate search per segment (`pairs_within`) and filters it per
+/// sample (`pairs_from`): bit-identical to a fresh search at every sample, both searches.
+#[test]
+fn pairs_from_a_wider_search_equal_a_fresh_search() {
+    for pattern in ["tri-tri", "square-tri"] {
+        let mut sc = Scene::preset(pattern).unwrap();
+        sc.substrate.sigma_h = 0.01e-6;
+        let mut s = Solver::new(&sc).unwrap();
+        for search in [SearchKind::Grid, SearchKind::Bvh] {
+            s.search = search;
+            let base = Pose {
+                theta: 0.3,
+                shift: [0.4e-6, -0.2e-6],
+            };
+            let near = s.pairs_within(base, 0.25e-6);
+            for k in 0..=10 {
+                let d = -0.25e-6 + 0.05e-6 * k as f64;
+                let p = Pose {
+                    theta: 0.3,
+                    shift: [base.shift[0] + 0.6 * d, base.shift[1] + 0.8 * d],
+                };
+                let a = s.pairs_from(&near, p);
+                let b = s.pairs_at(p);
+                assert_eq!(a.pairs, b.pairs, "{pattern} {search:?} {k}");
+                assert_eq!(a.slider_xy, b.slider_xy);
+                assert_eq!(a.centre, b.centre);
+                assert!(near.pairs.len() > b.pairs.len());
+            }
+        }
+    }
+}
+
 #[test]
 fn commensurate_on_top_extreme_loads() {
     // θ = 0 tri-tri: 3505 simultaneous on-top contacts, from grazing (1 nN) to 100 mN.

@@ -10,14 +10,14 @@
 //! With the enthalpy `V(s) = U_Hertz(s, z*) + W·z*` (elastic energy plus the work against the
 //! load), `∂V/∂z = 0` at equilibrium gives `F_pull = dV/ds = W·dz*/ds + dU/ds`. For stiff contacts
 //! (δ ≪ R) the elastic term is small and `F_pull ≈ W·dz*/ds`: the rigid-slider
-//! relation. The direct path reports the exact contact sum; the landscape fast path reports the
-//! rigid-limit `W·dz/ds` of the interpolated landscape. Both are checked against each other in
-//! the tests.
+//! relation. (When the slider tilts against its mount, V also holds the mount energy ½tᵀK_t t;
+//! the envelope theorem still gives `F_pull = dV/ds`.) The direct path reports the exact contact
+//! sum (tested against the finite-difference dV/ds); the landscape fast path reports the
+//! rigid-limit `W·dz/ds` of the interpolated landscape.
 
 use super::{check_slider_stays_on_substrate, Landscape, MapParams};
 use crate::error::SceneError;
-use crate::solver::{Model, Pose, Solver};
-use rayon::prelude::*;
+use crate::solver::{Model, Solver, StraightPath};
 
 /// Equilibrium along one straight path from the scene's offset (SI).
 #[derive(Debug, Clone, PartialEq)]
@@ -28,7 +28,8 @@ pub struct PathProfile {
     pub s: Vec<f64>,
     /// Slider height z (m) at each sample.
     pub z: Vec<f64>,
-    /// Quasi-static pulling force along the path, `F_pull = −Σ F_n (Δr·e)/D` (N).
+    /// Quasi-static pulling force along the path, `F_pull = −Σ F_n (Δr·e)/D` (N), Δr the lateral
+    /// slider-minus-substrate centre offset and D the centre distance of each contact.
     pub f_pull: Vec<f64>,
     /// Elastic (Hertz) energy `U = Σ (2/5) k δ^{5/2}` stored in the contacts (J).
     pub energy: Vec<f64>,
@@ -111,7 +112,8 @@ pub fn check_alpha(alpha: f64) -> Result<(), SceneError> {
 
 /// Solves the equilibrium along the straight path `shift = s·(cos φ, sin φ)`, s ∈ [0, L]
 /// (`params.distance`, sampled every ≤ `params.step`), at rotation `theta` (rad) and load `load`
-/// (N), with [`Model::Auto`]. Parallel over samples (deterministic). `progress` is called per
+/// (N), with [`Model::Auto`] ([`Solver::solve_along`]: one candidate search per
+/// `params.segment` of path, parallel over segments, deterministic). `progress` is called per
 /// solved sample. Cost: L/step + 1 solves.
 ///
 /// Errors: bad distance/step, the slider leaving the substrate along the path (field
@@ -137,27 +139,25 @@ pub fn path_profile(
         "distance_um",
     )?;
     let k = scene.hertz().k();
-    let radius_sum = 2.0 * scene.sphere_radius;
     let sub = solver.substrate();
-    let rows: Result<Vec<(f64, f64, f64, u32)>, SceneError> = s
-        .par_iter()
-        .map(|&si| {
-            let shift = [si * e[0], si * e[1]];
-            let eq = solver.solve(Pose { theta, shift }, load, Model::Auto)?;
-            let mut f = 0.0;
-            let mut u = 0.0;
-            for c in &eq.contacts {
-                let q = sub[c.substrate as usize];
-                let d = radius_sum - c.overlap;
-                let dr = [c.point[0] - q[0], c.point[1] - q[1]];
-                f -= c.force_n * (dr[0] * e[0] + dr[1] * e[1]) / d;
-                u += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
-            }
-            progress();
-            Ok((eq.z, f, u, eq.contact_count() as u32))
-        })
-        .collect();
-    let rows = rows?;
+    let path = StraightPath {
+        theta,
+        origin: [0.0, 0.0],
+        e,
+        s: &s,
+        segment: params.segment,
+    };
+    let rows = solver.solve_along(path, load, Model::Auto, |_, eq| {
+        let mut f = 0.0;
+        let mut u = 0.0;
+        for c in &eq.contacts {
+            let n = c.normal(sub[c.substrate as usize]);
+            f -= c.force_n * (n[0] * e[0] + n[1] * e[1]);
+            u += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
+        }
+        progress();
+        (eq.z, f, u, eq.contact_count() as u32)
+    })?;
     Ok(PathProfile {
         direction,
         s,

@@ -3,7 +3,7 @@
 
 use super::{check_slider_stays_on_substrate, MapParams, RepeatCell};
 use crate::error::SceneError;
-use crate::solver::{Model, Pose, Solver};
+use crate::solver::{Model, Solver, StraightPath};
 use rayon::prelude::*;
 
 /// Equilibrium height of the slider over an N×N grid of shifts spanning one substrate repeat
@@ -91,6 +91,9 @@ impl Landscape {
     }
 }
 
+/// (z, contact number, P_max) of one grid point.
+type GridPoint = (f64, u32, f64);
+
 fn catmull_rom_weights(t: f64) -> [f64; 4] {
     let t2 = t * t;
     let t3 = t2 * t;
@@ -106,8 +109,10 @@ fn catmull_rom_weights(t: f64) -> [f64; 4] {
 /// on a `params.grid`² grid over the substrate's [`RepeatCell`] (rectangular cell, or the
 /// primitive parallelogram for oblique substrates). Solves with [`Model::Auto`].
 ///
-/// Parallel over grid points (rayon); the result does not depend on the number of threads.
-/// `progress` is called once per finished grid point. Cost: N² solves.
+/// Parallel over grid rows and segments of them (rayon; each row is a straight path along the
+/// edge a, [`Solver::solve_along`], one candidate search per `params.segment`); the result does
+/// not depend on the number of threads. `progress` is called once per finished grid point.
+/// Cost: N² solves.
 ///
 /// Errors: `grid` < 2 (field `grid`), the slider leaving the substrate somewhere over the cell
 /// (field `offset_um`), or a failed solve.
@@ -145,16 +150,28 @@ pub fn compute_landscape(
         contacts: Vec::new(),
         p_max: Vec::new(),
     };
-    let res: Result<Vec<(f64, u32, f64)>, SceneError> = (0..n * n)
+    // Each grid row (fixed j) is the straight path origin + s·â along the cell edge a, solved
+    // with one candidate search per `params.segment` of it (Solver::solve_along).
+    let alen = cell.a[0].hypot(cell.a[1]);
+    let e = [cell.a[0] / alen, cell.a[1] / alen];
+    let s: Vec<f64> = (0..n).map(|i| alen * i as f64 / (n - 1) as f64).collect();
+    let res: Result<Vec<Vec<GridPoint>>, SceneError> = (0..n)
         .into_par_iter()
-        .map(|k| {
-            let shift = out.shift(k % n, k / n);
-            let eq = solver.solve(Pose { theta, shift }, load, Model::Auto)?;
-            progress();
-            Ok((eq.z, eq.contact_count() as u32, eq.p_max))
+        .map(|j| {
+            let path = StraightPath {
+                theta,
+                origin: out.shift(0, j),
+                e,
+                s: &s,
+                segment: params.segment,
+            };
+            solver.solve_along(path, load, Model::Auto, |_, eq| {
+                progress();
+                (eq.z, eq.contact_count() as u32, eq.p_max)
+            })
         })
         .collect();
-    for (z, c, p) in res? {
+    for (z, c, p) in res?.into_iter().flatten() {
         out.z.push(z);
         out.contacts.push(c);
         out.p_max.push(p);

@@ -18,6 +18,9 @@ pub struct MapParams {
     /// Moiré wave vectors shorter than this fraction of the shortest reciprocal vector count as
     /// zero (commensurate first shells: no contact line, fall back to the substrate row).
     pub q_zero_rtol: f64,
+    /// Length (m) of path sharing one candidate-pair search (speed only: results are identical
+    /// for any value > 0). Default 0.5 µm.
+    pub segment: f64,
 }
 
 impl Default for MapParams {
@@ -29,6 +32,7 @@ impl Default for MapParams {
             max_cell_mult: 4,
             shell_rtol: 1e-6,
             q_zero_rtol: 1e-6,
+            segment: 0.5e-6,
         }
     }
 }

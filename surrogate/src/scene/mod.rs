@@ -11,5 +11,5 @@ mod scene;
 pub use file::{CoatingFile, LatticeFile, MaterialFile, SceneFile, SliderFile, SubstrateFile};
 pub use lattice::Lattice;
 pub use material::{Coating, Material};
-pub use mount::{Mount, STUDY_K1};
+pub use mount::{rotate_tilt_stiffness, Mount, STUDY_K1};
 pub use scene::{Scene, SliderSpec, SubstrateSpec, PATTERNS};

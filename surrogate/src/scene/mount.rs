@@ -108,9 +108,17 @@ impl Mount {
     /// count half to each side. In the lab frame `K_t = R(θ) diag(K1 d_y², K1 d_x²) R(θ)ᵀ`.
     /// Zero for `free` and `locked` (locked has no tilt at all). Cost O(N).
     pub fn tilt_stiffness(&self, local: &[[f64; 2]], theta: f64) -> [[f64; 2]; 2] {
+        rotate_tilt_stiffness(self.principal_tilt_stiffness(local), theta)
+    }
+
+    /// The principal rotational stiffnesses `[K1·d_y², K1·d_x²]` (N·m/rad) about the slider's own
+    /// (unrotated) x' and y' axes (see [`Mount::tilt_stiffness`] for the math); zero for `free`
+    /// and `locked`. The lab-frame tensor at rotation θ is [`rotate_tilt_stiffness`] of it.
+    /// Cost O(N).
+    pub fn principal_tilt_stiffness(&self, local: &[[f64; 2]]) -> [f64; 2] {
         let k1 = match self {
             Mount::Springs { k1 } => *k1,
-            _ => return [[0.0; 2]; 2],
+            _ => return [0.0; 2],
         };
         let d = |axis: usize| {
             let (mut sp, mut wp, mut sn, mut wn) = (0.0, 0.0, 0.0, 0.0);
@@ -134,14 +142,19 @@ impl Mount {
             }
         };
         let (dx, dy) = (d(0), d(1));
-        let (kx, ky) = (k1 * dy * dy, k1 * dx * dx);
-        let (s, c) = theta.sin_cos();
-        // R diag(kx, ky) Rᵀ
-        [
-            [c * c * kx + s * s * ky, c * s * (kx - ky)],
-            [c * s * (kx - ky), s * s * kx + c * c * ky],
-        ]
+        [k1 * dy * dy, k1 * dx * dx]
     }
+}
+
+/// The lab-frame rotational stiffness tensor `R(θ) diag(k[0], k[1]) R(θ)ᵀ` (N·m/rad) of principal
+/// stiffnesses `k` about the slider's own axes, for the slider rotated by `theta` (rad). O(1).
+pub fn rotate_tilt_stiffness(k: [f64; 2], theta: f64) -> [[f64; 2]; 2] {
+    let [kx, ky] = k;
+    let (s, c) = theta.sin_cos();
+    [
+        [c * c * kx + s * s * ky, c * s * (kx - ky)],
+        [c * s * (kx - ky), s * s * kx + c * c * ky],
+    ]
 }
 
 #[cfg(test)]

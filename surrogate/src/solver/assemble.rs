@@ -14,13 +14,37 @@ pub(crate) struct Ctx<'a> {
     /// Substrate sphere centres `[x, y, h]` (m).
     pub substrate: &'a [[f64; 3]],
     pub params: &'a SolverParams,
-    /// Length scale (m) of the tilt unknowns: the slider radius (≥ sphere radius).
+    /// Length scale L (m) of the tilt unknowns: the slider radius (≥ sphere radius).
     pub scale: f64,
+    /// Whether the mount lets the slider tilt (`free`, `springs`; not `locked`).
+    pub tilts: bool,
+    /// Rotational stiffness tensor K_t (N·m/rad, lab frame, at this pose's θ) of the mount,
+    /// acting on `[t_x, t_y]`. Zero for `free` and `locked`.
+    pub kt: [[f64; 2]; 2],
+}
+
+impl Ctx<'_> {
+    /// The mount stiffness in the scaled tilt unknowns `q₁₂ = L·t`: `K_q = K_t / L²` (N/m), so
+    /// that the stored energy is `½ q₁₂ᵀ K_q q₁₂ = ½ tᵀ K_t t`.
+    pub fn kq(&self) -> [[f64; 2]; 2] {
+        let l2 = self.scale * self.scale;
+        self.kt.map(|r| r.map(|v| v / l2))
+    }
+
+    /// The moment `K_t·t` (N·m) the mount exerts against the tilts `t` (rad).
+    pub fn mount_moment(&self, t: [f64; 2]) -> [f64; 2] {
+        [
+            self.kt[0][0] * t[0] + self.kt[0][1] * t[1],
+            self.kt[1][0] * t[0] + self.kt[1][1] * t[1],
+        ]
+    }
 }
 
 /// Builds the [`Equilibrium`] from the body state `q = [ζ, L·t_x, L·t_y]` (z = z_ref + ζ):
 /// every pair with δ > 0 becomes a [`ContactInfo`] whose point is the midpoint of the two sphere
-/// centres; the residuals are recomputed from the contact forces. `defl(i)` is the upward
+/// centres; the residuals are recomputed from the contact forces: the force residual
+/// `ΣF_z − W` and the moment residual `M_c − K_t·t` with the contact moment about the disc
+/// centre `M_c = [Σ F_z·(y − y_c), −Σ F_z·(x − x_c)]` (about the x and y axes). `defl(i)` is the upward
 /// deflection (m) of slider sphere i relative to the rigid body.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn assemble(
@@ -31,7 +55,7 @@ pub(crate) fn assemble(
     model: Model,
     load: f64,
     q: [f64; 3],
-    defl: &dyn Fn(u32) -> f64,
+    defl: impl Fn(u32) -> f64,
     iterations: usize,
 ) -> Equilibrium {
     let k = ctx.hertz.k();
@@ -53,7 +77,7 @@ pub(crate) fn assemble(
         p_max = p_max.max(p0);
         fsum += r.fz;
         mom[0] += r.fz * arm[1];
-        mom[1] += r.fz * arm[0];
+        mom[1] -= r.fz * arm[0];
         let s = ps.slider_xy[p.slider as usize];
         let sub = ctx.substrate[p.substrate as usize];
         contacts.push(ContactInfo {
@@ -72,15 +96,18 @@ pub(crate) fn assemble(
             deflection: w,
         });
     }
+    let tilt = [q[1] / ctx.scale, q[2] / ctx.scale];
+    let km = ctx.mount_moment(tilt);
     Equilibrium {
         model,
         load,
         z: zref + q[0],
-        tilt: [q[1] / ctx.scale, q[2] / ctx.scale],
+        tilt,
         contacts,
         p_max,
         residual: fsum - load,
         iterations,
-        moment_residual: mom,
+        contact_moment: mom,
+        moment_residual: [mom[0] - km[0], mom[1] - km[1]],
     }
 }

@@ -1,5 +1,6 @@
-//! Compliant slider: a rigid body (height, two tilts) carrying every slider sphere on its own
-//! vertical spring k_z; substrate spheres fixed in z. Sparse Newton with faer's sparse Cholesky.
+//! Compliant slider: a rigid body (height, and the two tilts its mount allows) carrying every
+//! slider sphere on its own vertical spring k_z; substrate spheres fixed in z. Sparse Newton with
+//! faer's sparse Cholesky.
 
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
@@ -7,6 +8,7 @@
 use super::assemble::{assemble, Ctx};
 use super::law::{body_pairs, pair_response, BodyPair};
 use super::rigid_tilt::rigid_tilt_state;
+use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
 use crate::error::SceneError;
 use faer::linalg::solvers::Solve;
@@ -14,16 +16,22 @@ use faer::sparse::{SparseColMat, Triplet};
 use faer::{Col, Side};
 
 /// Unknowns `x = [w_0 … w_{n−1}, z, L·t_x, L·t_y]`: the upward deflection w_i (m) of each slider
-/// sphere with candidate pairs, then the body pose. Potential
-/// `Π = Σ_j Φ(u_j) + Σ_i ½ k_z w_i² + W (z − z_ref)` with `u_j = q·g_i + w_i − h_j`, convex; its
-/// Hessian is an arrowhead (diagonal w-block, dense 3×3 corner, 3 dense coupling rows), factored
-/// with faer's sparse Cholesky (AMD ordering, no fill-in beyond the arrow).
+/// sphere with candidate pairs, then the body pose (`nq` = 3 body unknowns; under a locked mount
+/// only z, `nq` = 1, the tilts stay 0). Potential
+/// `Π = Σ_j Φ(u_j) + Σ_i ½ k_z w_i² + W (z − z_ref) + ½ q₁₂ᵀ K_q q₁₂` with
+/// `u_j = q·g_i + w_i − h_j` and the mount's `K_q = K_t/L²`, convex; its Hessian is an arrowhead
+/// (diagonal w-block, dense nq×nq corner, nq dense coupling rows), factored with faer's sparse
+/// Cholesky (AMD ordering, no fill-in beyond the arrow).
 struct System<'a> {
     ctx: &'a Ctx<'a>,
     tp: Vec<BodyPair>,
     groups: Vec<(u32, std::ops::Range<usize>)>,
     load: f64,
     kz: f64,
+    /// Body unknowns: 3 (z and two tilts) or 1 (z only, locked mount).
+    nq: usize,
+    /// Mount stiffness in scaled tilt unknowns (N/m).
+    kq: [[f64; 2]; 2],
 }
 
 struct State {
@@ -39,15 +47,40 @@ impl System<'_> {
         self.groups.len()
     }
 
+    /// The body pose `[ζ, L·t_x, L·t_y]` of `x` (tilts 0 when locked).
+    fn q(&self, x: &[f64]) -> [f64; 3] {
+        let n = self.n();
+        if self.nq == 3 {
+            [x[n], x[n + 1], x[n + 2]]
+        } else {
+            [x[n], 0.0, 0.0]
+        }
+    }
+
     fn eval(&self, x: &[f64]) -> State {
         let k = self.ctx.hertz.k();
         let n = self.n();
-        let q = [x[n], x[n + 1], x[n + 2]];
-        let mut pi = self.load * q[0];
-        let mut grad = vec![0.0; n + 3];
+        let nq = self.nq;
+        let q = self.q(x);
+        let kq = self.kq;
+        let kq1 = [
+            kq[0][0] * q[1] + kq[0][1] * q[2],
+            kq[1][0] * q[1] + kq[1][1] * q[2],
+        ];
+        let mut pi = self.load * q[0] + 0.5 * (q[1] * kq1[0] + q[2] * kq1[1]);
+        let mut grad = vec![0.0; n + nq];
         grad[n] = self.load;
         let mut diag = Vec::with_capacity(n);
         let mut hqq = [[0.0; 3]; 3];
+        if nq == 3 {
+            grad[n + 1] = kq1[0];
+            grad[n + 2] = kq1[1];
+            for a in 0..2 {
+                for b in 0..2 {
+                    hqq[a + 1][b + 1] = kq[a][b];
+                }
+            }
+        }
         for (gi, (_, range)) in self.groups.iter().enumerate() {
             let w = x[gi];
             let g = self.tp[range.start].g;
@@ -63,9 +96,9 @@ impl System<'_> {
             }
             pi += 0.5 * self.kz * w * w;
             grad[gi] = self.kz * w - f;
-            for a in 0..3 {
+            for a in 0..nq {
                 grad[n + a] -= f * v[a];
-                for b in 0..3 {
+                for b in 0..nq {
                     hqq[a][b] += s * v[a] * v[b];
                 }
             }
@@ -82,55 +115,66 @@ impl System<'_> {
     /// Newton step `−(H + μ I_q)⁻¹ ∇Π` through faer's sparse Cholesky.
     fn step(&self, st: &State, mu: f64) -> Result<Vec<f64>, SceneError> {
         let n = self.n();
-        let mut trip: Vec<Triplet<usize, usize, f64>> = Vec::with_capacity(4 * n + 6);
+        let nq = self.nq;
+        let mut trip: Vec<Triplet<usize, usize, f64>> = Vec::with_capacity((nq + 1) * n + 6);
         for (gi, (_, range)) in self.groups.iter().enumerate() {
             let (hww, s) = st.diag[gi];
             trip.push(Triplet::new(gi, gi, hww));
             let g = self.tp[range.start].g;
             let v = [1.0, g[0], g[1]];
-            for a in 0..3 {
+            for a in 0..nq {
                 trip.push(Triplet::new(n + a, gi, s * v[a]));
             }
         }
-        for a in 0..3 {
+        for a in 0..nq {
             for b in 0..=a {
                 let reg = if a == b { mu } else { 0.0 };
                 trip.push(Triplet::new(n + a, n + b, st.hqq[a][b] + reg));
             }
         }
-        let m = SparseColMat::<usize, f64>::try_new_from_triplets(n + 3, n + 3, &trip)
+        let m = SparseColMat::<usize, f64>::try_new_from_triplets(n + nq, n + nq, &trip)
             .map_err(|e| SceneError::NoEquilibrium(format!("compliant matrix: {e:?}")))?;
         let llt = m
             .sp_cholesky(Side::Lower)
             .map_err(|e| SceneError::NoEquilibrium(format!("compliant factorisation: {e:?}")))?;
-        let mut rhs = Col::from_fn(n + 3, |i| -st.grad[i]);
+        let mut rhs = Col::from_fn(n + nq, |i| -st.grad[i]);
         llt.solve_in_place(&mut rhs);
-        Ok((0..n + 3).map(|i| rhs[i]).collect())
+        Ok((0..n + nq).map(|i| rhs[i]).collect())
     }
 }
 
-/// Compliant equilibrium from the rigid-tilt state: sparse damped Newton until the force
-/// balance holds to `force_rtol`·W, the moments to `moment_rtol`·W·L and every sphere's spring
-/// balance to `force_rtol`·W. Cost per iteration: O(P) assembly plus a sparse Cholesky of
-/// n + 3 unknowns (n slider spheres with candidate pairs), i.e. O(n).
+/// Compliant equilibrium from the rigid-tilt state (rigid-z under a locked mount): sparse damped
+/// Newton until the force balance holds to `force_rtol`·W, the moment balance `M_c = K_t·t` to
+/// `moment_rtol`·W·L and every sphere's spring balance to `force_rtol`·W. Cost per iteration:
+/// O(P) assembly plus a sparse Cholesky of n + 3 unknowns (n + 1 locked; n slider spheres with
+/// candidate pairs), i.e. O(n).
 pub(crate) fn solve_compliant(
     ctx: &Ctx,
     ps: &PairSet,
     load: f64,
 ) -> Result<Equilibrium, SceneError> {
     let (bp, zref) = body_pairs(ctx, ps);
-    let (q0, it0) = rigid_tilt_state(ctx, &bp, load)?;
+    let (q0, it0) = if ctx.tilts {
+        rigid_tilt_state(ctx, ps, &bp, load)?
+    } else {
+        let (z, it) =
+            ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz).solve(load, ctx.hertz, ctx.params)?;
+        ([z, 0.0, 0.0], it)
+    };
+    let nq = if ctx.tilts { 3 } else { 1 };
     let sys = System {
         ctx,
         tp: bp,
         groups: ps.groups(),
         load,
         kz: ctx.params.k_slider_z,
+        nq,
+        kq: ctx.kq(),
     };
     let n = sys.n();
-    // Start: the rigid-tilt pose, springs pre-loaded with the rigid-tilt sphere forces.
-    let mut x = vec![0.0; n + 3];
-    x[n..].copy_from_slice(&q0);
+    // Start: the rigid pose, springs pre-loaded with the rigid sphere forces.
+    let mut x = vec![0.0; n + nq];
+    x[n..].copy_from_slice(&q0[..nq]);
     let st0 = sys.eval(&x);
     for gi in 0..n {
         x[gi] = -(st0.grad[gi]) / sys.kz; // grad = k·0 − f
@@ -143,11 +187,7 @@ pub(crate) fn solve_compliant(
     for _ in 0..ctx.params.max_iter {
         iters += 1;
         let ok_w = st.grad[..n].iter().all(|g| g.abs() <= tol_f);
-        if ok_w
-            && st.grad[n].abs() <= tol_f
-            && st.grad[n + 1].abs() <= tol_m
-            && st.grad[n + 2].abs() <= tol_m
-        {
+        if ok_w && st.grad[n].abs() <= tol_f && st.grad[n + 1..].iter().all(|g| g.abs() <= tol_m) {
             converged = true;
             break;
         }
@@ -190,7 +230,7 @@ pub(crate) fn solve_compliant(
         if !accepted {
             break;
         }
-        if x[n + 1].abs() > ctx.two_r || x[n + 2].abs() > ctx.two_r {
+        if x[n + 1..].iter().any(|v| v.abs() > ctx.two_r) {
             return Err(SceneError::NoEquilibrium(
                 "the compliant slider tips over: load point outside the support of its contacts"
                     .into(),
@@ -218,8 +258,8 @@ pub(crate) fn solve_compliant(
         zref,
         Model::Compliant,
         load,
-        [x[n], x[n + 1], x[n + 2]],
-        &|i| defl[i as usize],
+        sys.q(&x),
+        |i| defl[i as usize],
         iters,
     ))
 }

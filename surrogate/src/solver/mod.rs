@@ -4,9 +4,14 @@
 //!
 //! Models (see [`Model`]): rigid-z (1-D safeguarded Newton), rigid-tilt (3 unknowns,
 //! damped Newton with faer), compliant (3 + n unknowns, sparse Newton with faer's
-//! sparse Cholesky).
+//! sparse Cholesky). The tilt models obey the scene's slider mount ([`crate::Mount`]): the
+//! moment balance is `M_c = K_t·t` with the mount's rotational stiffness K_t (zero for `free`);
+//! a `locked` mount has no tilt unknowns. [`Model::Auto`] solves rigid-z and escalates to
+//! rigid-tilt only where the rigid-z answer leaves a moment (see `auto.rs`).
 
+mod along;
 mod assemble;
+mod auto;
 mod compliant;
 mod equilibrium;
 mod law;
@@ -19,6 +24,7 @@ mod rigid_z;
 mod solver;
 mod z_root;
 
+pub use along::StraightPath;
 pub use equilibrium::{ContactInfo, Equilibrium};
 pub use model::Model;
 pub use pair_set::PairSet;

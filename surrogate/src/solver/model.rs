@@ -6,13 +6,21 @@ use serde::{Deserialize, Serialize};
 /// Load-sharing model, from cheapest to richest.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Model {
-    /// Pick the cheapest model that is exact for the scene (rigid-z for a flat perfect scene).
+    /// The cheapest rigid model that is exact for the scene's mount *and* pose: rigid-z under a
+    /// `locked` mount; under `free`/`springs`, rigid-z when its contact moment is within the tilt
+    /// solver's tolerance (`moment_rtol`·W·L: symmetric poses on flat substrates), else rigid-tilt
+    /// warm-started from the rigid-z state. [`super::Equilibrium::model`] reports which.
     Auto,
-    /// Rigid slider, height z only (exact for flat, unperturbed scenes: 1-D root find).
+    /// Rigid slider, height z only (1-D root find): exact under a `locked` mount, and under a
+    /// tilting mount wherever the contact moments vanish (inversion-symmetric poses).
     RigidZ,
-    /// Rigid slider with height and two tilts (needed with height perturbations).
+    /// Rigid slider with height and the two tilts of its mount: moment balance `M_c = K_t·t`
+    /// (`K_t` = 0 for `free`, the K1 springs' rotational stiffness for `springs`). Refused under
+    /// a `locked` mount (error naming `model` and `slider.tilt`): there it has no tilt and
+    /// rigid-z is the model.
     RigidTilt,
-    /// Rigid slider body plus per-sphere compliance of the slider springs and substrate tethers.
+    /// Rigid slider body (height, and the tilts of its mount) plus per-sphere vertical
+    /// compliance k_z of the slider springs. Under a `locked` mount the tilts stay 0.
     Compliant,
 }
 

@@ -11,6 +11,8 @@ pub struct PairSet {
     pub slider_xy: Vec<[f64; 2]>,
     /// Disc centre `[x, y]` (m) in the substrate frame.
     pub centre: [f64; 2],
+    /// Rotation θ (rad) of the slider lattice at this pose (orients the mount's tilt stiffness).
+    pub theta: f64,
     /// Candidate pairs, in slider-then-substrate index order.
     pub pairs: Vec<CandidatePair>,
 }

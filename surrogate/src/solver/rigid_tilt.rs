@@ -1,5 +1,6 @@
-//! Rigid slider with height and two tilts: damped Newton on the three balance equations
-//! (ΣF_z = W, ΣF_z·y = 0, ΣF_z·x = 0 about the disc centre), solved with faer.
+//! Rigid slider with height and two tilts held by the scene's mount: damped Newton on the three
+//! balance equations (ΣF_z = W and the moment balance `M_c = K_t·t` about the disc centre, with
+//! `K_t` = 0 for a free mount), solved with faer.
 
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
@@ -12,13 +13,20 @@ use crate::error::SceneError;
 use faer::linalg::solvers::Solve;
 use faer::{Col, Mat, Side};
 
-/// Potential `Π(q) = Σ Φ_j + W (z − z_ref)`, its gradient `[W − ΣF_z, −ΣF_z gx, −ΣF_z gy]` (N)
-/// and Hessian `Σ s_j g_j g_jᵀ` (N/m). Π is convex wherever every s_j ≥ 0.
+/// Potential `Π(q) = Σ Φ_j + W (z − z_ref) + ½ q₁₂ᵀ K_q q₁₂` (the last term the mount's
+/// `½ tᵀ K_t t`, `K_q = K_t/L²`), its gradient
+/// `[W − ΣF_z, −ΣF_z gx + (K_q q₁₂)₀, −ΣF_z gy + (K_q q₁₂)₁]` (N) and Hessian
+/// `Σ s_j v_j v_jᵀ + diag(0, K_q)` (N/m), `v_j = [1, g_j]`. Π is convex wherever every s_j ≥ 0.
 fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
     let k = ctx.hertz.k();
-    let mut pi = load * q[0];
-    let mut g = [load, 0.0, 0.0];
-    let mut h = [[0.0; 3]; 3];
+    let kq = ctx.kq();
+    let kq1 = [
+        kq[0][0] * q[1] + kq[0][1] * q[2],
+        kq[1][0] * q[1] + kq[1][1] * q[2],
+    ];
+    let mut pi = load * q[0] + 0.5 * (q[1] * kq1[0] + q[2] * kq1[1]);
+    let mut g = [load, kq1[0], kq1[1]];
+    let mut h = [[0.0; 3], [0.0, kq[0][0], 0.0], [0.0, kq[1][0], kq[1][1]]];
     for p in tp {
         let dz = q[0] + q[1] * p.g[0] + q[2] * p.g[1] - p.c;
         let r = pair_response(k, ctx.two_r, p.r2, p.ut, dz);
@@ -44,7 +52,8 @@ fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [
 }
 
 /// Damped (Levenberg–Marquardt regularised, trust-capped, Armijo line-searched) Newton on the
-/// convex potential Π from `q0`. Returns the converged `q` and the iteration count.
+/// convex potential Π from `q0`. Returns the converged `q`, the iteration count and whether the
+/// force balance already holds to `force_rtol` (false only after a round-off stall).
 ///
 /// With fewer than three non-collinear contacts the Hessian is singular in a tilt direction:
 /// the regularisation μ = 1e-10·max diag(H) makes the step the minimum-norm one, capped by a
@@ -57,7 +66,7 @@ pub(crate) fn tilt_newton(
     tp: &[BodyPair],
     load: f64,
     q0: [f64; 3],
-) -> Result<([f64; 3], usize), SceneError> {
+) -> Result<([f64; 3], usize, bool), SceneError> {
     let params = ctx.params;
     let mut q = q0;
     let tol_f = params.force_rtol * load;
@@ -66,7 +75,7 @@ pub(crate) fn tilt_newton(
     let (mut pi, mut g, mut h) = eval(ctx, tp, load, q);
     for it in 1..=params.max_iter {
         if g[0].abs() <= tol_f && g[1].abs() <= tol_m && g[2].abs() <= tol_m {
-            return Ok((q, it));
+            return Ok((q, it, true));
         }
         let dmax = h[0][0].max(h[1][1]).max(h[2][2]).max(f64::MIN_POSITIVE);
         let mut mu = 1e-10 * dmax;
@@ -133,7 +142,7 @@ pub(crate) fn tilt_newton(
     }
     if g[0].abs() <= 1e3 * tol_f && g[1].abs() <= 1e3 * tol_m && g[2].abs() <= 1e3 * tol_m {
         // Stalled at round-off: the z polish restores ΣF_z = W exactly.
-        return Ok((q, params.max_iter));
+        return Ok((q, params.max_iter, g[0].abs() <= tol_f));
     }
     Err(SceneError::NoEquilibrium(format!(
         "rigid-tilt Newton did not converge: force residual {:e} N, moment residuals {:e}, {:e} N",
@@ -141,39 +150,136 @@ pub(crate) fn tilt_newton(
     )))
 }
 
-/// Rigid-tilt equilibrium: rigid-z start, tilt Newton, then a 1-D z polish at the final tilt
-/// so ΣF_z = W holds to `force_rtol`. Cost: two rigid-z solves plus ~5–30 Newton iterations
-/// of O(P) each (P candidate pairs).
+/// Rigid-tilt equilibrium: rigid-z start, then [`tilt_from`]. Cost: one rigid-z solve plus
+/// ~2–30 Newton iterations of O(P) each (P candidate pairs; 1–3 with the study's K1 springs).
 pub(crate) fn solve_rigid_tilt(
     ctx: &Ctx,
     ps: &PairSet,
     load: f64,
 ) -> Result<Equilibrium, SceneError> {
     let (bp, zref) = body_pairs(ctx, ps);
-    let (q, iters) = rigid_tilt_state(ctx, &bp, load)?;
-    Ok(assemble(
-        ctx,
-        ps,
-        &bp,
-        zref,
-        Model::RigidTilt,
-        load,
-        q,
-        &|_| 0.0,
-        iters,
-    ))
+    let (q, iters) = rigid_tilt_state(ctx, ps, &bp, load)?;
+    Ok(assemble_tilt(ctx, ps, &bp, zref, load, q, iters))
 }
 
-/// Converged `[ζ, L·t_x, L·t_y]` (after the ζ polish) and iterations.
+/// The [`Equilibrium`] of a converged rigid-tilt state.
+pub(crate) fn assemble_tilt(
+    ctx: &Ctx,
+    ps: &PairSet,
+    bp: &[BodyPair],
+    zref: f64,
+    load: f64,
+    q: [f64; 3],
+    iters: usize,
+) -> Equilibrium {
+    assemble(ctx, ps, bp, zref, Model::RigidTilt, load, q, |_| 0.0, iters)
+}
+
+/// Converged `[ζ, L·t_x, L·t_y]` and iterations, from the rigid-z start.
 pub(crate) fn rigid_tilt_state(
     ctx: &Ctx,
+    ps: &PairSet,
     bp: &[BodyPair],
     load: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
     let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
     let (z0, it0) = zr.solve(load, ctx.hertz, ctx.params)?;
-    let (q, it1) = tilt_newton(ctx, bp, load, [z0, 0.0, 0.0])?;
+    let near = NearSet::new(bp, z0, max_lever(ctx, ps));
+    let (q, it1) = tilt_from(ctx, bp, &near, load, z0)?;
+    Ok((q, it0 + it1))
+}
+
+/// The tilt Newton's working set around the rigid-z state ζ₀: the pairs whose touch height c lies
+/// above `floor = ζ₀ − band`, `band` = [`NEAR_BAND`]·(−ζ₀) (−ζ₀ is the deepest rigid-z overlap) —
+/// typically a few hundred of the ≈ 10⁴ candidate pairs, and a superset of the pairs touching at
+/// ζ₀. Built in one O(P) pass.
+pub(crate) struct NearSet {
+    /// The pairs with c > `floor`, in pair order.
+    pub pairs: Vec<BodyPair>,
+    /// ζ₀ − band (m).
+    floor: f64,
+    /// Bound on |g| = |arm|/L over every pair.
+    gmax: f64,
+    /// Whether no pair was left out.
+    complete: bool,
+}
+
+impl NearSet {
+    /// The working set of `bp` around the rigid-z state `z0` (m); `gmax` bounds |g| over every
+    /// pair ([`max_lever`]).
+    pub fn new(bp: &[BodyPair], z0: f64, gmax: f64) -> NearSet {
+        let band = NEAR_BAND * (-z0).max(0.0);
+        let floor = z0 - band;
+        let pairs: Vec<BodyPair> = bp.iter().filter(|p| p.c > floor).copied().collect();
+        NearSet {
+            complete: pairs.len() == bp.len() || band == 0.0,
+            pairs,
+            floor,
+            gmax,
+        }
+    }
+
+    /// Whether a pair of `bp` left out of the set touches at state `q`: O(1) when the bound
+    /// `ζ − |q₁₂|·max|g| > floor` rules it out, else one O(P) pass.
+    fn misses_a_contact(&self, bp: &[BodyPair], q: [f64; 3]) -> bool {
+        if self.complete || q[0] - (q[1] * q[1] + q[2] * q[2]).sqrt() * self.gmax > self.floor {
+            return false;
+        }
+        bp.iter()
+            .any(|p| p.c <= self.floor && p.c > q[0] + q[1] * p.g[0] + q[2] * p.g[1])
+    }
+}
+
+/// Tilt Newton from the rigid-z state ζ = `z0` (t = 0), then, only if Newton stalled before the
+/// force balance held, a 1-D z polish at the final tilt so ΣF_z = W holds to `force_rtol`.
+/// Returns `[ζ, L·t_x, L·t_y]` and the iterations. If the rigid-z state already balances the
+/// moments to `moment_rtol`·W·L this returns it unchanged after one evaluation.
+///
+/// Newton first runs on the working set `near` (see [`NearSet`]); the answer is then verified on
+/// every pair: if a left-out pair touches at the final state, or if Newton on the set fails (a
+/// free slider may tip further than the set reaches), Newton is rerun on all pairs from there.
+/// So the result is the all-pairs equilibrium either way; the set only saves time (each
+/// iteration costs O(set) instead of O(P)).
+pub(crate) fn tilt_from(
+    ctx: &Ctx,
+    bp: &[BodyPair],
+    near: &NearSet,
+    load: f64,
+    z0: f64,
+) -> Result<([f64; 3], usize), SceneError> {
+    debug_assert!(ctx.tilts, "tilt model under a locked mount");
+    let start = [z0, 0.0, 0.0];
+    let (q, it1, force_ok) = if near.complete {
+        tilt_newton(ctx, bp, load, start)?
+    } else {
+        match tilt_newton(ctx, &near.pairs, load, start) {
+            Ok((q, it, ok)) if !near.misses_a_contact(bp, q) => (q, it, ok),
+            Ok((q, it, _)) => {
+                let (q2, it2, ok2) = tilt_newton(ctx, bp, load, q)?;
+                (q2, it + it2, ok2)
+            }
+            Err(_) => tilt_newton(ctx, bp, load, start)?,
+        }
+    };
+    if force_ok {
+        return Ok((q, it1));
+    }
     let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r, ctx.hertz);
     let (z, it2) = zr.solve(load, ctx.hertz, ctx.params)?;
-    Ok(([z, q[1], q[2]], it0 + it1 + it2))
+    Ok(([z, q[1], q[2]], it1 + it2))
 }
+
+/// Bound on the lever `|g| = |arm|/L` of every pair of `ps`: the largest slider-sphere distance
+/// from the disc centre over L (plus round-off). O(slider spheres).
+pub(crate) fn max_lever(ctx: &Ctx, ps: &PairSet) -> f64 {
+    let mut r2: f64 = 0.0;
+    for p in &ps.slider_xy {
+        let (dx, dy) = (p[0] - ps.centre[0], p[1] - ps.centre[1]);
+        r2 = r2.max(dx * dx + dy * dy);
+    }
+    r2.sqrt() / ctx.scale * (1.0 + 1e-12)
+}
+
+/// Width of the tilt Newton's working set in units of the deepest rigid-z overlap (see
+/// [`NearSet`]). Only a speed knob: the result is verified on every pair.
+const NEAR_BAND: f64 = 3.0;

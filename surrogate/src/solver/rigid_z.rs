@@ -28,7 +28,19 @@ impl RigidZ {
     /// solves `Σ F_z(z) = W`. O(active pairs) per iteration, typically < 15 iterations.
     pub fn solve(&self, ctx: &Ctx, ps: &PairSet, load: f64) -> Result<Equilibrium, SceneError> {
         let (zeta, iters) = self.zr.solve(load, ctx.hertz, ctx.params)?;
-        Ok(assemble(
+        Ok(self.assemble(ctx, ps, load, zeta, iters))
+    }
+
+    /// The rigid-z [`Equilibrium`] at the converged ζ (m).
+    pub fn assemble(
+        &self,
+        ctx: &Ctx,
+        ps: &PairSet,
+        load: f64,
+        zeta: f64,
+        iters: usize,
+    ) -> Equilibrium {
+        assemble(
             ctx,
             ps,
             &self.bp,
@@ -36,8 +48,8 @@ impl RigidZ {
             Model::RigidZ,
             load,
             [zeta, 0.0, 0.0],
-            &|_| 0.0,
+            |_| 0.0,
             iters,
-        ))
+        )
     }
 }

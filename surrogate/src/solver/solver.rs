@@ -1,13 +1,14 @@
 //! [`Solver`]: a scene prepared for many quasi-static solves (different θ, shifts and loads).
 
 use super::assemble::Ctx;
+use super::auto::solve_auto;
 use super::compliant::solve_compliant;
-use super::rigid_tilt::solve_rigid_tilt;
+use super::rigid_tilt::{assemble_tilt, max_lever, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
-use crate::contact::{BvhSearch, CandidateSearch, GridSearch, Hertz};
+use crate::contact::{BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz};
 use crate::error::SceneError;
-use crate::scene::Scene;
+use crate::scene::{rotate_tilt_stiffness, Scene};
 
 /// Lateral pose of the slider: rotation θ (rad) and in-plane shift (m) of its centre from the
 /// scene's offset.
@@ -39,6 +40,8 @@ pub struct Solver {
     grid: GridSearch,
     bvh: BvhSearch,
     local: Vec<[f64; 2]>,
+    /// Principal rotational stiffnesses of the mount about the slider's own axes (N·m/rad).
+    mount_k: [f64; 2],
     /// Numerical knobs.
     pub params: SolverParams,
     /// Candidate search used by [`Solver::pairs_at`].
@@ -52,13 +55,15 @@ impl Solver {
         scene.validate()?;
         let spheres = scene.substrate_spheres();
         let reach = 2.0 * scene.sphere_radius;
+        let local = scene.slider_sites_local();
         Ok(Solver {
+            mount_k: scene.slider.mount.principal_tilt_stiffness(&local),
             scene: scene.clone(),
             hertz: scene.hertz(),
             grid: GridSearch::new(&spheres, reach),
             bvh: BvhSearch::new(&spheres, scene.sphere_radius),
             substrate: spheres,
-            local: scene.slider_sites_local(),
+            local,
             params: SolverParams::default(),
             search: SearchKind::default(),
         })
@@ -87,21 +92,35 @@ impl Solver {
         }
     }
 
-    /// The model `Auto` resolves to for this scene: rigid-z when the substrate is flat
-    /// (σ_h = 0; exact by inversion symmetry when the disc centre sits on a substrate site or
-    /// midway between two, and the study's set-up otherwise, whose DEM suppresses tilt),
-    /// rigid-tilt when the substrate heights are perturbed.
+    /// The richest model [`Model::Auto`] may use for this scene: rigid-z under a `locked` mount,
+    /// rigid-tilt under `free`/`springs` (Auto escalates to it only at poses where the rigid-z
+    /// answer leaves a moment; [`Equilibrium::model`] says which one a solve used).
     pub fn auto_model(&self) -> Model {
-        if self.scene.substrate.sigma_h == 0.0 {
-            Model::RigidZ
-        } else {
+        if self.scene.slider.mount.tilts() {
             Model::RigidTilt
+        } else {
+            Model::RigidZ
         }
     }
 
-    /// Candidate pairs (lateral distance < 2R) of the slider at `pose`. O(N_slider) with the
-    /// grid, O(N_slider log N_substrate) with the BVH. Load-independent: reuse for every load.
-    pub fn pairs_at(&self, pose: Pose) -> PairSet {
+    /// Checks that `model` can be used with the scene's mount: `rigid-tilt` under a `locked`
+    /// mount is refused (it would have no tilt; rigid-z is the exact model there). The error
+    /// names the field `model` and the scene's `slider.tilt`. Call before starting work.
+    pub fn check_model(&self, model: Model) -> Result<(), SceneError> {
+        if model == Model::RigidTilt && !self.scene.slider.mount.tilts() {
+            return Err(SceneError::invalid(
+                "model",
+                "rigid-tilt",
+                "the slider mount is locked (slider.tilt = \"locked\"): it has no tilt; use \
+                 model rigid-z (the exact model for a locked mount) or auto, or a tilting mount \
+                 (slider.tilt = \"free\" or \"springs\")",
+            ));
+        }
+        Ok(())
+    }
+
+    /// Slider sphere centres `[x, y]` (m) and the disc centre at `pose`. O(N_slider).
+    fn slider_xy_at(&self, pose: Pose) -> (Vec<[f64; 2]>, [f64; 2]) {
         let (s, c) = pose.theta.sin_cos();
         let cx = self.scene.slider.offset[0] + pose.shift[0];
         let cy = self.scene.slider.offset[1] + pose.shift[1];
@@ -110,17 +129,70 @@ impl Solver {
             .iter()
             .map(|p| [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]])
             .collect();
+        (slider_xy, [cx, cy])
+    }
+
+    /// Candidate pairs (lateral distance < 2R) of the slider at `pose`. O(N_slider) with the
+    /// grid, O(N_slider log N_substrate) with the BVH. Load-independent: reuse for every load.
+    pub fn pairs_at(&self, pose: Pose) -> PairSet {
+        self.pairs_within(pose, 0.0)
+    }
+
+    /// Candidate pairs of the slider at `pose` with lateral distance < 2R + `extra` (m): a
+    /// superset of the pairs of every pose with the same θ whose shift lies within `extra` of
+    /// `pose.shift`. Turn it into the pairs of such a pose with [`Solver::pairs_from`] (a path
+    /// then searches once per segment instead of once per sample).
+    pub fn pairs_within(&self, pose: Pose, extra: f64) -> PairSet {
+        let (slider_xy, centre) = self.slider_xy_at(pose);
         let mut pairs = Vec::with_capacity(slider_xy.len() * 3);
-        self.candidate_search()
-            .pairs(&slider_xy, 2.0 * self.scene.sphere_radius, &mut pairs);
+        self.candidate_search().pairs(
+            &slider_xy,
+            2.0 * self.scene.sphere_radius + extra.max(0.0),
+            &mut pairs,
+        );
         PairSet {
             slider_xy,
-            centre: [cx, cy],
+            centre,
+            theta: pose.theta,
             pairs,
         }
     }
 
-    fn ctx(&self) -> Ctx<'_> {
+    /// The pairs of `pose` (lateral distance < 2R) taken from `near`, a [`Solver::pairs_within`]
+    /// set of the same θ built with `extra` ≥ the distance between the two shifts: identical to
+    /// [`Solver::pairs_at`]`(pose)` (same order, same r² arithmetic), without a candidate search.
+    /// O(pairs of `near`).
+    pub fn pairs_from(&self, near: &PairSet, pose: Pose) -> PairSet {
+        let (slider_xy, centre) = self.slider_xy_at(pose);
+        let reach = 2.0 * self.scene.sphere_radius;
+        let r2max = reach * reach;
+        let pairs = near
+            .pairs
+            .iter()
+            .filter_map(|c| {
+                let p = slider_xy[c.slider as usize];
+                let q = self.substrate[c.substrate as usize];
+                let dx = q[0] - p[0];
+                let dy = q[1] - p[1];
+                let r2 = dx * dx + dy * dy;
+                (r2 < r2max).then_some(CandidatePair { r2, ..*c })
+            })
+            .collect();
+        PairSet {
+            slider_xy,
+            centre,
+            theta: pose.theta,
+            pairs,
+        }
+    }
+
+    /// The mount's rotational stiffness tensor K_t (N·m/rad, lab frame) at rotation `theta`
+    /// (rad); equals [`Scene::tilt_stiffness_at`] (cached principal values, O(1)).
+    pub fn tilt_stiffness_at(&self, theta: f64) -> [[f64; 2]; 2] {
+        rotate_tilt_stiffness(self.mount_k, theta)
+    }
+
+    fn ctx(&self, theta: f64) -> Ctx<'_> {
         Ctx {
             hertz: &self.hertz,
             two_r: 2.0 * self.scene.sphere_radius,
@@ -128,20 +200,15 @@ impl Solver {
             substrate: &self.substrate,
             params: &self.params,
             scale: self.scene.slider.radius.max(self.scene.sphere_radius),
-        }
-    }
-
-    fn resolve(&self, model: Model) -> Model {
-        if model == Model::Auto {
-            self.auto_model()
-        } else {
-            model
+            tilts: self.scene.slider.mount.tilts(),
+            kt: self.tilt_stiffness_at(theta),
         }
     }
 
     /// Equilibrium of the slider at `pose` under `load` W (N) with `model`.
-    /// Errors: non-positive/NaN load (field `load_mN`), no substrate under the slider, a slider
-    /// that tips over the substrate edge (tilt models).
+    /// Errors: non-positive/NaN load (field `load_mN`), `rigid-tilt` under a locked mount (field
+    /// `model`, see [`Solver::check_model`]), no substrate under the slider, a slider that tips
+    /// over the substrate edge (tilt models, free mount).
     pub fn solve(&self, pose: Pose, load: f64, model: Model) -> Result<Equilibrium, SceneError> {
         check_load(load)?;
         let ps = self.pairs_at(pose);
@@ -156,16 +223,19 @@ impl Solver {
         model: Model,
     ) -> Result<Equilibrium, SceneError> {
         check_load(load)?;
-        let ctx = self.ctx();
-        match self.resolve(model) {
-            Model::RigidZ | Model::Auto => RigidZ::new(&ctx, ps).solve(&ctx, ps, load),
+        self.check_model(model)?;
+        let ctx = self.ctx(ps.theta);
+        match model {
+            Model::Auto => solve_auto(&ctx, ps, &RigidZ::new(&ctx, ps), load),
+            Model::RigidZ => RigidZ::new(&ctx, ps).solve(&ctx, ps, load),
             Model::RigidTilt => solve_rigid_tilt(&ctx, ps, load),
             Model::Compliant => solve_compliant(&ctx, ps, load),
         }
     }
 
-    /// Equilibria for several loads (N) at one pose, sharing the candidate search (and, for
-    /// rigid-z, the sorted pair list). Results in the order of `loads`.
+    /// Equilibria for several loads (N) at one pose, sharing the candidate search and, for
+    /// auto, rigid-z and rigid-tilt, the prepared pair list (body pairs, touch heights).
+    /// Results in the order of `loads`.
     pub fn solve_loads(
         &self,
         pose: Pose,
@@ -173,16 +243,44 @@ impl Solver {
         model: Model,
     ) -> Vec<Result<Equilibrium, SceneError>> {
         let ps = self.pairs_at(pose);
-        let ctx = self.ctx();
-        match self.resolve(model) {
-            Model::RigidZ | Model::Auto => {
-                let rz = RigidZ::new(&ctx, &ps);
+        self.solve_loads_pairs(&ps, loads, model)
+    }
+
+    /// [`Solver::solve_loads`] on a prepared [`PairSet`].
+    pub fn solve_loads_pairs(
+        &self,
+        ps: &PairSet,
+        loads: &[f64],
+        model: Model,
+    ) -> Vec<Result<Equilibrium, SceneError>> {
+        if let Err(e) = self.check_model(model) {
+            return loads.iter().map(|_| Err(e.clone())).collect();
+        }
+        let ctx = self.ctx(ps.theta);
+        match model {
+            Model::Auto | Model::RigidZ | Model::RigidTilt => {
+                let rz = RigidZ::new(&ctx, ps);
                 loads
                     .iter()
-                    .map(|&w| check_load(w).and_then(|_| rz.solve(&ctx, &ps, w)))
+                    .map(|&w| {
+                        check_load(w)?;
+                        match model {
+                            Model::Auto => solve_auto(&ctx, ps, &rz, w),
+                            Model::RigidZ => rz.solve(&ctx, ps, w),
+                            _ => {
+                                let (z0, it0) = rz.zr.solve(w, ctx.hertz, ctx.params)?;
+                                let near = NearSet::new(&rz.bp, z0, max_lever(&ctx, ps));
+                                let (q, it1) = tilt_from(&ctx, &rz.bp, &near, w, z0)?;
+                                Ok(assemble_tilt(&ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
+                            }
+                        }
+                    })
                     .collect()
             }
-            m => loads.iter().map(|&w| self.solve_pairs(&ps, w, m)).collect(),
+            Model::Compliant => loads
+                .iter()
+                .map(|&w| self.solve_pairs(ps, w, model))
+                .collect(),
         }
     }
 }

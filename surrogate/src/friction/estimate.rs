@@ -1,0 +1,193 @@
+//! [`estimate_friction`]: the pipeline (path → samples → coating term → Prandtl–Tomlinson term).
+
+use super::path::{lattice_period, solve_samples, Sample};
+use super::tomlinson::{self, Profile};
+use super::FrictionParams;
+use crate::error::SceneError;
+use crate::map::check_slider_stays_on_substrate;
+use crate::solver::Solver;
+use serde::{Deserialize, Serialize};
+
+/// The surrogate friction estimate of one (scene, θ, pulling direction, W) (SI). See the module
+/// documentation ([`crate::friction`]) for the formulas.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct FrictionEstimate {
+    /// Slider rotation θ (rad).
+    pub theta: f64,
+    /// Pulling direction from the substrate x axis (rad).
+    pub direction: f64,
+    /// Normal load W (N).
+    pub load: f64,
+    /// Estimated friction coefficient of steady sliding, `mu_coating + mu_corrugation`.
+    pub mu_est: f64,
+    /// Coating term `⟨Σ μ(p0_i) F_n,i |e_t,i|⟩_path / W`.
+    pub mu_coating: f64,
+    /// Prandtl–Tomlinson (corrugation) term: dissipation per unit length / W.
+    pub mu_corrugation: f64,
+    /// `η = max(−V'')/K` over the path (`2π²U0/(K a²)` for a sinusoidal profile): stick-slip iff
+    /// η > 1.
+    pub eta: f64,
+    /// Energy barrier U0 = max V − min V along the path (J), V the enthalpy profile.
+    pub barrier: f64,
+    /// Largest quasi-static pulling force along the path (N): the static-friction barrier of the
+    /// corrugation.
+    pub max_lateral_force: f64,
+    /// Path average of P_max (Pa).
+    pub p_max_mean: f64,
+    /// Largest P_max along the path (Pa).
+    pub p_max_max: f64,
+    /// Path average of the fraction of the normal load carried by failed contacts (p0 > P_crit),
+    /// `⟨Σ_failed F_z⟩ / W`, in [0, 1].
+    pub failed_fraction: f64,
+    /// Path average of the contact number.
+    pub contacts_mean: f64,
+    /// Stiffness K (N/m) of the Prandtl–Tomlinson spring: K0 in series with the lateral
+    /// stiffness of the contacting sphere chains (path average).
+    pub k_spring: f64,
+    /// Path length (m).
+    pub length: f64,
+    /// Sample spacing (m).
+    pub step: f64,
+    /// Number of solved samples (path steps + 1).
+    pub samples: usize,
+    /// Whether the path is one substrate lattice period along the direction (exactly periodic
+    /// landscape) rather than a fixed length of a quasi-periodic one.
+    pub periodic: bool,
+    /// Stick-slip jumps counted in the Prandtl–Tomlinson measuring window.
+    pub slips: usize,
+    /// Length (m) of that window.
+    pub window: f64,
+}
+
+/// Estimates the friction coefficient μ_est of steady sliding for `solver`'s scene at rotation
+/// `theta` (rad), pulled along `direction` (rad from the substrate x axis) under load `load` W
+/// (N), from the quasi-static path ([`crate::friction`] documents the formula).
+///
+/// The path starts at the scene's placement; its samples are solved with
+/// [`crate::solver::Model::Auto`] (so the slider obeys the scene's mount), in parallel
+/// (rayon, one candidate search per `params.segment` of path), deterministically.
+/// Cost: `length/step + 1` equilibria (≈ 61–241 with the defaults; ≈ 0.3–0.5 ms each for the
+/// study's 3505-sphere slider) plus O(samples) for the model.
+///
+/// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
+/// direction (`theta_deg`, `alpha_deg`), a path that takes the slider off the substrate
+/// (`friction.length_um`), a failed solve.
+pub fn estimate_friction(
+    solver: &Solver,
+    theta: f64,
+    direction: f64,
+    load: f64,
+    params: &FrictionParams,
+) -> Result<FrictionEstimate, SceneError> {
+    params.validate()?;
+    if !(load.is_finite() && load > 0.0) {
+        return Err(SceneError::invalid(
+            "load_mN",
+            load * 1e3,
+            "must be a positive number",
+        ));
+    }
+    if !theta.is_finite() {
+        return Err(SceneError::invalid(
+            "theta_deg",
+            theta.to_degrees(),
+            "must be finite",
+        ));
+    }
+    if !direction.is_finite() {
+        return Err(SceneError::invalid(
+            "alpha_deg",
+            direction.to_degrees(),
+            "the pulling direction must be finite",
+        ));
+    }
+    let scene = solver.scene();
+    let e = [direction.cos(), direction.sin()];
+
+    // 1. The path: one lattice period along lattice directions, else a fixed length.
+    let period = lattice_period(
+        &scene.substrate.lattice,
+        e,
+        params.max_period,
+        params.direction_tol,
+    );
+    let length = period.unwrap_or(params.length);
+    let n = (length / params.step - 1e-9).ceil().max(1.0) as usize;
+    let h = length / n as f64;
+    let s: Vec<f64> = (0..=n).map(|k| k as f64 * h).collect();
+    let end = [length * e[0], length * e[1]];
+    check_slider_stays_on_substrate(
+        scene,
+        [
+            [end[0].min(0.0), end[1].min(0.0)],
+            [end[0].max(0.0), end[1].max(0.0)],
+        ],
+        "friction.length_um",
+    )?;
+
+    // 2. One equilibrium per sample, reduced to the sums the estimate needs.
+    let smp = solve_samples(solver, theta, e, load, &s, params)?;
+
+    // 3. Path averages: periodic paths average the n distinct samples of one period (the last
+    //    repeats the first); quasi-periodic ones use the trapezoid rule over [0, L].
+    let weights: Vec<f64> = (0..=n)
+        .map(|k| match (period.is_some(), k == 0 || k == n) {
+            (true, _) if k == n => 0.0,
+            (true, _) => 1.0 / n as f64,
+            (false, true) => 0.5 / n as f64,
+            (false, false) => 1.0 / n as f64,
+        })
+        .collect();
+    let avg = |f: &dyn Fn(&Sample) -> f64| -> f64 {
+        smp.iter().zip(&weights).map(|(x, w)| w * f(x)).sum()
+    };
+    let mu_coating = avg(&|x| x.coating) / load;
+    let failed_fraction = (avg(&|x| x.failed_load) / load).clamp(0.0, 1.0);
+    let p_max_mean = avg(&|x| x.p_max);
+    let contacts_mean = avg(&|x| x.contacts as f64);
+    let k_lateral = avg(&|x| x.k_lateral);
+    let p_max_max = smp.iter().map(|x| x.p_max).fold(0.0, f64::max);
+
+    // 4. Prandtl–Tomlinson on the enthalpy profile, spring K0 in series with the contacts.
+    let k_spring = if k_lateral > 0.0 {
+        1.0 / (1.0 / params.k0 + 1.0 / k_lateral)
+    } else {
+        params.k0
+    };
+    let v: Vec<f64> = smp.iter().map(|x| x.v).collect();
+    let f: Vec<f64> = smp.iter().map(|x| x.f_pull).collect();
+    let pt = tomlinson::run(
+        &Profile {
+            h,
+            f: &f,
+            periodic: period.is_some(),
+        },
+        k_spring,
+        params.transient,
+    );
+    let vmin = v.iter().copied().fold(f64::INFINITY, f64::min);
+    let vmax = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let mu_corrugation = pt.friction / load;
+    Ok(FrictionEstimate {
+        theta,
+        direction,
+        load,
+        mu_est: mu_coating + mu_corrugation,
+        mu_coating,
+        mu_corrugation,
+        eta: pt.eta,
+        barrier: vmax - vmin,
+        max_lateral_force: f.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        p_max_mean,
+        p_max_max,
+        failed_fraction,
+        contacts_mean,
+        k_spring,
+        length,
+        step: h,
+        samples: n + 1,
+        periodic: period.is_some(),
+        slips: pt.jumps,
+        window: pt.window,
+    })
+}

@@ -1,0 +1,44 @@
+//! [`Model::Auto`]: the cheapest model that is exact for the scene's mount *and* the pose.
+//!
+//! Rule: a `locked` mount has no tilt, so rigid-z is exact. For a `free` or `springs` mount the
+//! rigid-z answer (t = 0) is the tilt model's answer exactly when its contact moment
+//! `M_c = [Σ F_z·(y − y_c), −Σ F_z·(x − x_c)]` already balances the mount's `K_t·t = 0` to the
+//! tilt solver's own convergence tolerance, `|M_c| ≤ moment_rtol·W·L` per component: the tilt
+//! Newton started from that state would stop at its first check and return it. This holds on
+//! inversion-symmetric poses (a flat substrate with the disc centre on a substrate site or midway
+//! between two), where the moments cancel pairwise. Otherwise (an in-plane shift, the substrate
+//! edge, σ_h > 0) auto escalates to rigid-tilt, warm-started from the rigid-z state, and reports
+//! `RigidTilt` in [`Equilibrium::model`].
+
+use super::assemble::Ctx;
+use super::rigid_tilt::{assemble_tilt, max_lever, tilt_from, NearSet};
+use super::rigid_z::RigidZ;
+use super::{Equilibrium, PairSet};
+use crate::error::SceneError;
+
+/// Whether every component of the moment residual `m` (N·m) is within the tilt solver's
+/// convergence tolerance `moment_rtol·W·L` for `load` W (N).
+pub(crate) fn moment_negligible(ctx: &Ctx, load: f64, m: [f64; 2]) -> bool {
+    let tol = ctx.params.moment_rtol * load * ctx.scale;
+    m[0].abs() <= tol && m[1].abs() <= tol
+}
+
+/// [`Model::Auto`](super::Model::Auto) for `load` W (N) on the prepared rigid-z problem `rz` of
+/// `ps` (shared across loads). Cost: one rigid-z solve and its O(P) assembly (which sums the
+/// contact moment); where it escalates, plus one O(P) pass selecting the pairs near contact, the
+/// tilt Newton on them (typically 3–5 iterations of O(few hundred)) and a second assembly.
+pub(crate) fn solve_auto(
+    ctx: &Ctx,
+    ps: &PairSet,
+    rz: &RigidZ,
+    load: f64,
+) -> Result<Equilibrium, SceneError> {
+    let (zeta, iters) = rz.zr.solve(load, ctx.hertz, ctx.params)?;
+    let eq = rz.assemble(ctx, ps, load, zeta, iters);
+    if !ctx.tilts || moment_negligible(ctx, load, eq.moment_residual) {
+        return Ok(eq);
+    }
+    let near = NearSet::new(&rz.bp, zeta, max_lever(ctx, ps));
+    let (q, it) = tilt_from(ctx, &rz.bp, &near, load, zeta)?;
+    Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, load, q, iters + it))
+}
