@@ -37,8 +37,12 @@ pub struct Args {
     /// and the command line. Stdout if absent.
     #[arg(long, value_name = "FILE.csv")]
     out: Option<PathBuf>,
-    /// Load-sharing model: auto (rigid-z on flat substrates, rigid-tilt with σ_h > 0),
-    /// rigid-z, rigid-tilt or compliant (per-sphere vertical springs k_z = 1e6 N/m).
+    /// Load-sharing model: auto (the cheapest model exact for the slider mount and the pose:
+    /// rigid-z when the mount is locked or the contact moment of the rigid-z answer vanishes,
+    /// e.g. a perfect lattice centred on a site; rigid-tilt with the mount's moment balance
+    /// otherwise — σ_h > 0, an in-plane offset, the substrate edge; the `model` column says
+    /// which), rigid-z (no tilt), rigid-tilt (tilts against the mount; refused for a locked
+    /// mount) or compliant (also per-sphere vertical springs k_z = 1e6 N/m).
     #[arg(long, value_name = "MODEL", default_value = "auto")]
     model: String,
     /// Candidate pair search: grid (uniform bucket grid, fastest) or bvh (parry3d

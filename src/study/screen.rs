@@ -67,6 +67,9 @@ pub fn screen(
         bail!("a screen needs at least one θ and one load");
     }
     let mut solver = Solver::new(scene)?;
+    solver
+        .check_model(p.model)
+        .map_err(|e| anyhow::anyhow!("`--model`: {e}"))?;
     solver.search = p.search;
     let mut stats = ScreenStats::default();
     progress.stage("screen", p.thetas.len() as u64, "θ");
