@@ -26,6 +26,17 @@ pub enum StartKind {
     Gap,
 }
 
+/// Which DEM model (`--model`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ModelArg {
+    /// The cheapest model within its measured error for this scene (reason printed).
+    Auto,
+    /// Slider spheres on their k_z springs.
+    Full,
+    /// Rigid-z: slider spheres rigid in z on the control layer.
+    Reduced,
+}
+
 /// DEM options shared by `equilibrate` and `slide`.
 #[derive(clap::Args, Debug)]
 pub struct DemArgs {
@@ -74,13 +85,23 @@ pub struct DemArgs {
     /// Gap in nm above first touch for `--start gap`.
     #[arg(long = "gap-nm", value_name = "NM", default_value_t = 20.0)]
     pub gap_nm: f64,
+    /// Model: auto picks rigid-z where its measured error is small for this scene (the choice
+    /// and its reason are printed and in the JSON); pruning and the active set are exact and on
+    /// in every model.
+    #[arg(long, value_enum, default_value_t = ModelArg::Auto)]
+    pub model: ModelArg,
     /// Reduction: slider spheres move rigidly with the control layer in z (replaces the stiff
-    /// 10⁶ N/m z-springs; allows a ~30× larger time step).
+    /// 10⁶ N/m z-springs; allows a ~30× larger time step). Same as `--model reduced`.
     #[arg(long = "rigid-z")]
     pub rigid_z: bool,
-    /// Reduction: leave out substrate spheres that the slider can never touch along its path.
+    /// Reduction: leave out substrate spheres that the slider can never touch along its path
+    /// (exact; on in every `--model`, kept for compatibility).
     #[arg(long)]
     pub prune: bool,
+    /// Integrate every particle every step instead of the active set (exact to 10⁻⁹ W per
+    /// particle; for comparisons).
+    #[arg(long = "no-active-set")]
+    pub no_active_set: bool,
     /// Constant friction coefficient for every contact instead of the coating's pressure-switched
     /// μ1/μ2 (reference runs).
     #[arg(long, value_name = "MU")]
@@ -141,6 +162,16 @@ pub struct RunInfo {
     pub rigid_z: bool,
     /// Substrate pruning in use.
     pub prune: bool,
+    /// Model in use (`full` or `reduced`) and what was asked for (`--model`).
+    pub model: &'static str,
+    /// `--model` as given.
+    pub model_requested: &'static str,
+    /// Why this model: the rigid-z criterion and the exact reductions.
+    pub model_reason: String,
+    /// Active set in use.
+    pub active_set: bool,
+    /// Mean number of particles integrated per step (active set; all otherwise).
+    pub mean_active_particles: f64,
 }
 
 /// A finished run: the engine, its samples and facts.
@@ -187,7 +218,7 @@ impl DemArgs {
                 bail!("`--mu`: {mu} must be a non-negative number");
             }
         }
-        let p = SimParams {
+        let mut p = SimParams {
             dt: self.dt_us.map(us_to_s),
             load: mn_to_n(self.load_mn),
             alpha: direction,
@@ -196,11 +227,30 @@ impl DemArgs {
             slide_time: us_to_s(slide_us),
             support_speed: speed,
             sample_interval: us_to_s(self.sample_us),
-            rigid_z: self.rigid_z,
-            prune_substrate: self.prune,
             ..SimParams::default()
         };
+        self.model_choice(&scene, &p)?.apply(&mut p);
         Ok((scene, p))
+    }
+
+    /// The model for `scene` and `p` per `--model`, `--rigid-z` and `--no-active-set`.
+    pub fn model_choice(&self, scene: &Scene, p: &SimParams) -> Result<dem::ModelChoice> {
+        let request = match self.model {
+            ModelArg::Auto => dem::ModelRequest::Auto,
+            ModelArg::Full => dem::ModelRequest::Full,
+            ModelArg::Reduced => dem::ModelRequest::Reduced,
+        };
+        let mut c = dem::choose_model(scene, p, request)?;
+        if self.rigid_z && !c.rigid_z {
+            c.rigid_z = true;
+            c.model = "reduced";
+            c.reason = format!("rigid-z forced by --rigid-z (κ = {:.4})", c.stiffness_ratio);
+        }
+        if self.no_active_set {
+            c.active_set = false;
+            c.reason.push_str("; active set off (--no-active-set)");
+        }
+        Ok(c)
     }
 
     /// Prepares, resumes if asked, runs `kind` with a progress bar, writes the time series.
@@ -210,6 +260,8 @@ impl DemArgs {
             StartKind::Gap => Start::Gap(positive(self.gap_nm, "--gap-nm")? * NM),
         };
         let friction = self.mu.map(|mu| Friction::Constant(Constant { mu }));
+        let choice = self.model_choice(scene, &params)?;
+        eprintln!("model: {} ({})", choice.model, choice.reason);
         let mut prepared = prepare(scene, params, start, friction)?;
         let sim = &mut prepared.sim;
         eprintln!(
@@ -303,8 +355,15 @@ impl DemArgs {
             particles: sim.particles(),
             pruned_substrate: prepared.start.pruned,
             particle_steps_per_s: steps as f64 * sim.particles() as f64 / wall_s.max(1e-9),
-            rigid_z: self.rigid_z,
-            prune: self.prune,
+            rigid_z: sim.params.rigid_z,
+            prune: sim.params.prune_substrate,
+            model: choice.model,
+            model_requested: choice.requested,
+            model_reason: choice.reason,
+            active_set: sim.params.active_set,
+            mean_active_particles: sim.state.stats.particle_steps as f64
+                / sim.state.step.max(1) as f64
+                + 1.0,
         };
         Ok(Finished {
             prepared,

@@ -55,11 +55,13 @@ impl ContactModel {
         let inv = 1.0 / dist;
         let n = [d[0] * inv, d[1] * inv, d[2] * inv];
         let vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-        let (fnorm, _sn, p0) = self.normal.force(delta, -vn, m_eff);
+        let nf = self.normal.force(delta, -vn, m_eff);
+        let (fnorm, p0) = (nf.force, nf.p0);
         let mu = self.friction.mu(p0);
         let vt = [v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]];
-        let a = self.normal.contact_radius(delta);
-        let ft = self.tangential.force(xi, n, vt, a, mu * fnorm, m_eff, dt);
+        let ft = self
+            .tangential
+            .force(xi, n, vt, nf.radius, mu * fnorm, m_eff, dt);
         PairOut {
             force: [
                 fnorm * n[0] + ft[0],
