@@ -12,7 +12,7 @@
 use crate::integrator::Sim;
 use crate::model::{Friction, PairOut};
 use crate::protocol::Sample;
-use crate::system::{ActiveStats, CommonMode, FrameMark, PairHist};
+use crate::system::{ActiveStats, CommonMode, FrameMark, PairHist, Ringing};
 use crate::DemError;
 use std::path::Path;
 
@@ -99,8 +99,34 @@ bin_struct!(PairOut {
     p0,
     failed
 });
-bin_struct!(CommonMode { u, v, fu, w, s, fw });
-bin_struct!(FrameMark { cl, tilt, u, w });
+bin_struct!(CommonMode {
+    u,
+    v,
+    fu,
+    w,
+    s,
+    fw,
+    d,
+    dv,
+    fd,
+    dz,
+    dzv,
+    fdz
+});
+bin_struct!(FrameMark {
+    cl,
+    tilt,
+    u,
+    w,
+    step,
+    ring
+});
+bin_struct!(Ringing {
+    sl,
+    sl_dev,
+    sub,
+    sub_dev
+});
 bin_struct!(ActiveStats {
     evaluations,
     activations,
@@ -252,6 +278,7 @@ pub fn save(path: &Path, sim: &Sim, samples: &[Sample]) -> Result<(), DemError> 
     a.hist.put(&mut w);
     a.out.put(&mut w);
     s.common.put(&mut w);
+    s.ringing.put(&mut w);
     s.cl_x.put(&mut w);
     s.cl_v.put(&mut w);
     s.cl_f.put(&mut w);
@@ -378,6 +405,7 @@ pub fn load(path: &Path, sim: &mut Sim) -> Result<Vec<Sample>, DemError> {
         a.hist = Bin::get(&mut r)?;
         a.out = Bin::get(&mut r)?;
         s.common = Bin::get(&mut r)?;
+        s.ringing = Bin::get(&mut r)?;
         s.cl_x = Bin::get(&mut r)?;
         s.cl_v = Bin::get(&mut r)?;
         s.cl_f = Bin::get(&mut r)?;
@@ -437,12 +465,28 @@ fn inconsistent(s: &crate::system::State, n: usize, nb: usize) -> Option<String>
         ),
         (
             "common mode",
-            [s.common.u, s.common.v, s.common.fu]
+            [
+                s.common.u,
+                s.common.v,
+                s.common.fu,
+                s.common.d,
+                s.common.dv,
+                s.common.fd,
+            ]
+            .iter()
+            .all(|x| x.iter().all(|c| c.is_finite()))
+                && [
+                    s.common.w,
+                    s.common.s,
+                    s.common.fw,
+                    s.common.dz,
+                    s.common.dzv,
+                    s.common.fdz,
+                ]
                 .iter()
                 .all(|x| x.iter().all(|c| c.is_finite()))
-                && [s.common.w, s.common.s, s.common.fw]
-                    .iter()
-                    .all(|x| x.iter().all(|c| c.is_finite())),
+                && finite(&s.ringing.sl_dev)
+                && finite(&s.ringing.sub_dev),
         ),
         (
             "support",
@@ -498,7 +542,16 @@ fn inconsistent(s: &crate::system::State, n: usize, nb: usize) -> Option<String>
     let ascending = |v: &[u32], lim: usize| {
         v.windows(2).all(|w| w[0] < w[1]) && v.last().is_none_or(|&x| (x as usize) < lim)
     };
-    let idx_ok = ascending(&a.sl, n)
+    let r = &s.ringing;
+    let ring_ok = r.sl.len() == r.sl_dev.len()
+        && r.sub.len() == r.sub_dev.len()
+        && ascending(&r.sl, n)
+        && ascending(&r.sub, nb)
+        && r.sl.iter().all(|i| a.sl.binary_search(i).is_err())
+        && r.sub.iter().all(|j| a.sub.binary_search(j).is_err());
+    let idx_ok = ring_ok
+        && s.mark.step <= s.step
+        && ascending(&a.sl, n)
         && ascending(&a.sub, nb)
         && ascending(&a.pairs, np)
         && s.pairs.i.iter().all(|&i| (i as usize) < n)

@@ -113,7 +113,7 @@ fn tilt_omega2(scene: &Scene, params: &SimParams, m_sphere: f64, m_control: f64)
         (m - r, m + r)
     };
     let (_, k_max) = eig(k[0][0], k[0][1], k[1][1]);
-    if !(k_max > 0.0) {
+    if k_max.is_nan() || k_max <= 0.0 {
         return 0.0;
     }
     let sites = scene.slider_sites();

@@ -62,19 +62,15 @@ pub struct SimParams {
     pub prune_substrate: bool,
     /// Extra margin (m) of reduction (a).
     pub prune_margin: f64,
-    /// Active set (exact): integrate only the particles in or near contact or still ringing;
-    /// the rest stay at rest at their anchors (substrate: tether site; slider: its site on the
-    /// control layer plus the common relative motion of all free slider spheres). See the README.
+    /// Active set (exact to round-off): integrate step by step only the particles in or near
+    /// contact; the rest follow their rest state (substrate: tether site; slider: its site on
+    /// the control layer plus the common relative motion of all free slider spheres) plus, while
+    /// they ring down after a contact, an exactly propagated deviation. See `dem/README.md`.
     pub active_set: bool,
     /// Activation margin (m): a slider–substrate pair is integrated while its gap
     /// (centre distance − 2R) is below this; the set is re-evaluated as soon as some particle
     /// has moved `active_margin/2` since the last evaluation, so no pair can touch unnoticed.
     pub active_margin: f64,
-    /// Ring-down tolerance, relative to the load W (–): a particle out of contact leaves the
-    /// active set once the spring force amplitude of its deviation from its rest state (position
-    /// and velocity, `k·√(Δx² + Δv²/ω²)`) is below `active_tol·W`; it is then snapped to that
-    /// state. Default 10⁻⁹ (a force error ≤ 10⁻⁹ W per snapped particle, transient).
-    pub active_tol: f64,
     /// Equilibration time under load (s), control layer held laterally. Study: 10 µs.
     pub equilibrate_time: f64,
     /// Relaxation time with the pulling spring attached and the support at rest (s). Study: 10 µs.
@@ -124,7 +120,6 @@ impl Default for SimParams {
             prune_margin: 3e-6,
             active_set: false,
             active_margin: 20e-9,
-            active_tol: 1e-9,
             equilibrate_time: 10e-6,
             relax_time: 10e-6,
             slide_time: 300e-6,

@@ -11,7 +11,7 @@ use surrogate::Scene;
 /// longest slide that would fit. Cost O(1).
 pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
     let travel = params.support_speed * params.slide_time;
-    if !(travel > 0.0) {
+    if travel.is_nan() || travel <= 0.0 {
         return Ok(());
     }
     let um = 1e6;

@@ -60,12 +60,14 @@ fn active_set_gives_the_same_time_series() {
     }
 }
 
-/// Sliding two substrate periods brings substrate spheres under the slider that were at rest
-/// (inactive) at the start: each is activated while its gap is still open (no pair enters the
-/// set already touching), and the run equals the one without the active set.
+/// Sliding a square slider across the rows of a triangular substrate (θ = 0, perpendicular to
+/// the contact lines, 6 µm: more than a substrate period) brings substrate spheres under the
+/// slider that were at rest (inactive) at the start: each is activated while its gap is still
+/// open (no pair enters the set already touching), and the run equals the one without the
+/// active set.
 #[test]
 fn new_contacts_are_picked_up_before_they_touch() {
-    let scene = small("tri-tri", 9.0, 0.0);
+    let scene = small("square-tri", 9.0, 0.0);
     let p = SimParams {
         rigid_z: true,
         active_set: true,
@@ -73,7 +75,7 @@ fn new_contacts_are_picked_up_before_they_touch() {
         relax_time: 0.2e-6,
         slide_time: 3e-6,
         support_speed: 2.0,
-        alpha: 0.0,
+        alpha: 90f64.to_radians(),
         ..slide_params(&scene)
     };
     let mut sim = prepare(&scene, p.clone(), Start::Surrogate, None)

@@ -98,8 +98,8 @@ pub struct DemArgs {
     /// (exact; on in every `--model`, kept for compatibility).
     #[arg(long)]
     pub prune: bool,
-    /// Integrate every particle every step instead of the active set (exact to 10⁻⁹ W per
-    /// particle; for comparisons).
+    /// Integrate every particle every step instead of only the active set (the active set is
+    /// exact to round-off; this is for comparisons and timing).
     #[arg(long = "no-active-set")]
     pub no_active_set: bool,
     /// Constant friction coefficient for every contact instead of the coating's pressure-switched

@@ -7,15 +7,21 @@
 //! is integrated for all of them, and its reaction `N_in·k·u` (lateral), `k_z·Σ_in g gᵀ·w`
 //! (vertical) acts on the control layer. That is exact, not an approximation.
 //!
+//! A sphere that leaves contact still rings for a while. Its *deviation* from the rest state
+//! obeys a homogeneous linear equation (its own spring and damping, nothing else), identical
+//! for every such sphere: it is advanced exactly by a matrix power of the step map
+//! ([`super::ring`]) at each evaluation, and the control layer feels the sum of all deviations,
+//! integrated as one more mode of [`crate::system::CommonMode`]. So no tolerance is involved:
+//! the active set is exact to round-off.
+//!
 //! At each *evaluation* a pair is active when its gap (centre distance − 2R) is below
-//! `active_margin`; a particle is active when it is in an active pair, or when it deviates from
-//! its rest / common-mode state by more than the tolerance (ringing down after a contact). Below
-//! the tolerance it is snapped to that state (error ≤ tolerance). An evaluation runs as soon as
-//! some particle may have moved `active_margin/2` since the last one (active particles: their
-//! own displacement; inactive slider spheres: a bound from the control layer and the common
-//! mode; inactive substrate spheres do not move), so an inactive pair cannot close its gap
-//! before it is activated — the skin argument of a Verlet list. The candidate pair list (within
-//! `2R + skin`) is rebuilt when a particle may have moved `(skin − margin)/2` since its build.
+//! `active_margin`, and a particle is active when it is in an active pair. An evaluation runs
+//! as soon as some particle may have moved `active_margin/2` since the last one (active
+//! particles: their own displacement; inactive slider spheres: a bound from the control layer,
+//! the common mode and the largest ringing amplitude; inactive substrate spheres: the largest
+//! ringing amplitude), so an inactive pair cannot close its gap before it is activated — the
+//! skin argument of a Verlet list. The candidate pair list (within `2R + skin`) is rebuilt when
+//! a particle may have moved `(skin − margin)/2` since its build.
 //!
 //! Without the active set every particle and candidate pair is active, each evaluation
 //! rebuilds the list (the plain Verlet list with skin), and the common mode is empty.
@@ -25,15 +31,70 @@
 
 use super::body::{dot3, g_of};
 use super::chunks::Chunking;
+use super::ring::{amplitude, bound_factor, StepMap};
 use super::sim::Sim;
 use crate::model::PairOut;
 use crate::neighbor::build_pairs;
 
+/// Ringing deviations below this amplitude (m) are forgotten individually (they stay in the
+/// aggregate mode): far below the round-off of any position (~10⁻²⁰ m).
+const DROP_AMPLITUDE: f64 = 1e-25;
+
 impl Sim {
-    /// Re-evaluates the active set (see the module doc). `initial`: every particle is checked
-    /// against its rest state (at construction). Cost O(N + P) over all particles and candidate
-    /// pairs; allocates.
+    /// ω² (1/s²) of the free deviation modes: slider lateral, slider vertical, substrate.
+    pub(crate) fn free_omega2(&self) -> [f64; 3] {
+        let p = &self.params;
+        let m = self.body.m_s;
+        [p.k_slider_xy / m, p.k_slider_z / m, p.k_substrate_xy / m]
+    }
+
+    /// The step maps of `n` steps of the three free deviation modes.
+    pub(crate) fn ring_maps(&self, n: u64) -> [StepMap; 3] {
+        let it = self.inv_tau();
+        self.free_omega2()
+            .map(|w2| StepMap::new(w2, it, self.dt).pow(n))
+    }
+
+    /// Slider deviation advanced by `maps`.
+    pub(crate) fn advance_sl(&self, maps: &[StepMap; 3], d: [f64; 6]) -> [f64; 6] {
+        let (x, vx) = maps[0].apply(d[0], d[3]);
+        let (y, vy) = maps[0].apply(d[1], d[4]);
+        let (z, vz) = if self.params.rigid_z {
+            (0.0, 0.0)
+        } else {
+            maps[1].apply(d[2], d[5])
+        };
+        [x, y, z, vx, vy, vz]
+    }
+
+    /// Substrate deviation advanced by `maps`.
+    pub(crate) fn advance_sub(maps: &[StepMap; 3], d: [f64; 4]) -> [f64; 4] {
+        let (x, vx) = maps[2].apply(d[0], d[2]);
+        let (y, vy) = maps[2].apply(d[1], d[3]);
+        [x, y, vx, vy]
+    }
+
+    /// Re-evaluates the active set (see the module doc). `initial`: at construction. Cost
+    /// O(N + P) over all particles and candidate pairs; allocates.
     pub(crate) fn evaluate(&mut self, initial: bool) {
+        // positions are at step `now` (inside a step the counter is incremented afterwards)
+        let now = self.state.step + u64::from(!initial);
+        let maps = self.ring_maps(now - self.state.mark.step);
+        {
+            let r = &self.state.ringing;
+            let sl_dev: Vec<[f64; 6]> = r
+                .sl_dev
+                .iter()
+                .map(|d| self.advance_sl(&maps, *d))
+                .collect();
+            let sub_dev: Vec<[f64; 4]> = r
+                .sub_dev
+                .iter()
+                .map(|d| Self::advance_sub(&maps, *d))
+                .collect();
+            self.state.ringing.sl_dev = sl_dev;
+            self.state.ringing.sub_dev = sub_dev;
+        }
         let n = self.state.sl_x.len();
         let nb = self.state.sub_x.len();
         let mut was_sl = vec![false; n];
@@ -45,7 +106,7 @@ impl Sim {
             was_sub[j as usize] = true;
         }
         self.scatter();
-        self.materialize(&was_sl);
+        self.materialize(&was_sl, &was_sub);
         let all = !self.params.active_set;
         let old_pairs: Vec<(u32, u32)> = {
             let s = &self.state;
@@ -70,14 +131,48 @@ impl Sim {
         };
         self.gather(sl, sub, pairs);
         self.index();
+        let ring = self.ring_bounds();
         let s = &mut self.state;
         s.mark.cl = s.cl_x;
         s.mark.tilt = s.tilt;
         s.mark.u = s.common.u;
         s.mark.w = s.common.w;
+        s.mark.step = now;
+        s.mark.ring = ring;
         if !initial {
             s.stats.evaluations += 1;
         }
+    }
+
+    /// How far (m) a ringing inactive slider / substrate sphere can move between two
+    /// evaluations: twice the largest bound of its deviation.
+    fn ring_bounds(&self) -> [f64; 2] {
+        let [w_xy, w_z, w_b] = self.free_omega2();
+        let (f_xy, f_z, f_b) = (
+            bound_factor(w_xy, self.dt),
+            bound_factor(w_z, self.dt),
+            bound_factor(w_b, self.dt),
+        );
+        let r = &self.state.ringing;
+        let sl = r
+            .sl_dev
+            .iter()
+            .map(|d| {
+                let lat = amplitude(d[0], d[3], w_xy).hypot(amplitude(d[1], d[4], w_xy));
+                let z = if d[2] == 0.0 && d[5] == 0.0 {
+                    0.0
+                } else {
+                    f_z * amplitude(d[2], d[5], w_z)
+                };
+                f_xy * lat + z
+            })
+            .fold(0.0, f64::max);
+        let sub = r
+            .sub_dev
+            .iter()
+            .map(|d| f_b * amplitude(d[0], d[2], w_b).hypot(amplitude(d[1], d[3], w_b)))
+            .fold(0.0, f64::max);
+        [2.0 * sl, 2.0 * sub]
     }
 
     /// Writes the dense (active) particles and pair histories back to the global arrays.
@@ -122,14 +217,45 @@ impl Sim {
         )
     }
 
-    /// Global positions of the inactive slider spheres from the common mode.
-    fn materialize(&mut self, was_sl: &[bool]) {
+    /// Global positions of the inactive particles: slider spheres from the common mode plus
+    /// their ringing deviation, substrate spheres at their site plus theirs.
+    fn materialize(&mut self, was_sl: &[bool], was_sub: &[bool]) {
         for i in 0..was_sl.len() {
             if !was_sl[i] {
                 let (x, v) = self.common_state(i);
                 self.state.sl_x[i] = x;
                 self.state.sl_v[i] = v;
             }
+        }
+        let r = &self.state.ringing;
+        for (k, &i) in r.sl.iter().enumerate() {
+            let d = r.sl_dev[k];
+            let (x, v) = (
+                &mut self.state.sl_x[i as usize],
+                &mut self.state.sl_v[i as usize],
+            );
+            for c in 0..3 {
+                x[c] += d[c];
+                v[c] += d[3 + c];
+            }
+        }
+        for j in 0..was_sub.len() {
+            if !was_sub[j] {
+                let site = self.spec.substrate[j];
+                self.state.sub_x[j] = [site[0], site[1]];
+                self.state.sub_v[j] = [0.0; 2];
+            }
+        }
+        for (k, &j) in r.sub.iter().enumerate() {
+            let d = r.sub_dev[k];
+            let (x, v) = (
+                &mut self.state.sub_x[j as usize],
+                &mut self.state.sub_v[j as usize],
+            );
+            x[0] += d[0];
+            x[1] += d[1];
+            v[0] += d[2];
+            v[1] += d[3];
         }
     }
 
@@ -165,38 +291,11 @@ impl Sim {
         s.builds += 1;
     }
 
-    /// Deviation of slider sphere `i` from the common mode, as the amplitude of the spring
-    /// force it implies (N): `√((kΔx)² + k m Δv²)` laterally and vertically (full model).
-    fn slider_deviation(&self, i: usize) -> f64 {
-        let (xc, vc) = self.common_state(i);
-        let x = self.state.sl_x[i];
-        let v = self.state.sl_v[i];
-        let (k, m) = (self.params.k_slider_xy, self.body.m_s);
-        let dx = [x[0] - xc[0], x[1] - xc[1]];
-        let dv = [v[0] - vc[0], v[1] - vc[1]];
-        let lat = (k * k * (dx[0] * dx[0] + dx[1] * dx[1])
-            + k * m * (dv[0] * dv[0] + dv[1] * dv[1]))
-            .sqrt();
-        if self.params.rigid_z {
-            return lat;
-        }
-        let kz = self.params.k_slider_z;
-        let (dz, dvz) = (x[2] - xc[2], v[2] - vc[2]);
-        lat.max((kz * kz * dz * dz + kz * m * dvz * dvz).sqrt())
-    }
-
-    /// Deviation of substrate sphere `j` from rest at its site, as a spring-force amplitude (N).
-    fn substrate_deviation(&self, j: usize) -> f64 {
-        let x = self.state.sub_x[j];
-        let v = self.state.sub_v[j];
-        let site = self.spec.substrate[j];
-        let (k, m) = (self.params.k_substrate_xy, self.body.m_s);
-        let dx = [x[0] - site[0], x[1] - site[1]];
-        (k * k * (dx[0] * dx[0] + dx[1] * dx[1]) + k * m * (v[0] * v[0] + v[1] * v[1])).sqrt()
-    }
-
-    /// The new active set (sorted slider, substrate and candidate-pair indices); snaps the
-    /// particles that leave it.
+    /// The new active set (sorted slider, substrate and candidate-pair indices) and the new
+    /// ringing lists: a sphere that leaves the set keeps its deviation from the rest state as a
+    /// ringing entry (added to the aggregate mode); one that enters it leaves the ringing list
+    /// (its deviation taken out of the aggregate). At construction, spheres off their rest state
+    /// stay active instead.
     fn select(
         &mut self,
         was_sl: &[bool],
@@ -235,36 +334,106 @@ impl Sim {
                 }
             }
         }
-        let tol = self.params.active_tol * self.params.load.abs();
+        // slider spheres: deviations of the ringing ones, as of now
+        let mut dev_sl: Vec<Option<[f64; 6]>> = vec![None; n];
+        for (k, &i) in self.state.ringing.sl.iter().enumerate() {
+            dev_sl[i as usize] = Some(self.state.ringing.sl_dev[k]);
+        }
+        let [w_xy, w_z, w_b] = self.free_omega2();
+        let rigid = self.params.rigid_z;
         let (mut on, mut off) = (0u64, 0u64);
+        let mut ring_sl = Vec::new();
+        let mut ring_sl_dev = Vec::new();
         for i in 0..n {
+            let g = g_of(self.body.off[i]);
             if sl_on[i] {
-                on += (!was_sl[i]) as u64;
-            } else if was_sl[i] {
-                if self.slider_deviation(i) > tol {
-                    sl_on[i] = true;
-                } else {
-                    let (x, v) = self.common_state(i);
-                    self.state.sl_x[i] = x;
-                    self.state.sl_v[i] = v;
-                    off += 1;
+                if !was_sl[i] {
+                    on += 1;
+                    if let Some(d) = dev_sl[i] {
+                        self.aggregate_sl(d, g, -1.0);
+                    }
                 }
+                continue;
+            }
+            let d = if was_sl[i] {
+                let (xc, vc) = self.common_state(i);
+                let (x, v) = (self.state.sl_x[i], self.state.sl_v[i]);
+                let mut d = [
+                    x[0] - xc[0],
+                    x[1] - xc[1],
+                    x[2] - xc[2],
+                    v[0] - vc[0],
+                    v[1] - vc[1],
+                    v[2] - vc[2],
+                ];
+                if rigid {
+                    d[2] = 0.0;
+                    d[5] = 0.0;
+                }
+                if d == [0.0; 6] {
+                    off += 1;
+                    continue;
+                }
+                if initial {
+                    sl_on[i] = true;
+                    continue;
+                }
+                off += 1;
+                self.aggregate_sl(d, g, 1.0);
+                d
+            } else if let Some(d) = dev_sl[i] {
+                d
+            } else {
+                continue;
+            };
+            let amp = amplitude(d[0], d[3], w_xy)
+                + amplitude(d[1], d[4], w_xy)
+                + amplitude(d[2], d[5], w_z);
+            if amp >= DROP_AMPLITUDE {
+                ring_sl.push(i as u32);
+                ring_sl_dev.push(d);
             }
         }
+        let mut dev_sub: Vec<Option<[f64; 4]>> = vec![None; nb];
+        for (k, &j) in self.state.ringing.sub.iter().enumerate() {
+            dev_sub[j as usize] = Some(self.state.ringing.sub_dev[k]);
+        }
+        let mut ring_sub = Vec::new();
+        let mut ring_sub_dev = Vec::new();
         for j in 0..nb {
             if sub_on[j] {
-                on += (!was_sub[j]) as u64;
-            } else if was_sub[j] {
-                if self.substrate_deviation(j) > tol {
-                    sub_on[j] = true;
-                } else {
-                    let site = self.spec.substrate[j];
-                    self.state.sub_x[j] = [site[0], site[1]];
-                    self.state.sub_v[j] = [0.0; 2];
+                on += u64::from(!was_sub[j]);
+                continue;
+            }
+            let d = if was_sub[j] {
+                let site = self.spec.substrate[j];
+                let (x, v) = (self.state.sub_x[j], self.state.sub_v[j]);
+                let d = [x[0] - site[0], x[1] - site[1], v[0], v[1]];
+                if d == [0.0; 4] {
                     off += 1;
+                    continue;
                 }
+                if initial {
+                    sub_on[j] = true;
+                    continue;
+                }
+                off += 1;
+                d
+            } else if let Some(d) = dev_sub[j] {
+                d
+            } else {
+                continue;
+            };
+            if amplitude(d[0], d[2], w_b) + amplitude(d[1], d[3], w_b) >= DROP_AMPLITUDE {
+                ring_sub.push(j as u32);
+                ring_sub_dev.push(d);
             }
         }
+        let r = &mut self.state.ringing;
+        r.sl = ring_sl;
+        r.sl_dev = ring_sl_dev;
+        r.sub = ring_sub;
+        r.sub_dev = ring_sub_dev;
         let st = &mut self.state.stats;
         if !initial {
             st.activations += on;
@@ -279,6 +448,22 @@ impl Sim {
                 .collect::<Vec<u32>>()
         };
         (list(&sl_on), list(&sub_on), pairs)
+    }
+
+    /// Adds (`sign` = 1) or removes (−1) a slider sphere's deviation `d` (with its `g`) to / from
+    /// the aggregate mode the control layer feels.
+    fn aggregate_sl(&mut self, d: [f64; 6], g: [f64; 3], sign: f64) {
+        let c = &mut self.state.common;
+        for k in 0..2 {
+            c.d[k] += sign * d[k];
+            c.dv[k] += sign * d[3 + k];
+        }
+        if !self.params.rigid_z {
+            for r in 0..3 {
+                c.dz[r] += sign * d[2] * g[r];
+                c.dzv[r] += sign * d[5] * g[r];
+            }
+        }
     }
 
     /// Packs the active particles and pairs densely (positions at this evaluation become the

@@ -13,6 +13,12 @@ use crate::params::DampingFrame;
 use crate::system::PairHist;
 use rayon::prelude::*;
 
+/// One substrate chunk of the force pass: (chunk index, ((v, f), x)).
+type SubstrateChunk<'a> = (
+    usize,
+    ((&'a mut [[f64; 2]], &'a mut [[f64; 2]]), &'a [[f64; 2]]),
+);
+
 /// Read-only inputs of the slider pass.
 struct SliderPass<'a> {
     model: &'a ContactModel,
@@ -236,26 +242,25 @@ impl Sim {
             let m = self.body.m_s;
             let hm = h / m;
             let c = ch.sub;
-            let body =
-                |(k, ((v, f), x)): (usize, ((&mut [[f64; 2]], &mut [[f64; 2]]), &[[f64; 2]]))| {
-                    let b0 = k * c;
-                    for (l, ((v, f), x)) in v.iter_mut().zip(f.iter_mut()).zip(x).enumerate() {
-                        let b = b0 + l;
-                        let site = sites[ids[b] as usize];
-                        let mut acc = [
-                            kt * (site[0] - x[0]) - m * v[0] * inv_tau,
-                            kt * (site[1] - x[1]) - m * v[1] * inv_tau,
-                        ];
-                        for &pi in &si[ss[b] as usize..ss[b + 1] as usize] {
-                            let o = &out[pi as usize];
-                            acc[0] -= o.force[0];
-                            acc[1] -= o.force[1];
-                        }
-                        kick_hm(&mut v[0], acc[0], hm);
-                        kick_hm(&mut v[1], acc[1], hm);
-                        *f = acc;
+            let body = |(k, ((v, f), x)): SubstrateChunk| {
+                let b0 = k * c;
+                for (l, ((v, f), x)) in v.iter_mut().zip(f.iter_mut()).zip(x).enumerate() {
+                    let b = b0 + l;
+                    let site = sites[ids[b] as usize];
+                    let mut acc = [
+                        kt * (site[0] - x[0]) - m * v[0] * inv_tau,
+                        kt * (site[1] - x[1]) - m * v[1] * inv_tau,
+                    ];
+                    for &pi in &si[ss[b] as usize..ss[b + 1] as usize] {
+                        let o = &out[pi as usize];
+                        acc[0] -= o.force[0];
+                        acc[1] -= o.force[1];
                     }
-                };
+                    kick_hm(&mut v[0], acc[0], hm);
+                    kick_hm(&mut v[1], acc[1], hm);
+                    *f = acc;
+                }
+            };
             if ch.par {
                 a.sub_v
                     .par_chunks_mut(c)
@@ -284,12 +289,16 @@ impl Sim {
             for k in 0..2 {
                 c.fu[k] = -p.k_slider_xy * c.u[k] - m * (c.v[k] - vref[k]) * inv_tau;
                 kick(&mut c.v[k], c.fu[k], h, m);
+                c.fd[k] = -p.k_slider_xy * c.d[k] - m * c.dv[k] * inv_tau;
+                kick(&mut c.dv[k], c.fd[k], h, m);
             }
             if !p.rigid_z {
                 let sref = if rel { qd } else { [0.0; 3] };
                 for k in 0..3 {
                     c.fw[k] = -p.k_slider_z * c.w[k] - m * (c.s[k] - sref[k]) * inv_tau;
                     kick(&mut c.s[k], c.fw[k], h, m);
+                    c.fdz[k] = -p.k_slider_z * c.dz[k] - m * c.dzv[k] * inv_tau;
+                    kick(&mut c.dzv[k], c.fdz[k], h, m);
                 }
             }
         }
@@ -298,13 +307,16 @@ impl Sim {
         let mut f = [r[0], r[1], r[2]];
         let mut qt = [r[3], r[4]];
         if self.idx.n_in > 0 {
-            f[0] += n_in * p.k_slider_xy * s.common.u[0];
-            f[1] += n_in * p.k_slider_xy * s.common.u[1];
+            // reaction of the free slider spheres: the common mode (N_in·k·u, k_z·G_in·w)
+            // plus the sum of their ringing deviations (k·Σδ, k_z·Σδz g)
+            let c = &s.common;
+            f[0] += n_in * p.k_slider_xy * c.u[0] + p.k_slider_xy * c.d[0];
+            f[1] += n_in * p.k_slider_xy * c.u[1] + p.k_slider_xy * c.d[1];
             if !p.rigid_z {
-                let gw = mat_vec(&self.idx.g_in, s.common.w);
-                f[2] += p.k_slider_z * gw[0];
-                qt[0] += p.k_slider_z * gw[1];
-                qt[1] += p.k_slider_z * gw[2];
+                let gw = mat_vec(&self.idx.g_in, c.w);
+                f[2] += p.k_slider_z * (gw[0] + c.dz[0]);
+                qt[0] += p.k_slider_z * (gw[1] + c.dz[1]);
+                qt[1] += p.k_slider_z * (gw[2] + c.dz[2]);
             }
         }
         f[2] -= p.load;

@@ -8,6 +8,7 @@ pub(crate) mod body;
 pub(crate) mod chunks;
 pub(crate) mod forces;
 pub mod observe;
+pub(crate) mod ring;
 pub mod sim;
 
 pub use sim::{Observables, Sim};

@@ -54,6 +54,9 @@ impl Sim {
                 }
             }
             zsum += dot3(self.idx.s_in, qw);
+            if !self.params.rigid_z {
+                zsum += s.common.dz[0];
+            }
         }
         o.z = zsum / s.sl_x.len() as f64;
         let (sa, ca) = self.params.alpha.sin_cos();
@@ -71,9 +74,9 @@ impl Sim {
         o
     }
 
-    /// Total mechanical energy (J): kinetic + Hertz + slider springs + tethers + mount springs
-    /// + load potential (`W·Z`) + pulling spring, inactive particles included. Tangential spring
-    /// energy is not included (exact for μ = 0).
+    /// Total mechanical energy (J): kinetic, Hertz, slider springs, tethers, mount springs,
+    /// load potential (`W·Z`) and pulling spring, inactive particles included. Tangential
+    /// spring energy is not included (exact for μ = 0).
     pub fn energy(&self) -> f64 {
         let s = &self.state;
         let p = &self.params;
@@ -138,6 +141,50 @@ impl Sim {
         e
     }
 
+    /// The ringing deviations advanced to the current step (positions now; velocities at the
+    /// last half step, or at the full step with `full_step_velocity`).
+    #[allow(clippy::type_complexity)]
+    fn ringing_now(
+        &self,
+        full_step_velocity: bool,
+    ) -> (Vec<(u32, [f64; 6])>, Vec<(u32, [f64; 4])>) {
+        let maps = self.ring_maps(self.state.step - self.state.mark.step);
+        let r = &self.state.ringing;
+        let h = 0.5 * self.dt;
+        let it = self.inv_tau();
+        let [w_xy, w_z, w_b] = self.free_omega2();
+        let kick = |x: f64, v: f64, w2: f64| {
+            if full_step_velocity {
+                v + h * (-w2 * x - v * it)
+            } else {
+                v
+            }
+        };
+        let sl =
+            r.sl.iter()
+                .zip(&r.sl_dev)
+                .map(|(&i, d)| {
+                    let mut d = self.advance_sl(&maps, *d);
+                    d[3] = kick(d[0], d[3], w_xy);
+                    d[4] = kick(d[1], d[4], w_xy);
+                    d[5] = kick(d[2], d[5], w_z);
+                    (i, d)
+                })
+                .collect();
+        let sub = r
+            .sub
+            .iter()
+            .zip(&r.sub_dev)
+            .map(|(&j, d)| {
+                let mut d = Self::advance_sub(&maps, *d);
+                d[2] = kick(d[0], d[2], w_b);
+                d[3] = kick(d[1], d[3], w_b);
+                (j, d)
+            })
+            .collect();
+        (sl, sub)
+    }
+
     /// How far (m) the slider disc plus one sphere radius reaches beyond the substrate
     /// rectangle now (≤ 0: wholly over it); `None` when the layout has no outline.
     pub fn overhang(&self) -> Option<f64> {
@@ -158,7 +205,13 @@ impl Sim {
         let a = &s.act;
         let fin = a.sl_x.iter().all(|x| x.iter().all(|v| v.is_finite()))
             && a.sub_x.iter().all(|x| x.iter().all(|v| v.is_finite()))
-            && s.common.u.iter().chain(&s.common.w).all(|v| v.is_finite());
+            && s.common
+                .u
+                .iter()
+                .chain(&s.common.w)
+                .chain(&s.common.d)
+                .chain(&s.common.dz)
+                .all(|v| v.is_finite());
         if !fin {
             return Err(self.unstable("non-finite particle position".into()));
         }
@@ -226,6 +279,16 @@ impl Sim {
         let mut slider: Vec<[f64; 3]> = (0..s.sl_x.len()).map(|i| self.common_state(i).0).collect();
         for (k, &i) in a.sl.iter().enumerate() {
             slider[i as usize] = a.sl_x[k];
+        }
+        let (ring_sl, ring_sub) = self.ringing_now(false);
+        for (i, d) in ring_sl {
+            for c in 0..3 {
+                slider[i as usize][c] += d[c];
+            }
+        }
+        for (j, d) in ring_sub {
+            substrate[j as usize][0] += d[0];
+            substrate[j as usize][1] += d[1];
         }
         let mut failed_slider = vec![false; slider.len()];
         let mut failed_substrate = vec![false; substrate.len()];

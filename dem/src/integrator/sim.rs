@@ -15,6 +15,9 @@
 //! Work is split into chunks whose size depends only on the work, and partial sums are added
 //! in chunk order, so results are bit-identical for any thread count.
 
+// Small dense index loops read like the math they implement.
+#![allow(clippy::needless_range_loop)]
+
 use super::body::{dot3, Body};
 use super::chunks::Chunking;
 use crate::model::ContactModel;
@@ -108,6 +111,17 @@ pub struct Sim {
     pub(crate) overhang0: f64,
 }
 
+/// One slider chunk of the kick-drift pass: ((x, v), f), (x at the evaluation, ids).
+type SliderChunk<'a> = (
+    ((&'a mut [[f64; 3]], &'a mut [[f64; 3]]), &'a [[f64; 3]]),
+    (&'a [[f64; 3]], &'a [u32]),
+);
+/// One substrate chunk of the kick-drift pass: (x, v), (f, x at the evaluation).
+type SubstrateChunk<'a> = (
+    (&'a mut [[f64; 2]], &'a mut [[f64; 2]]),
+    (&'a [[f64; 2]], &'a [[f64; 2]]),
+);
+
 #[inline]
 pub(crate) fn kick(v: &mut f64, f: f64, h: f64, m: f64) {
     *v += h * f / m;
@@ -150,13 +164,6 @@ impl Sim {
                         "must be positive and at most the neighbour skin ({} nm)",
                         params.skin * 1e9
                     ),
-                ));
-            }
-            if !(params.active_tol.is_finite() && params.active_tol > 0.0) {
-                return Err(DemError::invalid(
-                    "active_tol",
-                    params.active_tol,
-                    "must be a positive number",
                 ));
             }
             let ks = [
@@ -328,8 +335,8 @@ impl Sim {
             return Err(self.unstable("non-finite particle position".into()));
         }
         let lim = self.trigger();
-        let lim2 = lim * lim;
-        if d2 > lim2 || (self.idx.n_in > 0 && self.frame_disp2() > lim2) {
+        let inactive_moves = self.idx.n_in > 0 || !self.state.ringing.sub.is_empty();
+        if d2 > lim * lim || (inactive_moves && self.frame_disp() > lim) {
             self.evaluate(false);
         }
         self.forces(h);
@@ -381,15 +388,19 @@ impl Sim {
         }
     }
 
-    /// Half kick of the common mode with its force from the last evaluation.
+    /// Half kick of the common mode and of the aggregate of the ringing deviations, with their
+    /// forces from the last force evaluation.
     fn kick_common(&mut self, h: f64) {
         let m = self.body.m_s;
         let c = &mut self.state.common;
-        kick(&mut c.v[0], c.fu[0], h, m);
-        kick(&mut c.v[1], c.fu[1], h, m);
+        for k in 0..2 {
+            kick(&mut c.v[k], c.fu[k], h, m);
+            kick(&mut c.dv[k], c.fd[k], h, m);
+        }
         if !self.params.rigid_z {
             for k in 0..3 {
                 kick(&mut c.s[k], c.fw[k], h, m);
+                kick(&mut c.dzv[k], c.fdz[k], h, m);
             }
         }
     }
@@ -409,12 +420,15 @@ impl Sim {
         s.support[0] += dt * s.support_v[0];
         s.support[1] += dt * s.support_v[1];
         let c = &mut s.common;
-        c.u[0] += dt * (c.v[0] - s.cl_v[0]);
-        c.u[1] += dt * (c.v[1] - s.cl_v[1]);
+        for k in 0..2 {
+            c.u[k] += dt * (c.v[k] - s.cl_v[k]);
+            c.d[k] += dt * c.dv[k];
+        }
         if !rigid {
             let qd = [s.cl_v[2], s.tilt_v[0], s.tilt_v[1]];
             for k in 0..3 {
                 c.w[k] += dt * (c.s[k] - qd[k]);
+                c.dz[k] += dt * c.dzv[k];
             }
         }
     }
@@ -431,10 +445,7 @@ impl Sim {
         let off = &self.body.off;
         let Chunking { sl, sub, par } = self.idx.chunks;
         let a = &mut self.state.act;
-        let slider = |(((x, v), f), (x0, ids)): (
-            ((&mut [[f64; 3]], &mut [[f64; 3]]), &[[f64; 3]]),
-            (&[[f64; 3]], &[u32]),
-        )| {
+        let slider = |(((x, v), f), (x0, ids)): SliderChunk| {
             let mut d2 = 0.0f64;
             for ((((x, v), f), x0), &i) in x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0).zip(ids) {
                 kick_hm(&mut v[0], f[0], hm);
@@ -459,10 +470,7 @@ impl Sim {
             }
             d2
         };
-        let substrate = |((x, v), (f, x0)): (
-            (&mut [[f64; 2]], &mut [[f64; 2]]),
-            (&[[f64; 2]], &[[f64; 2]]),
-        )| {
+        let substrate = |((x, v), (f, x0)): SubstrateChunk| {
             let mut d2 = 0.0f64;
             for (((x, v), f), x0) in x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0) {
                 kick_hm(&mut v[0], f[0], hm);
@@ -519,9 +527,10 @@ impl Sim {
         }
     }
 
-    /// Upper bound of the squared displacement (m²) of every inactive slider sphere since the
-    /// last evaluation: they move with the control layer and the common mode.
-    fn frame_disp2(&self) -> f64 {
+    /// Upper bound of the displacement (m) of every inactive particle since the last
+    /// evaluation: slider spheres move with the control layer and the common mode, plus their
+    /// ringing deviation; substrate spheres by their ringing deviation only.
+    fn frame_disp(&self) -> f64 {
         let s = &self.state;
         let mk = &s.mark;
         let lat = [
@@ -540,7 +549,8 @@ impl Sim {
         }
         let [ax, ay] = self.body.arm;
         let z = dq[0].abs() + dq[1].abs() * ay + dq[2].abs() * ax;
-        let d = lat[0] * lat[0] + lat[1] * lat[1] + z * z;
+        let d = (lat[0] * lat[0] + lat[1] * lat[1] + z * z).sqrt() + mk.ring[0];
+        let d = d.max(mk.ring[1]);
         if d.is_nan() {
             f64::INFINITY
         } else {

@@ -97,7 +97,7 @@ pub fn run(
     if samples.is_empty() {
         samples.push(Sample::from_obs(&sim.observe()));
     }
-    let next = |step: u64, k: u64| if k > 0 { (step / k + 1) * k } else { u64::MAX };
+    let next = |step: u64, k: u64| step.checked_div(k).map_or(u64::MAX, |q| (q + 1) * k);
     while sim.state.step < total {
         let step = sim.state.step;
         if kind == RunKind::Slide && step >= ne && !sim.state.spring_on {

@@ -62,6 +62,11 @@ pub struct Active {
 /// equation driven by the control layer). Lateral: displacement `u` from the site and absolute
 /// velocity `v`. Vertical (full model only): displacement from the anchor `w_i = g_i·w` and
 /// absolute velocity `v_z,i = g_i·s`, with `g_i = (1, y_i, −x_i)` (tilt convention).
+///
+/// An inactive sphere that still rings after a contact deviates from this state by `δ_i`, which
+/// obeys a homogeneous linear equation (spring and damping only, the same for every sphere);
+/// the control layer feels only their sum, integrated here as `d` (lateral, `Σ δ_i`) and `dz`
+/// (vertical, `Σ δz_i g_i`). Each sphere's own deviation is kept in [`Ringing`].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct CommonMode {
     /// Lateral displacement from the site (m).
@@ -76,6 +81,35 @@ pub struct CommonMode {
     pub s: [f64; 3],
     /// Vertical force coefficients (per sphere: `g_i·fw`).
     pub fw: [f64; 3],
+    /// Σ of the lateral deviations of the ringing inactive spheres (m).
+    pub d: [f64; 2],
+    /// Σ of their relative velocities (m/s).
+    pub dv: [f64; 2],
+    /// Σ of their deviation forces (N).
+    pub fd: [f64; 2],
+    /// Σ δz_i g_i of their vertical deviations (full model).
+    pub dz: [f64; 3],
+    /// Σ δż_i g_i.
+    pub dzv: [f64; 3],
+    /// Σ of their vertical deviation forces times g_i.
+    pub fdz: [f64; 3],
+}
+
+/// Inactive spheres still ringing after a contact: their deviation from the rest state
+/// (substrate: the site, velocity 0; slider: the common mode) as of the last evaluation, in the
+/// order `[δx, δy, δz, δvx, δvy, δvz]` (slider; δz, δvz only in the full model) and
+/// `[δx, δy, δvx, δvy]` (substrate). Advanced exactly by the homogeneous linear step map at each
+/// evaluation; dropped once below 10⁻²⁵ m (far below the round-off of a position).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Ringing {
+    /// Ringing inactive slider spheres (ascending).
+    pub sl: Vec<u32>,
+    /// Their deviations.
+    pub sl_dev: Vec<[f64; 6]>,
+    /// Ringing inactive substrate spheres (ascending).
+    pub sub: Vec<u32>,
+    /// Their deviations.
+    pub sub_dev: Vec<[f64; 4]>,
 }
 
 /// Where the frame of the inactive slider spheres (control layer + common mode) stood at some
@@ -90,6 +124,11 @@ pub struct FrameMark {
     pub u: [f64; 2],
     /// Common-mode vertical coefficients.
     pub w: [f64; 3],
+    /// Step of the evaluation.
+    pub step: u64,
+    /// Bound (m) on how far a ringing inactive slider / substrate sphere can move away from its
+    /// rest-state position between two evaluations.
+    pub ring: [f64; 2],
 }
 
 /// Counters of the active set (diagnostics; checkpointed).
@@ -99,7 +138,7 @@ pub struct ActiveStats {
     pub evaluations: u64,
     /// Particles that entered the active set.
     pub activations: u64,
-    /// Particles that left it (snapped to their rest state).
+    /// Particles that left it.
     pub deactivations: u64,
     /// Pairs that entered the active set already touching (must stay 0: a contact missed).
     pub late_pairs: u64,
@@ -127,6 +166,8 @@ pub struct State {
     pub act: Active,
     /// Relative state of the inactive slider spheres.
     pub common: CommonMode,
+    /// Inactive spheres still ringing after a contact.
+    pub ringing: Ringing,
     /// Control-layer centre of mass (x, y) and reference height Z (m).
     pub cl_x: [f64; 3],
     /// Control-layer velocity (m/s).

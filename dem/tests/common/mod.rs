@@ -80,6 +80,7 @@ pub fn max_rel_diff(a: &[Sample], b: &[Sample]) -> f64 {
         ]
     };
     let mut worst: f64 = 0.0;
+    let verbose = std::env::var("DEM_DIFF").is_ok();
     for c in 0..7 {
         let scale = a
             .iter()
@@ -88,7 +89,16 @@ pub fn max_rel_diff(a: &[Sample], b: &[Sample]) -> f64 {
             .fold(0.0, f64::max)
             .max(1e-300);
         for (x, y) in a.iter().zip(b) {
-            worst = worst.max((cols(x)[c] - cols(y)[c]).abs() / scale);
+            let d = (cols(x)[c] - cols(y)[c]).abs() / scale;
+            if verbose && d > 0.0 {
+                eprintln!(
+                    "column {c} at t = {} µs: {} vs {} ({d:e})",
+                    x.t_us,
+                    cols(x)[c],
+                    cols(y)[c]
+                );
+            }
+            worst = worst.max(d);
         }
     }
     worst
