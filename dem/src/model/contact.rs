@@ -7,7 +7,8 @@ use super::{Friction, FrictionLaw, HertzNormal, Mindlin, NormalModel, Tangential
 pub struct PairOut {
     /// Force on the first body (slider sphere) (N); the second gets its negative.
     pub force: [f64; 3],
-    /// Overlap δ (m); ≤ 0 when not touching.
+    /// Overlap δ (m) when touching; when apart a negative gap measure `(R² − r²)/(2R)` (m),
+    /// `R = R1 + R2`, which is below `R − r`.
     pub delta: f64,
     /// Maximum Hertz pressure p0 (Pa) (0 when not touching).
     pub p0: f64,
@@ -44,9 +45,10 @@ impl ContactModel {
         let r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         let rs = self.radius_sum;
         if r2 >= rs * rs {
+            // apart: no square root needed; a negative gap measure suffices
             *xi = [0.0; 3];
             return PairOut {
-                delta: rs - r2.sqrt(),
+                delta: (rs * rs - r2) * (0.5 / rs),
                 ..Default::default()
             };
         }
