@@ -263,3 +263,74 @@ fn xyz_is_replaced_by_a_fresh_run_and_continued_exactly_on_resume() {
     assert_eq!(std::fs::read(&xyz).unwrap(), whole, "rerun appended");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `auto` takes rigid-z on the superlubric study scene (square-tri 0°, α = 90°: κ = 0.0053,
+/// P_max far below P_crit, η = 0.33) and the full model where the slider sticks and slips
+/// (α = 0°, along the contact lines: η = 6), where contacts come near coating failure
+/// (tri-tri 30° at 2.45 mN) or where κ is large (E = 400 GPa); `full` and `reduced` are
+/// honoured; prune and the active set are always on; every reason names κ.
+#[test]
+fn the_model_choice_follows_stiffness_coating_failure_and_stick_slip() {
+    use dem::{choose_model, ModelRequest};
+    let p = |w: f64| SimParams {
+        load: w,
+        alpha: 90f64.to_radians(),
+        ..SimParams::default()
+    };
+    let study = Scene::preset("square-tri").unwrap();
+    let c = choose_model(&study, &p(1.4e-3), ModelRequest::Auto).unwrap();
+    eprintln!("study 1.4 mN, α = 90°: {} — {}", c.model, c.reason);
+    assert!(c.rigid_z && c.prune && c.active_set);
+    assert!(
+        (c.stiffness_ratio - 0.0053).abs() < 1e-4,
+        "{}",
+        c.stiffness_ratio
+    );
+    assert!(c.stick_slip_eta.unwrap() < 1.0);
+    let along = SimParams {
+        alpha: 0.0,
+        ..p(1.4e-3)
+    };
+    let c = choose_model(&study, &along, ModelRequest::Auto).unwrap();
+    eprintln!("study 1.4 mN, α = 0°: {} — {}", c.model, c.reason);
+    assert!(
+        !c.rigid_z && c.reason.contains("stick-slip"),
+        "{}",
+        c.reason
+    );
+    assert!(c.stick_slip_eta.unwrap() > 1.0);
+    // equilibration only: no sliding, no stick-slip question
+    let eq = SimParams {
+        slide_time: 0.0,
+        ..along
+    };
+    let c = choose_model(&study, &eq, ModelRequest::Auto).unwrap();
+    assert!(c.rigid_z && c.stick_slip_eta.is_none(), "{}", c.reason);
+    let mut tt = Scene::preset("tri-tri").unwrap();
+    tt.slider.theta = 30f64.to_radians();
+    let c = choose_model(&tt, &p(2.45e-3), ModelRequest::Auto).unwrap();
+    eprintln!("tri-tri 30° 2.45 mN: {} — {}", c.model, c.reason);
+    assert!(!c.rigid_z && c.prune && c.active_set);
+    assert!(c.reason.contains("P_crit"), "{}", c.reason);
+    let mut stiff = study.clone();
+    stiff.material.youngs = 400e9;
+    stiff.coating.p_crit = 40e9;
+    let c = choose_model(&stiff, &p(1.4e-3), ModelRequest::Auto).unwrap();
+    eprintln!("E = 400 GPa: {} — {}", c.model, c.reason);
+    assert!(!c.rigid_z && c.reason.contains("κ"));
+    assert!(
+        !choose_model(&study, &p(1.4e-3), ModelRequest::Full)
+            .unwrap()
+            .rigid_z
+    );
+    assert!(
+        choose_model(&tt, &p(2.45e-3), ModelRequest::Reduced)
+            .unwrap()
+            .rigid_z
+    );
+    let mut q = p(1.4e-3);
+    choose_model(&tt, &q.clone(), ModelRequest::Auto)
+        .unwrap()
+        .apply(&mut q);
+    assert!(!q.rigid_z && q.prune_substrate && q.active_set);
+}
