@@ -127,6 +127,16 @@ pub(crate) fn kick(v: &mut f64, f: f64, h: f64, m: f64) {
     *v += h * f / m;
 }
 
+/// Max that propagates NaN (a non-finite displacement must reach the caller).
+#[inline]
+fn nan_max(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.max(b)
+    }
+}
+
 /// Kick with the precomputed `h/m` (no division in the particle loops).
 #[inline]
 pub(crate) fn kick_hm(v: &mut f64, f: f64, hm: f64) {
@@ -446,7 +456,9 @@ impl Sim {
         let Chunking { sl, sub, par } = self.idx.chunks;
         let a = &mut self.state.act;
         let slider = |(((x, v), f), (x0, ids)): SliderChunk| {
-            let mut d2 = 0.0f64;
+            // largest squared displacement; the plain sum only flags a non-finite value (two
+            // independent accumulators, no NaN-aware max in the loop's dependency chain)
+            let (mut d2, mut sum) = (0.0f64, 0.0f64);
             for ((((x, v), f), x0), &i) in x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0).zip(ids) {
                 kick_hm(&mut v[0], f[0], hm);
                 kick_hm(&mut v[1], f[1], hm);
@@ -466,21 +478,37 @@ impl Sim {
                     x[2] += dt * v[2];
                 }
                 let d = [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]];
-                d2 = d2.max(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                let m = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                sum += m;
+                if m > d2 {
+                    d2 = m;
+                }
             }
-            d2
+            if sum.is_finite() {
+                d2
+            } else {
+                f64::NAN
+            }
         };
         let substrate = |((x, v), (f, x0)): SubstrateChunk| {
-            let mut d2 = 0.0f64;
+            let (mut d2, mut sum) = (0.0f64, 0.0f64);
             for (((x, v), f), x0) in x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0) {
                 kick_hm(&mut v[0], f[0], hm);
                 kick_hm(&mut v[1], f[1], hm);
                 x[0] += dt * v[0];
                 x[1] += dt * v[1];
                 let d = [x[0] - x0[0], x[1] - x0[1]];
-                d2 = d2.max(d[0] * d[0] + d[1] * d[1]);
+                let m = d[0] * d[0] + d[1] * d[1];
+                sum += m;
+                if m > d2 {
+                    d2 = m;
+                }
             }
-            d2
+            if sum.is_finite() {
+                d2
+            } else {
+                f64::NAN
+            }
         };
         let (ds, db) = if par {
             rayon::join(
@@ -491,7 +519,7 @@ impl Sim {
                         .zip(a.sl_f.par_chunks(sl))
                         .zip(a.sl_x0.par_chunks(sl).zip(a.sl.par_chunks(sl)))
                         .map(slider)
-                        .reduce(|| 0.0, f64::max)
+                        .reduce(|| 0.0, nan_max)
                 },
                 || {
                     a.sub_x
@@ -499,7 +527,7 @@ impl Sim {
                         .zip(a.sub_v.par_chunks_mut(sub))
                         .zip(a.sub_f.par_chunks(sub).zip(a.sub_x0.par_chunks(sub)))
                         .map(substrate)
-                        .reduce(|| 0.0, f64::max)
+                        .reduce(|| 0.0, nan_max)
                 },
             )
         } else {
@@ -510,13 +538,13 @@ impl Sim {
                     .zip(a.sl_f.chunks(sl))
                     .zip(a.sl_x0.chunks(sl).zip(a.sl.chunks(sl)))
                     .map(slider)
-                    .fold(0.0, f64::max),
+                    .fold(0.0, nan_max),
                 a.sub_x
                     .chunks_mut(sub)
                     .zip(a.sub_v.chunks_mut(sub))
                     .zip(a.sub_f.chunks(sub).zip(a.sub_x0.chunks(sub)))
                     .map(substrate)
-                    .fold(0.0, f64::max),
+                    .fold(0.0, nan_max),
             )
         };
         // NaN must win the max
