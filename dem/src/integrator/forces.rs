@@ -7,10 +7,12 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::body::{dot3, g_of, mat_vec};
-use super::sim::{kick, kick_hm, spring_stretch, Sim};
+use super::sim::{kick, kick_hm, spring_stretch, Index, Sim};
 use crate::model::{ContactModel, PairOut};
 use crate::params::DampingFrame;
+use crate::params::SimParams;
 use crate::system::PairHist;
+use crate::system::SystemSpec;
 use rayon::prelude::*;
 
 /// One substrate chunk of the force pass: (chunk index, ((v, f), x)).
@@ -162,11 +164,77 @@ impl SliderPass<'_> {
     }
 }
 
+/// Read-only inputs of the substrate force pass (tether, damping, minus the pair forces).
+pub(crate) struct SubstrateForce<'a> {
+    sub_start: &'a [u32],
+    sub_items: &'a [u32],
+    sites: &'a [[f64; 3]],
+    kt: f64,
+    m: f64,
+    inv_tau: f64,
+    hm: f64,
+}
+
+impl<'a> SubstrateForce<'a> {
+    /// The pass with second half kick `h` (s) over the index `idx` of the active set.
+    pub(crate) fn new(
+        idx: &'a Index,
+        spec: &'a SystemSpec,
+        params: &SimParams,
+        m: f64,
+        inv_tau: f64,
+        h: f64,
+    ) -> SubstrateForce<'a> {
+        SubstrateForce {
+            sub_start: &idx.sub_start,
+            sub_items: &idx.sub_items,
+            sites: &spec.substrate,
+            kt: params.k_substrate_xy,
+            m,
+            inv_tau,
+            hm: h / m,
+        }
+    }
+
+    /// Force and second half kick of the dense substrate spheres `b0..b0 + v.len()` (ids, pair
+    /// results: the dense arrays of the active set).
+    #[inline]
+    pub(crate) fn chunk_with(
+        &self,
+        b0: usize,
+        ids: &[u32],
+        out: &[PairOut],
+        v: &mut [[f64; 2]],
+        f: &mut [[f64; 2]],
+        x: &[[f64; 2]],
+    ) {
+        let (m, it) = (self.m, self.inv_tau);
+        for (l, ((v, f), x)) in v.iter_mut().zip(f.iter_mut()).zip(x).enumerate() {
+            let b = b0 + l;
+            let site = self.sites[ids[b] as usize];
+            let mut acc = [
+                self.kt * (site[0] - x[0]) - m * v[0] * it,
+                self.kt * (site[1] - x[1]) - m * v[1] * it,
+            ];
+            for &pi in &self.sub_items[self.sub_start[b] as usize..self.sub_start[b + 1] as usize] {
+                let o = &out[pi as usize];
+                acc[0] -= o.force[0];
+                acc[1] -= o.force[1];
+            }
+            kick_hm(&mut v[0], acc[0], self.hm);
+            kick_hm(&mut v[1], acc[1], self.hm);
+            *f = acc;
+        }
+    }
+}
+
 impl Sim {
     /// Every force from the current positions and half-step velocities, each particle's second
     /// half kick by `h` (0: forces only), the control layer's force and second half kick, and
-    /// the common mode's. Updates the tangential histories by one step.
-    pub(crate) fn forces(&mut self, h: f64) {
+    /// the common mode's. Updates the tangential histories by one step. With
+    /// `defer_substrate` the substrate spheres' force and second half kick are left to the next
+    /// step's fused first pass ([`Sim::kick_drift`]).
+    pub(crate) fn forces(&mut self, h: f64, defer_substrate: bool) {
         let p = &self.params;
         let rel = p.damping_frame == DampingFrame::Relative;
         let inv_tau = self.inv_tau();
@@ -231,52 +299,12 @@ impl Sim {
                 r[k] += part[k];
             }
         }
-        // 2. substrate spheres
-        {
-            let a = &mut s.act;
-            let (ss, si) = (&self.idx.sub_start, &self.idx.sub_items);
-            let out = &a.out;
-            let sites = &self.spec.substrate;
-            let ids = &a.sub;
-            let kt = p.k_substrate_xy;
-            let m = self.body.m_s;
-            let hm = h / m;
-            let c = ch.sub;
-            let body = |(k, ((v, f), x)): SubstrateChunk| {
-                let b0 = k * c;
-                for (l, ((v, f), x)) in v.iter_mut().zip(f.iter_mut()).zip(x).enumerate() {
-                    let b = b0 + l;
-                    let site = sites[ids[b] as usize];
-                    let mut acc = [
-                        kt * (site[0] - x[0]) - m * v[0] * inv_tau,
-                        kt * (site[1] - x[1]) - m * v[1] * inv_tau,
-                    ];
-                    for &pi in &si[ss[b] as usize..ss[b + 1] as usize] {
-                        let o = &out[pi as usize];
-                        acc[0] -= o.force[0];
-                        acc[1] -= o.force[1];
-                    }
-                    kick_hm(&mut v[0], acc[0], hm);
-                    kick_hm(&mut v[1], acc[1], hm);
-                    *f = acc;
-                }
-            };
-            if ch.par {
-                a.sub_v
-                    .par_chunks_mut(c)
-                    .zip(a.sub_f.par_chunks_mut(c))
-                    .zip(a.sub_x.par_chunks(c))
-                    .enumerate()
-                    .for_each(body);
-            } else {
-                a.sub_v
-                    .chunks_mut(c)
-                    .zip(a.sub_f.chunks_mut(c))
-                    .zip(a.sub_x.chunks(c))
-                    .enumerate()
-                    .for_each(body);
-            }
+        // 2. substrate spheres (deferred when pipelined: see `Sim::run_steps`)
+        if !defer_substrate {
+            self.substrate_forces(h);
         }
+        let p = &self.params;
+        let s = &mut self.state;
         // 3. common mode of the inactive slider spheres
         let m = self.body.m_s;
         {
@@ -341,6 +369,48 @@ impl Sim {
         s.tilt_f = qt;
         if h != 0.0 {
             self.kick_control_second(h);
+        }
+    }
+
+    /// Force and second half kick (`h`) of the active substrate spheres (one parallel pass).
+    pub(crate) fn substrate_forces(&mut self, h: f64) {
+        let inv_tau = self.inv_tau();
+        let ctx = SubstrateForce::new(
+            &self.idx,
+            &self.spec,
+            &self.params,
+            self.body.m_s,
+            inv_tau,
+            h,
+        );
+        let ch = self.idx.chunks;
+        let c = ch.sub;
+        let crate::system::Active {
+            sub,
+            sub_x,
+            sub_v,
+            sub_f,
+            out,
+            ..
+        } = &mut self.state.act;
+        let (ids, out) = (&*sub, &*out);
+        let body = |(k, ((v, f), x)): SubstrateChunk| {
+            ctx.chunk_with(k * c, ids, out, v, f, x);
+        };
+        if ch.par {
+            sub_v
+                .par_chunks_mut(c)
+                .zip(sub_f.par_chunks_mut(c))
+                .zip(sub_x.par_chunks(c))
+                .enumerate()
+                .for_each(body);
+        } else {
+            sub_v
+                .chunks_mut(c)
+                .zip(sub_f.chunks_mut(c))
+                .zip(sub_x.chunks(c))
+                .enumerate()
+                .for_each(body);
         }
     }
 

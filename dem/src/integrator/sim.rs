@@ -116,10 +116,13 @@ type SliderChunk<'a> = (
     ((&'a mut [[f64; 3]], &'a mut [[f64; 3]]), &'a [[f64; 3]]),
     (&'a [[f64; 3]], &'a [u32]),
 );
-/// One substrate chunk of the kick-drift pass: (x, v), (f, x at the evaluation).
+/// One substrate chunk of the kick-drift pass: (index, ((x, v), (f, x at the evaluation))).
 type SubstrateChunk<'a> = (
-    (&'a mut [[f64; 2]], &'a mut [[f64; 2]]),
-    (&'a [[f64; 2]], &'a [[f64; 2]]),
+    usize,
+    (
+        (&'a mut [[f64; 2]], &'a mut [[f64; 2]]),
+        (&'a mut [[f64; 2]], &'a [[f64; 2]]),
+    ),
 );
 
 #[inline]
@@ -253,7 +256,7 @@ impl Sim {
             overhang0,
         };
         sim.evaluate(true);
-        sim.forces(0.0);
+        sim.forces(0.0, false);
         Ok(sim)
     }
 
@@ -336,11 +339,19 @@ impl Sim {
     /// One velocity-Verlet step (see the module doc). Errors with [`DemError::Unstable`] when
     /// a position or the control layer's state is no longer finite.
     pub fn step(&mut self) -> Result<(), DemError> {
+        self.step_inner(false, false)
+    }
+
+    /// One step. `fused`: the substrate spheres' force and second half kick of the previous step
+    /// were deferred and are done in this step's first pass, fused with their first half kick
+    /// and drift. `defer`: leave this step's substrate force and second half kick to the next
+    /// step. Each particle sees the same arithmetic either way (bit-identical results).
+    fn step_inner(&mut self, fused: bool, defer: bool) -> Result<(), DemError> {
         let h = 0.5 * self.dt;
         self.kick_control(h);
         self.kick_common(h);
         self.drift_frame();
-        let d2 = self.kick_drift(h);
+        let d2 = self.kick_drift(h, fused);
         if !d2.is_finite() {
             return Err(self.unstable("non-finite particle position".into()));
         }
@@ -349,7 +360,7 @@ impl Sim {
         if d2 > lim * lim || (inactive_moves && self.frame_disp() > lim) {
             self.evaluate(false);
         }
-        self.forces(h);
+        self.forces(h, defer);
         let s = &mut self.state;
         s.step += 1;
         s.t = s.step as f64 * self.dt;
@@ -361,13 +372,16 @@ impl Sim {
         Ok(())
     }
 
-    /// Runs `n` steps on the rayon pool (the calling thread joins the pool for the duration, so
-    /// the per-step parallel passes cost no cross-thread hand-off).
+    /// Runs `n` steps, bit-identical to `n` calls of [`Sim::step`] but with two parallel passes
+    /// per step instead of three: between two steps the substrate spheres' force and second
+    /// half kick are fused with their next first half kick and drift (the substrate force needs
+    /// only the pair forces of the slider pass and the substrate's own state). The calling
+    /// thread joins the rayon pool for the duration (no cross-thread hand-off per pass).
     pub fn run_steps(&mut self, n: u64) -> Result<(), DemError> {
         let mut res = Ok(());
         rayon::scope(|_| {
-            for _ in 0..n {
-                if let Err(e) = self.step() {
+            for k in 0..n {
+                if let Err(e) = self.step_inner(k > 0, k + 1 < n) {
                     res = Err(e);
                     break;
                 }
@@ -444,8 +458,19 @@ impl Sim {
     }
 
     /// First half kick and drift of the active particles; returns the largest squared
-    /// displacement since the last active-set evaluation (m²). One parallel pass.
-    fn kick_drift(&mut self, h: f64) -> f64 {
+    /// displacement since the last active-set evaluation (m²). One parallel pass. With `fused`
+    /// the substrate spheres first get their deferred force and second half kick of the
+    /// previous step ([`super::forces::SubstrateForce`]).
+    fn kick_drift(&mut self, h: f64, fused: bool) -> f64 {
+        let inv_tau = self.inv_tau();
+        let sf = super::forces::SubstrateForce::new(
+            &self.idx,
+            &self.spec,
+            &self.params,
+            self.body.m_s,
+            inv_tau,
+            h,
+        );
         let dt = self.dt;
         let hm = h / self.body.m_s;
         let rigid = self.params.rigid_z;
@@ -454,7 +479,21 @@ impl Sim {
         let tilting = self.body.tilt.is_some();
         let off = &self.body.off;
         let Chunking { sl, sub, par } = self.idx.chunks;
-        let a = &mut self.state.act;
+        let crate::system::Active {
+            sl: sl_ids,
+            sl_x,
+            sl_v,
+            sl_f,
+            sl_x0,
+            sub: sub_ids,
+            sub_x,
+            sub_v,
+            sub_f,
+            sub_x0,
+            out,
+            ..
+        } = &mut self.state.act;
+        let (sub_ids, out) = (&*sub_ids, &*out);
         let slider = |(((x, v), f), (x0, ids)): SliderChunk| {
             // largest squared displacement; the plain sum only flags a non-finite value (two
             // independent accumulators, no NaN-aware max in the loop's dependency chain)
@@ -490,9 +529,12 @@ impl Sim {
                 f64::NAN
             }
         };
-        let substrate = |((x, v), (f, x0)): SubstrateChunk| {
+        let substrate = |(k, ((x, v), (f, x0))): SubstrateChunk| {
+            if fused {
+                sf.chunk_with(k * sub, sub_ids, out, v, f, x);
+            }
             let (mut d2, mut sum) = (0.0f64, 0.0f64);
-            for (((x, v), f), x0) in x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0) {
+            for (((x, v), f), x0) in x.iter_mut().zip(v.iter_mut()).zip(f.iter()).zip(x0) {
                 kick_hm(&mut v[0], f[0], hm);
                 kick_hm(&mut v[1], f[1], hm);
                 x[0] += dt * v[0];
@@ -513,36 +555,36 @@ impl Sim {
         let (ds, db) = if par {
             rayon::join(
                 || {
-                    a.sl_x
-                        .par_chunks_mut(sl)
-                        .zip(a.sl_v.par_chunks_mut(sl))
-                        .zip(a.sl_f.par_chunks(sl))
-                        .zip(a.sl_x0.par_chunks(sl).zip(a.sl.par_chunks(sl)))
+                    sl_x.par_chunks_mut(sl)
+                        .zip(sl_v.par_chunks_mut(sl))
+                        .zip(sl_f.par_chunks(sl))
+                        .zip(sl_x0.par_chunks(sl).zip(sl_ids.par_chunks(sl)))
                         .map(slider)
                         .reduce(|| 0.0, nan_max)
                 },
                 || {
-                    a.sub_x
+                    sub_x
                         .par_chunks_mut(sub)
-                        .zip(a.sub_v.par_chunks_mut(sub))
-                        .zip(a.sub_f.par_chunks(sub).zip(a.sub_x0.par_chunks(sub)))
+                        .zip(sub_v.par_chunks_mut(sub))
+                        .zip(sub_f.par_chunks_mut(sub).zip(sub_x0.par_chunks(sub)))
+                        .enumerate()
                         .map(substrate)
                         .reduce(|| 0.0, nan_max)
                 },
             )
         } else {
             (
-                a.sl_x
-                    .chunks_mut(sl)
-                    .zip(a.sl_v.chunks_mut(sl))
-                    .zip(a.sl_f.chunks(sl))
-                    .zip(a.sl_x0.chunks(sl).zip(a.sl.chunks(sl)))
+                sl_x.chunks_mut(sl)
+                    .zip(sl_v.chunks_mut(sl))
+                    .zip(sl_f.chunks(sl))
+                    .zip(sl_x0.chunks(sl).zip(sl_ids.chunks(sl)))
                     .map(slider)
                     .fold(0.0, nan_max),
-                a.sub_x
+                sub_x
                     .chunks_mut(sub)
-                    .zip(a.sub_v.chunks_mut(sub))
-                    .zip(a.sub_f.chunks(sub).zip(a.sub_x0.chunks(sub)))
+                    .zip(sub_v.chunks_mut(sub))
+                    .zip(sub_f.chunks_mut(sub).zip(sub_x0.chunks(sub)))
+                    .enumerate()
                     .map(substrate)
                     .fold(0.0, nan_max),
             )
