@@ -6,7 +6,9 @@
 //!
 //! Throughput is reported in particle-steps (criterion's "elements"/s), the particle count
 //! being the model's own (`Sim::particles`: substrate + slider + control body), whether or not
-//! the active set integrates them all. Thread scaling: run with `RAYON_NUM_THREADS=1` and `=2`.
+//! the active set integrates them all. Thread scaling: run with `RAYON_NUM_THREADS=1` and `=2`;
+//! `..._forced_parallel` always runs the passes in parallel (the others let `run_steps` pick the
+//! faster of parallel and one thread, which on a loaded machine can be one thread).
 //!
 //! Run: `cargo bench --bench dem -- --warm-up-time 1 --measurement-time 3`.
 
@@ -16,7 +18,7 @@ use dem::{prepare, SimParams, Start};
 /// Steps per benchmark iteration.
 const STEPS: u64 = 20;
 
-fn study_sim(rigid_z: bool, prune: bool, active_set: bool, slide: bool) -> dem::Sim {
+fn study_sim(rigid_z: bool, prune: bool, active_set: bool, slide: bool, forced: bool) -> dem::Sim {
     let scene = surrogate::Scene::preset("square-tri").expect("preset square-tri");
     let params = SimParams {
         load: 1.4e-3,
@@ -24,6 +26,12 @@ fn study_sim(rigid_z: bool, prune: bool, active_set: bool, slide: bool) -> dem::
         rigid_z,
         prune_substrate: prune,
         active_set,
+        // 0: always run the eligible passes in parallel (no timing probes)
+        parallel_min_work: if forced {
+            0
+        } else {
+            SimParams::default().parallel_min_work
+        },
         ..SimParams::default()
     };
     let mut sim = prepare(&scene, params, Start::Surrogate, None)
@@ -40,14 +48,29 @@ fn study_sim(rigid_z: bool, prune: bool, active_set: bool, slide: bool) -> dem::
 fn models(c: &mut Criterion) {
     let mut g = c.benchmark_group("dem_study_scene_steps");
     g.sample_size(10);
-    for (name, rigid_z, prune, active, slide) in [
-        ("full_all_particles_equilibrate", false, false, false, false),
-        ("full_all_particles", false, false, false, true),
-        ("full_prune_active_set", false, true, true, true),
-        ("reduced_prune", true, true, false, true),
-        ("reduced_prune_active_set", true, true, true, true),
+    for (name, rigid_z, prune, active, slide, forced) in [
+        (
+            "full_all_particles_equilibrate",
+            false,
+            false,
+            false,
+            false,
+            false,
+        ),
+        (
+            "full_all_particles_equilibrate_forced_parallel",
+            false,
+            false,
+            false,
+            false,
+            true,
+        ),
+        ("full_all_particles", false, false, false, true, false),
+        ("full_prune_active_set", false, true, true, true, false),
+        ("reduced_prune", true, true, false, true, false),
+        ("reduced_prune_active_set", true, true, true, true, false),
     ] {
-        let sim = study_sim(rigid_z, prune, active, slide);
+        let sim = study_sim(rigid_z, prune, active, slide, forced);
         eprintln!(
             "{name}: {} particles ({} integrated now), dt = {:.4e} µs (stable-step estimate {:.4e} µs), {} threads",
             sim.particles(),

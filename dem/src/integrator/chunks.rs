@@ -44,3 +44,52 @@ impl Chunking {
         n.div_ceil(self.sl).max(1)
     }
 }
+
+/// Picks, at run time, whether the eligible passes run in parallel or on one thread: on a
+/// machine shared with other jobs a second thread can make a step slower. Every
+/// [`Tuner::PERIOD`] calls of `Sim::run_steps` it times one call in each mode (per step) and
+/// keeps the faster. The choice never changes results (chunking is fixed by the work).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Tuner {
+    calls: u64,
+    t_par: f64,
+    /// The faster mode at the last probe.
+    pub use_par: bool,
+    /// The mode of the current call.
+    pub use_par_now: bool,
+}
+
+impl Default for Tuner {
+    fn default() -> Self {
+        Tuner {
+            calls: 0,
+            t_par: 0.0,
+            use_par: true,
+            use_par_now: true,
+        }
+    }
+}
+
+impl Tuner {
+    /// Calls between two probes.
+    pub const PERIOD: u64 = 32;
+
+    /// The mode of the next call: probe parallel, probe sequential, or the current choice.
+    pub fn begin(&mut self) -> bool {
+        match self.calls % Self::PERIOD {
+            0 => true,
+            1 => false,
+            _ => self.use_par,
+        }
+    }
+
+    /// Records the time per step (s) of the call just made in mode `par`.
+    pub fn end(&mut self, per_step: f64) {
+        match self.calls % Self::PERIOD {
+            0 => self.t_par = per_step,
+            1 => self.use_par = self.t_par <= per_step,
+            _ => {}
+        }
+        self.calls += 1;
+    }
+}

@@ -239,6 +239,7 @@ impl Sim {
         let rel = p.damping_frame == DampingFrame::Relative;
         let inv_tau = self.inv_tau();
         let (q, qd) = (self.q(), self.qdot());
+        let par = self.par();
         let s = &mut self.state;
         let ch = self.idx.chunks;
         let n_sl = s.act.sl.len();
@@ -290,7 +291,7 @@ impl Sim {
             };
             if n_sl > 0 {
                 let nc = ch.n_sl_chunks(n_sl);
-                pass.run(0, nc, sl_v, sl_f, hist, out, &mut parts[..nc], ch.par);
+                pass.run(0, nc, sl_v, sl_f, hist, out, &mut parts[..nc], par);
             }
         }
         let mut r = [0.0; 5];
@@ -384,6 +385,7 @@ impl Sim {
             h,
         );
         let ch = self.idx.chunks;
+        let par = self.par();
         let c = ch.sub;
         let crate::system::Active {
             sub,
@@ -397,7 +399,7 @@ impl Sim {
         let body = |(k, ((v, f), x)): SubstrateChunk| {
             ctx.chunk_with(k * c, ids, out, v, f, x);
         };
-        if ch.par {
+        if par {
             sub_v
                 .par_chunks_mut(c)
                 .zip(sub_f.par_chunks_mut(c))

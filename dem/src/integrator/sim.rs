@@ -109,6 +109,7 @@ pub struct Sim {
     pub(crate) idx: Index,
     pub(crate) h_min: f64,
     pub(crate) overhang0: f64,
+    pub(crate) tuner: super::chunks::Tuner,
 }
 
 /// One slider chunk of the kick-drift pass: ((x, v), f), (x at the evaluation, ids).
@@ -254,6 +255,7 @@ impl Sim {
             idx: Index::default(),
             h_min,
             overhang0,
+            tuner: Default::default(),
         };
         sim.evaluate(true);
         sim.forces(0.0, false);
@@ -377,8 +379,17 @@ impl Sim {
     /// half kick are fused with their next first half kick and drift (the substrate force needs
     /// only the pair forces of the slider pass and the substrate's own state). The calling
     /// thread joins the rayon pool for the duration (no cross-thread hand-off per pass).
+    ///
+    /// Whether the eligible passes actually run in parallel is re-decided every few calls by
+    /// timing both modes ([`super::chunks::Tuner`]): never slower with more threads, and the
+    /// results do not depend on it.
     pub fn run_steps(&mut self, n: u64) -> Result<(), DemError> {
         let mut res = Ok(());
+        // parallel_min_work = 0 forces the parallel passes (no timing probes)
+        let eligible = self.idx.chunks.par && self.params.parallel_min_work > 0;
+        let mode = !eligible || self.tuner.begin();
+        self.tuner.use_par_now = mode;
+        let t0 = std::time::Instant::now();
         rayon::scope(|_| {
             for k in 0..n {
                 if let Err(e) = self.step_inner(k > 0, k + 1 < n) {
@@ -387,7 +398,17 @@ impl Sim {
                 }
             }
         });
+        if eligible && n > 0 {
+            self.tuner.end(t0.elapsed().as_secs_f64() / n as f64);
+        }
+        self.tuner.use_par_now = self.tuner.use_par;
         res
+    }
+
+    /// Whether the eligible passes run in parallel in this call.
+    #[inline]
+    pub(crate) fn par(&self) -> bool {
+        self.idx.chunks.par && self.tuner.use_par_now
     }
 
     /// First half kick of the control layer (lateral unless held; Z and the tilts through the
@@ -478,7 +499,8 @@ impl Sim {
         let qd = self.qdot();
         let tilting = self.body.tilt.is_some();
         let off = &self.body.off;
-        let Chunking { sl, sub, par } = self.idx.chunks;
+        let par = self.par();
+        let Chunking { sl, sub, .. } = self.idx.chunks;
         let crate::system::Active {
             sl: sl_ids,
             sl_x,
