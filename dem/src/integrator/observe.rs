@@ -251,6 +251,27 @@ impl Sim {
                 )));
             }
         }
+        // the free slider spheres: the common mode plus the largest ringing deviation
+        let c = &s.common;
+        let [ax, ay] = self.body.arm;
+        let ring = s
+            .ringing
+            .sl_dev
+            .iter()
+            .map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt())
+            .fold(0.0, f64::max);
+        let z = if self.params.rigid_z {
+            0.0
+        } else {
+            c.w[0].abs() + c.w[1].abs() * ay + c.w[2].abs() * ax
+        };
+        let m = (c.u[0] * c.u[0] + c.u[1] * c.u[1] + z * z).sqrt() + ring;
+        if self.idx.n_in > 0 && (m.is_nan() || m > r) {
+            return Err(self.unstable(format!(
+                "free slider spheres displaced up to {:.4e} µm from their control-layer sites (bound: one radius)",
+                m * 1e6
+            )));
+        }
         if s.cl_x[2] < self.h_min {
             return Err(self.unstable("the slider fell through the substrate".into()));
         }
