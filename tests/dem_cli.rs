@@ -215,7 +215,8 @@ fn bad_input_names_the_field() {
         "slider.radius_um",
     );
     fails_naming(&["slide", "--slide-us", "0"], "--slide-us");
-    // A time step far beyond the stable one is caught and reported with the stable step.
+    // A time step far beyond the stable one is caught and reported with the stable step
+    // (the full model: 150× its z-spring limit; `auto` would pick rigid-z here).
     let mut a = vec!["equilibrate"];
     a.extend(TINY);
     a.extend([
@@ -225,6 +226,8 @@ fn bad_input_names_the_field() {
         "0.01",
         "--start",
         "gap",
+        "--model",
+        "full",
     ]);
     fails_naming(&a, "stable");
 }

@@ -150,7 +150,17 @@ fn exported_deck_sets_up_for_every_mount_and_the_study_scene() {
         .iter()
         .map(|m| {
             let mut a = SMALL.to_vec();
-            a.extend(["--tilt", m, "--theta", "10", "--load-mn", "0.05"]);
+            // the small substrate holds 105 µs of sliding along this path (the path is checked)
+            a.extend([
+                "--tilt",
+                m,
+                "--theta",
+                "10",
+                "--load-mn",
+                "0.05",
+                "--slide-us",
+                "20",
+            ]);
             (m.to_string(), a)
         })
         .collect();
@@ -192,7 +202,7 @@ fn exported_deck_sets_up_for_every_mount_and_the_study_scene() {
 fn lammps_and_the_rust_dem_agree_on_a_small_scene() {
     let Some(lmp) = lmp() else { return };
     let dir = tmpdir("cross");
-    // Locked mount (the DEM's tilt DOFs are not on main yet), θ = 0, pulled perpendicular to the
+    // Locked mount (the simplest common ground), θ = 0, pulled perpendicular to the
     // contact lines (α = 90°), W = 0.05 mN, constant μ = 0.5 (contact sliding dominates the
     // friction, not the small slider's corrugation), 0.5 m/s so that 5 µs of sliding cover
     // 2.5 µm: the spring loads up for ≈ 1.3 µs, then the slider slides with stick-slip and the
@@ -651,7 +661,11 @@ fn lammps_check_reads_a_dump_and_finds_contacts_above_p_crit() {
     let dir = tmpdir("check");
     let meta = export(
         &dir,
-        &[SMALL, &["--load-mn", "0.1", "--p-crit-gpa", "3"]].concat(),
+        &[
+            SMALL,
+            &["--load-mn", "0.1", "--p-crit-gpa", "3", "--slide-us", "20"],
+        ]
+        .concat(),
     );
     let sl = meta["ids"]["slider"]["first"].as_u64().unwrap();
     let sb = meta["ids"]["substrate"]["first"].as_u64().unwrap();

@@ -233,13 +233,19 @@ fn dem_summaries_and_sidecars_record_the_case() {
     assert_eq!(j["pattern"], "square-tri");
     assert_eq!(j["theta_deg"], 10.2);
     assert_eq!(j["load_mN"], 0.02);
+    // the model actually run and why (--rigid-z: reduced whatever auto decides)
+    assert_eq!(j["model"], "reduced");
+    assert_eq!(j["model_requested"], "auto");
+    assert!(!j["model_reason"].as_str().unwrap().is_empty());
+    assert_eq!(j["rigid_z"], true);
     for f in ["s.csv", "s.json", "s.xyz"] {
         let m = json(&d.join(format!("{f}.meta.json")));
         assert_eq!(m["workflow"], "slide", "{f}");
         assert_eq!(m["scene"]["slider"]["theta_deg"], 10.2);
         assert_eq!(m["params"]["alpha_deg"], 90.0);
         assert_eq!(m["params"]["slide_us"], 0.05);
-        assert_eq!(m["params"]["rigid_z"], true);
+        assert_eq!(m["params"]["force_rigid_z"], true);
+        assert_eq!(m["params"]["model"], "auto");
     }
     std::fs::remove_dir_all(&d).ok();
 }

@@ -31,6 +31,20 @@ pub enum DemError {
         /// Estimated critical time step (µs).
         dt_crit_us: f64,
     },
+    /// The slider left the substrate during the run (the disc plus one sphere radius reaches
+    /// beyond the substrate rectangle, further than at the start). Not a time-step problem.
+    #[error("the slider left the substrate at t = {t_us:.4} µs: the slider disc plus one sphere radius reaches {over_um:.3} µm beyond the substrate edge (the control layer has moved by [{:.3}, {:.3}] µm); this is not a time-step problem — shorten the path (--slide-us, --speed-m-s), change --alpha or --offset-um, or enlarge the substrate (--substrate-um)", moved_um[0], moved_um[1])]
+    OffSubstrate {
+        /// Simulated time (µs) when detected.
+        t_us: f64,
+        /// Overhang beyond the substrate edge (µm).
+        over_um: f64,
+        /// Control-layer displacement since the start (µm).
+        moved_um: [f64; 2],
+    },
+    /// The slide path, checked before the run, takes the slider off the substrate.
+    #[error("the slide path leaves the substrate: {0}")]
+    Path(String),
     /// Checkpoint I/O or format problem.
     #[error("checkpoint {path}: {why}")]
     Checkpoint {

@@ -27,13 +27,18 @@ pub mod integrator;
 pub mod model;
 pub mod neighbor;
 pub mod params;
+pub mod path;
 pub mod protocol;
+pub mod reduction;
 pub mod stability;
 pub mod system;
 
 pub use error::DemError;
+pub use integrator::observe::Snapshot;
 pub use integrator::{Observables, Sim};
 pub use params::{DampingFrame, SimParams};
+pub use path::check_path;
+pub use reduction::{choose_model, ModelChoice, ModelRequest};
 pub use stability::{stable_step, StabilityInput, StableStep};
 pub use system::{from_scene, Start, StartInfo, SystemSpec};
 
@@ -83,21 +88,64 @@ pub fn stability_input(
     p_ref: f64,
 ) -> StabilityInput {
     let m = contact_model(scene, params, None);
+    let m_sphere = scene.material.sphere_mass(scene.sphere_radius);
+    let m_control = scene.material.sphere_mass(params.control_sphere_radius);
     StabilityInput {
-        m_sphere: scene.material.sphere_mass(scene.sphere_radius),
-        m_control: scene.material.sphere_mass(params.control_sphere_radius),
+        m_sphere,
+        m_control,
         n_slider,
         n_contacts,
         e_star: m.normal.hertz.e_star,
         g_star: m.tangential.g_star,
         r_eff: m.normal.hertz.r_eff,
         p_ref,
+        tilt_omega2: tilt_omega2(scene, params, m_sphere, m_control),
     }
 }
 
-/// Lays out `scene` (its θ, offset), starts it per `start`, estimates the stable step
-/// (contact stiffness at `max(1.5·P_max(surrogate), P_crit)`), and builds the [`Sim`] with
-/// `params.dt` or `dt_safety × dt_crit`.
+/// ω² (1/s²) of the control layer tilting on the mount springs: the largest eigenvalue of K_t
+/// over the smallest principal tilt inertia (layer, plus slider spheres with rigid-z). 0 when
+/// the mount has no springs.
+fn tilt_omega2(scene: &Scene, params: &SimParams, m_sphere: f64, m_control: f64) -> f64 {
+    let k = scene.tilt_stiffness_at(scene.slider.theta);
+    let eig = |a: f64, b: f64, d: f64| {
+        let m = 0.5 * (a + d);
+        let r = (0.25 * (a - d) * (a - d) + b * b).sqrt();
+        (m - r, m + r)
+    };
+    let (_, k_max) = eig(k[0][0], k[0][1], k[1][1]);
+    if k_max.is_nan() || k_max <= 0.0 {
+        return 0.0;
+    }
+    let sites = scene.slider_sites();
+    let n = sites.len() as f64;
+    let c = sites
+        .iter()
+        .fold([0.0, 0.0], |a, s| [a[0] + s[0] / n, a[1] + s[1] / n]);
+    let (mut sxx, mut syy, mut sxy) = (0.0, 0.0, 0.0);
+    for s in &sites {
+        let (x, y) = (s[0] - c[0], s[1] - c[1]);
+        sxx += x * x;
+        syy += y * y;
+        sxy += x * y;
+    }
+    let unit = if params.rigid_z {
+        m_control + m_sphere
+    } else {
+        m_control
+    };
+    let (i_min, _) = eig(syy, -sxy, sxx);
+    if i_min > 0.0 {
+        k_max / (unit * i_min)
+    } else {
+        0.0
+    }
+}
+
+/// Checks the slide path against the substrate ([`check_path`]), lays out `scene` (its θ,
+/// offset, mount), starts it per `start`, estimates the stable step (contact stiffness at
+/// `max(1.5·P_max(surrogate), P_crit)`), and builds the [`Sim`] with `params.dt` or
+/// `dt_safety × dt_crit`.
 pub fn prepare(
     scene: &Scene,
     params: SimParams,
@@ -111,6 +159,7 @@ pub fn prepare(
             "must be positive",
         ));
     }
+    check_path(scene, &params)?;
     let (spec, info) = from_scene(scene, &params, start)?;
     let p_ref = (1.5 * info.p_max).max(scene.coating.p_crit);
     let inp = stability_input(

@@ -62,6 +62,15 @@ pub struct SimParams {
     pub prune_substrate: bool,
     /// Extra margin (m) of reduction (a).
     pub prune_margin: f64,
+    /// Active set (exact to round-off): integrate step by step only the particles in or near
+    /// contact; the rest follow their rest state (substrate: tether site; slider: its site on
+    /// the control layer plus the common relative motion of all free slider spheres) plus, while
+    /// they ring down after a contact, an exactly propagated deviation. See `dem/README.md`.
+    pub active_set: bool,
+    /// Activation margin (m): a slider–substrate pair is integrated while its gap
+    /// (centre distance − 2R) is below this; the set is re-evaluated as soon as some particle
+    /// has moved `active_margin/2` since the last evaluation, so no pair can touch unnoticed.
+    pub active_margin: f64,
     /// Equilibration time under load (s), control layer held laterally. Study: 10 µs.
     pub equilibrate_time: f64,
     /// Relaxation time with the pulling spring attached and the support at rest (s). Study: 10 µs.
@@ -75,6 +84,15 @@ pub struct SimParams {
     pub sample_interval: f64,
     /// Lock-in: over the measuring window, slider advance / support advance below this → locked.
     pub lock_in_ratio: f64,
+    /// Smallest work chunk (particles) of the parallel passes. Chunk sizes depend only on the
+    /// work and this knob, never on the thread count, so results are bit-identical for any
+    /// number of threads.
+    pub chunk_min: usize,
+    /// Below this many active particles + pairs a step runs on one thread (a parallel pass
+    /// costs a few µs of fork-join); above it `Sim::run_steps` times both modes now and then
+    /// and keeps the faster (on a shared machine a second thread can be slower). 0 forces the
+    /// parallel passes (tests). Does not change results.
+    pub parallel_min_work: usize,
     /// Largest admissible overlap as a fraction of the sphere radius; beyond it the run stops
     /// with [`crate::DemError::Unstable`].
     pub overlap_bound: f64,
@@ -102,12 +120,16 @@ impl Default for SimParams {
             rigid_z: false,
             prune_substrate: false,
             prune_margin: 3e-6,
+            active_set: false,
+            active_margin: 20e-9,
             equilibrate_time: 10e-6,
             relax_time: 10e-6,
             slide_time: 300e-6,
             measure_from: 1.0 / 3.0,
             sample_interval: 0.1e-6,
             lock_in_ratio: 0.5,
+            chunk_min: 192,
+            parallel_min_work: 2500,
             overlap_bound: 0.1,
         }
     }

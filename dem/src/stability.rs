@@ -42,6 +42,8 @@ pub struct StabilityInput {
     pub r_eff: f64,
     /// Contact pressure at which the contact stiffness is evaluated (Pa).
     pub p_ref: f64,
+    /// ω² (1/s²) of the control layer tilting on its mount springs (0 without springs).
+    pub tilt_omega2: f64,
 }
 
 /// The stable-step estimate for `params` (reads `rigid_z` and the spring constants).
@@ -73,6 +75,9 @@ pub fn stable_step(inp: &StabilityInput, params: &SimParams) -> StableStep {
             "slider sphere on contact + z spring",
             (params.k_slider_z + sn) / ms,
         ));
+    }
+    if inp.tilt_omega2 > 0.0 {
+        modes.push(("control-layer tilt on the mount springs", inp.tilt_omega2));
     }
     let (mode, w2) = modes
         .into_iter()

@@ -2,7 +2,7 @@
 //! scene and [`DemParams`], and the writing of their outputs.
 
 use super::{checks, SceneArgs};
-use crate::study::dem_run::{DemOutcome, DemParams};
+use crate::study::dem_run::{DemOutcome, DemParams, ModelSpec};
 use crate::study::sink::csv_bytes;
 use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs};
 use anyhow::Result;
@@ -23,6 +23,28 @@ pub enum StartKind {
     Surrogate,
     /// Resting `--gap-nm` above first touch, falling under the load.
     Gap,
+}
+
+/// Which DEM model (`--model`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ModelArg {
+    /// The cheapest model within its measured error for this scene (reason printed).
+    Auto,
+    /// Slider spheres on their k_z springs.
+    Full,
+    /// Rigid-z: slider spheres rigid in z on the control layer.
+    Reduced,
+}
+
+impl ModelArg {
+    /// The engine's request.
+    pub fn request(self) -> dem::ModelRequest {
+        match self {
+            ModelArg::Auto => dem::ModelRequest::Auto,
+            ModelArg::Full => dem::ModelRequest::Full,
+            ModelArg::Reduced => dem::ModelRequest::Reduced,
+        }
+    }
 }
 
 /// DEM options shared by `equilibrate` and `slide`.
@@ -78,13 +100,24 @@ pub struct DemArgs {
         allow_hyphen_values = true
     )]
     pub gap_nm: f64,
+    /// Model: `auto` picks rigid-z where its measured error is small for this scene and keeps
+    /// the full model near coating failure, where stick-slip is expected and beyond the measured
+    /// stiffness ratio (the choice and its reason are printed and in the JSON); pruning and the
+    /// active set are exact and on in every model.
+    #[arg(long, value_enum, default_value_t = ModelArg::Auto)]
+    pub model: ModelArg,
     /// Reduction: slider spheres move rigidly with the control layer in z (replaces the stiff
-    /// 10⁶ N/m z-springs; allows a ~30× larger time step).
+    /// 10⁶ N/m z-springs; allows a ~30× larger time step). Same as `--model reduced`.
     #[arg(long = "rigid-z")]
     pub rigid_z: bool,
-    /// Reduction: leave out substrate spheres that the slider can never touch along its path.
+    /// Leave out substrate spheres that the slider can never touch along its path (exact; on in
+    /// every `--model`, kept for compatibility).
     #[arg(long)]
     pub prune: bool,
+    /// Integrate every particle every step instead of only the active set (the active set is
+    /// exact to round-off; this is for comparisons and timing).
+    #[arg(long = "no-active-set")]
+    pub no_active_set: bool,
     /// Constant friction coefficient (≥ 0) for every contact instead of the coating's
     /// pressure-switched μ1/μ2 (reference runs).
     #[arg(long, value_name = "MU", allow_hyphen_values = true)]
@@ -174,8 +207,6 @@ impl DemArgs {
             slide_time: us_to_s(slide_us),
             support_speed: speed,
             sample_interval: sample,
-            rigid_z: self.rigid_z,
-            prune_substrate: self.prune,
             ..SimParams::default()
         };
         let params = DemParams {
@@ -194,6 +225,11 @@ impl DemArgs {
                 self.checkpoint.clone()
             } else {
                 None
+            },
+            model: ModelSpec {
+                request: self.model.request(),
+                force_rigid_z: self.rigid_z,
+                active_set: !self.no_active_set,
             },
         };
         Ok((sc, params))

@@ -9,7 +9,7 @@ use super::rows::{label, DemCase, DemSample, RunInfo};
 use anyhow::{Context, Result};
 use dem::model::Friction;
 use dem::protocol::{run, step_counts, Phase, RunIo, RunKind};
-use dem::{prepare, Prepared, SimParams, Start};
+use dem::{choose_model, prepare, ModelChoice, ModelRequest, Prepared, SimParams, Start};
 use std::path::PathBuf;
 use surrogate::units::{n_to_mn, rad_to_deg, s_to_us};
 use surrogate::Scene;
@@ -32,6 +32,48 @@ pub struct DemParams {
     pub io: RunIo,
     /// Continue from this checkpoint if it exists (same inputs; bit-identical result).
     pub resume: Option<PathBuf>,
+    /// Which model runs (`--model`, with the CLI's overrides); decides `sim.rigid_z`,
+    /// `sim.prune_substrate` and `sim.active_set`.
+    pub model: ModelSpec,
+}
+
+/// The model asked for: `--model auto|full|reduced`, plus `--rigid-z` (force rigid-z) and
+/// `--no-active-set` (integrate every particle).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ModelSpec {
+    /// auto (default), full or reduced.
+    pub request: ModelRequest,
+    /// Rigid-z whatever `request` decides (the old `--rigid-z` flag).
+    pub force_rigid_z: bool,
+    /// Use the active set (exact to round-off; off only for comparisons and timing).
+    pub active_set: bool,
+}
+
+impl Default for ModelSpec {
+    fn default() -> Self {
+        ModelSpec {
+            request: ModelRequest::Auto,
+            force_rigid_z: false,
+            active_set: true,
+        }
+    }
+}
+
+/// The reductions for `scene` and `sim` (pulling direction already set) per `spec`, with the
+/// reason ([`dem::choose_model`]; costs one surrogate solve and, for `auto` with sliding, the
+/// Prandtl–Tomlinson path of ~40 solves).
+pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec) -> Result<ModelChoice> {
+    let mut c = choose_model(scene, sim, spec.request)?;
+    if spec.force_rigid_z && !c.rigid_z {
+        c.rigid_z = true;
+        c.model = "reduced";
+        c.reason = format!("rigid-z forced by --rigid-z (κ = {:.4})", c.stiffness_ratio);
+    }
+    if !spec.active_set {
+        c.active_set = false;
+        c.reason.push_str("; active set off (--no-active-set)");
+    }
+    Ok(c)
 }
 
 /// A finished (or failed) DEM run.
@@ -90,6 +132,9 @@ pub fn run_dem(
     let (line, dir) = direction(scene, p);
     let mut sim_params = p.sim.clone();
     sim_params.alpha = dir;
+    let choice = choose(scene, &sim_params, p.model)?;
+    choice.apply(&mut sim_params);
+    progress.note(&format!("model: {} ({})", choice.model, choice.reason));
     let mut prepared = prepare(scene, sim_params, p.start, p.friction)?;
     let sim = &mut prepared.sim;
     progress.note(&format!(
@@ -184,6 +229,12 @@ pub fn run_dem(
         particle_steps_per_s: steps as f64 * sim.particles() as f64 / wall_s.max(1e-9),
         rigid_z: sim.params.rigid_z,
         prune: sim.params.prune_substrate,
+        model: choice.model,
+        model_requested: choice.requested,
+        model_reason: choice.reason,
+        active_set: sim.params.active_set,
+        mean_active_particles: sim.state.stats.particle_steps as f64 / sim.state.step.max(1) as f64
+            + 1.0,
     };
     let case = DemCase {
         pattern: scene.pattern.clone(),

@@ -104,8 +104,9 @@ pub fn dem(scene: &surrogate::Scene, p: &DemParams) -> Value {
             dem::Start::Surrogate => json!("surrogate"),
             dem::Start::Gap(g) => json!({"gap_nm": label(surrogate::units::m_to_nm(g))}),
         },
-        "rigid_z": s.rigid_z,
-        "prune": s.prune_substrate,
+        "model": p.model.request.name(),
+        "force_rigid_z": p.model.force_rigid_z,
+        "active_set": p.model.active_set,
         "friction": match &p.friction {
             None => json!("coating (pressure-switched mu1/mu2)"),
             Some(dem::model::Friction::Constant(c)) => json!({"constant_mu": c.mu}),

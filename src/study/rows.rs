@@ -347,6 +347,16 @@ pub struct RunInfo {
     pub rigid_z: bool,
     /// Substrate pruning in use.
     pub prune: bool,
+    /// Model in use: `full` or `reduced` (= rigid-z).
+    pub model: &'static str,
+    /// `--model` as given: `auto`, `full` or `reduced`.
+    pub model_requested: &'static str,
+    /// Why this model (κ = S_n/k_z, P_max, Prandtl–Tomlinson η; dem/README.md "Model choice").
+    pub model_reason: String,
+    /// Active set in use.
+    pub active_set: bool,
+    /// Mean number of particles integrated per step (the active set; all particles without it).
+    pub mean_active_particles: f64,
 }
 
 /// What a DEM summary says about its configuration (user units): enough to tell two summaries

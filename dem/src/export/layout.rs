@@ -250,6 +250,10 @@ mod tests {
             control_z: 2.9e-6,
             sphere_radius: 1.5e-6,
             material: Material::default(),
+            tilt_stiffness: None,
+            disc: None,
+            substrate_size: None,
+            scene: None,
         };
         let local = [[-1.0, -1.0], [2.0, -1.0], [-1.0, 2.0]];
         let l = layout(&spec, &local, &SimParams::default(), 3e-6);

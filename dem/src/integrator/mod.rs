@@ -1,6 +1,14 @@
-//! Time integration: [`Sim`] holds a system, its contact model and state, and advances it by
-//! velocity-Verlet steps with 0 K Langevin-equivalent viscous damping ([`Sim::step`]).
+//! The velocity-Verlet engine ([`Sim`]): the step pipeline (`sim.rs`), the slider body and the
+//! control layer's generalized coordinates (`body.rs`), the force passes (`forces.rs`), the
+//! active set (`active.rs`), observables and checks (`observe.rs`) and the work chunking
+//! (`chunks.rs`).
 
+pub(crate) mod active;
+pub(crate) mod body;
+pub(crate) mod chunks;
+pub(crate) mod forces;
+pub mod observe;
+pub(crate) mod ring;
 pub mod sim;
 
 pub use sim::{Observables, Sim};

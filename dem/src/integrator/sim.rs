@@ -1,9 +1,28 @@
-//! [`Sim`]: the DEM engine (forces + velocity-Verlet).
+//! [`Sim`]: the DEM engine — the velocity-Verlet pipeline of one step and the engine's state.
+//!
+//! One step, in order (each stage a function below or in the sibling files):
+//! 1. control layer (translation + tilts) and the common mode of the free slider spheres:
+//!    first half kick and drift (O(1));
+//! 2. the active particles: first half kick and drift, with their displacement since the last
+//!    active-set evaluation (one parallel pass, [`Sim::kick_drift`]);
+//! 3. if some particle may have moved `margin/2`: re-evaluate the active set (and rebuild the
+//!    candidate pair list when needed) ([`super::active`]);
+//! 4. forces: pair forces fused with the slider-sphere forces and their second half kick (one
+//!    parallel pass over slider chunks, which also returns each chunk's reaction on the control
+//!    layer), then the substrate spheres (one parallel pass), then the control layer and the
+//!    common mode (O(1)) ([`super::forces`]).
+//!
+//! Work is split into chunks whose size depends only on the work, and partial sums are added
+//! in chunk order, so results are bit-identical for any thread count.
 
-use crate::model::{ContactModel, FrictionLaw, NormalModel, PairOut};
-use crate::neighbor::{build_pairs, needs_rebuild};
-use crate::params::{DampingFrame, SimParams};
-use crate::system::{State, SystemSpec};
+// Small dense index loops read like the math they implement.
+#![allow(clippy::needless_range_loop)]
+
+use super::body::{dot3, Body};
+use super::chunks::Chunking;
+use crate::model::ContactModel;
+use crate::params::SimParams;
+use crate::system::{Active, State, SystemSpec};
 use crate::DemError;
 use rayon::prelude::*;
 
@@ -32,13 +51,46 @@ pub struct Observables {
     pub support_travel: f64,
     /// Control-layer travel along α since the spring was attached (m).
     pub slider_travel: f64,
+    /// Control-layer tilts `[t_x, t_y]` (rad).
+    pub tilt: [f64; 2],
+    /// Slider spheres integrated in the last step (all of them without the active set).
+    pub active_slider: usize,
+    /// Substrate spheres integrated in the last step.
+    pub active_substrate: usize,
+}
+
+/// Derived index data of the active set (rebuilt at each evaluation and after a checkpoint
+/// load; never checkpointed).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Index {
+    /// Per active slider sphere: its active pairs are `sl_pair_start[a]..sl_pair_start[a+1]`.
+    pub sl_pair_start: Vec<u32>,
+    /// Per active pair: the dense index of its substrate sphere.
+    pub pair_b: Vec<u32>,
+    /// Per active substrate sphere: its pairs are `sub_items[sub_start[b]..sub_start[b+1]]`.
+    pub sub_start: Vec<u32>,
+    /// Active-pair indices, grouped by substrate sphere, ascending within a group.
+    pub sub_items: Vec<u32>,
+    /// Inactive slider spheres.
+    pub n_in: usize,
+    /// Σ g gᵀ over the inactive slider spheres.
+    pub g_in: [[f64; 3]; 3],
+    /// Σ g over the inactive slider spheres.
+    pub s_in: [f64; 3],
+    /// Inactive candidate pairs whose coating failed at some time.
+    pub ever_failed_inactive: usize,
+    /// Chunking of the slider and substrate passes.
+    pub chunks: Chunking,
+    /// Per slider chunk: its reaction on the control layer (lateral x, y; generalized z, t_x,
+    /// t_y).
+    pub parts: Vec<[f64; 5]>,
 }
 
 /// The DEM engine: static layout, contact model, knobs, state and work buffers.
 ///
-/// Per step: O(N + P) work (N particles, P listed pairs), no allocation except at neighbour
-/// rebuilds; pair forces are computed in parallel into a per-pair buffer and reduced per
-/// particle in a fixed order, so results are bit-identical for any thread count.
+/// Per step: O(n + p) work over the n *active* particles and their p pairs (all particles
+/// without the active set), no allocation except at active-set evaluations and neighbour
+/// rebuilds, bit-identical for any thread count.
 pub struct Sim {
     /// Static layout.
     pub spec: SystemSpec,
@@ -53,24 +105,52 @@ pub struct Sim {
     /// Dynamic state.
     pub state: State,
     pub(crate) sub_h: Vec<f64>,
-    site_off: Vec<[f64; 2]>,
-    m_s: f64,
-    m_cl: f64,
-    m_eff: f64,
-    pub(crate) out: Vec<PairOut>,
-    sl_start: Vec<u32>,
-    sub_start: Vec<u32>,
-    sub_items: Vec<u32>,
+    pub(crate) body: Body,
+    pub(crate) idx: Index,
+    pub(crate) h_min: f64,
+    pub(crate) overhang0: f64,
+    pub(crate) tuner: super::chunks::Tuner,
 }
 
+/// One slider chunk of the kick-drift pass: ((x, v), f), (x at the evaluation, ids).
+type SliderChunk<'a> = (
+    ((&'a mut [[f64; 3]], &'a mut [[f64; 3]]), &'a [[f64; 3]]),
+    (&'a [[f64; 3]], &'a [u32]),
+);
+/// One substrate chunk of the kick-drift pass: (index, ((x, v), (f, x at the evaluation))).
+type SubstrateChunk<'a> = (
+    usize,
+    (
+        (&'a mut [[f64; 2]], &'a mut [[f64; 2]]),
+        (&'a mut [[f64; 2]], &'a [[f64; 2]]),
+    ),
+);
+
 #[inline]
-fn kick(v: &mut f64, f: f64, h: f64, m: f64) {
+pub(crate) fn kick(v: &mut f64, f: f64, h: f64, m: f64) {
     *v += h * f / m;
+}
+
+/// Max that propagates NaN (a non-finite displacement must reach the caller).
+#[inline]
+fn nan_max(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.max(b)
+    }
+}
+
+/// Kick with the precomputed `h/m` (no division in the particle loops).
+#[inline]
+pub(crate) fn kick_hm(v: &mut f64, f: f64, hm: f64) {
+    *v += f * hm;
 }
 
 impl Sim {
     /// Creates the engine at rest in the layout `spec`, with step `dt` (s) and the critical-step
-    /// estimate `dt_crit` (s, for messages). Builds the pair list and the initial forces.
+    /// estimate `dt_crit` (s, for messages). Builds the pair list, the active set and the
+    /// initial forces.
     pub fn new(
         spec: SystemSpec,
         model: ContactModel,
@@ -88,38 +168,81 @@ impl Sim {
                 "the slider has no spheres",
             ));
         }
-        let n = spec.slider_sites.len();
-        let mut c = [0.0; 2];
-        for s in &spec.slider_sites {
-            c[0] += s[0];
-            c[1] += s[1];
+        if params.active_set {
+            let m = params.active_margin;
+            if !(m.is_finite() && m > 0.0 && m <= params.skin) {
+                return Err(DemError::invalid(
+                    "active_margin_nm",
+                    m * 1e9,
+                    &format!(
+                        "must be positive and at most the neighbour skin ({} nm)",
+                        params.skin * 1e9
+                    ),
+                ));
+            }
+            let ks = [
+                params.k_slider_xy,
+                params.k_substrate_xy,
+                if params.rigid_z {
+                    1.0
+                } else {
+                    params.k_slider_z
+                },
+            ];
+            if ks.iter().any(|k| !(k.is_finite() && *k > 0.0)) {
+                return Err(DemError::invalid(
+                    "active_set",
+                    "on",
+                    "needs positive slider and tether springs (a free particle is never at rest)",
+                ));
+            }
         }
-        c[0] /= n as f64;
-        c[1] /= n as f64;
-        let site_off = spec
+        let body = Body::new(&spec, &params);
+        let n = spec.slider_sites.len();
+        let nb = spec.substrate.len();
+        let sl_x: Vec<[f64; 3]> = spec
             .slider_sites
             .iter()
-            .map(|s| [s[0] - c[0], s[1] - c[1]])
+            .zip(&spec.slider_z)
+            .map(|(s, z)| [s[0], s[1], *z])
             .collect();
-        let m_s = spec.sphere_mass();
-        let m_cl = n as f64 * spec.material.sphere_mass(params.control_sphere_radius);
-        let nb = spec.substrate.len();
-        let state = State {
-            sub_x: spec.substrate.iter().map(|p| [p[0], p[1]]).collect(),
-            sub_v: vec![[0.0; 2]; nb],
-            sub_f: vec![[0.0; 2]; nb],
-            sl_x: spec
-                .slider_sites
-                .iter()
-                .zip(&spec.slider_z)
-                .map(|(s, z)| [s[0], s[1], *z])
-                .collect(),
+        let sub_x: Vec<[f64; 2]> = spec.substrate.iter().map(|p| [p[0], p[1]]).collect();
+        // Every particle starts in the dense set; the first evaluation keeps those that touch
+        // or deviate from their rest state.
+        let act = Active {
+            sl: (0..n as u32).collect(),
+            sl_x: sl_x.clone(),
             sl_v: vec![[0.0; 3]; n],
             sl_f: vec![[0.0; 3]; n],
-            cl_x: [c[0], c[1], spec.control_z],
+            sl_x0: sl_x.clone(),
+            sub: (0..nb as u32).collect(),
+            sub_x: sub_x.clone(),
+            sub_v: vec![[0.0; 2]; nb],
+            sub_f: vec![[0.0; 2]; nb],
+            sub_x0: sub_x.clone(),
+            ..Default::default()
+        };
+        let state = State {
+            sub_v: vec![[0.0; 2]; nb],
+            sl_v: vec![[0.0; 3]; n],
+            ref_sub: sub_x.clone(),
+            ref_sl: sl_x.clone(),
+            sub_x,
+            sl_x,
+            act,
+            cl_x: [body.centre0[0], body.centre0[1], spec.control_z],
             held_xy: true,
             ..Default::default()
         };
+        let h_min = spec
+            .substrate
+            .iter()
+            .map(|p| p[2])
+            .fold(f64::INFINITY, f64::min);
+        let overhang0 = spec
+            .disc
+            .and_then(|(c, _)| spec.overhang_at(c))
+            .unwrap_or(f64::NEG_INFINITY);
         let mut sim = Sim {
             sub_h: spec.substrate.iter().map(|p| p[2]).collect(),
             spec,
@@ -128,28 +251,25 @@ impl Sim {
             dt,
             dt_crit,
             state,
-            site_off,
-            m_s,
-            m_cl,
-            m_eff: 0.5 * m_s,
-            out: Vec::new(),
-            sl_start: Vec::new(),
-            sub_start: Vec::new(),
-            sub_items: Vec::new(),
+            body,
+            idx: Index::default(),
+            h_min,
+            overhang0,
+            tuner: Default::default(),
         };
-        sim.rebuild();
-        sim.compute_forces();
+        sim.evaluate(true);
+        sim.forces(0.0, false);
         Ok(sim)
     }
 
     /// Control-layer mass (kg): one control sphere per slider sphere.
     pub fn control_mass(&self) -> f64 {
-        self.m_cl
+        self.body.m_cl
     }
 
     /// Mass of a slider / substrate sphere (kg).
     pub fn sphere_mass(&self) -> f64 {
-        self.m_s
+        self.body.m_s
     }
 
     /// Number of slider spheres.
@@ -162,266 +282,372 @@ impl Sim {
         self.state.sub_x.len()
     }
 
-    /// Moving particles integrated per step (substrate + slider + 1 control body).
+    /// Moving particles of the model (substrate + slider + 1 control body), whether or not the
+    /// active set integrates them all.
     pub fn particles(&self) -> usize {
         self.n_substrate() + self.n_slider() + 1
     }
 
+    /// Particles integrated in the current step (active slider + substrate spheres + 1).
+    pub fn active_particles(&self) -> usize {
+        self.state.act.sl.len() + self.state.act.sub.len() + 1
+    }
+
     /// Rest offset (m) of slider sphere `i` from the control-layer centre of mass.
     pub fn site_offset(&self, i: usize) -> [f64; 2] {
-        self.site_off[i]
+        self.body.off[i]
     }
 
-    /// Rebuilds the pair list from the current positions (keeps histories) and the index maps.
-    pub fn rebuild(&mut self) {
-        let s = &mut self.state;
-        let cutoff = 2.0 * self.spec.sphere_radius + self.params.skin;
-        s.pairs = build_pairs(&s.sub_x, &self.sub_h, &s.sl_x, cutoff, &s.pairs);
-        s.ref_sub.clone_from(&s.sub_x);
-        s.ref_sl.clone_from(&s.sl_x);
-        s.builds += 1;
-        self.index_pairs();
+    /// Whether the control layer has tilt degrees of freedom (mount `free` or `springs`).
+    pub fn tilting(&self) -> bool {
+        self.body.tilt.is_some()
     }
 
-    /// Recomputes the per-particle pair index maps (after a rebuild or a checkpoint load).
-    pub fn index_pairs(&mut self) {
-        let p = &self.state.pairs;
-        let n = self.state.sl_x.len();
-        let nb = self.state.sub_x.len();
-        self.sl_start = vec![0; n + 1];
-        for &i in &p.i {
-            self.sl_start[i as usize + 1] += 1;
-        }
-        for i in 0..n {
-            self.sl_start[i + 1] += self.sl_start[i];
-        }
-        self.sub_start = vec![0; nb + 1];
-        for &j in &p.j {
-            self.sub_start[j as usize + 1] += 1;
-        }
-        for j in 0..nb {
-            self.sub_start[j + 1] += self.sub_start[j];
-        }
-        let mut fill = self.sub_start.clone();
-        self.sub_items = vec![0; p.j.len()];
-        for (k, &j) in p.j.iter().enumerate() {
-            self.sub_items[fill[j as usize] as usize] = k as u32;
-            fill[j as usize] += 1;
-        }
-        self.out = vec![PairOut::default(); p.i.len()];
+    /// Generalized velocity `q̇ = (Ż, ṫ_x, ṫ_y)` of the control layer.
+    #[inline]
+    pub(crate) fn qdot(&self) -> [f64; 3] {
+        let s = &self.state;
+        [s.cl_v[2], s.tilt_v[0], s.tilt_v[1]]
     }
 
-    /// Computes every force from the current positions and (half-step) velocities; updates the
-    /// tangential histories by one step.
-    pub fn compute_forces(&mut self) {
-        let dt = self.dt;
-        let m_eff = self.m_eff;
-        let model = &self.model;
-        let p = &self.params;
-        let s = &mut self.state;
-        let sub_h = &self.sub_h;
-        // 1. pair forces, in parallel into the per-pair buffer
-        {
-            let (sl_x, sl_v, sub_x, sub_v) = (&s.sl_x, &s.sl_v, &s.sub_x, &s.sub_v);
-            self.out
-                .par_iter_mut()
-                .with_min_len(512)
-                .zip(s.pairs.hist.par_iter_mut())
-                .zip(s.pairs.i.par_iter())
-                .zip(s.pairs.j.par_iter())
-                .for_each(|(((o, h), &i), &j)| {
-                    let (i, j) = (i as usize, j as usize);
-                    let a = sl_x[i];
-                    let b = sub_x[j];
-                    let va = sl_v[i];
-                    let vb = sub_v[j];
-                    let d = [a[0] - b[0], a[1] - b[1], a[2] - sub_h[j]];
-                    let v = [va[0] - vb[0], va[1] - vb[1], va[2]];
-                    *o = model.pair(d, v, &mut h.xi, m_eff, dt);
-                    h.ever_failed |= o.failed;
-                });
-        }
-        let inv_tau = if p.damping_time.is_finite() && p.damping_time > 0.0 {
-            1.0 / p.damping_time
+    /// Generalized position `q = (Z, t_x, t_y)`.
+    #[inline]
+    pub(crate) fn q(&self) -> [f64; 3] {
+        let s = &self.state;
+        [s.cl_x[2], s.tilt[0], s.tilt[1]]
+    }
+
+    /// 1 / damping time (1/s), 0 when damping is off.
+    #[inline]
+    pub(crate) fn inv_tau(&self) -> f64 {
+        let t = self.params.damping_time;
+        if t.is_finite() && t > 0.0 {
+            1.0 / t
         } else {
             0.0
-        };
-        let rel = p.damping_frame == DampingFrame::Relative;
-        let (cx, cv) = (s.cl_x, s.cl_v);
-        let vref = if rel { cv } else { [0.0; 3] };
-        let m_s = self.m_s;
-        let (kxy, kz, rigid) = (p.k_slider_xy, p.k_slider_z, p.rigid_z);
-        // 2. slider spheres
-        {
-            let out = &self.out;
-            let st = &self.sl_start;
-            let off = &self.site_off;
-            let (sl_x, sl_v) = (&s.sl_x, &s.sl_v);
-            s.sl_f
-                .par_iter_mut()
-                .with_min_len(256)
-                .enumerate()
-                .for_each(|(i, f)| {
-                    let mut acc = [0.0; 3];
-                    for o in &out[st[i] as usize..st[i + 1] as usize] {
-                        acc[0] += o.force[0];
-                        acc[1] += o.force[1];
-                        acc[2] += o.force[2];
-                    }
-                    let x = sl_x[i];
-                    let v = sl_v[i];
-                    acc[0] += kxy * (cx[0] + off[i][0] - x[0]) - m_s * (v[0] - vref[0]) * inv_tau;
-                    acc[1] += kxy * (cx[1] + off[i][1] - x[1]) - m_s * (v[1] - vref[1]) * inv_tau;
-                    if !rigid {
-                        acc[2] += kz * (cx[2] - x[2]) - m_s * (v[2] - vref[2]) * inv_tau;
-                    }
-                    *f = acc;
-                });
         }
-        // 3. substrate spheres
-        {
-            let out = &self.out;
-            let (ss, si) = (&self.sub_start, &self.sub_items);
-            let kt = p.k_substrate_xy;
-            let spec = &self.spec.substrate;
-            let (sub_x, sub_v) = (&s.sub_x, &s.sub_v);
-            s.sub_f
-                .par_iter_mut()
-                .with_min_len(1024)
-                .enumerate()
-                .for_each(|(j, f)| {
-                    let x = sub_x[j];
-                    let v = sub_v[j];
-                    let mut acc = [
-                        kt * (spec[j][0] - x[0]) - m_s * v[0] * inv_tau,
-                        kt * (spec[j][1] - x[1]) - m_s * v[1] * inv_tau,
-                    ];
-                    for &k in &si[ss[j] as usize..ss[j + 1] as usize] {
-                        let o = &out[k as usize];
-                        acc[0] -= o.force[0];
-                        acc[1] -= o.force[1];
-                    }
-                    *f = acc;
-                });
-        }
-        // 4. control layer (sequential, fixed order)
-        let mut f = [0.0; 3];
-        for (i, x) in s.sl_x.iter().enumerate() {
-            f[0] += kxy * (x[0] - cx[0] - self.site_off[i][0]);
-            f[1] += kxy * (x[1] - cx[1] - self.site_off[i][1]);
-            if rigid {
-                f[2] += s.sl_f[i][2];
-            } else {
-                f[2] += kz * (x[2] - cx[2]);
-            }
-        }
-        f[2] -= p.load;
-        let mz = z_mass(self.m_cl, m_s, s.sl_x.len(), rigid);
-        f[2] -= mz * cv[2] * inv_tau;
-        let vr = if rel { s.support_v } else { [0.0; 2] };
-        f[0] -= self.m_cl * (cv[0] - vr[0]) * inv_tau;
-        f[1] -= self.m_cl * (cv[1] - vr[1]) * inv_tau;
-        if s.spring_on {
-            let d = spring_stretch(p, s.support, cx);
-            f[0] += p.k0 * d[0];
-            f[1] += p.k0 * d[1];
-        }
-        s.cl_f = f;
     }
 
-    fn half_kick(&mut self) {
+    /// Half-displacement limit (m) that triggers an active-set evaluation.
+    #[inline]
+    fn trigger(&self) -> f64 {
+        if self.params.active_set {
+            0.5 * self.params.active_margin
+        } else {
+            0.5 * self.params.skin
+        }
+    }
+
+    /// One velocity-Verlet step (see the module doc). Errors with [`DemError::Unstable`] when
+    /// a position or the control layer's state is no longer finite.
+    pub fn step(&mut self) -> Result<(), DemError> {
+        self.step_inner(false, false)
+    }
+
+    /// One step. `fused`: the substrate spheres' force and second half kick of the previous step
+    /// were deferred and are done in this step's first pass, fused with their first half kick
+    /// and drift. `defer`: leave this step's substrate force and second half kick to the next
+    /// step. Each particle sees the same arithmetic either way (bit-identical results).
+    fn step_inner(&mut self, fused: bool, defer: bool) -> Result<(), DemError> {
         let h = 0.5 * self.dt;
-        let m = self.m_s;
-        let rigid = self.params.rigid_z;
+        self.kick_control(h);
+        self.kick_common(h);
+        self.drift_frame();
+        let d2 = self.kick_drift(h, fused);
+        if !d2.is_finite() {
+            return Err(self.unstable("non-finite particle position".into()));
+        }
+        let lim = self.trigger();
+        let inactive_moves = self.idx.n_in > 0 || !self.state.ringing.sub.is_empty();
+        if d2 > lim * lim || (inactive_moves && self.frame_disp() > lim) {
+            self.evaluate(false);
+        }
+        self.forces(h, defer);
         let s = &mut self.state;
-        s.sub_v
-            .par_iter_mut()
-            .with_min_len(2048)
-            .zip(s.sub_f.par_iter())
-            .for_each(|(v, f)| {
-                kick(&mut v[0], f[0], h, m);
-                kick(&mut v[1], f[1], h, m);
-            });
-        s.sl_v
-            .par_iter_mut()
-            .with_min_len(1024)
-            .zip(s.sl_f.par_iter())
-            .for_each(|(v, f)| {
-                kick(&mut v[0], f[0], h, m);
-                kick(&mut v[1], f[1], h, m);
-                if !rigid {
-                    kick(&mut v[2], f[2], h, m);
+        s.step += 1;
+        s.t = s.step as f64 * self.dt;
+        s.stats.particle_steps += (s.act.sl.len() + s.act.sub.len()) as u64;
+        let fin = s.cl_x.iter().chain(&s.cl_v).chain(&s.tilt).chain(&s.tilt_v);
+        if !fin.into_iter().all(|v| v.is_finite()) {
+            return Err(self.unstable("non-finite control-layer state".into()));
+        }
+        Ok(())
+    }
+
+    /// Runs `n` steps, bit-identical to `n` calls of [`Sim::step`] but with two parallel passes
+    /// per step instead of three: between two steps the substrate spheres' force and second
+    /// half kick are fused with their next first half kick and drift (the substrate force needs
+    /// only the pair forces of the slider pass and the substrate's own state). The calling
+    /// thread joins the rayon pool for the duration (no cross-thread hand-off per pass).
+    ///
+    /// Whether the eligible passes actually run in parallel is re-decided every few calls by
+    /// timing both modes ([`super::chunks::Tuner`]): never slower with more threads, and the
+    /// results do not depend on it.
+    pub fn run_steps(&mut self, n: u64) -> Result<(), DemError> {
+        let mut res = Ok(());
+        // parallel_min_work = 0 forces the parallel passes (no timing probes)
+        let eligible = self.idx.chunks.par && self.params.parallel_min_work > 0;
+        let mode = !eligible || self.tuner.begin();
+        self.tuner.use_par_now = mode;
+        let t0 = std::time::Instant::now();
+        rayon::scope(|_| {
+            for k in 0..n {
+                if let Err(e) = self.step_inner(k > 0, k + 1 < n) {
+                    res = Err(e);
+                    break;
                 }
-            });
-        let mz = z_mass(self.m_cl, m, s.sl_x.len(), rigid);
+            }
+        });
+        if eligible && n > 0 {
+            self.tuner.end(t0.elapsed().as_secs_f64() / n as f64);
+        }
+        self.tuner.use_par_now = self.tuner.use_par;
+        res
+    }
+
+    /// Whether the eligible passes run in parallel in this call.
+    #[inline]
+    pub(crate) fn par(&self) -> bool {
+        self.idx.chunks.par && self.tuner.use_par_now
+    }
+
+    /// First half kick of the control layer (lateral unless held; Z and the tilts through the
+    /// mass matrix).
+    fn kick_control(&mut self, h: f64) {
+        let s = &mut self.state;
         if s.held_xy {
             s.cl_v[0] = 0.0;
             s.cl_v[1] = 0.0;
         } else {
-            kick(&mut s.cl_v[0], s.cl_f[0], h, self.m_cl);
-            kick(&mut s.cl_v[1], s.cl_f[1], h, self.m_cl);
+            kick(&mut s.cl_v[0], s.cl_f[0], h, self.body.m_cl);
+            kick(&mut s.cl_v[1], s.cl_f[1], h, self.body.m_cl);
         }
-        kick(&mut s.cl_v[2], s.cl_f[2], h, mz);
-        if rigid {
-            let vz = s.cl_v[2];
-            s.sl_v
-                .par_iter_mut()
-                .with_min_len(1024)
-                .for_each(|v| v[2] = vz);
+        match &self.body.tilt {
+            None => kick(&mut s.cl_v[2], s.cl_f[2], h, self.body.mz),
+            Some(t) => {
+                let a = super::body::mat_vec(&t.m_inv, [s.cl_f[2], s.tilt_f[0], s.tilt_f[1]]);
+                s.cl_v[2] += h * a[0];
+                s.tilt_v[0] += h * a[1];
+                s.tilt_v[1] += h * a[2];
+            }
         }
     }
 
-    fn drift(&mut self) {
+    /// Half kick of the common mode and of the aggregate of the ringing deviations, with their
+    /// forces from the last force evaluation.
+    fn kick_common(&mut self, h: f64) {
+        let m = self.body.m_s;
+        let c = &mut self.state.common;
+        for k in 0..2 {
+            kick(&mut c.v[k], c.fu[k], h, m);
+            kick(&mut c.dv[k], c.fd[k], h, m);
+        }
+        if !self.params.rigid_z {
+            for k in 0..3 {
+                kick(&mut c.s[k], c.fw[k], h, m);
+                kick(&mut c.dzv[k], c.fdz[k], h, m);
+            }
+        }
+    }
+
+    /// Drift of the control layer, the support and the common mode (relative to the layer).
+    fn drift_frame(&mut self) {
         let dt = self.dt;
         let rigid = self.params.rigid_z;
         let s = &mut self.state;
-        s.sub_x
-            .par_iter_mut()
-            .with_min_len(2048)
-            .zip(s.sub_v.par_iter())
-            .for_each(|(x, v)| {
-                x[0] += dt * v[0];
-                x[1] += dt * v[1];
-            });
         for k in 0..3 {
             s.cl_x[k] += dt * s.cl_v[k];
         }
-        let z = s.cl_x[2];
-        s.sl_x
-            .par_iter_mut()
-            .with_min_len(1024)
-            .zip(s.sl_v.par_iter())
-            .for_each(|(x, v)| {
+        if self.body.tilt.is_some() {
+            s.tilt[0] += dt * s.tilt_v[0];
+            s.tilt[1] += dt * s.tilt_v[1];
+        }
+        s.support[0] += dt * s.support_v[0];
+        s.support[1] += dt * s.support_v[1];
+        let c = &mut s.common;
+        for k in 0..2 {
+            c.u[k] += dt * (c.v[k] - s.cl_v[k]);
+            c.d[k] += dt * c.dv[k];
+        }
+        if !rigid {
+            let qd = [s.cl_v[2], s.tilt_v[0], s.tilt_v[1]];
+            for k in 0..3 {
+                c.w[k] += dt * (c.s[k] - qd[k]);
+                c.dz[k] += dt * c.dzv[k];
+            }
+        }
+    }
+
+    /// First half kick and drift of the active particles; returns the largest squared
+    /// displacement since the last active-set evaluation (m²). One parallel pass. With `fused`
+    /// the substrate spheres first get their deferred force and second half kick of the
+    /// previous step ([`super::forces::SubstrateForce`]).
+    fn kick_drift(&mut self, h: f64, fused: bool) -> f64 {
+        let inv_tau = self.inv_tau();
+        let sf = super::forces::SubstrateForce::new(
+            &self.idx,
+            &self.spec,
+            &self.params,
+            self.body.m_s,
+            inv_tau,
+            h,
+        );
+        let dt = self.dt;
+        let hm = h / self.body.m_s;
+        let rigid = self.params.rigid_z;
+        let q = self.q();
+        let qd = self.qdot();
+        let tilting = self.body.tilt.is_some();
+        let off = &self.body.off;
+        let par = self.par();
+        let Chunking { sl, sub, .. } = self.idx.chunks;
+        let crate::system::Active {
+            sl: sl_ids,
+            sl_x,
+            sl_v,
+            sl_f,
+            sl_x0,
+            sub: sub_ids,
+            sub_x,
+            sub_v,
+            sub_f,
+            sub_x0,
+            out,
+            ..
+        } = &mut self.state.act;
+        let (sub_ids, out) = (&*sub_ids, &*out);
+        let slider = |(((x, v), f), (x0, ids)): SliderChunk| {
+            // largest squared displacement; the plain sum only flags a non-finite value (two
+            // independent accumulators, no NaN-aware max in the loop's dependency chain)
+            let (mut d2, mut sum) = (0.0f64, 0.0f64);
+            for ((((x, v), f), x0), &i) in x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0).zip(ids) {
+                kick_hm(&mut v[0], f[0], hm);
+                kick_hm(&mut v[1], f[1], hm);
                 x[0] += dt * v[0];
                 x[1] += dt * v[1];
                 if rigid {
-                    x[2] = z;
+                    if tilting {
+                        let g = super::body::g_of(off[i as usize]);
+                        x[2] = dot3(g, q);
+                        v[2] = dot3(g, qd);
+                    } else {
+                        x[2] = q[0];
+                        v[2] = qd[0];
+                    }
                 } else {
+                    kick_hm(&mut v[2], f[2], hm);
                     x[2] += dt * v[2];
                 }
-            });
-        s.support[0] += dt * s.support_v[0];
-        s.support[1] += dt * s.support_v[1];
+                let d = [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]];
+                let m = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                sum += m;
+                if m > d2 {
+                    d2 = m;
+                }
+            }
+            if sum.is_finite() {
+                d2
+            } else {
+                f64::NAN
+            }
+        };
+        let substrate = |(k, ((x, v), (f, x0))): SubstrateChunk| {
+            if fused {
+                sf.chunk_with(k * sub, sub_ids, out, v, f, x);
+            }
+            let (mut d2, mut sum) = (0.0f64, 0.0f64);
+            for (((x, v), f), x0) in x.iter_mut().zip(v.iter_mut()).zip(f.iter()).zip(x0) {
+                kick_hm(&mut v[0], f[0], hm);
+                kick_hm(&mut v[1], f[1], hm);
+                x[0] += dt * v[0];
+                x[1] += dt * v[1];
+                let d = [x[0] - x0[0], x[1] - x0[1]];
+                let m = d[0] * d[0] + d[1] * d[1];
+                sum += m;
+                if m > d2 {
+                    d2 = m;
+                }
+            }
+            if sum.is_finite() {
+                d2
+            } else {
+                f64::NAN
+            }
+        };
+        let (ds, db) = if par {
+            rayon::join(
+                || {
+                    sl_x.par_chunks_mut(sl)
+                        .zip(sl_v.par_chunks_mut(sl))
+                        .zip(sl_f.par_chunks(sl))
+                        .zip(sl_x0.par_chunks(sl).zip(sl_ids.par_chunks(sl)))
+                        .map(slider)
+                        .reduce(|| 0.0, nan_max)
+                },
+                || {
+                    sub_x
+                        .par_chunks_mut(sub)
+                        .zip(sub_v.par_chunks_mut(sub))
+                        .zip(sub_f.par_chunks_mut(sub).zip(sub_x0.par_chunks(sub)))
+                        .enumerate()
+                        .map(substrate)
+                        .reduce(|| 0.0, nan_max)
+                },
+            )
+        } else {
+            (
+                sl_x.chunks_mut(sl)
+                    .zip(sl_v.chunks_mut(sl))
+                    .zip(sl_f.chunks(sl))
+                    .zip(sl_x0.chunks(sl).zip(sl_ids.chunks(sl)))
+                    .map(slider)
+                    .fold(0.0, nan_max),
+                sub_x
+                    .chunks_mut(sub)
+                    .zip(sub_v.chunks_mut(sub))
+                    .zip(sub_f.chunks_mut(sub).zip(sub_x0.chunks(sub)))
+                    .enumerate()
+                    .map(substrate)
+                    .fold(0.0, nan_max),
+            )
+        };
+        // NaN must win the max
+        if ds.is_nan() || db.is_nan() {
+            f64::NAN
+        } else {
+            ds.max(db)
+        }
     }
 
-    /// One velocity-Verlet step: half kick, drift, (rebuild), forces, half kick. Errors with
-    /// [`DemError::Unstable`] if the control layer's state is no longer finite.
-    pub fn step(&mut self) -> Result<(), DemError> {
-        self.half_kick();
-        self.drift();
+    /// Upper bound of the displacement (m) of every inactive particle since the last
+    /// evaluation: slider spheres move with the control layer and the common mode, plus their
+    /// ringing deviation; substrate spheres by their ringing deviation only.
+    fn frame_disp(&self) -> f64 {
         let s = &self.state;
-        if needs_rebuild(&s.sub_x, &s.ref_sub, &s.sl_x, &s.ref_sl, self.params.skin) {
-            self.rebuild();
+        let mk = &s.mark;
+        let lat = [
+            s.cl_x[0] - mk.cl[0] + s.common.u[0] - mk.u[0],
+            s.cl_x[1] - mk.cl[1] + s.common.u[1] - mk.u[1],
+        ];
+        let mut dq = [
+            s.cl_x[2] - mk.cl[2],
+            s.tilt[0] - mk.tilt[0],
+            s.tilt[1] - mk.tilt[1],
+        ];
+        if !self.params.rigid_z {
+            for k in 0..3 {
+                dq[k] += s.common.w[k] - mk.w[k];
+            }
         }
-        self.compute_forces();
-        self.half_kick();
-        self.state.step += 1;
-        self.state.t = self.state.step as f64 * self.dt;
-        let c = self.state.cl_x;
-        if !(c.iter().all(|v| v.is_finite()) && self.state.cl_v.iter().all(|v| v.is_finite())) {
-            return Err(self.unstable("non-finite control-layer state".into()));
+        let [ax, ay] = self.body.arm;
+        let z = dq[0].abs() + dq[1].abs() * ay + dq[2].abs() * ax;
+        let d = (lat[0] * lat[0] + lat[1] * lat[1] + z * z).sqrt() + mk.ring[0];
+        let d = d.max(mk.ring[1]);
+        if d.is_nan() {
+            f64::INFINITY
+        } else {
+            d
         }
-        Ok(())
     }
 
     /// The instability error for the current time.
@@ -434,67 +660,24 @@ impl Sim {
         }
     }
 
-    /// Checks every position for finiteness and every overlap against the bound
-    /// (`overlap_bound · R`). O(N + P).
-    pub fn check(&self) -> Result<(), DemError> {
-        let s = &self.state;
-        let fin = s.sl_x.iter().all(|x| x.iter().all(|v| v.is_finite()))
-            && s.sub_x.iter().all(|x| x.iter().all(|v| v.is_finite()));
-        if !fin {
-            return Err(self.unstable("non-finite particle position".into()));
-        }
-        // A slider sphere torn from its control-layer site by more than a sphere radius, or a
-        // slider below the substrate plane, means the integration has blown up (the overlap
-        // bound alone misses spheres that jumped clean through the substrate).
-        let r = self.spec.sphere_radius;
-        let c = s.cl_x;
-        for (i, x) in s.sl_x.iter().enumerate() {
-            let d = [
-                x[0] - c[0] - self.site_off[i][0],
-                x[1] - c[1] - self.site_off[i][1],
-                if self.params.rigid_z {
-                    0.0
-                } else {
-                    x[2] - c[2]
-                },
-            ];
-            let m = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-            if m.is_nan() || m > r {
-                return Err(self.unstable(format!(
-                    "slider sphere {i} displaced {:.4e} µm from its control-layer site (bound: one radius)",
-                    m * 1e6
-                )));
-            }
-        }
-        let h_min = self.sub_h.iter().copied().fold(f64::INFINITY, f64::min);
-        if c[2] < h_min {
-            return Err(self.unstable("the slider fell through the substrate".into()));
-        }
-        let bound = self.params.overlap_bound * self.spec.sphere_radius;
-        let m = self.out.iter().map(|o| o.delta).fold(0.0, f64::max);
-        if m > bound {
-            return Err(self.unstable(format!(
-                "overlap {:.4e} µm beyond the bound {:.4e} µm",
-                m * 1e6,
-                bound * 1e6
-            )));
-        }
-        Ok(())
-    }
-
     /// Releases the lateral hold of the control layer and attaches the pulling spring with the
     /// support `support_lead` ahead along α (zero initial spring force).
     pub fn attach_spring(&mut self) {
         let (sa, ca) = self.params.alpha.sin_cos();
+        let p = &self.params;
         let s = &mut self.state;
         s.held_xy = false;
         s.spring_on = true;
         s.support = [
-            s.cl_x[0] + self.params.support_lead * ca,
-            s.cl_x[1] + self.params.support_lead * sa,
+            s.cl_x[0] + p.support_lead * ca,
+            s.cl_x[1] + p.support_lead * sa,
         ];
         s.support0 = s.support;
-        self.compute_forces_keep_history();
+        // Only the control-layer force changes: the spring is at rest length (adds 0 up to
+        // rounding); the pair histories are not touched.
+        let d = spring_stretch(p, s.support, s.cl_x);
+        s.cl_f[0] += p.k0 * d[0];
+        s.cl_f[1] += p.k0 * d[1];
     }
 
     /// Sets the support moving at `support_speed` along α.
@@ -504,120 +687,23 @@ impl Sim {
         self.state.support_v = [v * ca, v * sa];
     }
 
-    fn compute_forces_keep_history(&mut self) {
-        // Only the control-layer force changes when the spring is attached; recompute it
-        // without touching the pair histories.
-        let p = &self.params;
-        let s = &mut self.state;
-        if s.spring_on {
-            // the spring is at rest length when attached: adds 0 up to rounding
-            let d = spring_stretch(p, s.support, s.cl_x);
-            s.cl_f[0] += p.k0 * d[0];
-            s.cl_f[1] += p.k0 * d[1];
-        }
-    }
-
-    /// Observables of the current state (uses the pair results of the last force evaluation).
-    /// O(N + P), sequential.
-    pub fn observe(&self) -> Observables {
-        let s = &self.state;
-        let mut o = Observables {
-            t: s.t,
-            ..Default::default()
-        };
-        for (k, r) in self.out.iter().enumerate() {
-            if r.delta > 0.0 {
-                o.contacts += 1;
-                o.failed += r.failed as usize;
-                o.p_max = o.p_max.max(r.p0);
-                o.contact_fz += r.force[2];
-            }
-            o.max_overlap = o.max_overlap.max(r.delta);
-            o.ever_failed += s.pairs.hist[k].ever_failed as usize;
-        }
-        o.z = s.sl_x.iter().map(|x| x[2]).sum::<f64>() / s.sl_x.len() as f64;
-        let (sa, ca) = self.params.alpha.sin_cos();
-        if s.spring_on {
-            let d = [s.support[0] - s.cl_x[0], s.support[1] - s.cl_x[1]];
-            o.spring_force = self.params.k0 * (d[0] * ca + d[1] * sa - self.params.support_lead);
-            let ds = [s.support[0] - s.support0[0], s.support[1] - s.support0[1]];
-            o.support_travel = ds[0] * ca + ds[1] * sa;
-            let dc = [
-                s.cl_x[0] - (s.support0[0] - self.params.support_lead * ca),
-                s.cl_x[1] - (s.support0[1] - self.params.support_lead * sa),
-            ];
-            o.slider_travel = dc[0] * ca + dc[1] * sa;
-        }
-        o
-    }
-
-    /// Total mechanical energy (J): kinetic + Hertz + spring + tether + load potential
-    /// (`W·Z`) + pulling spring. Tangential spring energy is not included (exact for μ = 0).
-    pub fn energy(&self) -> f64 {
-        let s = &self.state;
-        let p = &self.params;
-        let m = self.m_s;
-        let mut e = 0.0;
-        for v in &s.sub_v {
-            e += 0.5 * m * (v[0] * v[0] + v[1] * v[1]);
-        }
-        for v in &s.sl_v {
-            let vz = if p.rigid_z { 0.0 } else { v[2] * v[2] };
-            e += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + vz);
-        }
-        let mz = z_mass(self.m_cl, m, s.sl_x.len(), p.rigid_z);
-        e += 0.5 * self.m_cl * (s.cl_v[0].powi(2) + s.cl_v[1].powi(2))
-            + 0.5 * mz * s.cl_v[2].powi(2);
-        for o in &self.out {
-            e += self.model.normal.energy(o.delta);
-        }
-        for (i, x) in s.sl_x.iter().enumerate() {
-            let d = [
-                x[0] - s.cl_x[0] - self.site_off[i][0],
-                x[1] - s.cl_x[1] - self.site_off[i][1],
-            ];
-            e += 0.5 * p.k_slider_xy * (d[0] * d[0] + d[1] * d[1]);
-            if !p.rigid_z {
-                e += 0.5 * p.k_slider_z * (x[2] - s.cl_x[2]).powi(2);
-            }
-        }
-        for (x, q) in s.sub_x.iter().zip(&self.spec.substrate) {
-            e += 0.5 * p.k_substrate_xy * ((x[0] - q[0]).powi(2) + (x[1] - q[1]).powi(2));
-        }
-        e += p.load * s.cl_x[2];
-        if s.spring_on {
-            let d = spring_stretch(p, s.support, s.cl_x);
-            e += 0.5 * p.k0 * (d[0] * d[0] + d[1] * d[1]);
-        }
-        e
-    }
-
-    /// Per-pair results of the last force evaluation (parallel to `state.pairs`).
-    pub fn pair_results(&self) -> &[PairOut] {
-        &self.out
+    /// Per-pair results of the last force evaluation, parallel to `state.act.pairs` (the
+    /// active pairs; every listed pair without the active set).
+    pub fn pair_results(&self) -> &[crate::model::PairOut] {
+        &self.state.act.out
     }
 
     /// Friction coefficient μ(p0) of the model's friction law.
     pub fn mu_at(&self, p0: f64) -> f64 {
+        use crate::model::FrictionLaw;
         self.model.friction.mu(p0)
-    }
-}
-
-/// Mass (kg) that moves with the control layer in z: the layer alone, or with `rigid_z` the layer
-/// plus its `n` slider spheres of mass `m_s`.
-#[inline]
-fn z_mass(m_cl: f64, m_s: f64, n: usize, rigid_z: bool) -> f64 {
-    if rigid_z {
-        m_cl + n as f64 * m_s
-    } else {
-        m_cl
     }
 }
 
 /// Pulling-spring stretch (m): the spring's rest anchor (the support moved back by the lead along
 /// α) minus the control layer's centre `cl`, in x and y. The spring force is K0 times this.
 #[inline]
-fn spring_stretch(p: &SimParams, support: [f64; 2], cl: [f64; 3]) -> [f64; 2] {
+pub(crate) fn spring_stretch(p: &SimParams, support: [f64; 2], cl: [f64; 3]) -> [f64; 2] {
     let (sa, ca) = p.alpha.sin_cos();
     [
         support[0] - p.support_lead * ca - cl[0],

@@ -7,7 +7,8 @@ use super::{Friction, FrictionLaw, HertzNormal, Mindlin, NormalModel, Tangential
 pub struct PairOut {
     /// Force on the first body (slider sphere) (N); the second gets its negative.
     pub force: [f64; 3],
-    /// Overlap δ (m); ≤ 0 when not touching.
+    /// Overlap δ (m) when touching; when apart a negative gap measure `(R² − r²)/(2R)` (m),
+    /// `R = R1 + R2`, which is below `R − r`.
     pub delta: f64,
     /// Maximum Hertz pressure p0 (Pa) (0 when not touching).
     pub p0: f64,
@@ -44,9 +45,10 @@ impl ContactModel {
         let r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         let rs = self.radius_sum;
         if r2 >= rs * rs {
+            // apart: no square root needed; a negative gap measure suffices
             *xi = [0.0; 3];
             return PairOut {
-                delta: rs - r2.sqrt(),
+                delta: (rs * rs - r2) * (0.5 / rs),
                 ..Default::default()
             };
         }
@@ -55,11 +57,13 @@ impl ContactModel {
         let inv = 1.0 / dist;
         let n = [d[0] * inv, d[1] * inv, d[2] * inv];
         let vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-        let (fnorm, _sn, p0) = self.normal.force(delta, -vn, m_eff);
+        let nf = self.normal.force(delta, -vn, m_eff);
+        let (fnorm, p0) = (nf.force, nf.p0);
         let mu = self.friction.mu(p0);
         let vt = [v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]];
-        let a = self.normal.contact_radius(delta);
-        let ft = self.tangential.force(xi, n, vt, a, mu * fnorm, m_eff, dt);
+        let ft = self
+            .tangential
+            .force(xi, n, vt, nf.radius, mu * fnorm, m_eff, dt);
         PairOut {
             force: [
                 fnorm * n[0] + ft[0],

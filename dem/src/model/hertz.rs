@@ -1,5 +1,6 @@
 //! [`HertzNormal`]: Hertz normal force with Tsuji-type viscoelastic damping.
 
+use super::normal::NormalOut;
 use super::NormalModel;
 use surrogate::contact::Hertz;
 
@@ -29,14 +30,21 @@ impl HertzNormal {
 
 impl NormalModel for HertzNormal {
     #[inline]
-    fn force(&self, delta: f64, delta_dot: f64, m_eff: f64) -> (f64, f64, f64) {
+    fn force(&self, delta: f64, delta_dot: f64, m_eff: f64) -> NormalOut {
+        // one square root for a = √(R_eff δ): F_e = (4/3)E*·a·δ, S_n = 2E*·a,
+        // p0 = (2E*/π)·a/R_eff
         let h = &self.hertz;
-        let sq = delta.sqrt();
-        let fe = h.k() * delta * sq;
-        let s_n = 2.0 * h.e_star * (h.r_eff * delta).sqrt();
+        let a = (h.r_eff * delta).sqrt();
+        let fe = 4.0 / 3.0 * h.e_star * a * delta;
+        let s_n = 2.0 * h.e_star * a;
         let fd = self.gamma_n * (m_eff * s_n).sqrt() * delta_dot;
-        let p0 = 2.0 * h.e_star / std::f64::consts::PI * (delta / h.r_eff).sqrt();
-        ((fe + fd).max(0.0), s_n, p0)
+        let p0 = 2.0 * h.e_star / std::f64::consts::PI * a / h.r_eff;
+        NormalOut {
+            force: (fe + fd).max(0.0),
+            stiffness: s_n,
+            p0,
+            radius: a,
+        }
     }
     #[inline]
     fn contact_radius(&self, delta: f64) -> f64 {

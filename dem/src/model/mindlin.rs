@@ -64,8 +64,9 @@ impl TangentialModel for Mindlin {
         for k in 0..3 {
             f[k] = -kt * xi[k] - eta * v_t[k];
         }
-        let fm = dot(f, f).sqrt();
-        if fm > cap {
+        let f2 = dot(f, f);
+        if f2 > cap * cap {
+            let fm = f2.sqrt();
             let s = if fm > 0.0 { cap / fm } else { 0.0 };
             for k in 0..3 {
                 f[k] *= s;

@@ -16,6 +16,6 @@ pub use contact::{ContactModel, PairOut};
 pub use friction::{Friction, FrictionLaw};
 pub use hertz::HertzNormal;
 pub use mindlin::Mindlin;
-pub use normal::NormalModel;
+pub use normal::{NormalModel, NormalOut};
 pub use pressure_switched::PressureSwitched;
 pub use tangential::TangentialModel;

@@ -65,6 +65,9 @@ pub fn step_counts(sim: &Sim, kind: RunKind) -> (u64, u64, u64, u64) {
 /// Runs (or continues, if `sim.state.step > 0` after a checkpoint load) the protocol `kind`,
 /// appending samples to `samples` and calling `progress` after each sample. Phase changes
 /// happen at fixed step numbers, so a resumed run is bit-identical to an uninterrupted one.
+/// The `--xyz` file is replaced by a fresh run and continued exactly by a resumed one
+/// ([`super::xyz::prepare_file`]). A checkpoint is written only after the state has passed
+/// [`Sim::check`], so a blown-up state is never saved.
 pub fn run(
     sim: &mut Sim,
     kind: RunKind,
@@ -83,9 +86,18 @@ pub fn run(
             Phase::Slide
         }
     };
+    let xyz_err = |p: &std::path::Path, e: std::io::Error| DemError::Checkpoint {
+        path: p.display().to_string(),
+        why: e.to_string(),
+    };
+    let xyz = io.xyz.as_deref().filter(|_| io.xyz_every > 0);
+    if let Some(p) = xyz {
+        super::xyz::prepare_file(p, sim).map_err(|e| xyz_err(p, e))?;
+    }
     if samples.is_empty() {
         samples.push(Sample::from_obs(&sim.observe()));
     }
+    let next = |step: u64, k: u64| step.checked_div(k).map_or(u64::MAX, |q| (q + 1) * k);
     while sim.state.step < total {
         let step = sim.state.step;
         if kind == RunKind::Slide && step >= ne && !sim.state.spring_on {
@@ -94,10 +106,27 @@ pub fn run(
         if kind == RunKind::Slide && step >= ne + nr && sim.state.support_v == [0.0; 2] {
             sim.start_support();
         }
-        sim.step()?;
+        // run up to the next event: a sample, a snapshot, a checkpoint, a phase change, the end
+        let mut to = total.min(next(step, every));
+        if xyz.is_some() {
+            to = to.min(next(step, io.xyz_every));
+        }
+        if io.checkpoint.is_some() {
+            to = to.min(next(step, io.checkpoint_every));
+        }
+        if kind == RunKind::Slide {
+            for b in [ne, ne + nr] {
+                if b > step {
+                    to = to.min(b);
+                }
+            }
+        }
+        sim.run_steps(to - step)?;
         let step = sim.state.step;
+        let mut checked = false;
         if step.is_multiple_of(every) || step == total {
             sim.check()?;
+            checked = true;
             let s = Sample::from_obs(&sim.observe());
             samples.push(s);
             progress(&Progress {
@@ -107,16 +136,18 @@ pub fn run(
                 sample: s,
             });
         }
-        if let Some(p) = &io.xyz {
-            if io.xyz_every > 0 && step.is_multiple_of(io.xyz_every) {
-                super::xyz::append_frame(p, sim).map_err(|e| DemError::Checkpoint {
-                    path: p.display().to_string(),
-                    why: e.to_string(),
-                })?;
+        if let Some(p) = xyz {
+            if step.is_multiple_of(io.xyz_every) {
+                let n = super::xyz::append_frame(p, sim).map_err(|e| xyz_err(p, e))?;
+                sim.state.xyz_bytes += n;
+                sim.state.xyz_frames += 1;
             }
         }
         if let Some(p) = &io.checkpoint {
             if io.checkpoint_every > 0 && step.is_multiple_of(io.checkpoint_every) {
+                if !checked {
+                    sim.check()?;
+                }
                 checkpoint::save(p, sim, samples)?;
             }
         }

@@ -1,47 +1,69 @@
-//! Extended-XYZ snapshots (OVITO reads them): one frame per call, appended.
+//! Extended-XYZ snapshots (OVITO reads them): one frame per call, appended; the file is
+//! replaced by a fresh run and cut back to the checkpoint's length on resume
+//! ([`prepare_file`]).
 
 use crate::integrator::Sim;
 use std::io::Write;
 use std::path::Path;
 
+/// Makes `path` ready for a run of `sim`: a fresh run (step 0) replaces it with an empty file;
+/// a resumed run cuts it back to the `sim.state.xyz_bytes` it had at the checkpoint, so the
+/// frames continue exactly (no frame twice, none from an aborted later segment). Errors when
+/// the file is shorter than recorded (it was changed since).
+pub fn prepare_file(path: &Path, sim: &Sim) -> std::io::Result<()> {
+    let want = sim.state.xyz_bytes;
+    if sim.state.step == 0 || want == 0 {
+        std::fs::File::create(path)?;
+        return Ok(());
+    }
+    let f = std::fs::OpenOptions::new().write(true).open(path).map_err(|e| {
+        std::io::Error::new(
+            e.kind(),
+            format!("cannot continue the snapshot file ({e}); it held {want} bytes at the checkpoint"),
+        )
+    })?;
+    let have = f.metadata()?.len();
+    if have < want {
+        return Err(std::io::Error::other(format!(
+            "the snapshot file has {have} bytes but held {want} at the checkpoint: it was changed since; \
+             remove it or give another --xyz to start it afresh from here"
+        )));
+    }
+    f.set_len(want)?;
+    f.sync_all()
+}
+
 /// Appends one frame of every substrate sphere (species `B`), slider sphere (`S`), control
-/// layer centre (`C`) and support (`P`) to `path`. Columns: species, x, y, z (µm), radius (µm),
-/// failed (1 if any contact of the sphere has a failed coating now). Comment line holds
-/// `Time=` (µs). O(N + P).
-pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<()> {
+/// layer centre (`C`) and support (`P`) to `path` and returns the bytes written. Columns:
+/// species, x, y, z (µm), radius (µm), failed (1 if any contact of the sphere has a failed
+/// coating now). Comment line holds `Time=` (µs). O(N + P).
+pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<u64> {
     let s = &sim.state;
     let um = 1e6;
     let r = sim.spec.sphere_radius * um;
-    let mut failed_sl = vec![false; s.sl_x.len()];
-    let mut failed_sub = vec![false; s.sub_x.len()];
-    for (k, o) in sim.pair_results().iter().enumerate() {
-        if o.delta > 0.0 && o.failed {
-            failed_sl[s.pairs.i[k] as usize] = true;
-            failed_sub[s.pairs.j[k] as usize] = true;
-        }
-    }
-    let n = s.sl_x.len() + s.sub_x.len() + 2;
+    let snap = sim.snapshot();
+    let n = snap.slider.len() + snap.substrate.len() + 2;
     let mut b = String::with_capacity(n * 64);
     b.push_str(&format!(
         "{n}\nProperties=species:S:1:pos:R:3:radius:R:1:failed:I:1 Time={:.6} pbc=\"F F F\"\n",
         s.t * 1e6
     ));
-    for (j, x) in s.sub_x.iter().enumerate() {
+    for (j, x) in snap.substrate.iter().enumerate() {
         b.push_str(&format!(
             "B {:.6} {:.6} {:.6} {r} {}\n",
             x[0] * um,
             x[1] * um,
-            sim.spec.substrate[j][2] * um,
-            failed_sub[j] as u8
+            x[2] * um,
+            snap.failed_substrate[j] as u8
         ));
     }
-    for (i, x) in s.sl_x.iter().enumerate() {
+    for (i, x) in snap.slider.iter().enumerate() {
         b.push_str(&format!(
             "S {:.6} {:.6} {:.6} {r} {}\n",
             x[0] * um,
             x[1] * um,
             x[2] * um,
-            failed_sl[i] as u8
+            snap.failed_slider[i] as u8
         ));
     }
     let rc = sim.params.control_sphere_radius * um;
@@ -61,5 +83,6 @@ pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<()> {
         .create(true)
         .append(true)
         .open(path)?;
-    f.write_all(b.as_bytes())
+    f.write_all(b.as_bytes())?;
+    Ok(b.len() as u64)
 }

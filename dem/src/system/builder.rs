@@ -94,6 +94,14 @@ pub fn from_scene(
             control_z,
             sphere_radius: r,
             material: scene.material,
+            tilt_stiffness: scene
+                .slider
+                .mount
+                .tilts()
+                .then(|| scene.tilt_stiffness_at(scene.slider.theta)),
+            disc: Some((scene.slider.offset, scene.slider.radius)),
+            substrate_size: Some(scene.substrate.size),
+            scene: Some(scene.clone()),
         },
         StartInfo {
             z: eq.z,

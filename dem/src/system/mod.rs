@@ -11,4 +11,4 @@ pub mod state;
 
 pub use builder::{from_scene, Start, StartInfo};
 pub use spec::SystemSpec;
-pub use state::{PairHist, PairList, State};
+pub use state::{Active, ActiveStats, CommonMode, FrameMark, PairHist, PairList, Ringing, State};

@@ -1,0 +1,171 @@
+//! [`Body`]: the static description of the slider as a body — site offsets, masses and the
+//! control layer's generalized coordinates `q = (Z, t_x, t_y)` with their mass matrix and the
+//! mount's rotational stiffness.
+//!
+//! Small-angle tilt convention (both tiers): slider sphere i at offset `(x_i, y_i)` from the
+//! control-layer centre has its z-anchor at `a_i = g_i·q`, `g_i = (1, y_i, −x_i)`. The mass
+//! matrix of q is `M = m Σ g_i g_iᵀ` (m: one control sphere, plus one slider sphere with
+//! `rigid_z`), the generalized force `Q = Σ F_i^z g_i − (W, 0, 0) − (0, K_t t) − M q̇/τ`, and
+//! `q̈ = M⁻¹ Q`. With a locked mount q is Z alone and `M = N m`.
+
+// Small dense index loops read like the math they implement.
+#![allow(clippy::needless_range_loop)]
+
+use crate::system::SystemSpec;
+use crate::SimParams;
+
+/// Static slider-body data of a run (SI).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Body {
+    /// Site offsets `(x_i, y_i)` from the control-layer centre (m).
+    pub off: Vec<[f64; 2]>,
+    /// Control-layer centre at the start (m).
+    pub centre0: [f64; 2],
+    /// Mass of one slider/substrate sphere (kg).
+    pub m_s: f64,
+    /// Control-layer mass (kg), the lateral inertia of the layer.
+    pub m_cl: f64,
+    /// Mass moving with Z (kg): the layer, plus the slider spheres with `rigid_z`.
+    pub mz: f64,
+    /// Tilt data; `None` with a locked mount.
+    pub tilt: Option<Tilt>,
+    /// Σ g_i g_iᵀ over every slider site (m⁰, m¹, m²).
+    pub g_all: [[f64; 3]; 3],
+    /// Largest |x_i| and |y_i| (m).
+    pub arm: [f64; 2],
+}
+
+/// The tilt degrees of freedom of the control layer.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Tilt {
+    /// Mass matrix of q (kg, kg·m, kg·m²).
+    pub m: [[f64; 3]; 3],
+    /// Its inverse.
+    pub m_inv: [[f64; 3]; 3],
+    /// Rotational stiffness K_t (N·m/rad) on `[t_x, t_y]`.
+    pub k: [[f64; 2]; 2],
+}
+
+impl Body {
+    /// The body of `spec` for `params` (reads `rigid_z`, `control_sphere_radius`).
+    pub fn new(spec: &SystemSpec, params: &SimParams) -> Body {
+        let n = spec.slider_sites.len();
+        let mut c = [0.0; 2];
+        for s in &spec.slider_sites {
+            c[0] += s[0];
+            c[1] += s[1];
+        }
+        c[0] /= n as f64;
+        c[1] /= n as f64;
+        let off: Vec<[f64; 2]> = spec
+            .slider_sites
+            .iter()
+            .map(|s| [s[0] - c[0], s[1] - c[1]])
+            .collect();
+        let m_s = spec.sphere_mass();
+        let m_c = spec.material.sphere_mass(params.control_sphere_radius);
+        let m_cl = n as f64 * m_c;
+        let mz = if params.rigid_z {
+            m_cl + n as f64 * m_s
+        } else {
+            m_cl
+        };
+        let mut g_all = [[0.0; 3]; 3];
+        let mut arm = [0.0f64; 2];
+        for o in &off {
+            let g = g_of(*o);
+            for a in 0..3 {
+                for b in 0..3 {
+                    g_all[a][b] += g[a] * g[b];
+                }
+            }
+            arm[0] = arm[0].max(o[0].abs());
+            arm[1] = arm[1].max(o[1].abs());
+        }
+        let unit = if params.rigid_z { m_c + m_s } else { m_c };
+        let tilt = spec.tilt_stiffness.map(|k| {
+            let mut m = [[0.0; 3]; 3];
+            for a in 0..3 {
+                for b in 0..3 {
+                    m[a][b] = unit * g_all[a][b];
+                }
+            }
+            Tilt {
+                m,
+                m_inv: inverse3(&m),
+                k,
+            }
+        });
+        Body {
+            off,
+            centre0: c,
+            m_s,
+            m_cl,
+            mz,
+            tilt,
+            g_all,
+            arm,
+        }
+    }
+}
+
+/// `g = (1, y, −x)` of a site offset `(x, y)`.
+#[inline]
+pub(crate) fn g_of(o: [f64; 2]) -> [f64; 3] {
+    [1.0, o[1], -o[0]]
+}
+
+/// Inverse of a symmetric positive definite 3×3 matrix (cofactors).
+pub(crate) fn inverse3(m: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    let c =
+        |r0: usize, r1: usize, c0: usize, c1: usize| m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
+    let cof = [
+        [c(1, 2, 1, 2), -c(1, 2, 0, 2), c(1, 2, 0, 1)],
+        [-c(0, 2, 1, 2), c(0, 2, 0, 2), -c(0, 2, 0, 1)],
+        [c(0, 1, 1, 2), -c(0, 1, 0, 2), c(0, 1, 0, 1)],
+    ];
+    let det = m[0][0] * cof[0][0] + m[0][1] * cof[0][1] + m[0][2] * cof[0][2];
+    let mut inv = [[0.0; 3]; 3];
+    for a in 0..3 {
+        for b in 0..3 {
+            inv[a][b] = cof[b][a] / det;
+        }
+    }
+    inv
+}
+
+/// `m·v` for a 3×3 matrix.
+#[inline]
+pub(crate) fn mat_vec(m: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
+    [
+        m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
+        m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
+        m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2],
+    ]
+}
+
+#[inline]
+pub(crate) fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inverse_of_a_spd_matrix() {
+        let m = [[4.0, 1.0, 0.5], [1.0, 3.0, 0.2], [0.5, 0.2, 2.0]];
+        let inv = inverse3(&m);
+        for a in 0..3 {
+            for b in 0..3 {
+                let mut s = 0.0;
+                for k in 0..3 {
+                    s += m[a][k] * inv[k][b];
+                }
+                let want = if a == b { 1.0 } else { 0.0 };
+                assert!((s - want).abs() < 1e-14, "{a}{b}: {s}");
+            }
+        }
+    }
+}

@@ -1,0 +1,439 @@
+//! The force passes of a step, each fused with the second half kick of the particles it
+//! computes: slider spheres with their pairs (one pass over slider chunks, returning each
+//! chunk's reaction on the control layer), then the substrate spheres, then the control layer
+//! and the common mode of the inactive slider spheres.
+
+// Small dense index loops read like the math they implement.
+#![allow(clippy::needless_range_loop)]
+
+use super::body::{dot3, g_of, mat_vec};
+use super::sim::{kick, kick_hm, spring_stretch, Index, Sim};
+use crate::model::{ContactModel, PairOut};
+use crate::params::DampingFrame;
+use crate::params::SimParams;
+use crate::system::PairHist;
+use crate::system::SystemSpec;
+use rayon::prelude::*;
+
+/// One substrate chunk of the force pass: (chunk index, ((v, f), x)).
+type SubstrateChunk<'a> = (
+    usize,
+    ((&'a mut [[f64; 2]], &'a mut [[f64; 2]]), &'a [[f64; 2]]),
+);
+
+/// Read-only inputs of the slider pass.
+struct SliderPass<'a> {
+    model: &'a ContactModel,
+    ids: &'a [u32],
+    x: &'a [[f64; 3]],
+    off: &'a [[f64; 2]],
+    pstart: &'a [u32],
+    pair_b: &'a [u32],
+    sub_ids: &'a [u32],
+    sub_x: &'a [[f64; 2]],
+    sub_v: &'a [[f64; 2]],
+    sub_h: &'a [f64],
+    cx: [f64; 3],
+    q: [f64; 3],
+    qd: [f64; 3],
+    vref: [f64; 2],
+    rel: bool,
+    tilting: bool,
+    rigid: bool,
+    kxy: f64,
+    kz: f64,
+    m_s: f64,
+    m_eff: f64,
+    inv_tau: f64,
+    dt: f64,
+    hm: f64,
+    chunk: usize,
+}
+
+impl SliderPass<'_> {
+    /// Forces and second half kick of slider chunk `c` (its spheres' `v`, `f` and its pairs'
+    /// `hist`, `out`); returns the chunk's reaction on the control layer
+    /// `[F_x, F_y, Q_z, Q_tx, Q_ty]`.
+    fn chunk(
+        &self,
+        c: usize,
+        v: &mut [[f64; 3]],
+        f: &mut [[f64; 3]],
+        hist: &mut [PairHist],
+        out: &mut [PairOut],
+    ) -> [f64; 5] {
+        let a0 = c * self.chunk;
+        let pbase = self.pstart[a0] as usize;
+        let mut part = [0.0; 5];
+        for (l, (v, f)) in v.iter_mut().zip(f.iter_mut()).enumerate() {
+            let a = a0 + l;
+            let o = self.off[self.ids[a] as usize];
+            let x = self.x[a];
+            let mut acc = [0.0; 3];
+            for p in self.pstart[a] as usize..self.pstart[a + 1] as usize {
+                let b = self.pair_b[p] as usize;
+                let xb = self.sub_x[b];
+                let vb = self.sub_v[b];
+                let d = [
+                    x[0] - xb[0],
+                    x[1] - xb[1],
+                    x[2] - self.sub_h[self.sub_ids[b] as usize],
+                ];
+                let vr = [v[0] - vb[0], v[1] - vb[1], v[2]];
+                let hp = &mut hist[p - pbase];
+                let r = self.model.pair(d, vr, &mut hp.xi, self.m_eff, self.dt);
+                hp.ever_failed |= r.failed;
+                acc[0] += r.force[0];
+                acc[1] += r.force[1];
+                acc[2] += r.force[2];
+                out[p - pbase] = r;
+            }
+            let g = g_of(o);
+            if self.rigid {
+                part[2] += acc[2];
+                if self.tilting {
+                    part[3] += acc[2] * g[1];
+                    part[4] += acc[2] * g[2];
+                }
+            }
+            let (m, it) = (self.m_s, self.inv_tau);
+            let sx = self.kxy * (self.cx[0] + o[0] - x[0]);
+            let sy = self.kxy * (self.cx[1] + o[1] - x[1]);
+            acc[0] += sx - m * (v[0] - self.vref[0]) * it;
+            acc[1] += sy - m * (v[1] - self.vref[1]) * it;
+            part[0] -= sx;
+            part[1] -= sy;
+            kick_hm(&mut v[0], acc[0], self.hm);
+            kick_hm(&mut v[1], acc[1], self.hm);
+            if !self.rigid {
+                let (az, vaz) = if self.tilting {
+                    (dot3(g, self.q), dot3(g, self.qd))
+                } else {
+                    (self.q[0], self.qd[0])
+                };
+                let vrz = if self.rel { vaz } else { 0.0 };
+                let sz = self.kz * (az - x[2]);
+                acc[2] += sz - m * (v[2] - vrz) * it;
+                part[2] -= sz;
+                if self.tilting {
+                    part[3] -= sz * g[1];
+                    part[4] -= sz * g[2];
+                }
+                kick_hm(&mut v[2], acc[2], self.hm);
+            }
+            *f = acc;
+        }
+        part
+    }
+
+    /// Runs chunks `c0..c1` (recursively halved; in parallel when `par`), writing each chunk's
+    /// reaction into `parts`.
+    #[allow(clippy::too_many_arguments)]
+    fn run(
+        &self,
+        c0: usize,
+        c1: usize,
+        v: &mut [[f64; 3]],
+        f: &mut [[f64; 3]],
+        hist: &mut [PairHist],
+        out: &mut [PairOut],
+        parts: &mut [[f64; 5]],
+        par: bool,
+    ) {
+        if c1 - c0 == 1 {
+            parts[0] = self.chunk(c0, v, f, hist, out);
+            return;
+        }
+        let mid = (c0 + c1) / 2;
+        let ns = (mid - c0) * self.chunk;
+        let np = (self.pstart[mid * self.chunk] - self.pstart[c0 * self.chunk]) as usize;
+        let (v1, v2) = v.split_at_mut(ns);
+        let (f1, f2) = f.split_at_mut(ns);
+        let (h1, h2) = hist.split_at_mut(np);
+        let (o1, o2) = out.split_at_mut(np);
+        let (p1, p2) = parts.split_at_mut(mid - c0);
+        if par {
+            rayon::join(
+                || self.run(c0, mid, v1, f1, h1, o1, p1, par),
+                || self.run(mid, c1, v2, f2, h2, o2, p2, par),
+            );
+        } else {
+            self.run(c0, mid, v1, f1, h1, o1, p1, par);
+            self.run(mid, c1, v2, f2, h2, o2, p2, par);
+        }
+    }
+}
+
+/// Read-only inputs of the substrate force pass (tether, damping, minus the pair forces).
+pub(crate) struct SubstrateForce<'a> {
+    sub_start: &'a [u32],
+    sub_items: &'a [u32],
+    sites: &'a [[f64; 3]],
+    kt: f64,
+    m: f64,
+    inv_tau: f64,
+    hm: f64,
+}
+
+impl<'a> SubstrateForce<'a> {
+    /// The pass with second half kick `h` (s) over the index `idx` of the active set.
+    pub(crate) fn new(
+        idx: &'a Index,
+        spec: &'a SystemSpec,
+        params: &SimParams,
+        m: f64,
+        inv_tau: f64,
+        h: f64,
+    ) -> SubstrateForce<'a> {
+        SubstrateForce {
+            sub_start: &idx.sub_start,
+            sub_items: &idx.sub_items,
+            sites: &spec.substrate,
+            kt: params.k_substrate_xy,
+            m,
+            inv_tau,
+            hm: h / m,
+        }
+    }
+
+    /// Force and second half kick of the dense substrate spheres `b0..b0 + v.len()` (ids, pair
+    /// results: the dense arrays of the active set).
+    #[inline]
+    pub(crate) fn chunk_with(
+        &self,
+        b0: usize,
+        ids: &[u32],
+        out: &[PairOut],
+        v: &mut [[f64; 2]],
+        f: &mut [[f64; 2]],
+        x: &[[f64; 2]],
+    ) {
+        let (m, it) = (self.m, self.inv_tau);
+        for (l, ((v, f), x)) in v.iter_mut().zip(f.iter_mut()).zip(x).enumerate() {
+            let b = b0 + l;
+            let site = self.sites[ids[b] as usize];
+            let mut acc = [
+                self.kt * (site[0] - x[0]) - m * v[0] * it,
+                self.kt * (site[1] - x[1]) - m * v[1] * it,
+            ];
+            for &pi in &self.sub_items[self.sub_start[b] as usize..self.sub_start[b + 1] as usize] {
+                let o = &out[pi as usize];
+                acc[0] -= o.force[0];
+                acc[1] -= o.force[1];
+            }
+            kick_hm(&mut v[0], acc[0], self.hm);
+            kick_hm(&mut v[1], acc[1], self.hm);
+            *f = acc;
+        }
+    }
+}
+
+impl Sim {
+    /// Every force from the current positions and half-step velocities, each particle's second
+    /// half kick by `h` (0: forces only), the control layer's force and second half kick, and
+    /// the common mode's. Updates the tangential histories by one step. With
+    /// `defer_substrate` the substrate spheres' force and second half kick are left to the next
+    /// step's fused first pass ([`Sim::kick_drift`]).
+    pub(crate) fn forces(&mut self, h: f64, defer_substrate: bool) {
+        let p = &self.params;
+        let rel = p.damping_frame == DampingFrame::Relative;
+        let inv_tau = self.inv_tau();
+        let (q, qd) = (self.q(), self.qdot());
+        let par = self.par();
+        let s = &mut self.state;
+        let ch = self.idx.chunks;
+        let n_sl = s.act.sl.len();
+        // 1. slider spheres and their pairs
+        let parts = &mut self.idx.parts;
+        {
+            let crate::system::Active {
+                sl,
+                sl_x,
+                sl_v,
+                sl_f,
+                sub,
+                sub_x,
+                sub_v,
+                hist,
+                out,
+                ..
+            } = &mut s.act;
+            let pass = SliderPass {
+                model: &self.model,
+                ids: sl,
+                x: sl_x,
+                off: &self.body.off,
+                pstart: &self.idx.sl_pair_start,
+                pair_b: &self.idx.pair_b,
+                sub_ids: sub,
+                sub_x,
+                sub_v,
+                sub_h: &self.sub_h,
+                cx: s.cl_x,
+                q,
+                qd,
+                vref: if rel {
+                    [s.cl_v[0], s.cl_v[1]]
+                } else {
+                    [0.0; 2]
+                },
+                rel,
+                tilting: self.body.tilt.is_some(),
+                rigid: p.rigid_z,
+                kxy: p.k_slider_xy,
+                kz: p.k_slider_z,
+                m_s: self.body.m_s,
+                m_eff: 0.5 * self.body.m_s,
+                inv_tau,
+                dt: self.dt,
+                hm: h / self.body.m_s,
+                chunk: ch.sl,
+            };
+            if n_sl > 0 {
+                let nc = ch.n_sl_chunks(n_sl);
+                pass.run(0, nc, sl_v, sl_f, hist, out, &mut parts[..nc], par);
+            }
+        }
+        let mut r = [0.0; 5];
+        for part in parts.iter().take(ch.n_sl_chunks(n_sl)) {
+            for k in 0..5 {
+                r[k] += part[k];
+            }
+        }
+        // 2. substrate spheres (deferred when pipelined: see `Sim::run_steps`)
+        if !defer_substrate {
+            self.substrate_forces(h);
+        }
+        let p = &self.params;
+        let s = &mut self.state;
+        // 3. common mode of the inactive slider spheres
+        let m = self.body.m_s;
+        {
+            let c = &mut s.common;
+            let vref = if rel {
+                [s.cl_v[0], s.cl_v[1]]
+            } else {
+                [0.0; 2]
+            };
+            for k in 0..2 {
+                c.fu[k] = -p.k_slider_xy * c.u[k] - m * (c.v[k] - vref[k]) * inv_tau;
+                kick(&mut c.v[k], c.fu[k], h, m);
+                c.fd[k] = -p.k_slider_xy * c.d[k] - m * c.dv[k] * inv_tau;
+                kick(&mut c.dv[k], c.fd[k], h, m);
+            }
+            if !p.rigid_z {
+                let sref = if rel { qd } else { [0.0; 3] };
+                for k in 0..3 {
+                    c.fw[k] = -p.k_slider_z * c.w[k] - m * (c.s[k] - sref[k]) * inv_tau;
+                    kick(&mut c.s[k], c.fw[k], h, m);
+                    c.fdz[k] = -p.k_slider_z * c.dz[k] - m * c.dzv[k] * inv_tau;
+                    kick(&mut c.dzv[k], c.fdz[k], h, m);
+                }
+            }
+        }
+        // 4. control layer: reactions, load, mount, damping, pulling spring; second half kick
+        let n_in = self.idx.n_in as f64;
+        let mut f = [r[0], r[1], r[2]];
+        let mut qt = [r[3], r[4]];
+        if self.idx.n_in > 0 {
+            // reaction of the free slider spheres: the common mode (N_in·k·u, k_z·G_in·w)
+            // plus the sum of their ringing deviations (k·Σδ, k_z·Σδz g)
+            let c = &s.common;
+            f[0] += n_in * p.k_slider_xy * c.u[0] + p.k_slider_xy * c.d[0];
+            f[1] += n_in * p.k_slider_xy * c.u[1] + p.k_slider_xy * c.d[1];
+            if !p.rigid_z {
+                let gw = mat_vec(&self.idx.g_in, c.w);
+                f[2] += p.k_slider_z * (gw[0] + c.dz[0]);
+                qt[0] += p.k_slider_z * (gw[1] + c.dz[1]);
+                qt[1] += p.k_slider_z * (gw[2] + c.dz[2]);
+            }
+        }
+        f[2] -= p.load;
+        match &self.body.tilt {
+            None => f[2] -= self.body.mz * s.cl_v[2] * inv_tau,
+            Some(t) => {
+                let mq = mat_vec(&t.m, qd);
+                f[2] -= mq[0] * inv_tau;
+                qt[0] -= mq[1] * inv_tau + t.k[0][0] * s.tilt[0] + t.k[0][1] * s.tilt[1];
+                qt[1] -= mq[2] * inv_tau + t.k[1][0] * s.tilt[0] + t.k[1][1] * s.tilt[1];
+            }
+        }
+        let vr = if rel { s.support_v } else { [0.0; 2] };
+        f[0] -= self.body.m_cl * (s.cl_v[0] - vr[0]) * inv_tau;
+        f[1] -= self.body.m_cl * (s.cl_v[1] - vr[1]) * inv_tau;
+        if s.spring_on {
+            let d = spring_stretch(p, s.support, s.cl_x);
+            f[0] += p.k0 * d[0];
+            f[1] += p.k0 * d[1];
+        }
+        s.cl_f = f;
+        s.tilt_f = qt;
+        if h != 0.0 {
+            self.kick_control_second(h);
+        }
+    }
+
+    /// Force and second half kick (`h`) of the active substrate spheres (one parallel pass).
+    pub(crate) fn substrate_forces(&mut self, h: f64) {
+        let inv_tau = self.inv_tau();
+        let ctx = SubstrateForce::new(
+            &self.idx,
+            &self.spec,
+            &self.params,
+            self.body.m_s,
+            inv_tau,
+            h,
+        );
+        let ch = self.idx.chunks;
+        let par = self.par();
+        let c = ch.sub;
+        let crate::system::Active {
+            sub,
+            sub_x,
+            sub_v,
+            sub_f,
+            out,
+            ..
+        } = &mut self.state.act;
+        let (ids, out) = (&*sub, &*out);
+        let body = |(k, ((v, f), x)): SubstrateChunk| {
+            ctx.chunk_with(k * c, ids, out, v, f, x);
+        };
+        if par {
+            sub_v
+                .par_chunks_mut(c)
+                .zip(sub_f.par_chunks_mut(c))
+                .zip(sub_x.par_chunks(c))
+                .enumerate()
+                .for_each(body);
+        } else {
+            sub_v
+                .chunks_mut(c)
+                .zip(sub_f.chunks_mut(c))
+                .zip(sub_x.chunks(c))
+                .enumerate()
+                .for_each(body);
+        }
+    }
+
+    /// Second half kick of the control layer.
+    fn kick_control_second(&mut self, h: f64) {
+        let s = &mut self.state;
+        if s.held_xy {
+            s.cl_v[0] = 0.0;
+            s.cl_v[1] = 0.0;
+        } else {
+            kick(&mut s.cl_v[0], s.cl_f[0], h, self.body.m_cl);
+            kick(&mut s.cl_v[1], s.cl_f[1], h, self.body.m_cl);
+        }
+        match &self.body.tilt {
+            None => kick(&mut s.cl_v[2], s.cl_f[2], h, self.body.mz),
+            Some(t) => {
+                let a = mat_vec(&t.m_inv, [s.cl_f[2], s.tilt_f[0], s.tilt_f[1]]);
+                s.cl_v[2] += h * a[0];
+                s.tilt_v[0] += h * a[1];
+                s.tilt_v[1] += h * a[2];
+            }
+        }
+    }
+}
