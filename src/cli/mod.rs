@@ -6,6 +6,7 @@
 mod checks;
 mod corrugation;
 mod dem_args;
+mod design;
 mod equilibrate;
 mod export_lammps;
 mod figures;
@@ -49,6 +50,10 @@ enum Command {
     Corrugation(corrugation::Args),
     /// Surrogate friction estimate μ_est per θ × α × load (coating + Prandtl–Tomlinson terms).
     Friction(friction::Args),
+    /// Design: screen → shortlist → α scan + friction estimate → ranking → DEM confirmation,
+    /// with report.md (the best θ and α per pattern and the load up to which it stays
+    /// superlubric).
+    Design(design::Args),
     /// Regenerate the screening study's figures (PNG + CSV) into `figures/`.
     Figures(figures::Args),
     /// Dynamic DEM equilibration under load (orientation study), compared with the surrogate.
@@ -97,6 +102,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Landscape(a) => landscape::run(a),
         Command::Corrugation(a) => corrugation::run(a),
         Command::Friction(a) => friction::run(a),
+        Command::Design(a) => design::run(a),
         Command::Figures(a) => figures::run(a),
         Command::Equilibrate(a) => equilibrate::run(a),
         Command::Slide(a) => slide::run(a),

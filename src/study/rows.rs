@@ -40,7 +40,7 @@ pub fn label(v: f64) -> f64 {
 
 /// One configuration (θ, W) of an orientation × load screen. The leading seven columns are the
 /// screening answer; units in the names.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[allow(non_snake_case)]
 pub struct ScreenRow {
     /// Pattern pair name (`slider-substrate`; `*` = a preset whose lattices a scene file changed,
