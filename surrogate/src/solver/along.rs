@@ -151,8 +151,10 @@ impl Solver {
                     .collect()
             })
             .collect();
-        let mut out: Vec<Result<Vec<T>, SceneError>> =
-            loads.iter().map(|_| Ok(Vec::with_capacity(s.len()))).collect();
+        let mut out: Vec<Result<Vec<T>, SceneError>> = loads
+            .iter()
+            .map(|_| Ok(Vec::with_capacity(s.len())))
+            .collect();
         for sample in chunks.into_iter().flatten() {
             for (j, r) in sample.into_iter().enumerate() {
                 if let Ok(v) = &mut out[j] {
