@@ -117,6 +117,45 @@ fn no_dem_writes_the_report_and_a_second_run_recomputes_nothing() {
             assert!(a >= b, "{p}: ranking not ordered by the superlubric load");
         }
     }
+    // the report's commands reproduce the rows: the screen byte for byte, the friction rows of
+    // the first evaluated orientation of each pattern line for line
+    let cmds: Vec<&str> = report
+        .lines()
+        .filter(|l| l.starts_with("superlube screen ") || l.starts_with("superlube friction "))
+        .collect();
+    for p in ["square-tri", "tri-tri"] {
+        for kind in ["screen", "friction"] {
+            let cmd = cmds
+                .iter()
+                .find(|l| l.starts_with(&format!("superlube {kind} --pattern {p} ")))
+                .unwrap_or_else(|| panic!("no {kind} command for {p}"));
+            let mut words: Vec<&str> = cmd.split_whitespace().skip(1).collect();
+            if let Some(k) = words.iter().position(|w| *w == "--out") {
+                words.truncate(k);
+            }
+            let mine = d.join(format!("{kind}-{p}.csv"));
+            let o = bin().args(&words).arg("--out").arg(&mine).output().unwrap();
+            assert_ok(&o);
+            let got = std::fs::read_to_string(&mine).unwrap();
+            let design_file = std::fs::read_to_string(out.join(format!("{kind}_{p}.csv"))).unwrap();
+            if kind == "screen" {
+                assert_eq!(got, design_file, "{cmd}");
+            } else {
+                let mut n = 0;
+                for line in got.lines().skip(1) {
+                    let key: Vec<&str> = line.split(',').take(4).collect();
+                    if let Some(d) = design_file
+                        .lines()
+                        .find(|l| l.split(',').take(4).collect::<Vec<_>>() == key)
+                    {
+                        assert_eq!(d, line, "{cmd}");
+                        n += 1;
+                    }
+                }
+                assert!(n >= 1, "{cmd}: no row of the design reproduced");
+            }
+        }
+    }
     // the screen stage holds the cut θ (square-tri: 0–15°, 16 θ × 4 loads)
     let screen = std::fs::read_to_string(out.join("screen_square-tri.csv")).unwrap();
     assert_eq!(screen.lines().count(), 1 + 16 * 4);
@@ -131,6 +170,36 @@ fn no_dem_writes_the_report_and_a_second_run_recomputes_nothing() {
     assert!(log.contains("nothing rewritten"), "{log}");
     assert!(!log.contains("screened 16"), "{log}");
     assert_eq!(mtimes(&out), before, "a file was rewritten");
+    // an interruption that lost one orientation's stage file and the report: only those are
+    // made again (with the same content), every other stage file is reused untouched
+    let stage_dir = out.join("stages/tri-tri");
+    let lost = std::fs::read_dir(&stage_dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .find(|p| {
+            let n = p.file_name().unwrap().to_string_lossy().into_owned();
+            n.starts_with("theta_") && n.ends_with(".json") && !n.ends_with(".meta.json")
+        })
+        .unwrap();
+    let lost_bytes = std::fs::read(&lost).unwrap();
+    let lost_eval: serde_json::Value = serde_json::from_slice(&lost_bytes).unwrap();
+    std::fs::remove_file(&lost).unwrap();
+    std::fs::remove_file(out.join("report.md")).unwrap();
+    let o = design(&["--no-dem"], &out);
+    assert_ok(&o);
+    let again: serde_json::Value = serde_json::from_slice(&std::fs::read(&lost).unwrap()).unwrap();
+    assert_eq!(again["eval"], lost_eval["eval"], "recomputed stage differs");
+    let after = mtimes(&out);
+    for (f, t) in &before {
+        let remade = f == &lost
+            || f.ends_with("report.md")
+            || f.to_string_lossy().contains(&*lost.to_string_lossy())
+            || f.ends_with("report.md.meta.json");
+        if !remade {
+            assert_eq!(after.get(f), Some(t), "{} was rewritten", f.display());
+        }
+    }
+    let before = after;
     // a changed input with the same --out is refused, naming the difference; nothing changes
     let o = bin()
         .arg("design")
