@@ -3,7 +3,8 @@
 //! **Interface** (the smallest the design needs; the one place to switch to the study layer's
 //! batch runner): [`run_batch`] takes a list of slide configurations ([`SlideJob`]: a name, the
 //! scene at its θ, the DEM parameters with α and the line set), a number of runs side by side
-//! and an output directory, and returns one [`SlideOutcome`] per job, in order.
+//! and an output directory, and returns one [`SlideOutcome`] per job, in order. Runs side by
+//! side get one thread each (a lone run all of them).
 //!
 //! Each run writes into `dir/<name>/`: `slide.csv` (time series) and `slide.json` (the summary
 //! of `superlube slide --json`), each with its sidecar — the same `input_hash` as
@@ -241,8 +242,9 @@ fn run_one(
     }
 }
 
-/// Runs `jobs` (see the module docs) with up to `side_by_side` runs at once, each on one
-/// thread, under `dir`. Progress: one stage `confirm` over the runs still to compute. Errors:
+/// Runs `jobs` (see the module docs) with up to `side_by_side` runs at once, under `dir`; each
+/// run gets the process's threads divided by the runs side by side (one each when they fill the
+/// cores; all of them for a lone run). DEM results are the same for any thread count. Progress: one stage `confirm` over the runs still to compute. Errors:
 /// only a stage file of other inputs (never mixed) or an unwritable directory; a failing run is
 /// an outcome.
 pub fn run_batch(
@@ -267,11 +269,13 @@ pub fn run_batch(
         let next = Mutex::new(0usize);
         let results: Mutex<Vec<(usize, SlideOutcome)>> = Mutex::new(Vec::new());
         let workers = side_by_side.clamp(1, todo.len());
+        // one thread per run when the runs fill the cores; a lone run takes them all
+        let per_run = (rayon::current_num_threads() / workers).max(1);
         std::thread::scope(|s| -> Result<()> {
             let mut handles = Vec::new();
             for _ in 0..workers {
                 let pool = rayon::ThreadPoolBuilder::new()
-                    .num_threads(1)
+                    .num_threads(per_run)
                     .build()
                     .context("creating a one-thread pool for a DEM run")?;
                 let (todo, next, results, batch, store, inputs) =

@@ -27,6 +27,7 @@
 //! ([`store`]): a re-run with the same `--out` reuses every finished stage and DEM run, and one
 //! with other inputs is refused with the differences named.
 
+pub mod answer;
 pub mod confirm;
 pub mod params;
 pub mod rank;
@@ -177,6 +178,8 @@ pub struct DesignOutcome {
     pub dem: Vec<DemEntry>,
     /// Whether the DEM stage ran.
     pub dem_ran: bool,
+    /// The answer per pattern (the ranking checked against the DEM, [`answer`]).
+    pub answers: Vec<answer::Answer>,
 }
 
 /// The design's inputs: with `with_dem` false, those of the surrogate tiers (recorded in
@@ -262,11 +265,25 @@ pub fn design(
         confirm_estimates(&mut patterns, p, store)?;
         confirm_stage(&patterns, p, store, progress)?
     };
+    let answers = patterns
+        .iter()
+        .map(|pr| answer::answer(pr, &dem, !p.no_dem, p))
+        .collect();
     let outcome = DesignOutcome {
         patterns,
         dem,
         dem_ran: !p.no_dem,
+        answers,
     };
+    let rows = report::dem_rows(&outcome, p);
+    let top = label(n_to_mn(*p.loads.last().unwrap_or(&0.0)));
+    for (pr, a) in outcome.patterns.iter().zip(&outcome.answers) {
+        progress.note(
+            &report::answer_line(pr, a, &rows, p, top)
+                .replace("**", "")
+                .replacen("- ", "answer: ", 1),
+        );
+    }
     // 7. report, CSVs, PNGs
     report::write(store, &inputs(scenes, p, true), p, &outcome, progress)?;
     Ok(outcome)
@@ -390,7 +407,7 @@ fn pattern(
     ranking.sort_by(rank::compare);
     if let Some(b) = ranking.first() {
         progress.note(&format!(
-            "{name}: best design θ = {}°, α = {}°: superlubric up to {} mN (μ_est ≤ {:.4}); {} orientations evaluated ({stop})",
+            "{name}: the estimate's best design: θ = {}°, α = {}°, superlubric up to {} mN (μ_est ≤ {:.4}); {} orientations evaluated ({stop})",
             b.theta_deg,
             b.alpha_deg,
             b.score.superlubric_to_mn,
@@ -653,7 +670,10 @@ fn confirm_estimates(
     Ok(())
 }
 
-/// Stage 6: the DEM runs of the top designs.
+/// Stage 6: the DEM runs of the top designs (one batch, side by side), then — when the
+/// confirmation protocol is shorter than the study's — the study's protocol on the first
+/// pattern's answer at the middle confirmation load (alone, on every thread), to measure the
+/// shorter protocol's difference.
 fn confirm_stage(
     patterns: &[PatternResult],
     p: &DesignParams,
@@ -681,20 +701,6 @@ fn confirm_stage(
             }
         }
     }
-    if p.protocol_check && !p.dem_is_study_protocol {
-        let w = p.confirm_loads[p.confirm_loads.len() / 2];
-        if let Some((pr, c)) = patterns
-            .iter()
-            .find_map(|pr| pr.ranking.first().map(|c| (pr, c)))
-        {
-            jobs.push(SlideJob {
-                name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
-                scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
-                params: dem_params(p, c.alpha_deg, w, true),
-            });
-            entries.push((pr.scene.name.clone(), 1, c.theta_deg, c.alpha_deg, w, true));
-        }
-    }
     if jobs.is_empty() {
         progress.note("DEM: nothing to confirm (no ranked design)");
         return Ok(Vec::new());
@@ -705,7 +711,34 @@ fn confirm_stage(
         p.jobs.min(jobs.len()),
         store.path("dem").display()
     ));
-    let outcomes = run_batch(&jobs, p.jobs, &store.path("dem"), progress)?;
+    let mut outcomes = run_batch(&jobs, p.jobs, &store.path("dem"), progress)?;
+    let mut dem = to_entries(&entries, &outcomes);
+    // the protocol check, on the first pattern's answer
+    if p.protocol_check && !p.dem_is_study_protocol {
+        let w = p.confirm_loads[p.confirm_loads.len() / 2];
+        let first = patterns.iter().find_map(|pr| {
+            let a = answer::answer(pr, &dem, true, p);
+            a.index.map(|i| (pr, i, &pr.ranking[i]))
+        });
+        if let Some((pr, i, c)) = first {
+            let job = SlideJob {
+                name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
+                scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
+                params: dem_params(p, c.alpha_deg, w, true),
+            };
+            progress.note(&format!(
+                "DEM: the study's protocol (10 + 10 + 300 µs) on {} θ = {}°, α = {}° at {} mN, to measure the shorter protocol's difference",
+                pr.scene.name,
+                c.theta_deg,
+                c.alpha_deg,
+                label(n_to_mn(w))
+            ));
+            let o = run_batch(std::slice::from_ref(&job), 1, &store.path("dem"), progress)?;
+            entries.push((pr.scene.name.clone(), i + 1, c.theta_deg, c.alpha_deg, w, true));
+            outcomes.extend(o);
+            dem = to_entries(&entries, &outcomes);
+        }
+    }
     let reused = outcomes.iter().filter(|o| o.reused).count();
     if reused > 0 {
         progress.note(&format!(
@@ -713,9 +746,18 @@ fn confirm_stage(
             outcomes.len()
         ));
     }
-    Ok(entries
-        .into_iter()
-        .zip(outcomes)
+    Ok(dem)
+}
+
+/// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study).
+fn to_entries(
+    entries: &[(String, usize, f64, f64, f64, bool)],
+    outcomes: &[SlideOutcome],
+) -> Vec<DemEntry> {
+    entries
+        .iter()
+        .cloned()
+        .zip(outcomes.iter().cloned())
         .map(
             |((pattern, rank, theta_deg, alpha_deg, load, study), outcome)| DemEntry {
                 pattern,
@@ -727,5 +769,5 @@ fn confirm_stage(
                 outcome,
             },
         )
-        .collect())
+        .collect()
 }

@@ -13,6 +13,7 @@
 //! | `pmax_<p>.png`, `corrugation_<p>.png`, `mu_<p>.png` | P_max vs θ per load with P_crit; corrugation vs α of the finalists; μ vs load, surrogate lines and DEM markers |
 
 use super::rank::{Candidate, RankingRow};
+use super::answer::{Answer, Check};
 use super::{DesignOutcome, DesignParams, PatternResult};
 use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
 use crate::study::meta::Inputs;
@@ -238,6 +239,122 @@ pub fn protocol_words(p: &DesignParams) -> String {
     )
 }
 
+/// The answer of one pattern as a Markdown list item (also the final log line).
+pub fn answer_line(
+    pr: &PatternResult,
+    a: &Answer,
+    dem: &[DemRow],
+    p: &DesignParams,
+    w_top: f64,
+) -> String {
+    let name = &pr.scene.name;
+    let pc = pa_to_gpa(pr.scene.scene.coating.p_crit);
+    let mut m = String::new();
+    let Some(b) = a.index.and_then(|i| pr.ranking.get(i)) else {
+        return format!(
+            "- **{name}**: no design — no orientation keeps the coating intact (P_max ≤ {pc} GPa) even at the lowest load."
+        );
+    };
+    if b.score.superlubric_to_mn == 0.0 {
+        let _ = write!(
+            m,
+            "- **{name}**: no design is superlubric even at the lowest load; the best candidate, θ = {}°, α = {}°, has μ_est = {} there (coating intact on its path up to {} mN).",
+            b.theta_deg,
+            b.alpha_deg,
+            fmt_g(b.score.mu_worst, 3),
+            b.score.intact_to_mn
+        );
+    } else {
+        let fr = row_at(b, b.score.superlubric_to_mn);
+        let _ = write!(
+            m,
+            "- **{name}**: θ = **{}°**, α = **{}°** from the contact line (pull at {}° from the substrate x axis; contact line at {}°) stays superlubric up to **{} mN**{}: μ_est ≤ {}, P_max ≤ {} GPa on the path at {} mN (P_crit = {pc} GPa), {} contacts on average; rank {} of the estimate.",
+            b.theta_deg,
+            b.alpha_deg,
+            fmt_g(b.direction_deg, 4),
+            fmt_g(b.line_deg, 4),
+            b.score.superlubric_to_mn,
+            if b.score.superlubric_to_mn == w_top {
+                " (the highest load asked)"
+            } else {
+                ""
+            },
+            fmt_g(b.score.mu_worst, 3),
+            opt(fr.and_then(|f| f.p_max_GPa), 3),
+            b.score.superlubric_to_mn,
+            fmt_g(b.score.contacts, 3),
+            a.index.unwrap_or(0) + 1
+        );
+    }
+    let runs: Vec<String> = dem
+        .iter()
+        .filter(|d| {
+            d.pattern == *name
+                && d.theta_deg == b.theta_deg
+                && d.alpha_deg == b.alpha_deg
+                && d.protocol == "design"
+        })
+        .map(|d| match d.mu_dem {
+            Some(mu) => format!(
+                "{} mN: μ_DEM = {}{}",
+                d.load_mN,
+                fmt_g(mu, 3),
+                match d.superlubric_dem {
+                    Some(true) => " (superlubric)",
+                    _ => " (not superlubric)",
+                }
+            ),
+            None => format!("{} mN: failed", d.load_mN),
+        })
+        .collect();
+    match &a.check {
+        Check::NoDem => {
+            let _ = write!(m, " Not checked with the DEM (`--no-dem`).");
+        }
+        Check::Confirmed(loads) => {
+            let _ = write!(
+                m,
+                " **Confirmed by the DEM** at {} mN ({}).",
+                loads
+                    .iter()
+                    .map(|w| format!("{w}"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                runs.join("; ")
+            );
+        }
+        Check::Contradicted(why) => {
+            let _ = write!(
+                m,
+                " **Not confirmed**: no DEM-checked design of the top {} is; this one's DEM run says {why} ({}).",
+                p.confirm,
+                runs.join("; ")
+            );
+        }
+        Check::Unchecked => {
+            let _ = write!(
+                m,
+                " Not checkable with the DEM at the confirmation loads ({}).",
+                if runs.is_empty() {
+                    "none up to its superlubric load".to_string()
+                } else {
+                    runs.join("; ")
+                }
+            );
+        }
+    }
+    for (rank, c) in &a.others {
+        if let (Some(d), Check::Contradicted(why)) = (pr.ranking.get(rank - 1), c) {
+            let _ = write!(
+                m,
+                " The estimate's rank {rank} (θ = {}°, α = {}°, superlubric to {} mN by the estimate) is contradicted by the DEM: {why}.",
+                d.theta_deg, d.alpha_deg, d.score.superlubric_to_mn
+            );
+        }
+    }
+    m
+}
+
 /// The whole `report.md`.
 pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
     let mut m = String::new();
@@ -253,73 +370,8 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
     );
     // 1. The answer
     let _ = writeln!(m, "## Answer\n");
-    for pr in &o.patterns {
-        let name = &pr.scene.name;
-        let pc = pa_to_gpa(pr.scene.scene.coating.p_crit);
-        match pr.ranking.first() {
-            None => {
-                let _ = writeln!(
-                    m,
-                    "- **{name}**: no design — no orientation keeps the coating intact (P_max ≤ {pc} GPa) even at the lowest load.",
-                );
-            }
-            Some(b) if b.score.superlubric_to_mn == 0.0 => {
-                let _ = writeln!(
-                    m,
-                    "- **{name}**: no design is superlubric even at the lowest load; the best candidate, θ = {}°, α = {}°, has μ_est = {} there (coating intact up to {} mN).",
-                    b.theta_deg,
-                    b.alpha_deg,
-                    fmt_g(b.score.mu_worst, 3),
-                    b.score.intact_to_mn
-                );
-            }
-            Some(b) => {
-                let fr = row_at(b, b.score.superlubric_to_mn);
-                let _ = write!(
-                    m,
-                    "- **{name}**: θ = **{}°**, α = **{}°** from the contact line (pull at {}° from the substrate x axis; contact line at {}°) stays superlubric up to **{} mN**{}: μ_est ≤ {}, P_max ≤ {} GPa on the path at {} mN (P_crit = {pc} GPa), {} contacts on average.",
-                    b.theta_deg,
-                    b.alpha_deg,
-                    fmt_g(b.direction_deg, 4),
-                    fmt_g(b.line_deg, 4),
-                    b.score.superlubric_to_mn,
-                    if b.score.superlubric_to_mn == w_top {
-                        " (the highest load asked)"
-                    } else {
-                        ""
-                    },
-                    fmt_g(b.score.mu_worst, 3),
-                    opt(fr.and_then(|f| f.p_max_GPa), 3),
-                    b.score.superlubric_to_mn,
-                    fmt_g(b.score.contacts, 3)
-                );
-                let mine: Vec<&DemRow> = dem
-                    .iter()
-                    .filter(|d| d.pattern == *name && d.rank == 1 && d.protocol == "design")
-                    .collect();
-                if !mine.is_empty() {
-                    let parts: Vec<String> = mine
-                        .iter()
-                        .map(|d| match d.mu_dem {
-                            Some(mu) => format!(
-                                "μ_DEM = {} at {} mN (μ_est {}{})",
-                                fmt_g(mu, 3),
-                                d.load_mN,
-                                opt(d.mu_est, 3),
-                                match d.verdicts_agree {
-                                    Some(true) => ", same verdict",
-                                    Some(false) => ", **verdicts differ**",
-                                    None => "",
-                                }
-                            ),
-                            None => format!("DEM at {} mN failed: {}", d.load_mN, d.error),
-                        })
-                        .collect();
-                    let _ = write!(m, " DEM confirmation: {}.", parts.join("; "));
-                }
-                let _ = writeln!(m);
-            }
-        }
+    for (pr, a) in o.patterns.iter().zip(&o.answers) {
+        let _ = writeln!(m, "{}", answer_line(pr, a, &dem, p, w_top));
     }
     // 2. How sure
     let _ = writeln!(m, "\n## How sure: surrogate estimate against the DEM\n");
@@ -555,15 +607,7 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         let line = p
             .line
             .map_or(String::new(), |l| format!(" --line-deg {}", rad_to_deg(l)));
-        for (k, e) in pr.evaluated.iter().enumerate() {
-            if k >= 12 {
-                let _ = writeln!(
-                    m,
-                    "# … ({} more orientations: the same two commands with their θ, scan load and α)",
-                    pr.evaluated.len() - k
-                );
-                break;
-            }
+        for e in &pr.evaluated {
             let alphas: Vec<String> = e
                 .eval
                 .scan
