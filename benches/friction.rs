@@ -6,10 +6,14 @@
 //! - square-tri θ = 10.2°, α = 90° and tri-tri θ = 30°, α = 90° (quasi-periodic: 12 µm, 241
 //!   samples, the worst case of the defaults).
 //!
+//! And the unit of `superlube friction` and `superlube design`: the study's 11 loads
+//! (0.35 … 3.86 mN) of one (θ, α) sharing one path (`estimate_friction_loads`), per (θ, α):
+//! divide by 11 for the cost per (θ, α, W).
+//!
 //! Run: `cargo bench --bench friction -- --warm-up-time 1 --measurement-time 5`
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
-use surrogate::friction::{estimate_friction, FrictionParams};
+use surrogate::friction::{estimate_friction, estimate_friction_loads, FrictionParams};
 use surrogate::map::{contact_line_direction, MapParams};
 use surrogate::solver::Solver;
 use surrogate::Scene;
@@ -43,6 +47,14 @@ fn bench(c: &mut Criterion) {
         g.bench_function(
             format!("{pattern}_theta{theta_deg}_alpha{alpha_deg}_1.4mN"),
             |b| b.iter(|| black_box(estimate_friction(&s, theta, dir, 1.4e-3, &p).unwrap())),
+        );
+        let loads: Vec<f64> = [0.35, 0.7, 1.05, 1.4, 1.75, 2.1, 2.45, 2.8, 3.15, 3.5, 3.86]
+            .iter()
+            .map(|w| w * 1e-3)
+            .collect();
+        g.bench_function(
+            format!("{pattern}_theta{theta_deg}_alpha{alpha_deg}_11_loads"),
+            |b| b.iter(|| black_box(estimate_friction_loads(&s, theta, dir, &loads, &p).unwrap())),
         );
     }
     g.finish();

@@ -347,7 +347,7 @@ fn bad_flags_are_refused_before_writing() {
     );
     refused(
         &["slide", "--shards", "2", "--out", j],
-        &["screen, landscape, corrugation (got `slide`)"],
+        &["runs sweeps: screen", "(got `slide`)"],
     );
     std::fs::remove_dir_all(&d).ok();
 }

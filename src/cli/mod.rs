@@ -6,9 +6,11 @@
 mod checks;
 mod corrugation;
 mod dem_args;
+mod design;
 mod equilibrate;
 mod export_lammps;
 mod figures;
+mod friction;
 mod lammps_check;
 mod landscape;
 mod merge;
@@ -46,6 +48,12 @@ enum Command {
     Landscape(landscape::Args),
     /// Corrugation and static-friction barrier along pulling directions α (quasi-static).
     Corrugation(corrugation::Args),
+    /// Surrogate friction estimate μ_est per θ × α × load (coating + Prandtl–Tomlinson terms).
+    Friction(friction::Args),
+    /// Design: screen → shortlist → α scan + friction estimate → ranking → DEM confirmation,
+    /// with report.md (the best θ and α per pattern and the load up to which it stays
+    /// superlubric).
+    Design(design::Args),
     /// Regenerate the screening study's figures (PNG + CSV) into `figures/`.
     Figures(figures::Args),
     /// Dynamic DEM equilibration under load (orientation study), compared with the surrogate.
@@ -73,15 +81,16 @@ pub struct SweepPlan {
 
 /// The sweep commands (those with `--shard`/`--resume`, which `superlube slurm` runs); each has
 /// an arm in [`prepare_sweep`].
-const SWEEP_COMMANDS: [&str; 3] = ["screen", "landscape", "corrugation"];
+const SWEEP_COMMANDS: [&str; 4] = ["screen", "landscape", "corrugation", "friction"];
 
-/// Every check of a sweep command line (`screen`, `landscape`, `corrugation`), as running it
+/// Every check of a sweep command line (`screen`, `landscape`, `corrugation`, `friction`), as running it
 /// would do them, without running it. `Ok(None)`: not a sweep command.
 fn prepare_sweep(command: Command) -> Result<Option<(&'static str, SweepPlan)>> {
     Ok(Some(match command {
         Command::Screen(a) => ("screen", screen::prepare(a)?.plan()),
         Command::Landscape(a) => ("landscape", landscape::prepare(a)?.plan()),
         Command::Corrugation(a) => ("corrugation", corrugation::prepare(a)?.plan()),
+        Command::Friction(a) => ("friction", friction::prepare(a)?.plan()),
         _ => return Ok(None),
     }))
 }
@@ -92,6 +101,8 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Screen(a) => screen::run(a),
         Command::Landscape(a) => landscape::run(a),
         Command::Corrugation(a) => corrugation::run(a),
+        Command::Friction(a) => friction::run(a),
+        Command::Design(a) => design::run(a),
         Command::Figures(a) => figures::run(a),
         Command::Equilibrate(a) => equilibrate::run(a),
         Command::Slide(a) => slide::run(a),

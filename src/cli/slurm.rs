@@ -51,7 +51,7 @@ pub struct Opts {
 pub struct Args {
     #[command(flatten)]
     opts: Opts,
-    /// The sweep command and its flags, as you would run it (`screen`, `landscape` or
+    /// The sweep command and its flags, as you would run it (`screen`, `landscape`, `friction` or
     /// `corrugation`; without --out, --shard, --resume, which the scripts set), e.g.
     /// `screen --pattern tri-tri --theta 0:30:0.1 --load-mn 1.4`.
     #[arg(

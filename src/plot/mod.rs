@@ -5,6 +5,7 @@
 
 mod colormap;
 mod contact_map;
+pub mod design;
 pub mod figures;
 mod heat_map;
 mod line_plot;

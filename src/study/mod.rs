@@ -12,6 +12,8 @@
 //! | one configuration's contacts | [`contacts::contacts`] | [`contacts::ContactsParams`] | `Equilibrium` → [`rows::ContactRow`]s |
 //! | landscape | [`landscape::landscape`] | [`landscape::LandscapeParams`] | [`rows::LandscapeRow`] stream + [`landscape::LandscapeStats`] |
 //! | corrugation | [`corrugation::corrugation`] | [`corrugation::CorrugationParams`] | [`rows::CorrugationRow`] stream + contact line |
+//! | friction | [`friction::friction`] | [`friction::FrictionSweepParams`] | [`rows::FrictionRow`] stream |
+//! | design | [`design::design`] | [`design::DesignParams`] | `report.md`, CSVs, PNGs under `--out` ([`design::report`]) |
 //! | figures | [`figures::figures`] | [`figures::FiguresParams`] | one [`figures::Figure`] at a time |
 //! | equilibrate | [`equilibrate::equilibrate`] | [`dem_run::DemParams`] | time series + [`rows::EquilibrateReport`] |
 //! | slide | [`slide::slide`] | [`dem_run::DemParams`] | time series + [`rows::SlideReport`] |
@@ -45,6 +47,7 @@
 //! | `screen` | one θ | number of loads | [`rows::ScreenRow`] (`screen`) | concatenation |
 //! | `landscape` | one grid point | 1 | [`rows::LandscapeZRow`] (`landscape-z`: exact z) | [`landscape::finish`]: Δz = z − min z over all shards |
 //! | `corrugation` | one α | 1 | [`rows::CorrugationRow`] (`corrugation`) | concatenation |
+//! | `friction` | one (θ, α) | number of loads | [`rows::FrictionRow`] (`friction`) | concatenation |
 //!
 //! Plugging in a new sweep (a `friction` sweep, a DEM batch of θ/α/W/seeds, a design's DEM
 //! stage) takes a few lines in its command (see `src/cli/screen.rs`):
@@ -72,8 +75,10 @@ pub mod budget;
 pub mod contacts;
 pub mod corrugation;
 pub mod dem_run;
+pub mod design;
 pub mod equilibrate;
 pub mod figures;
+pub mod friction;
 pub mod landscape;
 pub mod merge;
 pub mod meta;

@@ -4,6 +4,7 @@
 use super::contacts::ContactsParams;
 use super::corrugation::CorrugationParams;
 use super::dem_run::DemParams;
+use super::friction::FrictionSweepParams;
 use super::landscape::LandscapeParams;
 use super::rows::{clean, label};
 use super::screen::ScreenParams;
@@ -81,6 +82,35 @@ pub fn corrugation(p: &CorrugationParams) -> Value {
         "step_um": label(m_to_um(p.step)),
         "method": p.method,
         "grid": p.grid,
+    })
+}
+
+/// The friction estimate's knobs (user units).
+pub fn friction_knobs(k: &surrogate::friction::FrictionParams) -> Value {
+    json!({
+        "length_um": label(m_to_um(k.length)),
+        "max_period_um": label(m_to_um(k.max_period)),
+        "step_um": label(m_to_um(k.step)),
+        "transient_um": label(m_to_um(k.transient)),
+        "k0_N_m": k.k0,
+        "k_slider_xy_N_m": k.k_slider_xy,
+        "k_substrate_xy_N_m": k.k_substrate_xy,
+        "direction_tol_rad": k.direction_tol,
+        "segment_um": label(m_to_um(k.segment)),
+    })
+}
+
+/// `friction`: θ, α (degrees) and W (mN) axes, contact line, the estimate's knobs.
+pub fn friction(p: &FrictionSweepParams) -> Value {
+    let t: Vec<f64> = p.thetas.iter().map(|&t| label(rad_to_deg(t))).collect();
+    let a: Vec<f64> = p.alphas.iter().map(|&a| clean(rad_to_deg(a))).collect();
+    let w: Vec<f64> = p.loads.iter().map(|&w| label(n_to_mn(w))).collect();
+    json!({
+        "theta_deg": axis(&t),
+        "alpha_deg": axis(&a),
+        "load_mN": axis(&w),
+        "line_deg": p.line.map(rad_to_deg),
+        "friction": friction_knobs(&p.knobs),
     })
 }
 

@@ -9,12 +9,13 @@
 //! | [`LandscapeRow`] | `landscape --out`, `figures` (landscape_*.csv) | `x_um,y_um,dz_nm` |
 //! | [`LandscapeZRow`] | `landscape --shard i/n --out` (a shard, merged by `superlube merge`), the landscape's spill file | `x_um,y_um,z_um` (z exact, see [`exact_um`]) |
 //! | [`CorrugationRow`] | `corrugation --out`, `figures` (corrugation_square-tri.csv) | `theta_deg,load_mN,line_deg,alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN` |
+//! | [`FrictionRow`] | `friction --out`, `design` (friction_<pattern>.csv) | `pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,mu_coating,mu_corrugation,eta,barrier_pJ,max_lateral_force_mN,p_max_mean_GPa,contacts_mean,k_spring_N_m,line_deg,direction_deg,path_length_um,path_step_um,samples,periodic,slips,error` |
 //! | [`DemSample`] | `equilibrate --out`, `slide --out` | `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts` |
 //! | [`EquilibrateReport`], [`SlideReport`] | `equilibrate --json`, `slide --json` | JSON objects (keys documented on the fields) |
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use surrogate::solver::{ContactInfo, Equilibrium, Model};
-use surrogate::units::{m_to_nm, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, UN};
+use surrogate::units::{j_to_pj, m_to_nm, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, UN};
 
 pub use dem::protocol::Sample as DemSample;
 pub use dem::protocol::{EquilibrateSummary, SlideSummary};
@@ -39,7 +40,7 @@ pub fn label(v: f64) -> f64 {
 
 /// One configuration (θ, W) of an orientation × load screen. The leading seven columns are the
 /// screening answer; units in the names.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[allow(non_snake_case)]
 pub struct ScreenRow {
     /// Pattern pair name (`slider-substrate`; `*` = a preset whose lattices a scene file changed,
@@ -319,6 +320,121 @@ impl CorrugationRow {
             corrugation_nm: m_to_nm(p.corrugation),
             max_lateral_force_mn: n_to_mn(p.max_lateral_force),
         }
+    }
+}
+
+/// The surrogate friction estimate of one (θ, α, W) (`surrogate::friction`). The leading seven
+/// columns are the answer; units in the names. A configuration without an estimate (a failed
+/// solve along its path) has empty numbers and the reason in `error`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[allow(non_snake_case)]
+pub struct FrictionRow {
+    /// Pattern pair name (as in [`ScreenRow::pattern`]).
+    pub pattern: String,
+    /// Slider orientation θ (degrees).
+    pub theta_deg: f64,
+    /// Pulling angle α from the contact line (degrees).
+    pub alpha_deg: f64,
+    /// Normal load W (mN).
+    pub load_mN: f64,
+    /// Estimated friction coefficient μ_est = μ_coating + μ_corrugation.
+    pub mu_est: Option<f64>,
+    /// Largest P_max along the path (GPa): the coating is intact on the whole path iff
+    /// ≤ P_crit.
+    pub p_max_GPa: Option<f64>,
+    /// Path average of the fraction of W carried by contacts above P_crit, in [0, 1].
+    pub failed_fraction: Option<f64>,
+    /// Coating term ⟨Σ μ(p0_i) F_n,i |e_t,i|⟩ / W.
+    pub mu_coating: Option<f64>,
+    /// Corrugation (Prandtl–Tomlinson) term: dissipation per unit length / W.
+    pub mu_corrugation: Option<f64>,
+    /// Stick-slip parameter η = max(−V'')/K (> 1: stick-slip).
+    pub eta: Option<f64>,
+    /// Enthalpy barrier U0 = max V − min V along the path (pJ).
+    pub barrier_pJ: Option<f64>,
+    /// Largest quasi-static pulling force along the path (mN).
+    pub max_lateral_force_mN: Option<f64>,
+    /// Path average of P_max (GPa).
+    pub p_max_mean_GPa: Option<f64>,
+    /// Path average of the contact number.
+    pub contacts_mean: Option<f64>,
+    /// Prandtl–Tomlinson spring K: K0 in series with the contacts' lateral stiffness (N/m).
+    pub k_spring_N_m: Option<f64>,
+    /// Contact-line angle from the substrate x axis (degrees) that α is measured from.
+    pub line_deg: f64,
+    /// Pulling direction from the substrate x axis = line + α (degrees).
+    pub direction_deg: f64,
+    /// Path length (µm): one substrate period along a lattice direction, else the fixed length.
+    pub path_length_um: Option<f64>,
+    /// Sample spacing along the path (µm).
+    pub path_step_um: Option<f64>,
+    /// Solved samples along the path.
+    pub samples: Option<usize>,
+    /// Whether the path is one exact lattice period (periodic landscape).
+    pub periodic: Option<bool>,
+    /// Stick-slip jumps in the Prandtl–Tomlinson measuring window.
+    pub slips: Option<usize>,
+    /// Empty, or why this configuration has no estimate.
+    pub error: String,
+}
+
+impl FrictionRow {
+    /// The row of (θ rad, α rad from the contact line `line` rad, W N) from the estimate.
+    pub fn new(
+        pattern: &str,
+        theta: f64,
+        alpha: f64,
+        line: f64,
+        load: f64,
+        r: &Result<surrogate::friction::FrictionEstimate, surrogate::SceneError>,
+    ) -> FrictionRow {
+        let mut row = FrictionRow {
+            pattern: pattern.to_string(),
+            theta_deg: label(rad_to_deg(theta)),
+            alpha_deg: clean(rad_to_deg(alpha)),
+            load_mN: label(n_to_mn(load)),
+            mu_est: None,
+            p_max_GPa: None,
+            failed_fraction: None,
+            mu_coating: None,
+            mu_corrugation: None,
+            eta: None,
+            barrier_pJ: None,
+            max_lateral_force_mN: None,
+            p_max_mean_GPa: None,
+            contacts_mean: None,
+            k_spring_N_m: None,
+            line_deg: rad_to_deg(line),
+            direction_deg: clean(rad_to_deg(line + alpha)),
+            path_length_um: None,
+            path_step_um: None,
+            samples: None,
+            periodic: None,
+            slips: None,
+            error: String::new(),
+        };
+        match r {
+            Ok(e) => {
+                row.mu_est = Some(e.mu_est);
+                row.p_max_GPa = Some(pa_to_gpa(e.p_max_max));
+                row.failed_fraction = Some(e.failed_fraction);
+                row.mu_coating = Some(e.mu_coating);
+                row.mu_corrugation = Some(e.mu_corrugation);
+                row.eta = Some(e.eta);
+                row.barrier_pJ = Some(j_to_pj(e.barrier));
+                row.max_lateral_force_mN = Some(n_to_mn(e.max_lateral_force));
+                row.p_max_mean_GPa = Some(pa_to_gpa(e.p_max_mean));
+                row.contacts_mean = Some(e.contacts_mean);
+                row.k_spring_N_m = Some(e.k_spring);
+                row.path_length_um = Some(m_to_um(e.length));
+                row.path_step_um = Some(m_to_um(e.step));
+                row.samples = Some(e.samples);
+                row.periodic = Some(e.periodic);
+                row.slips = Some(e.slips);
+            }
+            Err(err) => row.error = err.to_string(),
+        }
+        row
     }
 }
 

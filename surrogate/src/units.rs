@@ -68,3 +68,9 @@ pub fn deg_to_rad(v: f64) -> f64 {
 pub fn rad_to_deg(v: f64) -> f64 {
     v.to_degrees()
 }
+/// Joules per picojoule.
+pub const PJ: f64 = 1e-12;
+/// J → pJ.
+pub fn j_to_pj(v: f64) -> f64 {
+    v / PJ
+}

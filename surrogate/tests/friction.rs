@@ -262,3 +262,52 @@ fn deterministic_across_thread_counts() {
     };
     assert_eq!(run(1), run(3));
 }
+
+/// Several loads of one (θ, direction) share the path's candidate searches and pair lists
+/// (`estimate_friction_loads`): every estimate is bit-identical to `estimate_friction` at that
+/// load alone (periodic and quasi-periodic paths, a rough substrate whose poses escalate to the
+/// tilt model); a bad load errs in its own slot, a path off the substrate for all.
+#[test]
+fn several_loads_equal_single_loads_bit_for_bit() {
+    use surrogate::friction::estimate_friction_loads;
+    let p = FrictionParams {
+        length: 3e-6,
+        transient: 1e-6,
+        step: 0.1e-6,
+        ..FrictionParams::default()
+    };
+    let mut rough = Scene::preset("tri-tri").unwrap();
+    rough.slider.radius = 20e-6;
+    rough.substrate.size = [80e-6, 80e-6];
+    rough.substrate.sigma_h = 0.01e-6;
+    let mut small = Scene::preset("square-tri").unwrap();
+    small.slider.radius = 20e-6;
+    small.substrate.size = [80e-6, 80e-6];
+    let loads = [0.05e-3, 0.2e-3, 0.6e-3];
+    for (sc, theta, dir) in [
+        (&small, 0.0, 90.0 * DEG),
+        (&small, 10.2 * DEG, 13.0 * DEG),
+        (&rough, 30.0 * DEG, 15.0 * DEG),
+    ] {
+        let s = Solver::new(sc).unwrap();
+        let many = estimate_friction_loads(&s, theta, dir, &loads, &p).unwrap();
+        assert_eq!(many.len(), loads.len());
+        for (w, m) in loads.iter().zip(&many) {
+            let one = estimate_friction(&s, theta, dir, *w, &p).unwrap();
+            let m = m.as_ref().unwrap();
+            assert_eq!(format!("{one:?}"), format!("{m:?}"));
+            assert_eq!(one.mu_est.to_bits(), m.mu_est.to_bits());
+        }
+    }
+    let s = Solver::new(&small).unwrap();
+    let r = estimate_friction_loads(&s, 0.0, 0.0, &[0.1e-3, -1.0, 0.2e-3], &p).unwrap();
+    assert!(r[0].is_ok() && r[2].is_ok());
+    assert!(r[1].as_ref().unwrap_err().to_string().contains("load_mN"));
+    let far = FrictionParams {
+        length: 200e-6,
+        max_period: 1e-6,
+        ..p
+    };
+    let e = estimate_friction_loads(&s, 0.0, 0.3, &[0.1e-3], &far).unwrap_err();
+    assert!(e.to_string().contains("friction.length_um"), "{e}");
+}

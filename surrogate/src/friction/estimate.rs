@@ -67,7 +67,8 @@ pub struct FrictionEstimate {
 /// [`crate::solver::Model::Auto`] (so the slider obeys the scene's mount), in parallel
 /// (rayon, one candidate search per `params.segment` of path), deterministically.
 /// Cost: `length/step + 1` equilibria (≈ 61–241 with the defaults; ≈ 0.3–0.5 ms each for the
-/// study's 3505-sphere slider) plus O(samples) for the model.
+/// study's 3505-sphere slider) plus O(samples) for the model. Several loads of one (θ,
+/// direction): [`estimate_friction_loads`] (same results, cheaper).
 ///
 /// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
 /// direction (`theta_deg`, `alpha_deg`), a path that takes the slider off the substrate
@@ -80,13 +81,37 @@ pub fn estimate_friction(
     params: &FrictionParams,
 ) -> Result<FrictionEstimate, SceneError> {
     params.validate()?;
-    if !(load.is_finite() && load > 0.0) {
-        return Err(SceneError::invalid(
+    check_load(load)?;
+    let mut one = estimate_friction_loads(solver, theta, direction, &[load], params)?;
+    one.pop().expect("one result per load")
+}
+
+fn check_load(load: f64) -> Result<(), SceneError> {
+    if load.is_finite() && load > 0.0 {
+        Ok(())
+    } else {
+        Err(SceneError::invalid(
             "load_mN",
             load * 1e3,
             "must be a positive number",
-        ));
+        ))
     }
+}
+
+/// [`estimate_friction`] at several loads `loads` (N) of one (θ, direction): one path, whose
+/// candidate searches and per-sample pair lists serve every load
+/// ([`crate::solver::Solver::solve_along_loads`]); each estimate is bit-identical to
+/// [`estimate_friction`] at that load alone. Returns one result per load, in order (a
+/// non-positive load or a failed solve errs in its own slot); the outer error is what fails for
+/// every load (a bad knob, θ or direction, a path off the substrate).
+pub fn estimate_friction_loads(
+    solver: &Solver,
+    theta: f64,
+    direction: f64,
+    loads: &[f64],
+    params: &FrictionParams,
+) -> Result<Vec<Result<FrictionEstimate, SceneError>>, SceneError> {
+    params.validate()?;
     if !theta.is_finite() {
         return Err(SceneError::invalid(
             "theta_deg",
@@ -125,9 +150,39 @@ pub fn estimate_friction(
         "friction.length_um",
     )?;
 
-    // 2. One equilibrium per sample, reduced to the sums the estimate needs.
-    let smp = solve_samples(solver, theta, e, load, &s, params)?;
+    // 2. One equilibrium per sample and load (valid loads only), reduced to the sums the
+    //    estimate needs.
+    let valid: Vec<f64> = loads
+        .iter()
+        .copied()
+        .filter(|&w| check_load(w).is_ok())
+        .collect();
+    let mut solved = solve_samples(solver, theta, e, &valid, &s, params).into_iter();
+    Ok(loads
+        .iter()
+        .map(|&load| {
+            check_load(load)?;
+            let smp = solved.next().unwrap_or_else(|| Ok(Vec::new()))?;
+            Ok(from_samples(
+                &smp, theta, direction, load, period, length, h, n, params,
+            ))
+        })
+        .collect())
+}
 
+/// Steps 3–4 of the estimate from the solved samples of one load.
+#[allow(clippy::too_many_arguments)]
+fn from_samples(
+    smp: &[Sample],
+    theta: f64,
+    direction: f64,
+    load: f64,
+    period: Option<f64>,
+    length: f64,
+    h: f64,
+    n: usize,
+    params: &FrictionParams,
+) -> FrictionEstimate {
     // 3. Path averages: periodic paths average the n distinct samples of one period (the last
     //    repeats the first); quasi-periodic ones use the trapezoid rule over [0, L].
     let weights: Vec<f64> = (0..=n)
@@ -168,7 +223,7 @@ pub fn estimate_friction(
     let vmin = v.iter().copied().fold(f64::INFINITY, f64::min);
     let vmax = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let mu_corrugation = pt.friction / load;
-    Ok(FrictionEstimate {
+    FrictionEstimate {
         theta,
         direction,
         load,
@@ -189,5 +244,5 @@ pub fn estimate_friction(
         periodic: period.is_some(),
         slips: pt.jumps,
         window: pt.window,
-    })
+    }
 }

@@ -83,6 +83,6 @@ mod params;
 mod path;
 mod tomlinson;
 
-pub use estimate::{estimate_friction, FrictionEstimate};
+pub use estimate::{estimate_friction, estimate_friction_loads, FrictionEstimate};
 pub use params::FrictionParams;
 pub use path::lattice_period;

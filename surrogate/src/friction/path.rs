@@ -56,17 +56,18 @@ pub(crate) struct Sample {
 }
 
 /// Solves every sample `s` (m) of the path from the scene's placement along the unit direction
-/// `e` at rotation `theta` (rad) and load `load` (N) with [`Model::Auto`]
-/// ([`Solver::solve_along`], one candidate search per `params.segment` of path, parallel,
-/// deterministic), and reduces each equilibrium to a [`Sample`].
+/// `e` at rotation `theta` (rad) for each load of `loads` (N) with [`Model::Auto`]
+/// ([`Solver::solve_along_loads`]: one candidate search per `params.segment` of path and one
+/// pair list per sample serve every load; parallel, deterministic), and reduces each equilibrium
+/// to a [`Sample`]. Per load (in order): its samples, or its first failed solve.
 pub(crate) fn solve_samples(
     solver: &Solver,
     theta: f64,
     e: [f64; 2],
-    load: f64,
+    loads: &[f64],
     s: &[f64],
     params: &FrictionParams,
-) -> Result<Vec<Sample>, SceneError> {
+) -> Vec<Result<Vec<Sample>, SceneError>> {
     let scene = solver.scene();
     let k = scene.hertz().k();
     let kt = solver.tilt_stiffness_at(theta);
@@ -79,7 +80,8 @@ pub(crate) fn solve_samples(
         s,
         segment: params.segment,
     };
-    solver.solve_along(path, load, Model::Auto, |_, eq| {
+    solver.solve_along_loads(path, loads, Model::Auto, |_, j, eq| {
+        let load = loads[j];
         let t = eq.tilt;
         let mut smp = Sample {
             v: load * eq.z

@@ -88,4 +88,83 @@ impl Solver {
             .collect();
         Ok(out?.into_iter().flatten().collect())
     }
+
+    /// [`Solver::solve_along`] for several loads (N) at once: every segment's candidate search
+    /// and every sample's filtered pair list ([`Solver::pairs_from`]) serve all loads, and the
+    /// loads of one sample share the prepared pair list ([`Solver::solve_loads_pairs`]). Each
+    /// equilibrium is bit-identical to the one [`Solver::solve_along`] gives for that load alone.
+    /// Returns, per load (in the order of `loads`), the mapped samples `f(s, load index, eq)` in
+    /// sample order, or that load's first failed solve. Parallel over segments, deterministic.
+    pub fn solve_along_loads<T, F>(
+        &self,
+        path: StraightPath,
+        loads: &[f64],
+        model: Model,
+        f: F,
+    ) -> Vec<Result<Vec<T>, SceneError>>
+    where
+        T: Send,
+        F: Fn(f64, usize, Equilibrium) -> T + Sync,
+    {
+        let StraightPath {
+            theta,
+            origin,
+            e,
+            s,
+            segment,
+        } = path;
+        let spacing = if s.len() > 1 {
+            (s[s.len() - 1] - s[0]) / (s.len() - 1) as f64
+        } else {
+            segment
+        };
+        let per = if spacing > 0.0 {
+            ((segment / spacing).round() as usize).max(1)
+        } else {
+            1
+        };
+        let at = |si: f64| Pose {
+            theta,
+            shift: [origin[0] + si * e[0], origin[1] + si * e[1]],
+        };
+        // per chunk, per sample, per load
+        type Solved<T> = Vec<Vec<Result<T, SceneError>>>;
+        let solve = |ps: &super::PairSet, si: f64| -> Vec<Result<T, SceneError>> {
+            self.solve_loads_pairs(ps, loads, model)
+                .into_iter()
+                .enumerate()
+                .map(|(j, r)| r.map(|eq| f(si, j, eq)))
+                .collect()
+        };
+        let chunks: Vec<Solved<T>> = s
+            .par_chunks(per)
+            .map(|chunk| {
+                if let [si] = chunk {
+                    return vec![solve(&self.pairs_at(at(*si)), *si)];
+                }
+                let (a, b) = (chunk[0], chunk[chunk.len() - 1]);
+                let reach = 0.5 * (b - a).abs() * (1.0 + 1e-9) + 1e-15;
+                let near = self.pairs_within(at(0.5 * (a + b)), reach);
+                chunk
+                    .iter()
+                    .map(|&si| solve(&self.pairs_from(&near, at(si)), si))
+                    .collect()
+            })
+            .collect();
+        let mut out: Vec<Result<Vec<T>, SceneError>> = loads
+            .iter()
+            .map(|_| Ok(Vec::with_capacity(s.len())))
+            .collect();
+        for sample in chunks.into_iter().flatten() {
+            for (j, r) in sample.into_iter().enumerate() {
+                if let Ok(v) = &mut out[j] {
+                    match r {
+                        Ok(t) => v.push(t),
+                        Err(e) => out[j] = Err(e),
+                    }
+                }
+            }
+        }
+        out
+    }
 }

@@ -1,0 +1,558 @@
+//! `superlube design`: flags → pattern scenes + [`DesignParams`] → [`crate::study::design::design`]
+//! (which writes everything under `--out`).
+
+use super::dem_args::ModelArg;
+use super::{checks, parse_list_or_range, SceneArgs};
+use crate::study::dem_run::{DemParams, ModelSpec};
+use crate::study::design::store::Store;
+use crate::study::design::{cut, design, DesignParams, DesignScene};
+use crate::study::{check_outputs, Reporter};
+use anyhow::{bail, Result};
+use dem::protocol::RunIo;
+use dem::{SimParams, Start};
+use std::path::PathBuf;
+use surrogate::friction::FrictionParams;
+use surrogate::units::{mn_to_n, um_to_m, us_to_s};
+
+/// The study's load list (mN): 0.35 to 3.5 in steps of 0.35, and 3.86.
+pub const STUDY_LOADS: &str = "0.35,0.7,1.05,1.4,1.75,2.1,2.45,2.8,3.15,3.5,3.86";
+
+/// Options of `superlube design`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Pattern pairs to design, comma-separated: tri-tri, square-tri, square-square, tri-square
+    /// (the study's geometry) [default: square-tri,tri-tri unless --scene is given].
+    #[arg(long, value_name = "P1,P2")]
+    pattern: Option<String>,
+    /// A scene file (TOML, user units; README "Scenes") to design, repeatable (`--scene a.toml
+    /// --scene b.toml`); named after the file stem in the outputs. The override flags below
+    /// apply to every pattern and scene.
+    #[arg(long, value_name = "FILE.toml")]
+    scene: Vec<PathBuf>,
+    /// Slider disc radius in µm (study: 93.5 triangular, 100 square), for every pattern.
+    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
+    slider_radius_um: Option<f64>,
+    /// Substrate rectangle size in µm, `LXxLY` (study: 364x270).
+    #[arg(long, value_name = "LXxLY", allow_hyphen_values = true)]
+    substrate_um: Option<String>,
+    /// Amplitude σ_h in µm of random substrate sphere heights (study: 0.002, 0.01).
+    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
+    sigma_h_um: Option<f64>,
+    /// Seed (a non-negative integer) of the substrate height perturbation.
+    #[arg(long, value_name = "SEED", allow_negative_numbers = true)]
+    seed: Option<u64>,
+    /// Young's modulus E in GPa (study: 100, also 50).
+    #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
+    youngs_gpa: Option<f64>,
+    /// Critical coating pressure P_crit in GPa (study: 4).
+    #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
+    p_crit_gpa: Option<f64>,
+    /// In-plane offset in µm of the slider centre from the central substrate sphere, `X,Y`
+    /// (breaks the symmetry the θ cut relies on: see --no-symmetry-cut).
+    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+    offset_um: Option<String>,
+    /// Slider mount: locked, free or springs (the study's anti-tilt springs) [default: springs].
+    #[arg(long, value_name = "MOUNT")]
+    tilt: Option<String>,
+    /// Anti-tilt spring stiffness K1 in N/m of `--tilt springs` (study: 1e6).
+    #[arg(long = "tilt-k1-n-m", value_name = "N_M", allow_hyphen_values = true)]
+    tilt_k1_n_m: Option<f64>,
+    /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
+    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: README "superlube design").
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value = "0:30:0.1",
+        allow_hyphen_values = true
+    )]
+    theta: String,
+    /// Screen θ as given, without the symmetry cut (for scenes whose symmetry is broken, e.g.
+    /// by --offset-um).
+    #[arg(long = "no-symmetry-cut")]
+    no_symmetry_cut: bool,
+    /// Normal loads W in mN, strictly increasing (list or range) [default: the study's
+    /// 0.35, 0.70, …, 3.50, 3.86].
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS, allow_hyphen_values = true)]
+    load_mn: String,
+    /// Friction coefficient below which a design counts as superlubric.
+    #[arg(
+        long = "mu-superlubric",
+        value_name = "MU",
+        default_value_t = 0.02,
+        allow_hyphen_values = true
+    )]
+    mu_superlubric: f64,
+    /// Orientations kept per lower load level of the shortlist (those with the lowest P_max).
+    #[arg(long = "per-level", value_name = "N", default_value_t = 3)]
+    per_level: usize,
+    /// Most orientations kept from the top level (those surviving the highest load).
+    #[arg(long = "max-top", value_name = "N", default_value_t = 40)]
+    max_top: usize,
+    /// Coarse step in degrees of the α scan over one α period (square-tri: 180°, tri-tri: 60°).
+    #[arg(
+        long = "alpha-step-deg",
+        value_name = "DEG",
+        default_value_t = 15.0,
+        allow_hyphen_values = true
+    )]
+    alpha_step_deg: f64,
+    /// Successive finer α steps in degrees, each scanned over ± half the previous step around
+    /// the best α so far (comma list, decreasing; `none` for no refinement).
+    #[arg(
+        long = "alpha-refine-deg",
+        value_name = "DEG,DEG",
+        default_value = "2.5,0.5",
+        allow_hyphen_values = true
+    )]
+    alpha_refine_deg: String,
+    /// Contact-line angle in degrees from the substrate x axis for every θ [default: the moiré
+    /// estimate at each θ, as in `corrugation` and `slide`].
+    #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
+    line_deg: Option<f64>,
+    /// Length in µm of each α-scan path.
+    #[arg(
+        long = "scan-um",
+        value_name = "UM",
+        default_value_t = 6.0,
+        allow_hyphen_values = true
+    )]
+    scan_um: f64,
+    /// Sample spacing in µm along the α-scan paths.
+    #[arg(
+        long = "scan-step-um",
+        value_name = "UM",
+        default_value_t = 0.1,
+        allow_hyphen_values = true
+    )]
+    scan_step_um: f64,
+    /// Pulling angles per orientation whose friction is estimated (the lowest-corrugation
+    /// minima of the α scan, at least one coarse step apart).
+    #[arg(long = "best-alphas", value_name = "N", default_value_t = 1)]
+    alphas_per_theta: usize,
+    /// Friction estimate: path length in µm along non-lattice directions (as `friction`).
+    #[arg(
+        long = "length-um",
+        value_name = "UM",
+        default_value_t = 12.0,
+        allow_hyphen_values = true
+    )]
+    length_um: f64,
+    /// Friction estimate: longest lattice period in µm used as an exact periodic path.
+    #[arg(
+        long = "max-period-um",
+        value_name = "UM",
+        default_value_t = 12.0,
+        allow_hyphen_values = true
+    )]
+    max_period_um: f64,
+    /// Friction estimate: largest sample spacing along the path in µm.
+    #[arg(
+        long = "step-um",
+        value_name = "UM",
+        default_value_t = 0.05,
+        allow_hyphen_values = true
+    )]
+    step_um: f64,
+    /// Friction estimate: start of a quasi-periodic path in µm skipped by the Prandtl–Tomlinson
+    /// term.
+    #[arg(
+        long = "transient-um",
+        value_name = "UM",
+        default_value_t = 3.0,
+        allow_hyphen_values = true
+    )]
+    transient_um: f64,
+    /// Pulling spring stiffness K0 in N/m of the friction estimate (study: 50; the DEM runs
+    /// keep the study's 50).
+    #[arg(
+        long = "k0-n-m",
+        value_name = "N_M",
+        default_value_t = 50.0,
+        allow_hyphen_values = true
+    )]
+    k0_n_m: f64,
+    /// Designs per pattern confirmed with DEM `slide` runs (the top of the ranking; ≥ 1 unless
+    /// --no-dem).
+    #[arg(long, value_name = "K", default_value_t = 3)]
+    confirm: usize,
+    /// Loads in mN of the DEM confirmation, each one of --load-mn [default: the lowest, the
+    /// middle and the highest load].
+    #[arg(long = "confirm-loads", value_name = "MN", allow_hyphen_values = true)]
+    confirm_loads: Option<String>,
+    /// Stop before the DEM confirmation (surrogate tiers only).
+    #[arg(long = "no-dem")]
+    no_dem: bool,
+    /// DEM runs side by side, one thread each [default: the number of CPU cores].
+    #[arg(long, value_name = "N")]
+    jobs: Option<usize>,
+    /// Equilibration in µs of each confirmation run (study: 10).
+    #[arg(
+        long = "dem-equilibrate-us",
+        value_name = "US",
+        default_value_t = 2.0,
+        allow_hyphen_values = true
+    )]
+    dem_equilibrate_us: f64,
+    /// Relaxation in µs with the pulling spring attached (study: 10).
+    #[arg(
+        long = "dem-relax-us",
+        value_name = "US",
+        default_value_t = 2.0,
+        allow_hyphen_values = true
+    )]
+    dem_relax_us: f64,
+    /// Sliding time in µs of each confirmation run; friction over its last two thirds (study:
+    /// 300).
+    #[arg(
+        long = "dem-slide-us",
+        value_name = "US",
+        default_value_t = 60.0,
+        allow_hyphen_values = true
+    )]
+    dem_slide_us: f64,
+    /// Support speed in m/s (study: 0.1).
+    #[arg(
+        long = "dem-speed-m-s",
+        value_name = "M_S",
+        default_value_t = 0.1,
+        allow_hyphen_values = true
+    )]
+    dem_speed_m_s: f64,
+    /// DEM time step in µs [default: 0.25 × the stable-step estimate].
+    #[arg(long = "dem-dt-us", value_name = "US", allow_hyphen_values = true)]
+    dem_dt_us: Option<f64>,
+    /// DEM model of the confirmation runs (as `slide --model`): `reduced` (rigid-z, default:
+    /// within 1 % of the full model on superlubric scenes, minutes for a whole design), `auto`
+    /// (the full model near coating failure and where stick-slip is expected: up to tens of
+    /// minutes per run) or `full`. Pruning and the active set (exact) are on in every model.
+    #[arg(long = "dem-model", value_enum, default_value_t = ModelArg::Reduced)]
+    dem_model: ModelArg,
+    /// Do not run the best design once more with the study's protocol (10 + 10 + 300 µs) to
+    /// measure the shorter protocol's friction difference.
+    #[arg(long = "no-protocol-check")]
+    no_protocol_check: bool,
+    /// Output directory: report.md, ranking.csv, the CSVs and PNGs behind them, dem/ (the DEM
+    /// runs) and stages/ (finished stages, reused by a re-run with the same inputs).
+    #[arg(long, value_name = "DIR", default_value = "design")]
+    out: PathBuf,
+}
+
+/// The scene flags shared by every pattern, as given (for the reproduction commands).
+fn override_flags(a: &Args) -> Vec<String> {
+    let mut v = Vec::new();
+    let mut push = |f: &str, x: Option<String>| {
+        if let Some(x) = x {
+            v.push(f.to_string());
+            v.push(x);
+        }
+    };
+    push(
+        "--slider-radius-um",
+        a.slider_radius_um.map(|x| x.to_string()),
+    );
+    push("--substrate-um", a.substrate_um.clone());
+    push("--sigma-h-um", a.sigma_h_um.map(|x| x.to_string()));
+    push("--seed", a.seed.map(|x| x.to_string()));
+    push("--youngs-gpa", a.youngs_gpa.map(|x| x.to_string()));
+    push("--p-crit-gpa", a.p_crit_gpa.map(|x| x.to_string()));
+    push("--offset-um", a.offset_um.clone());
+    push("--tilt", a.tilt.clone());
+    push("--tilt-k1-n-m", a.tilt_k1_n_m.map(|x| x.to_string()));
+    v
+}
+
+fn scene_args(a: &Args, pattern: Option<String>, scene: Option<PathBuf>) -> SceneArgs {
+    SceneArgs {
+        pattern,
+        scene,
+        slider_radius_um: a.slider_radius_um,
+        substrate_um: a.substrate_um.clone(),
+        sigma_h_um: a.sigma_h_um,
+        seed: a.seed,
+        youngs_gpa: a.youngs_gpa,
+        p_crit_gpa: a.p_crit_gpa,
+        offset_um: a.offset_um.clone(),
+        tilt: a.tilt.clone(),
+        tilt_k1_n_m: a.tilt_k1_n_m,
+    }
+}
+
+/// The pattern scenes of the command line (errors name `--pattern` / `--scene`).
+fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
+    let mut out: Vec<DesignScene> = Vec::new();
+    let patterns: Vec<String> = match (&a.pattern, a.scene.is_empty()) {
+        (Some(p), _) => p.split(',').map(|s| s.trim().to_string()).collect(),
+        (None, true) => vec!["square-tri".into(), "tri-tri".into()],
+        (None, false) => vec![],
+    };
+    let extra = override_flags(a);
+    for p in patterns {
+        if !surrogate::scene::PATTERNS.contains(&p.as_str()) {
+            bail!(
+                "`--pattern`: unknown pattern `{p}` (expected a comma list of {})",
+                surrogate::scene::PATTERNS.join(", ")
+            );
+        }
+        let r = scene_args(a, Some(p.clone()), None).resolve(Some(0.0))?;
+        let mut flags = vec!["--pattern".to_string(), p.clone()];
+        flags.extend(extra.iter().cloned());
+        out.push(DesignScene {
+            name: p,
+            scene: r.scene,
+            flags,
+            warnings: r.warnings,
+        });
+    }
+    for f in &a.scene {
+        let name = f
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        if name.is_empty()
+            || !name
+                .chars()
+                .all(|c| c.is_alphanumeric() || "-_.".contains(c))
+        {
+            bail!(
+                "`--scene`: {}: the file stem names the outputs and must be letters, digits, `-`, `_`, `.`",
+                f.display()
+            );
+        }
+        let r = scene_args(a, None, Some(f.clone())).resolve(Some(0.0))?;
+        let mut flags = vec!["--scene".to_string(), f.display().to_string()];
+        flags.extend(extra.iter().cloned());
+        out.push(DesignScene {
+            name,
+            scene: r.scene,
+            flags,
+            warnings: r.warnings,
+        });
+    }
+    for (k, s) in out.iter().enumerate() {
+        if out[..k].iter().any(|t| t.name == s.name) {
+            bail!(
+                "`--pattern`/`--scene`: `{}` is given twice (patterns and scene-file stems name the outputs)",
+                s.name
+            );
+        }
+    }
+    Ok(out)
+}
+
+/// Every check of `superlube design`, before any work.
+pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
+    let thetas_deg = parse_list_or_range(&a.theta, "--theta")?;
+    let loads = checks::loads(&a.load_mn)?;
+    if let Some(k) = loads.windows(2).position(|w| w[1] <= w[0]) {
+        bail!(
+            "`--load-mn`: the loads must be strictly increasing ({} mN then {} mN): a design's superlubric load is the highest of an increasing list",
+            a.load_mn.split(',').nth(k).unwrap_or("?").trim(),
+            a.load_mn.split(',').nth(k + 1).unwrap_or("?").trim()
+        );
+    }
+    if !(a.mu_superlubric.is_finite() && a.mu_superlubric > 0.0) {
+        bail!(
+            "`--mu-superlubric`: {} must be a positive number",
+            a.mu_superlubric
+        );
+    }
+    if a.per_level == 0 {
+        bail!("`--per-level`: 0 would keep no orientation below the top level; give ≥ 1");
+    }
+    if a.max_top == 0 {
+        bail!("`--max-top`: 0 would keep no orientation of the top level; give ≥ 1");
+    }
+    if a.alphas_per_theta == 0 {
+        bail!("`--best-alphas`: give ≥ 1");
+    }
+    let step = checks::positive(a.alpha_step_deg, "--alpha-step-deg")?;
+    if step > 90.0 {
+        bail!("`--alpha-step-deg`: {step} must be at most 90");
+    }
+    let refine: Vec<f64> = if a.alpha_refine_deg.trim() == "none" {
+        vec![]
+    } else {
+        parse_list_or_range(&a.alpha_refine_deg, "--alpha-refine-deg")?
+    };
+    let mut prev = step;
+    for &r in &refine {
+        if !(r > 0.0 && r < prev) {
+            bail!("`--alpha-refine-deg`: each step must be positive and below the previous one ({r} after {prev})");
+        }
+        prev = r;
+    }
+    let line = checks::line_deg(a.line_deg)?;
+    let scan_length = checks::positive(a.scan_um, "--scan-um").map(um_to_m)?;
+    let scan_step = checks::positive(a.scan_step_um, "--scan-step-um").map(um_to_m)?;
+    if scan_step > scan_length {
+        bail!(
+            "`--scan-step-um`: {} must not exceed --scan-um {}",
+            a.scan_step_um,
+            a.scan_um
+        );
+    }
+    let um = |v: f64, flag: &str| checks::positive(v, flag).map(um_to_m);
+    let friction = FrictionParams {
+        length: um(a.length_um, "--length-um")?,
+        max_period: um(a.max_period_um, "--max-period-um")?,
+        step: um(a.step_um, "--step-um")?,
+        transient: um_to_m(checks::non_negative(a.transient_um, "--transient-um")?),
+        k0: checks::positive(a.k0_n_m, "--k0-n-m")?,
+        ..FrictionParams::default()
+    };
+    if friction.step > friction.length.min(friction.max_period) {
+        bail!(
+            "`--step-um`: {} must not exceed --length-um or --max-period-um",
+            a.step_um
+        );
+    }
+    if friction.transient >= friction.length {
+        bail!(
+            "`--transient-um`: {} must be shorter than --length-um {}",
+            a.transient_um,
+            a.length_um
+        );
+    }
+    friction.validate()?;
+    if !a.no_dem && a.confirm == 0 {
+        bail!("`--confirm`: 0 designs to confirm with the DEM on; give --confirm ≥ 1, or --no-dem to stop before the DEM");
+    }
+    let confirm_loads = match &a.confirm_loads {
+        Some(t) => {
+            let v = checks::loads(t).map_err(|e| {
+                anyhow::anyhow!(
+                    "{}",
+                    e.to_string().replace("`--load-mn`", "`--confirm-loads`")
+                )
+            })?;
+            for &w in &v {
+                if !loads.iter().any(|&l| (l - w).abs() <= 1e-12 * l) {
+                    bail!(
+                        "`--confirm-loads`: {} mN is not one of --load-mn (the DEM is compared with the estimate at the same load)",
+                        surrogate::units::n_to_mn(w)
+                    );
+                }
+            }
+            v
+        }
+        None => {
+            let mut v = vec![loads[0], loads[loads.len() / 2], loads[loads.len() - 1]];
+            v.dedup();
+            v
+        }
+    };
+    let jobs = match a.jobs {
+        Some(0) => bail!("`--jobs`: give ≥ 1 DEM runs side by side"),
+        Some(j) => j,
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    let times = [
+        (a.dem_equilibrate_us, "--dem-equilibrate-us"),
+        (a.dem_slide_us, "--dem-slide-us"),
+        (a.dem_speed_m_s, "--dem-speed-m-s"),
+    ];
+    for (v, f) in times {
+        checks::positive(v, f)?;
+    }
+    checks::non_negative(a.dem_relax_us, "--dem-relax-us")?;
+    let dt = a
+        .dem_dt_us
+        .map(|d| checks::time_us(d, "--dem-dt-us"))
+        .transpose()?;
+    let study = SimParams::default();
+    let sim = SimParams {
+        dt,
+        load: mn_to_n(1.0),
+        equilibrate_time: us_to_s(a.dem_equilibrate_us),
+        relax_time: us_to_s(a.dem_relax_us),
+        slide_time: us_to_s(a.dem_slide_us),
+        support_speed: a.dem_speed_m_s,
+        ..SimParams::default()
+    };
+    let dem_is_study_protocol = sim.equilibrate_time == study.equilibrate_time
+        && sim.relax_time == study.relax_time
+        && sim.slide_time == study.slide_time
+        && sim.support_speed == study.support_speed;
+    let dem = DemParams {
+        sim,
+        alpha: 0.0,
+        line,
+        start: Start::Surrogate,
+        friction: None,
+        io: RunIo {
+            checkpoint: None,
+            checkpoint_every: 50_000,
+            xyz: None,
+            xyz_every: 10_000,
+        },
+        resume: None,
+        model: ModelSpec {
+            request: a.dem_model.request(),
+            ..ModelSpec::default()
+        },
+    };
+    let params = DesignParams {
+        thetas_deg,
+        theta_text: a.theta.clone(),
+        symmetry_cut: !a.no_symmetry_cut,
+        loads,
+        mu_superlubric: a.mu_superlubric,
+        per_level: a.per_level,
+        max_top: a.max_top,
+        alpha_step_deg: step,
+        alpha_refine_deg: refine,
+        line,
+        scan_length,
+        scan_step,
+        alphas_per_theta: a.alphas_per_theta,
+        friction,
+        confirm: a.confirm,
+        confirm_loads,
+        no_dem: a.no_dem,
+        jobs,
+        dem,
+        dem_is_study_protocol,
+        dem_flags: format!(" --model {}", a.dem_model.request().name()),
+        dem_words: match a.dem_model {
+            ModelArg::Reduced => "reduced model `--model reduced` (slider spheres rigid in z; unreachable substrate spheres left out and only the active set integrated, both exact)".into(),
+            ModelArg::Full => "full model `--model full` (slider spheres on their z springs; pruning and the active set, both exact)".into(),
+            ModelArg::Auto => "`--model auto` (per run: the full model near coating failure, where stick-slip is expected or beyond the measured stiffness ratio, else rigid-z; the choice is in each run's JSON)".into(),
+        },
+        protocol_check: !a.no_protocol_check,
+    };
+    let scenes = scenes(a)?;
+    for s in &scenes {
+        cut(s, &params)?;
+    }
+    check_outputs(&[("--out", Some(&a.out.join("report.md")))])?;
+    Ok((scenes, params))
+}
+
+/// Runs `superlube design`.
+pub fn run(a: Args) -> Result<()> {
+    let (scenes, params) = prepare(&a)?;
+    let rep = Reporter::stderr();
+    for s in &scenes {
+        for w in &s.warnings {
+            crate::study::Progress::note(&rep, &format!("warning: {}: {w}", s.name));
+        }
+    }
+    let t0 = std::time::Instant::now();
+    let store = Store::new(&a.out);
+    let o = design(&scenes, &params, &store, &rep)?;
+    let failed = o.dem.iter().filter(|d| d.outcome.error.is_some()).count();
+    crate::study::Progress::note(
+        &rep,
+        &format!(
+            "design: done in {:.1} s; the answer is in {}{}",
+            t0.elapsed().as_secs_f64(),
+            a.out.join("report.md").display(),
+            if failed > 0 {
+                format!(" ({failed} DEM run(s) failed: see the report)")
+            } else {
+                String::new()
+            }
+        ),
+    );
+    Ok(())
+}

@@ -1,0 +1,233 @@
+//! `superlube friction`: flags → [`crate::study::friction::friction`] → CSV (streamed) + sidecar.
+
+use super::scene_args::Resolved;
+use super::sweep_args::SweepArgs;
+use super::{checks, SceneArgs, SweepPlan};
+use crate::study::friction::{check, estimate, friction, FrictionSweepParams};
+use crate::study::{
+    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Reporter, Sweep, SweepRun,
+};
+use anyhow::{bail, Result};
+use std::path::PathBuf;
+use surrogate::friction::FrictionParams;
+use surrogate::units::um_to_m;
+
+/// Options of `superlube friction`: the surrogate friction estimate μ_est (coating term +
+/// Prandtl–Tomlinson corrugation term from the quasi-static path) for every θ × α × W.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Slider orientations θ in degrees: a list `0,10.2` or an inclusive range
+    /// `start:stop:step` [default: the scene file's theta_deg, else 0].
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    theta: Option<String>,
+    /// Pulling angles α in degrees from the slider's contact line (as in `corrugation` and
+    /// `slide`; 90 = perpendicular to the lines), |α| ≤ 180: a list `0,90` or a range.
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value = "0",
+        allow_hyphen_values = true
+    )]
+    alpha: String,
+    /// Normal loads W in mN: a list `0.35,1.4` or a range `0.35:3.5:0.35` (each > 0). The loads
+    /// of one (θ, α) share one path's pair searches.
+    #[arg(long = "load-mn", value_name = "MN", default_value = super::screen::DEFAULT_LOADS, allow_hyphen_values = true)]
+    load_mn: String,
+    /// Contact-line angle in degrees from the substrate x axis, used for every θ. Default: the
+    /// moiré estimate at each θ (as in `corrugation`); the substrate row a1 when commensurate.
+    #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
+    line_deg: Option<f64>,
+    /// Path length in µm along a pulling direction that is not a substrate lattice direction
+    /// (quasi-periodic landscape); lattice directions use one exact period (≤ --max-period-um).
+    #[arg(
+        long = "length-um",
+        value_name = "UM",
+        default_value_t = 12.0,
+        allow_hyphen_values = true
+    )]
+    length_um: f64,
+    /// Longest substrate lattice period in µm used as an exact periodic path.
+    #[arg(
+        long = "max-period-um",
+        value_name = "UM",
+        default_value_t = 12.0,
+        allow_hyphen_values = true
+    )]
+    max_period_um: f64,
+    /// Largest sample spacing along the path in µm.
+    #[arg(
+        long = "step-um",
+        value_name = "UM",
+        default_value_t = 0.05,
+        allow_hyphen_values = true
+    )]
+    step_um: f64,
+    /// Start of a quasi-periodic path in µm skipped by the Prandtl–Tomlinson term (the spring
+    /// loading from rest); < --length-um.
+    #[arg(
+        long = "transient-um",
+        value_name = "UM",
+        default_value_t = 3.0,
+        allow_hyphen_values = true
+    )]
+    transient_um: f64,
+    /// Pulling spring stiffness K0 in N/m (study: 50).
+    #[arg(
+        long = "k0-n-m",
+        value_name = "N_M",
+        default_value_t = 50.0,
+        allow_hyphen_values = true
+    )]
+    k0_n_m: f64,
+    /// Output CSV, one row per (θ, α, W), θ outer: `pattern,theta_deg,alpha_deg,load_mN,mu_est,
+    /// p_max_GPa,failed_fraction,…` (units in the names; README "superlube friction"), streamed
+    /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent.
+    #[arg(long, value_name = "FILE.csv")]
+    out: Option<PathBuf>,
+    /// Run a sweep above the size limit (2·10⁶ solves) anyway; without it such a sweep is
+    /// refused with its estimated time, memory and output size.
+    #[arg(long)]
+    force: bool,
+    #[command(flatten)]
+    sweep: SweepArgs,
+}
+
+/// A checked `superlube friction`, ready to run.
+pub struct Prepared {
+    a: Args,
+    sc: Resolved,
+    params: FrictionSweepParams,
+    run: SweepRun,
+    estimate: Estimate,
+}
+
+impl Prepared {
+    /// The sweep and its cost (for `superlube slurm`).
+    pub fn plan(&self) -> SweepPlan {
+        SweepPlan {
+            sweep: self.run.sweep.clone(),
+            estimate: self.estimate.clone(),
+        }
+    }
+}
+
+/// Runs `superlube friction`.
+pub fn run(a: Args) -> Result<()> {
+    execute(prepare(a)?)
+}
+
+/// The estimate's knobs from the flags (errors name the flag).
+fn knobs(a: &Args) -> Result<FrictionParams> {
+    let um = |v: f64, flag: &str| checks::positive(v, flag).map(um_to_m);
+    let k = FrictionParams {
+        length: um(a.length_um, "--length-um")?,
+        max_period: um(a.max_period_um, "--max-period-um")?,
+        step: um(a.step_um, "--step-um")?,
+        transient: um_to_m(checks::non_negative(a.transient_um, "--transient-um")?),
+        k0: checks::positive(a.k0_n_m, "--k0-n-m")?,
+        ..FrictionParams::default()
+    };
+    if k.step > k.length.min(k.max_period) {
+        bail!(
+            "`--step-um`: {} must not exceed --length-um or --max-period-um",
+            a.step_um
+        );
+    }
+    if k.transient >= k.length {
+        bail!(
+            "`--transient-um`: {} must be shorter than --length-um {}",
+            a.transient_um,
+            a.length_um
+        );
+    }
+    k.validate()?;
+    Ok(k)
+}
+
+/// Every check of `superlube friction`, before any work: flags, scene, every path, outputs,
+/// size.
+pub fn prepare(a: Args) -> Result<Prepared> {
+    let alphas = checks::alphas(&a.alpha)?;
+    let loads = checks::loads(&a.load_mn)?;
+    let line = checks::line_deg(a.line_deg)?;
+    let knobs = knobs(&a)?;
+    let sc = a.scene.resolve(None)?;
+    let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {
+        (Some(t), _) => checks::thetas(t)?,
+        (None, _) => vec![sc.scene.slider.theta],
+    };
+    let params = FrictionSweepParams {
+        thetas,
+        alphas,
+        loads,
+        line,
+        knobs,
+    };
+    let run = a.sweep.run(
+        Sweep {
+            items: params.items(),
+            rows_per_item: params.loads.len(),
+            unit: "(θ, α)",
+            schema: "friction",
+        },
+        a.out.as_deref(),
+        &[],
+    )?;
+    check_outputs(&[("--out", a.out.as_deref())])?;
+    if let Err(e) = check(&sc.scene, &params) {
+        sc.log(&Reporter::stderr()); // the edge warning explains a refusal
+        return Err(e);
+    }
+    let estimate = estimate(&sc.scene, &params).part(run.range().len(), params.items());
+    estimate.check(a.force)?;
+    Ok(Prepared {
+        a,
+        sc,
+        params,
+        run,
+        estimate,
+    })
+}
+
+fn execute(p: Prepared) -> Result<()> {
+    let Prepared {
+        a, sc, params, run, ..
+    } = p;
+    let rep = Reporter::stderr();
+    sc.log(&rep);
+    // θ is swept: the recorded scene does not keep a θ of its own.
+    let mut recorded = scene_file(&sc.scene);
+    recorded.slider.theta_deg = None;
+    let mut outs = Outputs::new(
+        Inputs {
+            workflow: "friction".into(),
+            scene: Some(recorded),
+            params: record::friction(&params),
+        },
+        sc.warnings.clone(),
+    );
+    let t0 = std::time::Instant::now();
+    let stats = outs.stream_sweep("--out", a.out.as_deref(), &run, &rep, |items, csv| {
+        friction(&sc.scene, &params, items, csv, &rep)
+    })?;
+    if let Some(s) = stats {
+        crate::study::Progress::note(
+            &rep,
+            &format!(
+                "friction: {} estimates in {:.2} s ({:.1} ms per (θ, α, W))",
+                s.rows,
+                t0.elapsed().as_secs_f64(),
+                1e3 * t0.elapsed().as_secs_f64() / s.rows.max(1) as f64
+            ),
+        );
+    }
+    outs.finish()?;
+    if let Some(s) = stats {
+        if run.is_whole() && !run.resume && s.rows == run.rows() && s.failures == s.rows {
+            bail!("no configuration has an estimate");
+        }
+    }
+    Ok(())
+}

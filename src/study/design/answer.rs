@@ -1,0 +1,131 @@
+//! The design's answer per pattern: the surrogate's ranking checked against the DEM.
+//!
+//! A DEM run **confirms superlubricity** at its load when it completed, did not lock in, kept
+//! every contact's pressure at or below P_crit over its measuring window (max P_max ≤ P_crit)
+//! and measured μ_DEM below the superlubric limit. A ranked design is
+//!
+//! - **confirmed** when every DEM run of the design's confirmation protocol at a confirmation
+//!   load up to its superlubric load (`superlubric_to`, from the estimate) confirms
+//!   superlubricity (at least one such run);
+//! - **contradicted** when one of them does not (the reason is kept: locked in, P_max above
+//!   P_crit, μ_DEM above the limit, the run failed);
+//! - **unchecked** when it has no DEM run at such a load (not among the confirmed top K, or a
+//!   superlubric load below the lowest confirmation load).
+//!
+//! **The answer** of a pattern is the best-ranked *confirmed* design among the DEM-checked top K;
+//! when none is confirmed, the surrogate's best with what the DEM said about it; without the DEM
+//! (`--no-dem`), the surrogate's best. Its load is the estimate's `superlubric_to` (the DEM
+//! checks it at the confirmation loads up to that load, not in between).
+
+use super::{DemEntry, DesignParams, PatternResult};
+use surrogate::units::{n_to_mn, pa_to_gpa};
+
+/// What the DEM says about one design.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Check {
+    /// The DEM did not run (`--no-dem`).
+    NoDem,
+    /// No DEM run at a confirmation load up to its superlubric load.
+    Unchecked,
+    /// Every such run confirms superlubricity; the loads (mN) checked.
+    Confirmed(Vec<f64>),
+    /// One of them does not: why.
+    Contradicted(String),
+}
+
+/// The answer of one pattern.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// Index into the pattern's ranking of the answer's design (`None`: no ranked design).
+    pub index: Option<usize>,
+    /// What the DEM says about it.
+    pub check: Check,
+    /// The other DEM-checked designs of the top K that were not confirmed: (rank, check).
+    pub others: Vec<(usize, Check)>,
+}
+
+/// `Ok` if DEM run `e` confirms superlubricity, else why not.
+pub fn dem_superlubric(e: &DemEntry, p_crit: f64, mu_sl: f64) -> Result<(), String> {
+    let w = crate::study::rows::label(n_to_mn(e.load));
+    match (&e.outcome.result, &e.outcome.error) {
+        (Some(r), _) if r.locked_in => Err(format!("locked in at {w} mN")),
+        (Some(r), _) if r.max_p_max_GPa > pa_to_gpa(p_crit) => Err(format!(
+            "P_max {:.3} GPa > P_crit at {w} mN (coating failed)",
+            r.max_p_max_GPa
+        )),
+        (Some(r), _) if r.mu >= mu_sl => Err(format!("μ_DEM = {:.4} at {w} mN", r.mu)),
+        (Some(_), _) => Ok(()),
+        (None, Some(err)) => Err(format!("the DEM run at {w} mN failed: {err}")),
+        (None, None) => Err(format!("no DEM result at {w} mN")),
+    }
+}
+
+/// What the DEM runs `dem` (the design's protocol) say about the design at `rank` (1-based) of
+/// `pr`.
+pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams) -> Check {
+    let Some(c) = pr.ranking.get(rank - 1) else {
+        return Check::Unchecked;
+    };
+    let p_crit = pr.scene.scene.coating.p_crit;
+    let mut runs: Vec<&DemEntry> = dem
+        .iter()
+        .filter(|e| {
+            e.pattern == pr.scene.name
+                && !e.study_protocol
+                && e.theta_deg == c.theta_deg
+                && e.alpha_deg == c.alpha_deg
+                && crate::study::rows::label(n_to_mn(e.load)) <= c.score.superlubric_to_mn
+        })
+        .collect();
+    runs.sort_by(|a, b| a.load.total_cmp(&b.load));
+    if runs.is_empty() {
+        return Check::Unchecked;
+    }
+    for e in &runs {
+        if let Err(why) = dem_superlubric(e, p_crit, p.mu_superlubric) {
+            return Check::Contradicted(why);
+        }
+    }
+    Check::Confirmed(
+        runs.iter()
+            .map(|e| crate::study::rows::label(n_to_mn(e.load)))
+            .collect(),
+    )
+}
+
+/// The answer of `pr` (see the module docs).
+pub fn answer(pr: &PatternResult, dem: &[DemEntry], dem_ran: bool, p: &DesignParams) -> Answer {
+    if pr.ranking.is_empty() {
+        return Answer {
+            index: None,
+            check: Check::Unchecked,
+            others: vec![],
+        };
+    }
+    if !dem_ran {
+        return Answer {
+            index: Some(0),
+            check: Check::NoDem,
+            others: vec![],
+        };
+    }
+    let mut passed = Vec::new();
+    for rank in 1..=p.confirm.min(pr.ranking.len()) {
+        match check(pr, rank, dem, p) {
+            c @ Check::Confirmed(_) => {
+                return Answer {
+                    index: Some(rank - 1),
+                    check: c,
+                    others: passed,
+                }
+            }
+            c => passed.push((rank, c)),
+        }
+    }
+    let first = passed.first().map_or(Check::Unchecked, |(_, c)| c.clone());
+    Answer {
+        index: Some(0),
+        check: first,
+        others: passed.into_iter().skip(1).collect(),
+    }
+}

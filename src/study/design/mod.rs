@@ -1,0 +1,780 @@
+//! # `superlube design`: screen → shortlist → α scan and friction estimate → ranking → DEM
+//!
+//! For one or more pattern pairs, a range of orientations θ and a list of loads, the design
+//! answers: *which orientation θ and pulling direction α keep friction ultra-low without coating
+//! failure, up to which load, and how sure are we?* [`design`] runs the stages in order:
+//!
+//! 1. **Symmetry cut** ([`symmetry`]): θ is cut to the pair's fundamental domain (square-tri
+//!    0–15°, tri-tri 0–30°); the α scan covers one α period.
+//! 2. **Screen** every θ × W ([`crate::study::screen`]): contacts, P_max, coating failure.
+//! 3. **Shortlist** ([`shortlist`]): per θ the load `W_c` up to which the coating stays intact;
+//!    every orientation that survives the highest load, plus the best few of each lower load
+//!    level, evaluated level by level from the top until no lower level can reach the best
+//!    superlubric load found.
+//! 4. **α scan and friction estimate** per shortlisted θ ([`scan`]): contact line, corrugation
+//!    versus α (coarse grid, then refined near the minimum), the friction estimate μ_est
+//!    (`surrogate::friction`) along the best α's at every load.
+//! 5. **Ranking** ([`rank`]): score = highest load up to which superlubric (coating intact on
+//!    the sliding path AND μ_est < 0.02 at every load up to it), then μ_est, then contacts.
+//! 6. **DEM confirmation** ([`confirm`]): the top `confirm` designs of each pattern at the
+//!    confirmation loads, independent `slide` runs side by side, one thread each (plus, with a
+//!    protocol shorter than the study's, the best design once with the study's protocol to
+//!    measure the difference).
+//! 7. **Outputs** ([`report`]): `report.md` (the answer first), the CSVs behind it with
+//!    sidecars, the PNGs.
+//!
+//! Every stage is stored under the output directory with the inputs that made it
+//! ([`store`]): a re-run with the same `--out` reuses every finished stage and DEM run, and one
+//! with other inputs is refused with the differences named.
+
+pub mod answer;
+pub mod confirm;
+pub mod params;
+pub mod rank;
+pub mod report;
+pub mod scan;
+pub mod shortlist;
+pub mod store;
+pub mod symmetry;
+
+pub use params::{DesignParams, DesignScene};
+
+use super::meta::{scene_file, Inputs};
+use super::progress::Progress;
+use super::record;
+use super::rows::{label, ScreenRow};
+use super::screen::{screen, ScreenParams};
+use super::sink::csv_bytes;
+use anyhow::{bail, Result};
+use confirm::{run_batch, SlideJob, SlideOutcome};
+use rank::Candidate;
+use rayon::prelude::*;
+use scan::ThetaEval;
+use serde::{Deserialize, Serialize};
+use serde_json::{json, Value};
+use shortlist::{Level, Orientation};
+use std::time::Instant;
+use store::Store;
+use surrogate::solver::{Model, SearchKind, Solver};
+use surrogate::units::{deg_to_rad, m_to_um, n_to_mn, rad_to_deg};
+use symmetry::PairSymmetry;
+
+/// The θ values (degrees) of `ds` after the symmetry cut, and the pair's symmetry. Errors
+/// (naming `--theta`) when none is left.
+pub fn cut(ds: &DesignScene, p: &DesignParams) -> Result<(Vec<f64>, PairSymmetry)> {
+    let sym = PairSymmetry::of(&ds.scene.slider.lattice, &ds.scene.substrate.lattice);
+    if !p.symmetry_cut {
+        return Ok((p.thetas_deg.clone(), sym));
+    }
+    let kept: Vec<f64> = p
+        .thetas_deg
+        .iter()
+        .copied()
+        .filter(|&t| sym.contains(t))
+        .collect();
+    if kept.is_empty() {
+        let (lo, hi, closed) = sym.domain();
+        let t = p.thetas_deg[0];
+        bail!(
+            "`--theta`: none of `{}` lies in the fundamental domain [{}°, {}°{} of {} ({}); every orientation is equivalent to one in it (e.g. {}° ≡ {}°): give θ in [{}, {}], or pass --no-symmetry-cut",
+            p.theta_text,
+            symmetry::fmt(lo),
+            symmetry::fmt(hi),
+            if closed { "]" } else { ")" },
+            ds.name,
+            sym.describe(),
+            symmetry::fmt(t),
+            symmetry::fmt(sym.fold(t)),
+            symmetry::fmt(lo),
+            symmetry::fmt(hi)
+        );
+    }
+    Ok((kept, sym))
+}
+
+/// A stage's record of its own wall time.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Timing {
+    /// Wall time of the stage when it was computed (s).
+    pub wall_s: f64,
+}
+
+/// An orientation's evaluation as stored (`stages/<pattern>/theta_<θ>.json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EvalStage {
+    /// The evaluation.
+    pub eval: ThetaEval,
+    /// Its wall time when computed (s).
+    pub wall_s: f64,
+}
+
+/// One evaluated orientation of a pattern.
+#[derive(Debug, Clone)]
+pub struct Evaluated {
+    /// The screen's view of it.
+    pub orientation: Orientation,
+    /// Why it was shortlisted.
+    pub reason: String,
+    /// The α scan and friction estimate.
+    pub eval: ThetaEval,
+    /// Wall time when computed (s).
+    pub wall_s: f64,
+    /// Reused from an earlier run.
+    pub reused: bool,
+}
+
+/// Everything the design found for one pattern.
+#[derive(Debug, Clone)]
+pub struct PatternResult {
+    /// The pattern.
+    pub scene: DesignScene,
+    /// Its symmetry.
+    pub sym: PairSymmetry,
+    /// θ screened (degrees, after the cut).
+    pub thetas_deg: Vec<f64>,
+    /// The screen rows (θ outer, loads inner).
+    pub screen: Vec<ScreenRow>,
+    /// Wall time of the screen when computed (s; `None` if not recorded).
+    pub screen_wall_s: Option<f64>,
+    /// The orientations (θ order) and the levels of the shortlist.
+    pub orientations: Vec<Orientation>,
+    /// The levels of the shortlist, highest first.
+    pub levels: Vec<Level>,
+    /// How many levels were evaluated (from the top).
+    pub levels_evaluated: usize,
+    /// Why the evaluation stopped.
+    pub stop: String,
+    /// The evaluated orientations, in evaluation order.
+    pub evaluated: Vec<Evaluated>,
+    /// The candidates, best first.
+    pub ranking: Vec<Candidate>,
+}
+
+/// One DEM confirmation run and what it is compared with.
+#[derive(Debug, Clone)]
+pub struct DemEntry {
+    /// Pattern name.
+    pub pattern: String,
+    /// Rank of the design within its pattern.
+    pub rank: usize,
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// α (degrees).
+    pub alpha_deg: f64,
+    /// Load (N).
+    pub load: f64,
+    /// The study's protocol (the protocol-check run) rather than the design's.
+    pub study_protocol: bool,
+    /// The run.
+    pub outcome: SlideOutcome,
+}
+
+/// What [`design`] found.
+#[derive(Debug, Clone)]
+pub struct DesignOutcome {
+    /// Per pattern, in the order given.
+    pub patterns: Vec<PatternResult>,
+    /// The DEM runs (empty with `--no-dem`).
+    pub dem: Vec<DemEntry>,
+    /// Whether the DEM stage ran.
+    pub dem_ran: bool,
+    /// The answer per pattern (the ranking checked against the DEM, [`answer`]).
+    pub answers: Vec<answer::Answer>,
+}
+
+/// The design's inputs: with `with_dem` false, those of the surrogate tiers (recorded in
+/// `design.json`: a re-run with other values is refused), with it true also the DEM protocol
+/// (recorded in the final outputs' sidecars). Never recorded: `--confirm`, `--confirm-loads`,
+/// `--no-dem`, `--jobs`, `--no-protocol-check` — they choose which DEM runs are made, and each
+/// run is stored with its own inputs (a run of the same name made with another protocol is
+/// refused, never mixed).
+pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Inputs {
+    let w: Vec<f64> = p.loads.iter().map(|&w| label(n_to_mn(w))).collect();
+    let sc: Vec<Value> = scenes
+        .iter()
+        .map(|d| {
+            let mut f = scene_file(&d.scene);
+            f.slider.theta_deg = None;
+            json!({"name": d.name, "scene": f})
+        })
+        .collect();
+    let mut dem = record::dem(&scenes[0].scene, &p.dem);
+    if let Some(o) = dem.as_object_mut() {
+        // set per run
+        for k in ["load_mN", "alpha_deg", "line_deg"] {
+            o.remove(k);
+        }
+        if let Some(e) = o.get_mut("engine_si").and_then(Value::as_object_mut) {
+            e.remove("load");
+            e.remove("alpha");
+        }
+    }
+    let mut params = json!({
+            "patterns": sc,
+            "theta_deg": record::axis(&p.thetas_deg),
+            "symmetry_cut": p.symmetry_cut,
+            "load_mN": record::axis(&w),
+            "mu_superlubric": p.mu_superlubric,
+            "per_level": p.per_level,
+            "max_top": p.max_top,
+            "alpha_step_deg": p.alpha_step_deg,
+            "alpha_refine_deg": p.alpha_refine_deg,
+            "line_deg": p.line.map(rad_to_deg),
+            "scan_um": label(m_to_um(p.scan_length)),
+            "scan_step_um": label(m_to_um(p.scan_step)),
+            "alphas_per_theta": p.alphas_per_theta,
+            "friction": record::friction_knobs(&p.friction),
+    });
+    if with_dem {
+        params["dem"] = dem;
+    }
+    Inputs {
+        workflow: "design".into(),
+        scene: None,
+        params,
+    }
+}
+
+/// File-name form of a number (`0.35`, `-15`).
+pub fn tag(v: f64) -> String {
+    format!("{}", label(v))
+}
+
+/// Runs the design (see the module docs) into `store`; reports progress through `progress`.
+pub fn design(
+    scenes: &[DesignScene],
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<DesignOutcome> {
+    if store.claim(&inputs(scenes, p, false), "--out")? {
+        progress.note(&format!(
+            "{}: a design of the same inputs is there: finished stages are reused",
+            store.dir().display()
+        ));
+    }
+    // 1–5 per pattern: cut, screen, shortlist, α scan + friction, ranking
+    let mut patterns: Vec<PatternResult> = Vec::new();
+    for ds in scenes {
+        patterns.push(pattern(ds, p, store, progress)?);
+    }
+    // 6. DEM confirmation
+    let dem = if p.no_dem {
+        Vec::new()
+    } else {
+        confirm_estimates(&mut patterns, p, store)?;
+        confirm_stage(&patterns, p, store, progress)?
+    };
+    let answers = patterns
+        .iter()
+        .map(|pr| answer::answer(pr, &dem, !p.no_dem, p))
+        .collect();
+    let outcome = DesignOutcome {
+        patterns,
+        dem,
+        dem_ran: !p.no_dem,
+        answers,
+    };
+    let rows = report::dem_rows(&outcome, p);
+    let top = label(n_to_mn(*p.loads.last().unwrap_or(&0.0)));
+    for (pr, a) in outcome.patterns.iter().zip(&outcome.answers) {
+        progress.note(
+            &report::answer_line(pr, a, &rows, p, top)
+                .replace("**", "")
+                .replacen("- ", "answer: ", 1),
+        );
+    }
+    // 7. report, CSVs, PNGs
+    report::write(store, &inputs(scenes, p, true), p, &outcome, progress)?;
+    Ok(outcome)
+}
+
+/// Stages 1–5 for one pattern.
+fn pattern(
+    ds: &DesignScene,
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<PatternResult> {
+    let name = &ds.name;
+    let (thetas_deg, sym) = cut(ds, p)?;
+    progress.note(&format!(
+        "{name}: {}; {} of {} θ screened{}",
+        sym.describe(),
+        thetas_deg.len(),
+        p.thetas_deg.len(),
+        if p.symmetry_cut {
+            ""
+        } else {
+            " (no symmetry cut)"
+        }
+    ));
+    if p.symmetry_cut && (ds.scene.substrate.sigma_h > 0.0 || ds.scene.slider.offset != [0.0; 2]) {
+        progress.note(&format!(
+            "{name}: note: the symmetry cut is exact for a flat substrate with the slider centred on a site; {}",
+            if ds.scene.slider.offset != [0.0; 2] {
+                "this slider is offset, so the cut is approximate (--no-symmetry-cut screens the whole range)"
+            } else {
+                "with σ_h > 0 it holds statistically"
+            }
+        ));
+    }
+    // 2. screen
+    let (screen_rows, screen_wall_s) = screen_stage(ds, &thetas_deg, p, store, progress)?;
+    // 3. shortlist
+    let orientations = shortlist::orientations(&screen_rows, &p.loads, ds.scene.coating.p_crit);
+    let levels = shortlist::levels(&orientations, &p.loads, p.per_level, p.max_top);
+    if levels.is_empty() {
+        progress.note(&format!(
+            "{name}: no orientation keeps the coating intact even at the lowest load"
+        ));
+    }
+    // 4. α scan + friction, level by level
+    let need = p.confirm.max(3);
+    let mut evaluated: Vec<Evaluated> = Vec::new();
+    let mut ranking: Vec<Candidate> = Vec::new();
+    let mut best = 0.0f64; // best superlubric load so far (mN)
+    let mut levels_evaluated = 0;
+    let mut stop = "every level evaluated".to_string();
+    let mut solver: Option<Solver> = None;
+    for level in &levels {
+        let w_mn = label(n_to_mn(level.load));
+        if w_mn < best && ranking.len() >= need {
+            stop = format!(
+                "stopped before level {}: its orientations cannot be superlubric beyond {} mN < the best found, {} mN",
+                shortlist::mn(level.load),
+                w_mn,
+                best
+            );
+            break;
+        }
+        levels_evaluated += 1;
+        let reason = if level.top {
+            "survives the highest load".to_string()
+        } else {
+            format!("best of level {}", shortlist::mn(level.load))
+        };
+        let per = scan::paths_per_scan(p, &sym) + p.alphas_per_theta;
+        progress.stage(
+            &format!(
+                "{name}: α scan + friction, level {} ({} of {} θ)",
+                shortlist::mn(level.load),
+                level.picks.len(),
+                level.size
+            ),
+            (level.picks.len() * per) as u64,
+            "paths",
+        );
+        if solver.is_none() {
+            let mut sc = ds.scene.clone();
+            sc.slider.theta = 0.0;
+            solver = Some(Solver::new(&sc)?);
+        }
+        let Some(s) = solver.as_ref() else {
+            bail!("no solver")
+        };
+        // the level's orientations in parallel (each also parallel inside), results in order
+        let done: Vec<Result<(ThetaEval, f64, bool)>> = level
+            .picks
+            .par_iter()
+            .map(|o| eval_stage(ds, o, level.load, &sym, p, store, s, per, progress))
+            .collect();
+        for (o, r) in level.picks.iter().zip(done) {
+            let (eval, wall_s, reused) = r?;
+            ranking.extend(rank::candidates(
+                name,
+                &eval,
+                label(n_to_mn(level.load)),
+                &reason,
+                ds.scene.coating.p_crit,
+                p.mu_superlubric,
+            ));
+            evaluated.push(Evaluated {
+                orientation: o.clone(),
+                reason: reason.clone(),
+                eval,
+                wall_s,
+                reused,
+            });
+        }
+        progress.finish();
+        best = ranking
+            .iter()
+            .map(|c| c.score.superlubric_to_mn)
+            .fold(best, f64::max);
+    }
+    // 5. ranking
+    ranking.sort_by(rank::compare);
+    if let Some(b) = ranking.first() {
+        progress.note(&format!(
+            "{name}: the estimate's best design: θ = {}°, α = {}°, superlubric up to {} mN (μ_est ≤ {:.4}); {} orientations evaluated ({stop})",
+            b.theta_deg,
+            b.alpha_deg,
+            b.score.superlubric_to_mn,
+            b.score.mu_worst,
+            evaluated.len()
+        ));
+    }
+    Ok(PatternResult {
+        scene: ds.clone(),
+        sym,
+        thetas_deg,
+        screen: screen_rows,
+        screen_wall_s,
+        orientations,
+        levels,
+        levels_evaluated,
+        stop,
+        evaluated,
+        ranking,
+    })
+}
+
+/// The screen's parameters for θ (degrees).
+pub fn screen_params(thetas_deg: &[f64], p: &DesignParams) -> ScreenParams {
+    ScreenParams {
+        thetas: thetas_deg.iter().map(|&t| deg_to_rad(t)).collect(),
+        loads: p.loads.clone(),
+        model: Model::Auto,
+        search: SearchKind::Grid,
+    }
+}
+
+/// The inputs of a pattern's screen (the same as `superlube screen` records).
+fn screen_inputs(ds: &DesignScene, sp: &ScreenParams) -> Inputs {
+    let mut recorded = scene_file(&ds.scene);
+    recorded.slider.theta_deg = None;
+    Inputs {
+        workflow: "screen".into(),
+        scene: Some(recorded),
+        params: record::screen(sp),
+    }
+}
+
+/// Stage 2: the screen of one pattern (`screen_<name>.csv`), reused when finished.
+fn screen_stage(
+    ds: &DesignScene,
+    thetas_deg: &[f64],
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<(Vec<ScreenRow>, Option<f64>)> {
+    let sp = screen_params(thetas_deg, p);
+    let inputs = screen_inputs(ds, &sp);
+    let rel = format!("screen_{}.csv", ds.name);
+    let timing = format!("stages/{}/screen.json", ds.name);
+    if let Some(rows) = store.load_csv::<ScreenRow>(&rel, &inputs)? {
+        let t = store.load_json::<Timing>(&timing, &inputs)?;
+        progress.note(&format!(
+            "{}: screen reused from {rel} ({} rows, input hash matches)",
+            ds.name,
+            rows.len()
+        ));
+        return Ok((rows, t.map(|t| t.wall_s)));
+    }
+    let t0 = Instant::now();
+    let mut rows: Vec<ScreenRow> = Vec::new();
+    let mut scene = ds.scene.clone();
+    scene.slider.theta = 0.0;
+    screen(&scene, &sp, &mut rows, progress)?;
+    let wall_s = t0.elapsed().as_secs_f64();
+    store.save(&rel, &inputs, csv_bytes(&rows)?, Some(rows.len() as u64))?;
+    store.save_json(&timing, &inputs, &Timing { wall_s })?;
+    progress.note(&format!(
+        "{}: screened {} θ × {} loads in {:.2} s",
+        ds.name,
+        thetas_deg.len(),
+        p.loads.len(),
+        wall_s
+    ));
+    Ok((rows, Some(wall_s)))
+}
+
+/// The inputs of one orientation's evaluation.
+fn eval_inputs(
+    ds: &DesignScene,
+    theta_deg: f64,
+    scan_load: f64,
+    sym: &PairSymmetry,
+    p: &DesignParams,
+) -> Inputs {
+    let w: Vec<f64> = p.loads.iter().map(|&w| label(n_to_mn(w))).collect();
+    Inputs {
+        workflow: "design/orientation".into(),
+        scene: Some(scene_file(&ds.scene.with_theta(deg_to_rad(theta_deg)))),
+        params: json!({
+            "theta_deg": theta_deg,
+            "scan_load_mN": label(n_to_mn(scan_load)),
+            "load_mN": w,
+            "alpha_period_deg": sym.alpha_period_deg,
+            "alpha_step_deg": p.alpha_step_deg,
+            "alpha_refine_deg": p.alpha_refine_deg,
+            "line_deg": p.line.map(rad_to_deg),
+            "scan_um": label(m_to_um(p.scan_length)),
+            "scan_step_um": label(m_to_um(p.scan_step)),
+            "alphas_per_theta": p.alphas_per_theta,
+            "friction": record::friction_knobs(&p.friction),
+        }),
+    }
+}
+
+/// Stage 4 for one orientation (`stages/<name>/theta_<θ>.json`), reused when finished.
+#[allow(clippy::too_many_arguments)]
+fn eval_stage(
+    ds: &DesignScene,
+    o: &Orientation,
+    scan_load: f64,
+    sym: &PairSymmetry,
+    p: &DesignParams,
+    store: &Store,
+    solver: &Solver,
+    per: usize,
+    progress: &dyn Progress,
+) -> Result<(ThetaEval, f64, bool)> {
+    let inputs = eval_inputs(ds, o.theta_deg, scan_load, sym, p);
+    let rel = format!("stages/{}/theta_{}.json", ds.name, tag(o.theta_deg));
+    if let Some(st) = store.load_json::<EvalStage>(&rel, &inputs)? {
+        progress.advance(per as u64);
+        return Ok((st.eval, st.wall_s, true));
+    }
+    let t0 = Instant::now();
+    let ticks = std::sync::atomic::AtomicUsize::new(0);
+    let tick = || {
+        if ticks.fetch_add(1, std::sync::atomic::Ordering::Relaxed) < per {
+            progress.advance(1);
+        }
+    };
+    let eval = scan::evaluate(solver, &ds.scene, o.theta_deg, scan_load, p, sym, &tick)?;
+    let done = ticks.load(std::sync::atomic::Ordering::Relaxed);
+    if done < per {
+        progress.advance((per - done) as u64);
+    }
+    let st = EvalStage {
+        eval,
+        wall_s: t0.elapsed().as_secs_f64(),
+    };
+    store.save_json(&rel, &inputs, &st)?;
+    Ok((st.eval, st.wall_s, false))
+}
+
+/// The DEM parameters of one confirmation run.
+pub fn dem_params(
+    p: &DesignParams,
+    alpha_deg: f64,
+    load: f64,
+    study: bool,
+) -> super::dem_run::DemParams {
+    let mut d = p.dem.clone();
+    d.sim.load = load;
+    d.alpha = deg_to_rad(alpha_deg);
+    d.line = p.line;
+    if study {
+        let s = dem::SimParams::default();
+        d.sim.equilibrate_time = s.equilibrate_time;
+        d.sim.relax_time = s.relax_time;
+        d.sim.slide_time = s.slide_time;
+        d.sim.support_speed = s.support_speed;
+    }
+    d
+}
+
+/// The run directory name of a confirmation run.
+pub fn run_name(pattern: &str, theta_deg: f64, alpha_deg: f64, load: f64, study: bool) -> String {
+    format!(
+        "{pattern}_theta{}_alpha{}_W{}{}",
+        tag(theta_deg),
+        tag(alpha_deg),
+        tag(n_to_mn(load)),
+        if study { "_study-protocol" } else { "" }
+    )
+}
+
+/// The friction estimate of the designs to confirm at the confirmation loads that the
+/// evaluation did not estimate (above the screen's coating-intact load, or above the lowest
+/// load of a candidate not superlubric there): one stage file per (θ, α, W), added to the
+/// candidate's rows for the comparison with the DEM (the score is not changed).
+fn confirm_estimates(
+    patterns: &mut [PatternResult],
+    p: &DesignParams,
+    store: &Store,
+) -> Result<()> {
+    for pr in patterns.iter_mut() {
+        let mut solver: Option<Solver> = None;
+        let ds = &pr.scene;
+        for c in pr.ranking.iter_mut().take(p.confirm) {
+            for &w in &p.confirm_loads {
+                let wm = label(n_to_mn(w));
+                if c.friction.iter().any(|r| r.load_mN == wm) {
+                    continue;
+                }
+                let theta = deg_to_rad(c.theta_deg);
+                let inputs = Inputs {
+                    workflow: "design/estimate".into(),
+                    scene: Some(scene_file(&ds.scene.with_theta(theta))),
+                    params: json!({
+                        "theta_deg": c.theta_deg,
+                        "alpha_deg": c.alpha_deg,
+                        "load_mN": wm,
+                        "line_deg": p.line.map(rad_to_deg),
+                        "friction": record::friction_knobs(&p.friction),
+                    }),
+                };
+                let rel = format!(
+                    "stages/{}/estimate_theta{}_alpha{}_W{}.json",
+                    ds.name,
+                    tag(c.theta_deg),
+                    tag(c.alpha_deg),
+                    tag(wm)
+                );
+                let row = match store.load_json::<crate::study::rows::FrictionRow>(&rel, &inputs)? {
+                    Some(r) => r,
+                    None => {
+                        if solver.is_none() {
+                            let mut sc = ds.scene.clone();
+                            sc.slider.theta = 0.0;
+                            solver = Some(Solver::new(&sc)?);
+                        }
+                        let Some(s) = solver.as_ref() else {
+                            bail!("no solver")
+                        };
+                        let line = crate::study::corrugation::contact_line(
+                            &ds.scene.with_theta(theta),
+                            p.line,
+                        );
+                        let alpha = deg_to_rad(c.alpha_deg);
+                        let est = surrogate::friction::estimate_friction_loads(
+                            s,
+                            theta,
+                            line.angle + alpha,
+                            &[w],
+                            &p.friction,
+                        )?;
+                        let mut r = crate::study::rows::FrictionRow::new(
+                            &ds.scene.pattern,
+                            theta,
+                            alpha,
+                            line.angle,
+                            w,
+                            &est[0],
+                        );
+                        r.alpha_deg = c.alpha_deg;
+                        store.save_json(&rel, &inputs, &r)?;
+                        r
+                    }
+                };
+                c.friction.push(row);
+                c.friction.sort_by(|a, b| a.load_mN.total_cmp(&b.load_mN));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Stage 6: the DEM runs of the top designs (one batch, side by side), then — when the
+/// confirmation protocol is shorter than the study's — the study's protocol on the first
+/// pattern's answer at the middle confirmation load (alone, on every thread), to measure the
+/// shorter protocol's difference.
+fn confirm_stage(
+    patterns: &[PatternResult],
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<Vec<DemEntry>> {
+    let mut jobs = Vec::new();
+    let mut entries: Vec<(String, usize, f64, f64, f64, bool)> = Vec::new();
+    for pr in patterns {
+        for (k, c) in pr.ranking.iter().take(p.confirm).enumerate() {
+            for &w in &p.confirm_loads {
+                jobs.push(SlideJob {
+                    name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, false),
+                    scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
+                    params: dem_params(p, c.alpha_deg, w, false),
+                });
+                entries.push((
+                    pr.scene.name.clone(),
+                    k + 1,
+                    c.theta_deg,
+                    c.alpha_deg,
+                    w,
+                    false,
+                ));
+            }
+        }
+    }
+    if jobs.is_empty() {
+        progress.note("DEM: nothing to confirm (no ranked design)");
+        return Ok(Vec::new());
+    }
+    progress.note(&format!(
+        "DEM: {} runs, {} side by side (one thread each), into {}",
+        jobs.len(),
+        p.jobs.min(jobs.len()),
+        store.path("dem").display()
+    ));
+    let mut outcomes = run_batch(&jobs, p.jobs, &store.path("dem"), progress)?;
+    let mut dem = to_entries(&entries, &outcomes);
+    // the protocol check, on the first pattern's answer
+    if p.protocol_check && !p.dem_is_study_protocol {
+        let w = p.confirm_loads[p.confirm_loads.len() / 2];
+        let first = patterns.iter().find_map(|pr| {
+            let a = answer::answer(pr, &dem, true, p);
+            a.index.map(|i| (pr, i, &pr.ranking[i]))
+        });
+        if let Some((pr, i, c)) = first {
+            let job = SlideJob {
+                name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
+                scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
+                params: dem_params(p, c.alpha_deg, w, true),
+            };
+            progress.note(&format!(
+                "DEM: the study's protocol (10 + 10 + 300 µs) on {} θ = {}°, α = {}° at {} mN, to measure the shorter protocol's difference",
+                pr.scene.name,
+                c.theta_deg,
+                c.alpha_deg,
+                label(n_to_mn(w))
+            ));
+            let o = run_batch(std::slice::from_ref(&job), 1, &store.path("dem"), progress)?;
+            entries.push((
+                pr.scene.name.clone(),
+                i + 1,
+                c.theta_deg,
+                c.alpha_deg,
+                w,
+                true,
+            ));
+            outcomes.extend(o);
+            dem = to_entries(&entries, &outcomes);
+        }
+    }
+    let reused = outcomes.iter().filter(|o| o.reused).count();
+    if reused > 0 {
+        progress.note(&format!(
+            "DEM: {reused} of {} runs reused (input hash matches)",
+            outcomes.len()
+        ));
+    }
+    Ok(dem)
+}
+
+/// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study).
+fn to_entries(
+    entries: &[(String, usize, f64, f64, f64, bool)],
+    outcomes: &[SlideOutcome],
+) -> Vec<DemEntry> {
+    entries
+        .iter()
+        .cloned()
+        .zip(outcomes.iter().cloned())
+        .map(
+            |((pattern, rank, theta_deg, alpha_deg, load, study), outcome)| DemEntry {
+                pattern,
+                rank,
+                theta_deg,
+                alpha_deg,
+                load,
+                study_protocol: study,
+                outcome,
+            },
+        )
+        .collect()
+}

@@ -1,0 +1,75 @@
+//! [`DesignParams`]: every knob of `superlube design`.
+
+use crate::study::dem_run::DemParams;
+use surrogate::friction::FrictionParams;
+
+/// One pattern pair of a design: its name (the pattern, or a scene file's stem; used in file
+/// names), the validated scene (SI, θ = 0), the scene flags that reproduce it on another
+/// command's command line, and the warnings to report.
+#[derive(Debug, Clone)]
+pub struct DesignScene {
+    /// Name used in the report and the file names (`square-tri`, `my_scene`).
+    pub name: String,
+    /// The scene (SI); its `slider.theta` is ignored (θ is swept).
+    pub scene: surrogate::Scene,
+    /// Scene flags reproducing it (`--pattern square-tri --sigma-h-um 0.01`).
+    pub flags: Vec<String>,
+    /// Warnings about the scene (edge overhang…).
+    pub warnings: Vec<String>,
+}
+
+/// Every knob of a design (SI inside; angles as the degree decimals the user meant, so that
+/// every reproduction command prints them exactly).
+#[derive(Debug, Clone)]
+pub struct DesignParams {
+    /// Orientations θ (degrees) as given, before the symmetry cut.
+    pub thetas_deg: Vec<f64>,
+    /// The `--theta` text (for messages).
+    pub theta_text: String,
+    /// Cut θ to the pattern's fundamental domain ([`super::symmetry`]).
+    pub symmetry_cut: bool,
+    /// Normal loads W (N), strictly increasing.
+    pub loads: Vec<f64>,
+    /// Friction coefficient below which a design counts as superlubric (study: 0.02).
+    pub mu_superlubric: f64,
+    /// Orientations kept per lower load level of the shortlist ([`super::shortlist`]).
+    pub per_level: usize,
+    /// Most orientations kept at the top level (all that survive the highest load, up to this).
+    pub max_top: usize,
+    /// Coarse α grid step (degrees) of the scan over [0, P_α).
+    pub alpha_step_deg: f64,
+    /// Successive finer α steps (degrees), each scanned over ± half the previous step around
+    /// the best α so far.
+    pub alpha_refine_deg: Vec<f64>,
+    /// Contact-line angle (rad from x) for every θ; `None`: the moiré estimate.
+    pub line: Option<f64>,
+    /// Length (m) of the α-scan paths.
+    pub scan_length: f64,
+    /// Sample spacing (m) of the α-scan paths.
+    pub scan_step: f64,
+    /// Pulling angles per orientation whose friction is estimated (the lowest-corrugation
+    /// local minima of the scan, ≥ one refine window apart).
+    pub alphas_per_theta: usize,
+    /// The friction estimate's knobs.
+    pub friction: FrictionParams,
+    /// Designs per pattern confirmed with the DEM (0 only with `no_dem`).
+    pub confirm: usize,
+    /// Loads (N) of the DEM confirmation, each one of `loads`.
+    pub confirm_loads: Vec<f64>,
+    /// Stop before the DEM.
+    pub no_dem: bool,
+    /// DEM runs side by side (one thread each).
+    pub jobs: usize,
+    /// The DEM protocol of every confirmation run (α and line are set per run).
+    pub dem: DemParams,
+    /// The study's protocol (10 + 10 + 300 µs) is used; otherwise the report says it is shorter.
+    pub dem_is_study_protocol: bool,
+    /// `superlube slide` flags choosing the DEM model of the runs (for reproduction commands),
+    /// e.g. ` --rigid-z --prune`.
+    pub dem_flags: String,
+    /// The DEM model of the runs in words (for the report).
+    pub dem_words: String,
+    /// Also run the study protocol on the best design at the middle confirmation load, to
+    /// measure the shorter protocol's friction difference (only when the protocol is shorter).
+    pub protocol_check: bool,
+}

@@ -1,0 +1,242 @@
+//! The design score and the ranking of (θ, α) candidates.
+//!
+//! A candidate (θ, α) is **superlubric at load W** when its friction estimate along α exists,
+//! its coating is intact on the whole sliding path (the largest P_max along the path, which
+//! starts at the screened placement, ≤ P_crit) and μ_est < `mu_superlubric` (0.02).
+//!
+//! **Score**, compared in this order:
+//! 1. `superlubric_to` — the highest load W_k of the list such that the candidate is
+//!    superlubric at every load W_1 … W_k (0: not even at the lowest load): higher is better;
+//! 2. `mu_worst` — the largest μ_est over those loads (over the lowest load alone when
+//!    `superlubric_to` is 0): lower is better;
+//! 3. `contacts` — the path-averaged contact number at `superlubric_to` (at the lowest load
+//!    when 0): more is better (the load is spread over more asperities);
+//! 4. then θ and α ascending (a fixed order for ties).
+//!
+//! A candidate not superlubric at the lowest load has only that load estimated
+//! ([`super::scan`]); its `intact_to` then counts that load only.
+
+use super::scan::ThetaEval;
+use crate::study::rows::FrictionRow;
+use serde::{Deserialize, Serialize};
+use std::cmp::Ordering;
+use surrogate::units::pa_to_gpa;
+
+/// One (θ, α) candidate of a pattern with its friction rows (one per load, ascending).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Candidate {
+    /// Pattern (design scene name).
+    pub pattern: String,
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// α (degrees from the contact line).
+    pub alpha_deg: f64,
+    /// Contact line (degrees from x).
+    pub line_deg: f64,
+    /// Pulling direction (degrees from x).
+    pub direction_deg: f64,
+    /// Corrugation along α in the scan (nm).
+    pub corrugation_nm: f64,
+    /// Load of the scan (mN).
+    pub scan_load_mn: f64,
+    /// The screen's coating-intact load W_c (mN).
+    pub screen_intact_to_mn: f64,
+    /// Why it was shortlisted (`top level`, `level 1.75 mN`).
+    pub reason: String,
+    /// Friction estimate per load.
+    pub friction: Vec<FrictionRow>,
+    /// The score.
+    pub score: Score,
+}
+
+/// The score of a candidate (see the module docs; loads in mN).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Score {
+    /// Highest load up to which the candidate is superlubric (mN; 0: none).
+    pub superlubric_to_mn: f64,
+    /// Highest load up to which its coating is intact on the whole path (mN; 0: none).
+    pub intact_to_mn: f64,
+    /// Largest μ_est up to `superlubric_to` (at the lowest load when that is 0).
+    pub mu_worst: f64,
+    /// Path-averaged contacts at `superlubric_to` (at the lowest load when 0).
+    pub contacts: f64,
+}
+
+/// Whether a friction row is superlubric (see the module docs).
+pub fn superlubric(r: &FrictionRow, p_crit: f64, mu_sl: f64) -> bool {
+    intact(r, p_crit) && r.mu_est.is_some_and(|m| m < mu_sl)
+}
+
+/// Whether a friction row's coating is intact on its whole path.
+pub fn intact(r: &FrictionRow, p_crit: f64) -> bool {
+    r.error.is_empty() && r.p_max_GPa.is_some_and(|p| p <= pa_to_gpa(p_crit))
+}
+
+/// The score of the rows of one (θ, α), loads ascending.
+pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
+    let prefix = |ok: &dyn Fn(&FrictionRow) -> bool| rows.iter().take_while(|r| ok(r)).count();
+    let n_sl = prefix(&|r| superlubric(r, p_crit, mu_sl));
+    let n_in = prefix(&|r| intact(r, p_crit));
+    let load = |n: usize| if n == 0 { 0.0 } else { rows[n - 1].load_mN };
+    let upto = &rows[..n_sl.max(1).min(rows.len())];
+    Score {
+        superlubric_to_mn: load(n_sl),
+        intact_to_mn: load(n_in),
+        mu_worst: upto
+            .iter()
+            .map(|r| r.mu_est.unwrap_or(f64::INFINITY))
+            .fold(f64::NEG_INFINITY, f64::max),
+        contacts: upto.last().and_then(|r| r.contacts_mean).unwrap_or(0.0),
+    }
+}
+
+/// The candidates of one orientation's evaluation.
+pub fn candidates(
+    pattern: &str,
+    ev: &ThetaEval,
+    screen_intact_to_mn: f64,
+    reason: &str,
+    p_crit: f64,
+    mu_sl: f64,
+) -> Vec<Candidate> {
+    ev.alphas_deg
+        .iter()
+        .map(|&a| {
+            let rows: Vec<FrictionRow> = ev
+                .friction
+                .iter()
+                .filter(|r| r.alpha_deg == a)
+                .cloned()
+                .collect();
+            (a, rows)
+        })
+        .map(|(a, rows)| Candidate {
+            pattern: pattern.to_string(),
+            theta_deg: ev.theta_deg,
+            alpha_deg: a,
+            line_deg: ev.line_deg,
+            direction_deg: rows.first().map_or(ev.line_deg + a, |r| r.direction_deg),
+            corrugation_nm: ev
+                .scan
+                .iter()
+                .find(|r| (r.alpha_deg - a).abs() < 1e-9)
+                .map_or(f64::NAN, |r| r.corrugation_nm),
+            scan_load_mn: ev.scan_load_mN,
+            screen_intact_to_mn,
+            reason: reason.to_string(),
+            score: score(&rows, p_crit, mu_sl),
+            friction: rows,
+        })
+        .collect()
+}
+
+/// The ranking order (best first).
+pub fn compare(a: &Candidate, b: &Candidate) -> Ordering {
+    b.score
+        .superlubric_to_mn
+        .total_cmp(&a.score.superlubric_to_mn)
+        .then(a.score.mu_worst.total_cmp(&b.score.mu_worst))
+        .then(b.score.contacts.total_cmp(&a.score.contacts))
+        .then(a.theta_deg.total_cmp(&b.theta_deg))
+        .then(a.alpha_deg.total_cmp(&b.alpha_deg))
+}
+
+/// One row of `ranking.csv`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[allow(non_snake_case)]
+pub struct RankingRow {
+    /// Rank within the pattern (1 = best design).
+    pub rank: usize,
+    /// Pattern (design scene name).
+    pub pattern: String,
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// α from the contact line (degrees).
+    pub alpha_deg: f64,
+    /// Contact line (degrees from x).
+    pub line_deg: f64,
+    /// Pulling direction (degrees from x).
+    pub direction_deg: f64,
+    /// Highest load up to which superlubric: coating intact on the path and μ_est < the limit
+    /// at every load up to it (mN; 0: none).
+    pub superlubric_to_mN: f64,
+    /// Largest μ_est up to `superlubric_to_mN` (at the lowest load when that is 0).
+    pub mu_worst: f64,
+    /// Path-averaged contacts at `superlubric_to_mN`.
+    pub contacts_mean: f64,
+    /// Highest load up to which the coating is intact on the whole path (mN).
+    pub coating_intact_to_mN: f64,
+    /// The screen's coating-intact load at the screened placement (mN).
+    pub screen_intact_to_mN: f64,
+    /// μ_est at the lowest load.
+    pub mu_est_lowest: Option<f64>,
+    /// Corrugation along α in the scan (nm).
+    pub corrugation_nm: f64,
+    /// Load of the scan (mN).
+    pub scan_load_mN: f64,
+    /// Why the orientation was shortlisted.
+    pub shortlist: String,
+}
+
+impl RankingRow {
+    /// The row of `c` at rank `rank`.
+    pub fn new(rank: usize, c: &Candidate) -> RankingRow {
+        RankingRow {
+            rank,
+            pattern: c.pattern.clone(),
+            theta_deg: c.theta_deg,
+            alpha_deg: c.alpha_deg,
+            line_deg: c.line_deg,
+            direction_deg: c.direction_deg,
+            superlubric_to_mN: c.score.superlubric_to_mn,
+            mu_worst: c.score.mu_worst,
+            contacts_mean: c.score.contacts,
+            coating_intact_to_mN: c.score.intact_to_mn,
+            screen_intact_to_mN: c.screen_intact_to_mn,
+            mu_est_lowest: c.friction.first().and_then(|r| r.mu_est),
+            corrugation_nm: c.corrugation_nm,
+            scan_load_mN: c.scan_load_mn,
+            shortlist: c.reason.clone(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fr(w: f64, mu: f64, p: f64) -> FrictionRow {
+        let mut r = FrictionRow::new(
+            "x",
+            0.0,
+            0.0,
+            0.0,
+            w * 1e-3,
+            &Err(surrogate::SceneError::invalid("x", 0.0, "y")),
+        );
+        r.error.clear();
+        r.mu_est = Some(mu);
+        r.p_max_GPa = Some(p);
+        r.contacts_mean = Some(100.0 * w);
+        r
+    }
+
+    #[test]
+    fn score_is_the_superlubric_prefix() {
+        let rows = vec![
+            fr(1.0, 0.011, 3.0),
+            fr(2.0, 0.015, 3.5),
+            fr(3.0, 0.012, 4.1),
+            fr(4.0, 0.010, 3.9),
+        ];
+        let s = score(&rows, 4e9, 0.02);
+        assert_eq!(s.superlubric_to_mn, 2.0);
+        assert_eq!(s.intact_to_mn, 2.0);
+        assert_eq!(s.mu_worst, 0.015);
+        assert_eq!(s.contacts, 200.0);
+        let rows = vec![fr(1.0, 0.03, 3.0), fr(2.0, 0.01, 3.0)];
+        let s = score(&rows, 4e9, 0.02);
+        assert_eq!((s.superlubric_to_mn, s.intact_to_mn), (0.0, 2.0));
+        assert_eq!(s.mu_worst, 0.03);
+    }
+}

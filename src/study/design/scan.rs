@@ -1,0 +1,219 @@
+//! The evaluation of one shortlisted orientation: its contact line, the corrugation versus the
+//! pulling angle α (a coarse grid over one α period, then finer grids around the minimum), and
+//! the friction estimate at every load along the best α's.
+//!
+//! - **Scan.** Corrugation (peak-to-peak slider height) along straight paths of `scan_length`
+//!   sampled every `scan_step` (direct solves, [`surrogate::map::corrugation_direct`]), at the
+//!   orientation's coating-intact load `W_c` (where the design has to work; the lowest load if
+//!   none). Coarse: α = k·`alpha_step` over [0, P_α) (P_α the α period,
+//!   [`super::symmetry`]: 0 is along the contact line, 90° across it); each refinement step r
+//!   scans the best α so far ± half the previous step in steps of r (folded into [0, P_α),
+//!   angles already scanned not repeated).
+//! - **Best α's.** The `alphas_per_theta` lowest-corrugation angles at least one coarse step
+//!   apart (circularly within the period); ties: the first in scan order.
+//! - **Friction.** [`surrogate::friction::estimate_friction_loads`] along each best α: first at
+//!   the lowest load; if the candidate is superlubric there (coating intact on the path and
+//!   μ_est below the limit), at every other load up to the orientation's coating-intact load
+//!   `W_c` (one path for all of them). Loads above `W_c` are not estimated: the coating fails
+//!   there at the screened placement, the first sample of every path, so the candidate cannot
+//!   be superlubric there; nor are any loads above the lowest when it is not superlubric at the
+//!   lowest (the score needs superlubricity from the lowest load up). The confirmation stage
+//!   adds estimates at the DEM loads that lack one.
+
+use super::params::DesignParams;
+use super::symmetry::PairSymmetry;
+use crate::study::corrugation::contact_line;
+use crate::study::rows::{clean, label, CorrugationRow, FrictionRow};
+use anyhow::Result;
+use serde::{Deserialize, Serialize};
+use surrogate::friction::estimate_friction_loads;
+use surrogate::map::{corrugation_direct, MapParams};
+use surrogate::solver::Solver;
+use surrogate::units::{deg_to_rad, n_to_mn, rad_to_deg};
+use surrogate::Scene;
+
+/// The evaluation of one orientation (user units, as stored in the design's stage files).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[allow(non_snake_case)]
+pub struct ThetaEval {
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// Load of the α scan (mN).
+    pub scan_load_mN: f64,
+    /// Contact line used (degrees from x).
+    pub line_deg: f64,
+    /// The α scan, in scan order (coarse grid, then each refinement).
+    pub scan: Vec<CorrugationRow>,
+    /// The best α's (degrees), best first.
+    pub alphas_deg: Vec<f64>,
+    /// The friction estimate along each best α (α outer, load inner): the loads up to `W_c`, or
+    /// only the lowest when the candidate is not superlubric there.
+    pub friction: Vec<FrictionRow>,
+}
+
+/// A degree value folded into [0, p) and cleaned to 1e-9°.
+fn fold_alpha(a: f64, p: f64) -> f64 {
+    let v = clean(a.rem_euclid(p));
+    if v >= p - 1e-9 {
+        0.0
+    } else {
+        v
+    }
+}
+
+/// Circular distance of two α (degrees) within the period `p`.
+fn alpha_distance(a: f64, b: f64, p: f64) -> f64 {
+    let d = (a - b).rem_euclid(p);
+    d.min(p - d)
+}
+
+/// The coarse α grid (degrees) over [0, p) with step `step`.
+pub fn coarse_grid(p: f64, step: f64) -> Vec<f64> {
+    let n = (p / step - 1e-9).ceil().max(1.0) as usize;
+    (0..n).map(|k| clean(k as f64 * step)).collect()
+}
+
+/// Number of corrugation paths the scan of one orientation solves (for progress and budgets):
+/// the coarse grid plus each refinement's new angles (at most).
+pub fn paths_per_scan(p: &DesignParams, sym: &PairSymmetry) -> usize {
+    let mut n = coarse_grid(sym.alpha_period_deg, p.alpha_step_deg).len();
+    let mut prev = p.alpha_step_deg;
+    for &r in &p.alpha_refine_deg {
+        n += 2 * (0.5 * prev / r + 1e-9).floor() as usize;
+        prev = r;
+    }
+    n
+}
+
+/// Evaluates orientation `theta_deg` of `scene` (see the module docs): scan at `scan_load` (N),
+/// friction at every load of `p`. `tick` is called once per scanned path and once per friction
+/// path.
+#[allow(clippy::too_many_arguments)]
+pub fn evaluate(
+    solver: &Solver,
+    scene: &Scene,
+    theta_deg: f64,
+    scan_load: f64,
+    p: &DesignParams,
+    sym: &PairSymmetry,
+    tick: &(dyn Fn() + Sync),
+) -> Result<ThetaEval> {
+    let theta = deg_to_rad(theta_deg);
+    let line = contact_line(&scene.with_theta(theta), p.line);
+    let map = MapParams {
+        distance: p.scan_length,
+        step: p.scan_step,
+        ..MapParams::default()
+    };
+    let period = sym.alpha_period_deg;
+    let mut scan: Vec<CorrugationRow> = Vec::new();
+    let run = |alphas: &[f64], scan: &mut Vec<CorrugationRow>| -> Result<()> {
+        let todo: Vec<f64> = alphas
+            .iter()
+            .copied()
+            .filter(|a| !scan.iter().any(|r| (r.alpha_deg - a).abs() < 1e-9))
+            .collect();
+        for a in todo {
+            let pts = corrugation_direct(
+                solver,
+                theta,
+                scan_load,
+                line.angle,
+                &[deg_to_rad(a)],
+                &map,
+                &|| {},
+            )?;
+            let mut row = CorrugationRow::new(theta, scan_load, line.angle, &pts[0]);
+            row.alpha_deg = a; // the decimal meant (exact in reproduction commands)
+            scan.push(row);
+            tick();
+        }
+        Ok(())
+    };
+    let best_of = |scan: &[CorrugationRow]| -> f64 {
+        scan.iter()
+            .min_by(|a, b| a.corrugation_nm.total_cmp(&b.corrugation_nm))
+            .map_or(0.0, |r| r.alpha_deg)
+    };
+    run(&coarse_grid(period, p.alpha_step_deg), &mut scan)?;
+    let mut prev = p.alpha_step_deg;
+    for &r in &p.alpha_refine_deg {
+        let best = best_of(&scan);
+        let k = (0.5 * prev / r + 1e-9).floor() as i64;
+        let fine: Vec<f64> = (-k..=k)
+            .filter(|&j| j != 0)
+            .map(|j| fold_alpha(best + j as f64 * r, period))
+            .collect();
+        run(&fine, &mut scan)?;
+        prev = r;
+    }
+    // best α's: lowest corrugation, at least one coarse step apart
+    let mut order: Vec<&CorrugationRow> = scan.iter().collect();
+    order.sort_by(|a, b| a.corrugation_nm.total_cmp(&b.corrugation_nm));
+    let mut alphas: Vec<f64> = Vec::new();
+    for r in order {
+        if alphas.len() >= p.alphas_per_theta {
+            break;
+        }
+        if alphas
+            .iter()
+            .all(|&a| alpha_distance(a, r.alpha_deg, period) >= p.alpha_step_deg - 1e-9)
+        {
+            alphas.push(r.alpha_deg);
+        }
+    }
+    let mut friction = Vec::new();
+    let p_crit = scene.coating.p_crit;
+    for &a in &alphas {
+        let alpha = deg_to_rad(a);
+        let dir = line.angle + alpha;
+        let row = |w: f64, r: &Result<_, _>| {
+            let mut row = FrictionRow::new(&scene.pattern, theta, alpha, line.angle, w, r);
+            row.alpha_deg = a;
+            row
+        };
+        // loads up to the scan load (the screen's coating-intact load W_c): beyond it the
+        // coating fails at the screened placement, the path's first sample
+        let upto = p
+            .loads
+            .iter()
+            .position(|&w| w >= scan_load * (1.0 - 1e-12))
+            .map_or(p.loads.len(), |k| k + 1);
+        let lowest = estimate_friction_loads(solver, theta, dir, &p.loads[..1], &p.friction)?;
+        let first = row(p.loads[0], &lowest[0]);
+        let go_on = super::rank::superlubric(&first, p_crit, p.mu_superlubric);
+        friction.push(first);
+        if go_on && upto > 1 {
+            let rest = estimate_friction_loads(solver, theta, dir, &p.loads[1..upto], &p.friction)?;
+            for (&w, r) in p.loads[1..upto].iter().zip(&rest) {
+                friction.push(row(w, r));
+            }
+        }
+        tick();
+    }
+    Ok(ThetaEval {
+        theta_deg: label(theta_deg),
+        scan_load_mN: label(n_to_mn(scan_load)),
+        line_deg: rad_to_deg(line.angle),
+        scan,
+        alphas_deg: alphas,
+        friction,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grids_and_folding() {
+        assert_eq!(coarse_grid(180.0, 15.0).len(), 12);
+        assert_eq!(coarse_grid(180.0, 15.0)[6], 90.0);
+        assert_eq!(coarse_grid(60.0, 15.0), vec![0.0, 15.0, 30.0, 45.0]);
+        assert_eq!(coarse_grid(60.0, 25.0), vec![0.0, 25.0, 50.0]);
+        assert_eq!(fold_alpha(-89.0, 180.0), 91.0);
+        assert_eq!(fold_alpha(180.0, 180.0), 0.0);
+        assert_eq!(fold_alpha(-0.5, 60.0), 59.5);
+        assert_eq!(alpha_distance(89.0, -89.0, 180.0), 2.0);
+    }
+}

@@ -1,0 +1,288 @@
+//! The symmetry cut of a design's orientation range, and the period of its pulling angle.
+//!
+//! A 2-D Bravais lattice is invariant under rotations by 2π/n about any of its sites
+//! (n ∈ {2, 3, 4, 6}: its *rotation order*, the largest such n) and possibly under reflections
+//! about mirror lines through a site (always along lattice vectors). The slider (a disc of
+//! lattice sites centred on a site) at rotation θ sits over the substrate with its centre on a
+//! substrate site, so:
+//!
+//! - **Period.** Rotating the slider by 2π/n_s maps it onto itself (θ ≡ θ + 2π/n_s); rotating
+//!   the whole picture by 2π/n_b maps the substrate onto itself and the slider to θ + 2π/n_b.
+//!   Together θ ≡ θ + P with **P = 360°/lcm(n_s, n_b)**: 30° for square-on-triangle
+//!   (lcm(4, 6) = 12), 60° for triangle-on-triangle, 90° for square-on-square.
+//! - **Mirror.** Reflecting the picture about a substrate mirror line at angle m_b maps the
+//!   slider at θ to the slider at 2(m_b − m_s) − θ for any slider mirror line m_s (angles in
+//!   each lattice's own frame): θ ≡ 2c − θ about every centre c = m_b − m_s. For the presets
+//!   (both lattices have a mirror line along their first vector, the x axis) c = 0:
+//!   θ ≡ −θ. Mirror centres repeat every P/2.
+//! - **Fundamental domain.** With a mirror: [c₀, c₀ + P/2], c₀ the smallest centre ≥ 0 (0 for
+//!   the presets): **0–15° for square-tri, 0–30° for tri-tri**, 0–45° for square-square.
+//!   Without one: [0, P).
+//! - **The cut** keeps the θ values of `--theta` that lie in the domain (every other θ is the
+//!   image of one inside it; a range is not shifted or folded, so `0:30:0.1` becomes `0:15:0.1`
+//!   for square-tri). Nothing left: an error naming `--theta` with the domain.
+//! - **Pulling angle.** The rotations common to both lattices, by 2π/gcd(n_s, n_b) about the
+//!   shared site, map every path onto an equivalent one, and 180° always does (all Bravais
+//!   lattices are centrosymmetric): α ≡ α + P_α with **P_α = 360°/gcd(n_s, n_b)** (180° for
+//!   square-tri, 60° for tri-tri). The design scans α over (−P_α/2, P_α/2].
+//!
+//! The cut is exact for a flat substrate with the slider centred on a site (the default
+//! placement; the finite substrate rectangle is far from the slider). A random height
+//! perturbation (σ_h > 0) keeps the symmetry only statistically, and an in-plane offset breaks
+//! it: the design says so in its log, and `--no-symmetry-cut` screens the range as given.
+
+use surrogate::Lattice;
+
+/// Relative tolerance of "maps onto the lattice" (lattice coordinates within this of integers).
+const TOL: f64 = 1e-6;
+
+/// Symmetry of one lattice about a site.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LatticeSymmetry {
+    /// Largest n ∈ {6, 4, 3, 2} such that the rotation by 2π/n maps the lattice onto itself.
+    pub rotation_order: u32,
+    /// Angles (rad, in [0, π)) of the mirror lines through a site, ascending.
+    pub mirrors: Vec<f64>,
+}
+
+/// Whether the linear map `m` (row-major 2×2) maps `l` onto itself: both primitive vectors go
+/// to lattice vectors (integer coordinates).
+fn maps_onto(l: &Lattice, m: [[f64; 2]; 2]) -> bool {
+    [l.a1, l.a2].iter().all(|v| {
+        let w = [
+            m[0][0] * v[0] + m[0][1] * v[1],
+            m[1][0] * v[0] + m[1][1] * v[1],
+        ];
+        let c = l.to_lattice_coords(w);
+        c.iter().all(|x| (x - x.round()).abs() < TOL)
+    })
+}
+
+fn rotation(phi: f64) -> [[f64; 2]; 2] {
+    let (s, c) = phi.sin_cos();
+    [[c, -s], [s, c]]
+}
+
+fn reflection(phi: f64) -> [[f64; 2]; 2] {
+    let (s, c) = (2.0 * phi).sin_cos();
+    [[c, s], [s, -c]]
+}
+
+impl LatticeSymmetry {
+    /// The symmetry of `l` (mirror candidates: the directions of lattice vectors with
+    /// coefficients up to 4, which contain every mirror line of a 2-D lattice).
+    pub fn of(l: &Lattice) -> LatticeSymmetry {
+        let rotation_order = [6u32, 4, 3, 2]
+            .into_iter()
+            .find(|&n| maps_onto(l, rotation(std::f64::consts::TAU / n as f64)))
+            .unwrap_or(2);
+        let mut mirrors: Vec<f64> = Vec::new();
+        for i in -4i32..=4 {
+            for j in -4i32..=4 {
+                if i == 0 && j == 0 {
+                    continue;
+                }
+                let v = l.point(i as f64, j as f64);
+                let phi = v[1].atan2(v[0]).rem_euclid(std::f64::consts::PI);
+                let phi = if std::f64::consts::PI - phi < 1e-12 {
+                    0.0
+                } else {
+                    phi
+                };
+                if mirrors.iter().any(|&m| (m - phi).abs() < 1e-9) {
+                    continue;
+                }
+                if maps_onto(l, reflection(phi)) {
+                    mirrors.push(phi);
+                }
+            }
+        }
+        mirrors.sort_by(f64::total_cmp);
+        LatticeSymmetry {
+            rotation_order,
+            mirrors,
+        }
+    }
+}
+
+fn gcd(a: u32, b: u32) -> u32 {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
+}
+
+/// The symmetry of a slider lattice over a substrate lattice (see the module docs); angles in
+/// degrees.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairSymmetry {
+    /// Slider lattice's rotation order n_s.
+    pub slider_order: u32,
+    /// Substrate lattice's rotation order n_b.
+    pub substrate_order: u32,
+    /// Period P of θ (degrees): 360/lcm(n_s, n_b).
+    pub period_deg: f64,
+    /// Smallest mirror centre c₀ ≥ 0 (degrees; θ ≡ 2c₀ − θ), if the pair has a mirror.
+    pub mirror_deg: Option<f64>,
+    /// Period P_α of the pulling angle (degrees): 360/gcd(n_s, n_b).
+    pub alpha_period_deg: f64,
+}
+
+impl PairSymmetry {
+    /// The symmetry of `slider` over `substrate`.
+    pub fn of(slider: &Lattice, substrate: &Lattice) -> PairSymmetry {
+        let s = LatticeSymmetry::of(slider);
+        let b = LatticeSymmetry::of(substrate);
+        let (ns, nb) = (s.rotation_order, b.rotation_order);
+        let lcm = ns / gcd(ns, nb) * nb;
+        let period_deg = 360.0 / lcm as f64;
+        let half = period_deg / 2.0;
+        let mut mirror: Option<f64> = None;
+        for mb in &b.mirrors {
+            for ms in &s.mirrors {
+                let c = (mb - ms).to_degrees().rem_euclid(half);
+                // snap to the 1e-9° grid: the centres of the presets are exact multiples
+                let c = (c * 1e9).round() / 1e9;
+                let c = if (half - c).abs() < 1e-9 { 0.0 } else { c };
+                if mirror.is_none_or(|m| c < m) {
+                    mirror = Some(c);
+                }
+            }
+        }
+        PairSymmetry {
+            slider_order: ns,
+            substrate_order: nb,
+            period_deg,
+            mirror_deg: mirror,
+            alpha_period_deg: 360.0 / gcd(ns, nb) as f64,
+        }
+    }
+
+    /// The fundamental domain of θ (degrees): `[lo, hi]`, closed with a mirror, `[lo, hi)`
+    /// without (the flag says whether `hi` is included).
+    pub fn domain(&self) -> (f64, f64, bool) {
+        match self.mirror_deg {
+            Some(c) => (c, c + self.period_deg / 2.0, true),
+            None => (0.0, self.period_deg, false),
+        }
+    }
+
+    /// Whether θ (degrees) lies in the fundamental domain (within 1e-9°).
+    pub fn contains(&self, theta_deg: f64) -> bool {
+        let (lo, hi, closed) = self.domain();
+        theta_deg >= lo - 1e-9
+            && if closed {
+                theta_deg <= hi + 1e-9
+            } else {
+                theta_deg < hi - 1e-9
+            }
+    }
+
+    /// The orientation in the fundamental domain equivalent to θ (degrees).
+    pub fn fold(&self, theta_deg: f64) -> f64 {
+        let (lo, _, _) = self.domain();
+        let p = self.period_deg;
+        match self.mirror_deg {
+            Some(c) => {
+                let t = (theta_deg - c).rem_euclid(p);
+                c + if t > p / 2.0 { p - t } else { t }
+            }
+            None => (theta_deg - lo).rem_euclid(p) + lo,
+        }
+    }
+
+    /// One line describing the symmetry, e.g. `period 30°, mirror θ → −θ: domain [0°, 15°];
+    /// α period 180°`.
+    pub fn describe(&self) -> String {
+        let (lo, hi, closed) = self.domain();
+        format!(
+            "rotation orders {} (slider) and {} (substrate): θ period {}°, {}: domain [{}°, {}°{}; α period {}°",
+            self.slider_order,
+            self.substrate_order,
+            fmt(self.period_deg),
+            match self.mirror_deg {
+                Some(0.0) => "mirror θ → −θ".to_string(),
+                Some(c) => format!("mirror θ → {}° − θ", fmt(2.0 * c)),
+                None => "no mirror".to_string(),
+            },
+            fmt(lo),
+            fmt(hi),
+            if closed { "]" } else { ")" },
+            fmt(self.alpha_period_deg)
+        )
+    }
+}
+
+/// A degree value without binary noise (`15`, `22.5`).
+pub fn fmt(v: f64) -> String {
+    let r = (v * 1e9).round() / 1e9;
+    format!("{r}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn presets() {
+        let t = Lattice::triangular(3e-6);
+        let s = Lattice::square(3e-6);
+        let st = PairSymmetry::of(&s, &t);
+        assert_eq!((st.slider_order, st.substrate_order), (4, 6));
+        assert_eq!(st.period_deg, 30.0);
+        assert_eq!(st.mirror_deg, Some(0.0));
+        assert_eq!(st.domain(), (0.0, 15.0, true));
+        assert_eq!(st.alpha_period_deg, 180.0);
+        let tt = PairSymmetry::of(&t, &t);
+        assert_eq!(tt.domain(), (0.0, 30.0, true));
+        assert_eq!(tt.alpha_period_deg, 60.0);
+        let ss = PairSymmetry::of(&s, &s);
+        assert_eq!(ss.domain(), (0.0, 45.0, true));
+        assert_eq!(ss.alpha_period_deg, 90.0);
+        assert_eq!(LatticeSymmetry::of(&t).mirrors.len(), 6);
+        assert_eq!(LatticeSymmetry::of(&s).mirrors.len(), 4);
+        for (th, f) in [
+            (20.0, 10.0),
+            (-3.0, 3.0),
+            (31.0, 1.0),
+            (15.0, 15.0),
+            (45.0, 15.0),
+        ] {
+            assert!((st.fold(th) - f).abs() < 1e-9, "{th} → {}", st.fold(th));
+        }
+        assert!(st.contains(0.0) && st.contains(15.0) && !st.contains(15.1));
+        assert!(st.describe().contains("[0°, 15°]"), "{}", st.describe());
+    }
+
+    #[test]
+    fn rectangular_and_oblique() {
+        let r = Lattice::rectangular(3e-6, 4e-6);
+        let sym = LatticeSymmetry::of(&r);
+        assert_eq!(sym.rotation_order, 2);
+        assert_eq!(sym.mirrors.len(), 2);
+        let t = Lattice::triangular(3e-6);
+        let p = PairSymmetry::of(&r, &t);
+        assert_eq!(p.period_deg, 60.0);
+        assert_eq!(p.domain(), (0.0, 30.0, true));
+        assert_eq!(p.alpha_period_deg, 180.0);
+        // a generic oblique lattice: no mirror, 2-fold only
+        let o = Lattice::oblique([3e-6, 0.0], [1.0e-6, 2.8e-6]);
+        let so = LatticeSymmetry::of(&o);
+        assert_eq!(so.rotation_order, 2);
+        assert!(so.mirrors.is_empty());
+        let p = PairSymmetry::of(&o, &t);
+        assert_eq!(p.mirror_deg, None);
+        assert_eq!(p.domain(), (0.0, 60.0, false));
+        assert!(p.contains(0.0) && !p.contains(60.0));
+        // a triangular lattice rotated by 10°: mirrors at 10° + k·30°, centre 10° (mod 15°)
+        let (s10, c10) = 10f64.to_radians().sin_cos();
+        let rot = |v: [f64; 2]| [c10 * v[0] - s10 * v[1], s10 * v[0] + c10 * v[1]];
+        let t10 = Lattice::oblique(rot(t.a1), rot(t.a2));
+        assert_eq!(LatticeSymmetry::of(&t10).rotation_order, 6);
+        let sq = Lattice::square(3e-6);
+        let p = PairSymmetry::of(&sq, &t10);
+        assert_eq!(p.period_deg, 30.0);
+        assert!((p.mirror_deg.unwrap() - 10.0).abs() < 1e-9, "{p:?}");
+    }
+}

@@ -1,0 +1,200 @@
+//! `superlube friction` (issue 8, point 1): the leading columns and units, one row per
+//! (θ, α, W) in the order θ, α, W for lists and ranges, a row of a range equal to a run at that
+//! single value, shards merging byte for byte into the unsharded output, a resumed run equal
+//! to an uninterrupted one, and bad input refused naming the flag. Small scenes (a 15 µm slider).
+
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
+use std::path::Path;
+
+const SMALL: [&str; 6] = [
+    "--pattern",
+    "square-tri",
+    "--slider-radius-um",
+    "15",
+    "--substrate-um",
+    "60x60",
+];
+
+fn friction(extra: &[&str], out: &Path) -> std::process::Output {
+    bin()
+        .arg("friction")
+        .args(SMALL)
+        .args(extra)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
+fn rows(path: &Path) -> Vec<Vec<String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    r.records()
+        .map(|x| x.unwrap().iter().map(String::from).collect())
+        .collect()
+}
+
+#[test]
+fn columns_order_and_ranges() {
+    let d = tmpdir("friction-cols");
+    let out = d.join("f.csv");
+    let o = friction(
+        &[
+            "--theta",
+            "0:10:5",
+            "--alpha",
+            "0,90",
+            "--load-mn",
+            "0.02:0.06:0.02",
+        ],
+        &out,
+    );
+    assert_ok(&o);
+    let text = std::fs::read_to_string(&out).unwrap();
+    let header = text.lines().next().unwrap();
+    assert!(
+        header.starts_with("pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,"),
+        "{header}"
+    );
+    for col in [
+        "mu_coating",
+        "mu_corrugation",
+        "eta",
+        "barrier_pJ",
+        "max_lateral_force_mN",
+        "contacts_mean",
+        "line_deg",
+        "direction_deg",
+        "path_length_um",
+        "path_step_um",
+        "error",
+    ] {
+        assert!(
+            header.split(',').any(|c| c == col),
+            "{col} missing: {header}"
+        );
+    }
+    let r = rows(&out);
+    assert_eq!(r.len(), 3 * 2 * 3);
+    // θ outer, α, then W
+    let key: Vec<(String, String, String)> = r
+        .iter()
+        .map(|x| (x[1].clone(), x[2].clone(), x[3].clone()))
+        .collect();
+    assert_eq!(key[0], ("0.0".into(), "0.0".into(), "0.02".into()));
+    assert_eq!(key[2], ("0.0".into(), "0.0".into(), "0.06".into()));
+    assert_eq!(key[3], ("0.0".into(), "90.0".into(), "0.02".into()));
+    assert_eq!(key[6], ("5.0".into(), "0.0".into(), "0.02".into()));
+    assert_eq!(key[17], ("10.0".into(), "90.0".into(), "0.06".into()));
+    for x in &r {
+        let mu: f64 = x[4].parse().unwrap();
+        assert!(mu.is_finite() && mu >= 0.01 - 1e-12, "{x:?}");
+        assert!(x.last().unwrap().is_empty(), "{x:?}");
+        // direction = line + α
+        let (line, alpha, dir): (f64, f64, f64) = (
+            x[15].parse().unwrap(),
+            x[2].parse().unwrap(),
+            x[16].parse().unwrap(),
+        );
+        assert!((line + alpha - dir).abs() < 1e-6, "{x:?}");
+    }
+    // the 5° / 90° / 0.04 mN row of the range equals a single-value run, byte for byte
+    let one = d.join("one.csv");
+    assert_ok(&friction(
+        &["--theta", "5", "--alpha", "90", "--load-mn", "0.04"],
+        &one,
+    ));
+    let single = std::fs::read_to_string(&one).unwrap();
+    let line = text.lines().nth(1 + 3 + 3 + 3 + 1).unwrap();
+    assert_eq!(single.lines().nth(1).unwrap(), line);
+    // sidecar
+    let meta: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("f.csv.meta.json")).unwrap()).unwrap();
+    assert_eq!(meta["workflow"], "friction");
+    assert_eq!(meta["rows"], 18);
+    assert_eq!(meta["params"]["alpha_deg"], serde_json::json!([0.0, 90.0]));
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn shards_merge_byte_identically_and_resume_equals_whole() {
+    let d = tmpdir("friction-shards");
+    let args = [
+        "--theta",
+        "0,3,6",
+        "--alpha",
+        "0,45,90",
+        "--load-mn",
+        "0.02,0.05",
+    ];
+    let whole = d.join("whole.csv");
+    assert_ok(&friction(&args, &whole));
+    let expect = std::fs::read(&whole).unwrap();
+    let mut files = Vec::new();
+    for i in [2usize, 0, 1] {
+        let f = d.join(format!("s{i}.csv"));
+        let mut a: Vec<&str> = args.to_vec();
+        let sh = format!("{i}/3");
+        a.extend(["--shard", &sh]);
+        assert_ok(&friction(&a, &f));
+        files.push(f);
+    }
+    let merged = d.join("merged.csv");
+    let o = bin()
+        .arg("merge")
+        .args(&files)
+        .arg("--out")
+        .arg(&merged)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    assert_eq!(std::fs::read(&merged).unwrap(), expect);
+    // killed after 5 rows (mid-item: the item's second load is dropped), then resumed
+    let resumed = d.join("resumed.csv");
+    let o = bin()
+        .arg("friction")
+        .args(SMALL)
+        .args(args)
+        .arg("--out")
+        .arg(&resumed)
+        .env("SUPERLUBE_TEST_KILL_AFTER_ROWS", "5")
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    let mut a: Vec<&str> = args.to_vec();
+    a.push("--resume");
+    let o = friction(&a, &resumed);
+    assert_ok(&o);
+    let log = String::from_utf8_lossy(&o.stderr);
+    assert!(log.contains("resum"), "{log}");
+    assert_eq!(std::fs::read(&resumed).unwrap(), expect);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn bad_input_names_the_flag() {
+    let d = tmpdir("friction-bad");
+    let out = d.join("x.csv");
+    let out = out.to_str().unwrap();
+    let base = |extra: &[&'static str]| -> Vec<String> {
+        let mut v: Vec<String> = vec!["friction".into()];
+        v.extend(SMALL.iter().map(|s| s.to_string()));
+        v.extend(extra.iter().map(|s| s.to_string()));
+        v.extend(["--out".to_string(), out.to_string()]);
+        v
+    };
+    let check = |extra: &[&'static str], flag: &str| {
+        let args = base(extra);
+        let a: Vec<&str> = args.iter().map(String::as_str).collect();
+        fails_naming(&a, flag);
+    };
+    check(&["--alpha", "200"], "--alpha");
+    check(&["--load-mn", "0"], "--load-mn");
+    check(&["--theta", "a"], "--theta");
+    check(&["--step-um", "0"], "--step-um");
+    check(&["--transient-um", "20"], "--transient-um");
+    check(&["--alpha", "7", "--length-um", "40"], "friction.length_um");
+    check(&["--shard", "3/3"], "--shard");
+    assert!(!Path::new(out).exists());
+    std::fs::remove_dir_all(&d).ok();
+}
