@@ -71,6 +71,7 @@
 //! rows from which they follow, under its own schema name, and adds that schema's merge in
 //! [`merge::merge`] — used by its unsharded run too, so both give the same bytes.
 
+pub mod batch;
 pub mod budget;
 pub mod contacts;
 pub mod corrugation;
