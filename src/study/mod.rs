@@ -73,6 +73,7 @@
 
 pub mod batch;
 pub mod budget;
+pub mod campaign;
 pub mod contacts;
 pub mod corrugation;
 pub mod dem_run;
