@@ -259,7 +259,7 @@ pub fn run(dir: &Path, a: &CampaignArgs) -> Result<()> {
     )?;
     if missing > 0 {
         rep.note(&format!(
-            "{missing} of {n} runs not finished yet (other shards): the figures are drawn by the call that finds every run finished — run the same command without --shard once the shards are done (it runs whatever is left, then draws)"
+            "{missing} of {n} runs not finished yet (other shards, or an interrupted call): the figures are drawn by the call that finds every run finished — run the same command without --shard once the shards are done (it runs whatever is left, then draws)"
         ));
         return Ok(());
     }

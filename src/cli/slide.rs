@@ -260,7 +260,7 @@ fn write_summary(
     let failed = rows.iter().filter(|r| r.status == "failed").count();
     if missing > 0 {
         rep.note(&format!(
-            "{missing} of {} runs not finished yet (other shards): runs.csv is written by the call that finds every run finished — run the same command without --shard (it runs what is left) once the shards are done",
+            "{missing} of {} runs not finished yet (other shards, or an interrupted call): runs.csv is written by the call that finds every run finished — run the same command without --shard (it runs what is left) once the shards are done",
             rows.len()
         ));
         return Ok(());

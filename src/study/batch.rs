@@ -278,7 +278,20 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
     let mut outs = Outputs::new(inputs.clone(), vec![]);
     let (result, error) = match std::fs::create_dir_all(&dir)
         .map_err(anyhow::Error::from)
-        .and_then(|_| slide(&job.scene, &params, progress))
+        .and_then(|_| {
+            // an engine panic (e.g. on blown-up coordinates) fails this run only
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                slide(&job.scene, &params, progress)
+            }))
+            .unwrap_or_else(|p| {
+                let msg = p
+                    .downcast_ref::<&str>()
+                    .map(|s| s.to_string())
+                    .or_else(|| p.downcast_ref::<String>().cloned())
+                    .unwrap_or_else(|| "unknown panic".into());
+                Err(anyhow::anyhow!("the DEM engine panicked: {msg}"))
+            })
+        })
     {
         Err(e) => (None, Some(format!("{e:#}"))),
         Ok((run, report)) => {
