@@ -94,7 +94,10 @@ fn side_by_side_equals_one_by_one_and_a_single_run() {
     for (x, y) in ra.iter().zip(&rb) {
         assert_eq!(x.file_name(), y.file_name());
         assert_eq!(read(&x.join("slide.csv")), read(&y.join("slide.csv")));
-        assert!(!x.join("slide.ckpt").exists(), "checkpoint of a finished run removed");
+        assert!(
+            !x.join("slide.ckpt").exists(),
+            "checkpoint of a finished run removed"
+        );
     }
     // rows in config order (θ, α, W), every input and result column
     let r = rows(&a.join("runs.csv"));
@@ -104,7 +107,12 @@ fn side_by_side_equals_one_by_one_and_a_single_run() {
         .collect();
     assert_eq!(
         order,
-        [("0.0", "0.02"), ("0.0", "0.04"), ("90.0", "0.02"), ("90.0", "0.04")]
+        [
+            ("0.0", "0.02"),
+            ("0.0", "0.04"),
+            ("90.0", "0.02"),
+            ("90.0", "0.04")
+        ]
     );
     for k in [
         "pattern",
@@ -138,7 +146,9 @@ fn side_by_side_equals_one_by_one_and_a_single_run() {
     ] {
         assert!(r[0].contains_key(k), "runs.csv lacks {k}");
     }
-    assert!(r.iter().all(|r| r["status"] == "ok" && r["model"] == "reduced"));
+    assert!(r
+        .iter()
+        .all(|r| r["status"] == "ok" && r["model"] == "reduced"));
     assert!(a.join("runs.csv.meta.json").exists());
     assert!(!a.join("seeds.csv").exists());
     // the same run as a single `superlube slide` gives the same time series
@@ -175,12 +185,18 @@ fn an_interrupted_batch_resumes_without_repeating_finished_runs() {
     assert_ok(&out);
     let second = part.join("runs").join(&names[1]);
     std::fs::create_dir_all(&second).unwrap();
-    let out = slide(&["--load-mn", "0.03", "--checkpoint-every", "500", "--checkpoint"])
-        .arg(second.join("slide.ckpt"))
-        .arg("--out")
-        .arg(d.join("scratch.csv"))
-        .output()
-        .unwrap();
+    let out = slide(&[
+        "--load-mn",
+        "0.03",
+        "--checkpoint-every",
+        "500",
+        "--checkpoint",
+    ])
+    .arg(second.join("slide.ckpt"))
+    .arg("--out")
+    .arg(d.join("scratch.csv"))
+    .output()
+    .unwrap();
     assert_ok(&out);
     assert!(second.join("slide.ckpt").exists());
     let first_json = part.join("runs").join(&names[0]).join("slide.json");
@@ -248,7 +264,9 @@ fn a_blown_up_run_is_reported_in_its_row_and_the_others_finish() {
     assert_eq!(r[1]["friction_mN"], "");
     assert!(!r[0]["friction_mN"].is_empty());
     let dirs = run_dirs(&d);
-    assert!(dirs[1].join("failed.json").exists() || dirs.iter().any(|p| p.join("failed.json").exists()));
+    assert!(
+        dirs[1].join("failed.json").exists() || dirs.iter().any(|p| p.join("failed.json").exists())
+    );
     // a rerun does not repeat the failed run either
     let out = slide(&["--load-mn", "0.02,50,0.04", "--out-dir"])
         .arg(&d)
@@ -283,14 +301,20 @@ fn seeds_give_per_configuration_statistics() {
     let s = rows(&d.join("seeds.csv"));
     assert_eq!(s.len(), 1);
     assert_eq!(s[0]["n"], "3");
-    let f: Vec<f64> = r.iter().map(|r| r["friction_mN"].parse().unwrap()).collect();
+    let f: Vec<f64> = r
+        .iter()
+        .map(|r| r["friction_mN"].parse().unwrap())
+        .collect();
     let mean = f.iter().sum::<f64>() / 3.0;
     let std = (f.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / 2.0).sqrt();
     let got_mean: f64 = s[0]["friction_mean_mN"].parse().unwrap();
     let got_std: f64 = s[0]["friction_std_mN"].parse().unwrap();
     assert!((got_mean - mean).abs() <= 1e-12 * mean.abs());
     assert!((got_std - std).abs() <= 1e-9 * mean.abs());
-    assert!(std > 0.0, "different seeds give different substrates: {f:?}");
+    assert!(
+        std > 0.0,
+        "different seeds give different substrates: {f:?}"
+    );
     assert!(d.join("seeds.csv.meta.json").exists());
     std::fs::remove_dir_all(&d).ok();
 }
@@ -344,16 +368,62 @@ fn bad_batch_input_is_refused_before_any_work() {
     };
     for (extra, flag) in [
         (vec!["--seeds", "1,2", "--out-dir", dir_s], "--seeds"),
-        (vec!["--load-mn", "0.02,0.04", "--jobs", "0", "--out-dir", dir_s], "--jobs"),
+        (
+            vec!["--load-mn", "0.02,0.04", "--jobs", "0", "--out-dir", dir_s],
+            "--jobs",
+        ),
         (vec!["--load-mn", "", "--out-dir", dir_s], "--load-mn"),
         (vec!["--theta", "", "--out-dir", dir_s], "--theta"),
         (vec!["--alpha", "0,500", "--out-dir", dir_s], "--alpha"),
-        (vec!["--seeds", "", "--sigma-h-um", "0.002", "--out-dir", dir_s], "--seeds"),
-        (vec!["--seeds", "1,-2", "--sigma-h-um", "0.002", "--out-dir", dir_s], "--seeds"),
+        (
+            vec!["--seeds", "", "--sigma-h-um", "0.002", "--out-dir", dir_s],
+            "--seeds",
+        ),
+        (
+            vec![
+                "--seeds",
+                "1,-2",
+                "--sigma-h-um",
+                "0.002",
+                "--out-dir",
+                dir_s,
+            ],
+            "--seeds",
+        ),
         (vec!["--load-mn", "0.02,0.04"], "--out-dir"),
-        (vec!["--load-mn", "0.02,0.04", "--out-dir", dir_s, "--out", "x.csv"], "--out"),
-        (vec!["--load-mn", "0.02,0.04", "--out-dir", dir_s, "--shard", "3/2"], "--shard"),
-        (vec!["--load-mn", "0.02,0.04", "--out-dir", dir_s, "--shard", "0/3"], "--shard"),
+        (
+            vec![
+                "--load-mn",
+                "0.02,0.04",
+                "--out-dir",
+                dir_s,
+                "--out",
+                "x.csv",
+            ],
+            "--out",
+        ),
+        (
+            vec![
+                "--load-mn",
+                "0.02,0.04",
+                "--out-dir",
+                dir_s,
+                "--shard",
+                "3/2",
+            ],
+            "--shard",
+        ),
+        (
+            vec![
+                "--load-mn",
+                "0.02,0.04",
+                "--out-dir",
+                dir_s,
+                "--shard",
+                "0/3",
+            ],
+            "--shard",
+        ),
     ] {
         let args = tiny(&extra);
         let a: Vec<&str> = args.iter().map(|s| s.as_str()).collect();
@@ -392,12 +462,19 @@ fn friction_campaign_runs_resumes_and_shards() {
         "--jobs",
         "2",
     ];
-    let out = bin().args(args).arg("--out-dir").arg(&whole).output().unwrap();
+    let out = bin()
+        .args(args)
+        .arg("--out-dir")
+        .arg(&whole)
+        .output()
+        .unwrap();
     assert_ok(&out);
     // Fig 6 holds the tri-tri series of Fig 2b: 3 + 4 runs, not 10
     let r = rows(&whole.join("runs.csv"));
     assert_eq!(r.len(), 7);
-    assert!(r.iter().all(|r| r["status"] == "ok" && r["model_requested"] == "reduced"));
+    assert!(r
+        .iter()
+        .all(|r| r["status"] == "ok" && r["model_requested"] == "reduced"));
     for f in ["friction_fig2b", "friction_fig6"] {
         for ext in ["png", "csv"] {
             let p = whole.join(format!("{f}.{ext}"));
@@ -411,10 +488,18 @@ fn friction_campaign_runs_resumes_and_shards() {
     assert!(f6.iter().all(|r| r["n"] == "1" && r["load_mN"] == "0.02"));
     assert_eq!(f6[1]["series"], "square-tri θ=0° α=90°");
     // the tri-tri row of Fig 6 is the tri-tri run's result
-    let tri = r.iter().find(|r| r["pattern"] == "tri-tri" && r["theta_deg"] == "30.0").unwrap();
+    let tri = r
+        .iter()
+        .find(|r| r["pattern"] == "tri-tri" && r["theta_deg"] == "30.0")
+        .unwrap();
     assert_eq!(f6[6]["friction_mean_mN"], tri["friction_mN"]);
     // a rerun runs nothing and leaves the figures as they were
-    let out = bin().args(args).arg("--out-dir").arg(&whole).output().unwrap();
+    let out = bin()
+        .args(args)
+        .arg("--out-dir")
+        .arg(&whole)
+        .output()
+        .unwrap();
     assert_ok(&out);
     let log = String::from_utf8_lossy(&out.stderr);
     assert!(log.contains("7 finished earlier"), "{log}");
@@ -436,7 +521,10 @@ fn friction_campaign_runs_resumes_and_shards() {
         .output()
         .unwrap();
     assert_ok(&out);
-    assert_eq!(without_wall(&whole.join("runs.csv")), without_wall(&sh.join("runs.csv")));
+    assert_eq!(
+        without_wall(&whole.join("runs.csv")),
+        without_wall(&sh.join("runs.csv"))
+    );
     assert_eq!(
         read(&whole.join("friction_fig6.csv")),
         read(&sh.join("friction_fig6.csv"))

@@ -28,7 +28,12 @@ pub struct CampaignArgs {
     pub fig: Vec<Fig>,
     /// Seeds of the σ_h > 0 series (Fig 7), a list or range [default: 1,2,3]; mean ± sample
     /// standard deviation over them.
-    #[arg(long, value_name = "LIST", requires = "friction", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "LIST",
+        requires = "friction",
+        allow_hyphen_values = true
+    )]
     pub seeds: Option<String>,
     /// Loads in mN, a list or range [default: the study's 11, 0.35:3.5:0.35 and 3.86].
     #[arg(
@@ -228,7 +233,10 @@ pub fn run(dir: &Path, a: &CampaignArgs) -> Result<()> {
         .transpose()?
         .unwrap_or(Shard::ALL);
     if shard.count > n {
-        bail!("`--shard`: {} shards for {n} runs; give at most {n} shards", shard.count);
+        bail!(
+            "`--shard`: {} shards for {n} runs; give at most {n} shards",
+            shard.count
+        );
     }
     check_outputs(&[("--out-dir", Some(&dir.join("runs.csv")))])?;
     let rep = Reporter::stderr();
@@ -250,13 +258,7 @@ pub fn run(dir: &Path, a: &CampaignArgs) -> Result<()> {
         stage: "friction campaign".into(),
         run_notes: false,
     };
-    let (rows, missing) = run_part(
-        &plan.jobs,
-        shard.range(n),
-        &opts,
-        &dir.join("runs"),
-        &rep,
-    )?;
+    let (rows, missing) = run_part(&plan.jobs, shard.range(n), &opts, &dir.join("runs"), &rep)?;
     if missing > 0 {
         rep.note(&format!(
             "{missing} of {n} runs not finished yet (other shards, or an interrupted call): the figures are drawn by the call that finds every run finished — run the same command without --shard once the shards are done (it runs whatever is left, then draws)"
@@ -289,7 +291,9 @@ pub fn run(dir: &Path, a: &CampaignArgs) -> Result<()> {
             csv_bytes(&frows),
             Some(frows.len() as u64),
         );
-        outs.attempt("--out-dir", &png, || friction_png(&png, fig.title(), &frows));
+        outs.attempt("--out-dir", &png, || {
+            friction_png(&png, fig.title(), &frows)
+        });
         rep.note(&format!("wrote {} and {}", png.display(), csv.display()));
     }
     let failed: Vec<&str> = rows

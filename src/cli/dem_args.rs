@@ -1,11 +1,11 @@
 //! Flags shared by `superlube equilibrate` and `superlube slide` (the DEM tier), turned into a
 //! scene and [`DemParams`], and the writing of their outputs.
 
+use super::parse_list_or_range;
 use super::{checks, SceneArgs};
 use crate::study::dem_run::{DemOutcome, DemParams, ModelSpec};
 use crate::study::sink::csv_bytes;
 use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs};
-use super::parse_list_or_range;
 use anyhow::{bail, Result};
 use dem::model::{Constant, Friction};
 use dem::protocol::RunIo;
@@ -70,7 +70,12 @@ pub struct DemArgs {
     /// |α| ≤ 180: α = 90 pulls perpendicular to the contact lines. The pulling direction from the
     /// substrate x axis is line + α; both are printed and reported in the JSON summary. `slide`
     /// also takes a list `0,90` or a range (a batch, see `--out-dir`).
-    #[arg(long, value_name = "DEG", default_value = "0", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value = "0",
+        allow_hyphen_values = true
+    )]
     pub alpha: String,
     /// Contact-line angle in degrees from the substrate x axis. Default: the moiré estimate of
     /// `superlube corrugation` (square-tri at θ = 0: along x, 0°; the substrate row a1 when the

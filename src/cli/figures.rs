@@ -86,7 +86,10 @@ pub fn run(a: Args) -> Result<()> {
             .unwrap_or_else(|| PathBuf::from("figures/friction"));
         return super::campaign::run(&dir, &a.campaign);
     }
-    let out_dir = a.out_dir.clone().unwrap_or_else(|| PathBuf::from("figures"));
+    let out_dir = a
+        .out_dir
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("figures"));
     if !(a.theta_step.is_finite() && a.theta_step > 0.0 && a.theta_step <= 30.0) {
         bail!(
             "`--theta-step`: {} must be in (0, 30] degrees",

@@ -186,9 +186,7 @@ fn run_batch_command(
                             warnings.push(w.clone());
                         }
                     }
-                    let params = a
-                        .dem
-                        .params(al, w, a.relax_us, a.slide_us, a.speed_m_s)?;
+                    let params = a.dem.params(al, w, a.relax_us, a.slide_us, a.speed_m_s)?;
                     jobs.push(SlideJob {
                         name: run_name(&sc.scene, &params),
                         scene: sc.scene,
@@ -298,7 +296,10 @@ fn write_summary(
     ));
     outs.finish()?;
     if failed > 0 {
-        bail!("{failed} of {} runs failed (status and error in runs.csv); the others finished", rows.len());
+        bail!(
+            "{failed} of {} runs failed (status and error in runs.csv); the others finished",
+            rows.len()
+        );
     }
     Ok(())
 }

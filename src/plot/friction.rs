@@ -23,7 +23,10 @@ pub fn friction_png(path: &Path, title: &str, rows: &[ConfigStatsRow]) -> Result
         Panel {
             title: format!("{title}: friction force"),
             y_label: "friction force (mN)",
-            y: |r| r.friction_mean_mN.map(|m| (m, r.friction_std_mN.unwrap_or(0.0))),
+            y: |r| {
+                r.friction_mean_mN
+                    .map(|m| (m, r.friction_std_mN.unwrap_or(0.0)))
+            },
         },
         Panel {
             title: format!("{title}: friction coefficient"),

@@ -291,8 +291,7 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
                     .unwrap_or_else(|| "unknown panic".into());
                 Err(anyhow::anyhow!("the DEM engine panicked: {msg}"))
             })
-        })
-    {
+        }) {
         Err(e) => (None, Some(format!("{e:#}"))),
         Ok((run, report)) => {
             outs.write(
@@ -356,9 +355,7 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
 /// The outcomes of the jobs that finished earlier (`None` for those still to run), without
 /// running anything. Errors: a result file of other inputs.
 pub fn finished_runs(jobs: &[SlideJob], dir: &Path) -> Result<Vec<Option<SlideOutcome>>> {
-    jobs.iter()
-        .map(|j| reuse(dir, j, &job_inputs(j)))
-        .collect()
+    jobs.iter().map(|j| reuse(dir, j, &job_inputs(j))).collect()
 }
 
 /// Runs `jobs` (see the module docs) with up to `side_by_side` runs at once, under `dir`, with
@@ -602,9 +599,7 @@ impl BatchRow {
             relax_us: label(s_to_us(p.relax_time)),
             slide_us: label(s_to_us(p.slide_time)),
             speed_m_s: p.support_speed,
-            dt_us: facts
-                .map(|f| f.dt_us)
-                .or(p.dt.map(|d| label(s_to_us(d)))),
+            dt_us: facts.map(|f| f.dt_us).or(p.dt.map(|d| label(s_to_us(d)))),
             friction_mN: r.map(|r| r.friction_mN),
             friction_std_mN: r.map(|r| r.friction_std_mN),
             mu: r.map(|r| r.mu),

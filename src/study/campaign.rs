@@ -227,7 +227,11 @@ impl CampaignParams {
         for &fig in &self.figs {
             let mut series = Vec::new();
             for s in fig.series() {
-                let seeds: &[u64] = if s.sigma_h_um > 0.0 { &self.seeds } else { &[1] };
+                let seeds: &[u64] = if s.sigma_h_um > 0.0 {
+                    &self.seeds
+                } else {
+                    &[1]
+                };
                 let mut per_load = Vec::new();
                 for &w in &self.loads_mn {
                     let mut ix = Vec::new();
