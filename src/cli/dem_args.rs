@@ -48,6 +48,9 @@ impl ModelArg {
     }
 }
 
+/// `--theta` (`None`: the scene's), `--alpha` (degrees) and `--load-mn` (mN) values.
+pub type Lists = (Vec<Option<f64>>, Vec<f64>, Vec<f64>);
+
 /// DEM options shared by `equilibrate` and `slide`.
 #[derive(clap::Args, Debug)]
 pub struct DemArgs {
@@ -173,7 +176,7 @@ pub struct DemArgs {
 impl DemArgs {
     /// The values of `--theta` (`None`: the scene's), `--alpha` (degrees) and `--load-mn`
     /// (mN) as lists (one value each for a single run); errors name the flag.
-    pub fn lists(&self) -> Result<(Vec<Option<f64>>, Vec<f64>, Vec<f64>)> {
+    pub fn lists(&self) -> Result<Lists> {
         let thetas = match &self.theta {
             None => vec![None],
             Some(t) => parse_list_or_range(t, "--theta")?

@@ -9,6 +9,9 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
+/// Points (load mN, mean, spread) of one series.
+type Points = Vec<(f64, f64, f64)>;
+
 /// One panel: y of a row (mean, spread) and its axis label.
 struct Panel<'a> {
     title: String,
@@ -48,7 +51,7 @@ fn panel<DB: DrawingBackend>(
     p: &Panel,
     rows: &[ConfigStatsRow],
 ) -> Result<()> {
-    let mut series: Vec<(&str, Vec<(f64, f64, f64)>)> = Vec::new();
+    let mut series: Vec<(&str, Points)> = Vec::new();
     for r in rows {
         let pt = (p.y)(r).map(|(m, s)| (r.load_mN, m, s));
         match series.iter_mut().find(|s| s.0 == r.series) {
@@ -72,7 +75,7 @@ fn panel<DB: DrawingBackend>(
     if xr.1 <= xr.0 {
         xr = (xr.0 - 0.5, xr.0 + 0.5);
     }
-    if !(yr.1 > yr.0) {
+    if yr.1.partial_cmp(&yr.0) != Some(std::cmp::Ordering::Greater) {
         yr = (0.0, 1.0);
     }
     let pad = 0.06 * (yr.1 - yr.0);

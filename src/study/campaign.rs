@@ -164,13 +164,16 @@ pub struct CampaignParams {
     pub small_scene: Option<(f64, [f64; 2])>,
 }
 
+/// A series and, per load, the indices of its runs (one per seed) in [`Plan::jobs`].
+pub type SeriesRuns = (Series, Vec<Vec<usize>>);
+
 /// The campaign's runs, and for each figure its series with the run indices per load (each a
 /// list over seeds).
 pub struct Plan {
     /// Every run, without duplicates, in order.
     pub jobs: Vec<SlideJob>,
     /// Per figure: per series: per load: the indices of its runs in `jobs`.
-    pub figs: Vec<(Fig, Vec<(Series, Vec<Vec<usize>>)>)>,
+    pub figs: Vec<(Fig, Vec<SeriesRuns>)>,
 }
 
 impl CampaignParams {
@@ -257,7 +260,7 @@ impl CampaignParams {
 }
 
 /// The rows behind one figure: per series and load, the statistics over its runs (seeds).
-pub fn figure_rows(series: &[(Series, Vec<Vec<usize>>)], rows: &[BatchRow]) -> Vec<ConfigStatsRow> {
+pub fn figure_rows(series: &[SeriesRuns], rows: &[BatchRow]) -> Vec<ConfigStatsRow> {
     let mut out = Vec::new();
     for (s, per_load) in series {
         for ix in per_load {
