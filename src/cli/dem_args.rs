@@ -1,11 +1,12 @@
 //! Flags shared by `superlube equilibrate` and `superlube slide` (the DEM tier), turned into a
 //! scene and [`DemParams`], and the writing of their outputs.
 
+use super::parse_list_or_range;
 use super::{checks, SceneArgs};
 use crate::study::dem_run::{DemOutcome, DemParams, ModelSpec};
 use crate::study::sink::csv_bytes;
 use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs};
-use anyhow::Result;
+use anyhow::{bail, Result};
 use dem::model::{Constant, Friction};
 use dem::protocol::RunIo;
 use dem::{SimParams, Start};
@@ -47,32 +48,38 @@ impl ModelArg {
     }
 }
 
+/// `--theta` (`None`: the scene's), `--alpha` (degrees) and `--load-mn` (mN) values.
+pub type Lists = (Vec<Option<f64>>, Vec<f64>, Vec<f64>);
+
 /// DEM options shared by `equilibrate` and `slide`.
 #[derive(clap::Args, Debug)]
 pub struct DemArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
+    /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0]. `slide`
+    /// also takes a list `0,21.8,30` or a range `0:30:10` (a batch, see `--out-dir`).
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
-    pub theta: Option<f64>,
-    /// Normal load W in mN (> 0).
+    pub theta: Option<String>,
+    /// Normal load W in mN (> 0). `slide` also takes a list `0.35,1.4` or a range
+    /// `0.35:3.5:0.35` (a batch, see `--out-dir`).
     #[arg(
         long = "load-mn",
         value_name = "MN",
-        default_value_t = 1.4,
+        default_value = "1.4",
         allow_hyphen_values = true
     )]
-    pub load_mn: f64,
+    pub load_mn: String,
     /// Pulling angle α in degrees from the slider's contact line (as in `superlube corrugation`),
     /// |α| ≤ 180: α = 90 pulls perpendicular to the contact lines. The pulling direction from the
-    /// substrate x axis is line + α; both are printed and reported in the JSON summary.
+    /// substrate x axis is line + α; both are printed and reported in the JSON summary. `slide`
+    /// also takes a list `0,90` or a range (a batch, see `--out-dir`).
     #[arg(
         long,
         value_name = "DEG",
-        default_value_t = 0.0,
+        default_value = "0",
         allow_hyphen_values = true
     )]
-    pub alpha: f64,
+    pub alpha: String,
     /// Contact-line angle in degrees from the substrate x axis. Default: the moiré estimate of
     /// `superlube corrugation` (square-tri at θ = 0: along x, 0°; the substrate row a1 when the
     /// lattices are commensurate).
@@ -167,13 +174,65 @@ pub struct DemArgs {
 }
 
 impl DemArgs {
-    /// The validated scene (θ applied) and the run parameters; `relax_us`, `slide_us` (µs) and
-    /// `speed` (m/s) only for slide. Every flag is checked here, and every output path, before
-    /// any work.
+    /// The values of `--theta` (`None`: the scene's), `--alpha` (degrees) and `--load-mn`
+    /// (mN) as lists (one value each for a single run); errors name the flag.
+    pub fn lists(&self) -> Result<Lists> {
+        let thetas = match &self.theta {
+            None => vec![None],
+            Some(t) => parse_list_or_range(t, "--theta")?
+                .into_iter()
+                .map(Some)
+                .collect(),
+        };
+        let alphas = parse_list_or_range(&self.alpha, "--alpha")?;
+        for &a in &alphas {
+            checks::alpha(a)?;
+        }
+        let loads = parse_list_or_range(&self.load_mn, "--load-mn")?;
+        for &w in &loads {
+            checks::load(w)?;
+        }
+        Ok((thetas, alphas, loads))
+    }
+
+    /// The validated scene (θ applied) and the run parameters of a single run; `relax_us`,
+    /// `slide_us` (µs) and `speed` (m/s) only for slide. Every flag is checked here, and every
+    /// output path, before any work. A list in `--theta`, `--alpha` or `--load-mn` is refused
+    /// (naming the flag): only `slide --out-dir` runs batches.
     pub fn setup(&self, relax_us: f64, slide_us: f64, speed: f64) -> Result<(Resolved, DemParams)> {
-        let sc = self.scene.resolve(self.theta)?;
-        let load = checks::load(self.load_mn)?;
-        let alpha = checks::alpha(self.alpha)?;
+        let (thetas, alphas, loads) = self.lists()?;
+        for (n, flag) in [
+            (thetas.len(), "--theta"),
+            (alphas.len(), "--alpha"),
+            (loads.len(), "--load-mn"),
+        ] {
+            if n != 1 {
+                bail!("`{flag}`: {n} values given; this command runs one configuration (`superlube slide --out-dir DIR` runs lists as a batch)");
+            }
+        }
+        let sc = self.scene.resolve(thetas[0])?;
+        let p = self.params(alphas[0], loads[0], relax_us, slide_us, speed)?;
+        check_outputs(&[
+            ("--out", self.out.as_deref()),
+            ("--json", self.json.as_deref()),
+            ("--checkpoint", self.checkpoint.as_deref()),
+            ("--xyz", self.xyz.as_deref()),
+        ])?;
+        Ok((sc, p))
+    }
+
+    /// The run parameters at pulling angle `alpha_deg` (degrees) and load `load_mn` (mN), from
+    /// every other flag (checked, naming the flag); output paths are not checked here.
+    pub fn params(
+        &self,
+        alpha_deg: f64,
+        load_mn: f64,
+        relax_us: f64,
+        slide_us: f64,
+        speed: f64,
+    ) -> Result<DemParams> {
+        let load = checks::load(load_mn)?;
+        let alpha = checks::alpha(alpha_deg)?;
         let line = checks::line_deg(self.line_deg)?;
         let equilibrate = checks::time_us(self.equilibrate_us, "--equilibrate-us")?;
         let sample = checks::time_us(self.sample_us, "--sample-us")?;
@@ -193,12 +252,6 @@ impl DemArgs {
         };
         checks::every(self.checkpoint_every, "--checkpoint-every", "checkpoint")?;
         checks::every(self.xyz_every, "--xyz-every", "snapshot")?;
-        check_outputs(&[
-            ("--out", self.out.as_deref()),
-            ("--json", self.json.as_deref()),
-            ("--checkpoint", self.checkpoint.as_deref()),
-            ("--xyz", self.xyz.as_deref()),
-        ])?;
         let sim = SimParams {
             dt,
             load,
@@ -232,7 +285,7 @@ impl DemArgs {
                 active_set: !self.no_active_set,
             },
         };
-        Ok((sc, params))
+        Ok(params)
     }
 
     /// The outputs of a run of `workflow`.

@@ -1,6 +1,7 @@
 //! `superlube figures`: flags → [`crate::study::figures::figures`] → each figure's PNG and the
 //! CSV behind it (and their sidecars) as soon as it is computed.
 
+use super::campaign::CampaignArgs;
 use super::checks;
 use crate::plot::figures::{contact_map_png, corrugation_figure_png, landscape_png, sweep_png};
 use crate::study::corrugation::{CorrugationParams, Method};
@@ -15,9 +16,9 @@ use std::path::{Path, PathBuf};
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// Output directory for the PNGs, the CSVs behind them and their sidecars (created if
-    /// missing).
-    #[arg(long = "out-dir", value_name = "DIR", default_value = "figures")]
-    out_dir: PathBuf,
+    /// missing) [default: figures; with --friction: figures/friction].
+    #[arg(long = "out-dir", value_name = "DIR")]
+    out_dir: Option<PathBuf>,
     /// θ step in degrees of the orientation sweeps from 0 to 30° (study: 0.1).
     #[arg(
         long = "theta-step",
@@ -58,12 +59,14 @@ pub struct Args {
     #[arg(long, value_name = "N", default_value_t = 51)]
     grid: usize,
     /// Only these figure groups (comma-separated); all if omitted.
-    #[arg(long, value_enum, value_delimiter = ',')]
+    #[arg(long, value_enum, value_delimiter = ',', conflicts_with = "friction")]
     only: Vec<Group>,
     /// Run above the size limit (2·10⁶ solves) anyway; without it such a run is refused with
     /// its estimated time, memory and output size.
     #[arg(long)]
     force: bool,
+    #[command(flatten)]
+    campaign: CampaignArgs,
 }
 
 /// `base` + `.ext` (unlike `Path::with_extension`, keeps a dotted number such as `1.4mN`).
@@ -76,6 +79,17 @@ fn with_ext(base: &Path, ext: &str) -> PathBuf {
 
 /// Runs `superlube figures`.
 pub fn run(a: Args) -> Result<()> {
+    if a.campaign.friction {
+        let dir = a
+            .out_dir
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("figures/friction"));
+        return super::campaign::run(&dir, &a.campaign);
+    }
+    let out_dir = a
+        .out_dir
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("figures"));
     if !(a.theta_step.is_finite() && a.theta_step > 0.0 && a.theta_step <= 30.0) {
         bail!(
             "`--theta-step`: {} must be in (0, 30] degrees",
@@ -98,10 +112,10 @@ pub fn run(a: Args) -> Result<()> {
         grid: a.grid,
         groups: a.only.clone(),
     };
-    check_outputs(&[("--out-dir", Some(&a.out_dir.join("x.csv")))])?;
+    check_outputs(&[("--out-dir", Some(&out_dir.join("x.csv")))])?;
     params.estimate().check(a.force)?;
     let rep = Reporter::stderr();
-    let out = &a.out_dir;
+    let out = &out_dir;
     let mut outs = Outputs::new(
         Inputs {
             workflow: "figures".into(),

@@ -3,6 +3,7 @@
 //! workflow of [`crate::study`], checks the output paths and the run's size, calls that one
 //! workflow function, and writes its files.
 
+mod campaign;
 mod checks;
 mod corrugation;
 mod dem_args;

@@ -7,6 +7,7 @@ mod colormap;
 mod contact_map;
 pub mod design;
 pub mod figures;
+pub mod friction;
 mod heat_map;
 mod line_plot;
 

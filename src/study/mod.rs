@@ -17,13 +17,15 @@
 //! | figures | [`figures::figures`] | [`figures::FiguresParams`] | one [`figures::Figure`] at a time |
 //! | equilibrate | [`equilibrate::equilibrate`] | [`dem_run::DemParams`] | time series + [`rows::EquilibrateReport`] |
 //! | slide | [`slide::slide`] | [`dem_run::DemParams`] | time series + [`rows::SlideReport`] |
+//! | slide batch | [`batch::run_batch_with`] (runs), [`batch::run_part`] (a shard's part + every row) | [`batch::SlideJob`]s + [`batch::BatchOptions`] | per run `runs/<name>/` files; [`rows::BatchRow`]s, [`rows::ConfigStatsRow`]s |
+//! | friction campaign | [`campaign::CampaignParams::plan`] → [`batch::run_part`] → [`campaign::figure_rows`] | [`campaign::CampaignParams`] | `runs.csv`, per figure [`rows::ConfigStatsRow`]s + PNG |
 //!
 //! Shared pieces: [`progress`] (the callback trait and the terminal/log reporter), [`sink`] (row
 //! sinks, streaming CSV through `OUT.partial`), [`output`] (path checks before the run, writing
 //! every output with its sidecar, failures collected, [`SweepRun`] streaming), [`meta`] (the
 //! sidecar: resolved scene, parameters, command line, input hash, shard), [`record`]
 //! (parameters in user units for the sidecar), [`rows`] (ONE row type and schema per kind of
-//! output), [`budget`] (cost estimate and the size guard behind `--force`), [`sweep`],
+//! output), [`batch`] (DEM runs side by side), [`budget`] (cost estimate and the size guard behind `--force`), [`sweep`],
 //! [`shard`], [`resume`], [`merge`] (sharded and resumed sweeps, below), [`slurm`] (the job
 //! scripts of `superlube slurm`).
 //!
@@ -31,6 +33,29 @@
 //! an `estimate` for the size guard, a `record` entry, a row type in [`rows`] if it writes rows,
 //! and a function `(scene, &params, sink, &dyn Progress) -> Result<stats>` that may call the
 //! workflows above; then a thin command in `src/cli/`.
+//!
+//! ## DEM batches: [`batch`]
+//!
+//! Independent slide runs side by side: [`batch::run_batch_with`]`(jobs, &BatchOptions {
+//! side_by_side, stage, run_notes }, dir, progress) -> Vec<SlideOutcome>` — configurations in
+//! ([`batch::SlideJob`]: name, scene at its θ, [`dem_run::DemParams`]), one outcome per job out,
+//! in order ([`batch::SlideOutcome`]: the summary [`batch::SlideResult`] or the error, and
+//! whether it was reused). `side_by_side` runs at once, one thread each (a lone run gets every
+//! thread); progress is one stage over the runs (per-mille of a run, `done/total runs done, k
+//! running`, ETA) plus a log line per finished run (and, with `run_notes`, each run's own log
+//! lines prefixed with its name). The directory is resumable: `dir/<name>/slide.json` (or
+//! `failed.json`) with the same input hash is reused, never rerun; an interrupted run continues
+//! from `dir/<name>/slide.ckpt`; a file of other inputs is an error before any work. A blow-up,
+//! an engine error or panic, or a lock-in is an outcome of that run only. Helpers:
+//! [`batch::run_name`] (directory name from the inputs), [`batch::finished_runs`] (outcomes on
+//! disk without running), [`batch::run_part`] (a shard's range of the jobs, then every job's row
+//! and the number still missing), [`batch::batch_rows`], [`batch::summary_inputs`] (sidecar
+//! inputs of a batch's summary files: the run names and input hashes, the same for every shard).
+//! A batch is sharded by cutting its run list ([`Shard::range`]) and letting every shard write
+//! into the same directory; the call that finds every run finished writes the summaries (no
+//! `merge` needed: the runs' own files are the shards' results). Users: `superlube slide
+//! --out-dir` (`src/cli/slide.rs`), `superlube figures --friction` (`src/cli/campaign.rs`), and
+//! the design's DEM stage (`design::confirm` re-exports [`batch::run_batch`]).
 //!
 //! ## Sweeps: `--shard i/n`, `--resume`, `superlube merge`, `superlube slurm`
 //!
@@ -71,7 +96,9 @@
 //! rows from which they follow, under its own schema name, and adds that schema's merge in
 //! [`merge::merge`] — used by its unsharded run too, so both give the same bytes.
 
+pub mod batch;
 pub mod budget;
+pub mod campaign;
 pub mod contacts;
 pub mod corrugation;
 pub mod dem_run;
