@@ -65,8 +65,10 @@ pub struct SlideResult {
     pub mean_failed_contacts: f64,
     /// The slider locked in.
     pub locked_in: bool,
-    /// Slider advance / support advance over the window.
-    pub advance_ratio: f64,
+    /// Slider advance / support advance over the window (`None`: too short a window to tell,
+    /// written as `null`).
+    #[serde(default)]
+    pub advance_ratio: Option<f64>,
     /// Steps of the run.
     pub steps: u64,
     /// Wall time of the run (s).
@@ -607,7 +609,7 @@ impl BatchRow {
             max_p_max_GPa: r.map(|r| r.max_p_max_GPa),
             mean_failed_contacts: r.map(|r| r.mean_failed_contacts),
             locked_in: r.map(|r| r.locked_in),
-            advance_ratio: r.map(|r| r.advance_ratio),
+            advance_ratio: r.and_then(|r| r.advance_ratio),
             steps: r.map(|r| r.steps),
             wall_s: r.map(|r| r.wall_s),
             status: status.to_string(),

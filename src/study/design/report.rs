@@ -166,7 +166,7 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
                 friction_std_mN: r.map(|r| r.friction_std_mN),
                 mean_contacts: r.map(|r| r.mean_contacts),
                 max_p_max_GPa: r.map(|r| r.max_p_max_GPa),
-                advance_ratio: r.map(|r| r.advance_ratio),
+                advance_ratio: r.and_then(|r| r.advance_ratio),
                 wall_s: r.map(|r| r.wall_s),
                 run_dir: format!("dem/{}", e.outcome.name),
                 error: e.outcome.error.clone().unwrap_or_default(),
