@@ -606,12 +606,12 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         let paths: usize = pr.evaluated.iter().map(|e| e.eval.scan.len()).sum();
         let _ = writeln!(
             m,
-            "| 2. α scan + friction estimate | {} | {} θ: {} scan paths, {} friction paths × {} loads | {} |",
+            "| 2. α scan + friction estimate | {} | {} θ: {} scan paths, {} friction paths, {} (θ, α, W) estimates | Σ {} over θ (evaluated side by side) |",
             pr.scene.name,
             pr.evaluated.len(),
             paths,
             pr.evaluated.iter().map(|e| e.eval.alphas_deg.len()).sum::<usize>(),
-            p.loads.len(),
+            pr.evaluated.iter().map(|e| e.eval.friction.len()).sum::<usize>(),
             fmt_g(w, 3)
         );
     }
