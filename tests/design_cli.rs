@@ -156,6 +156,27 @@ fn no_dem_writes_the_report_and_a_second_run_recomputes_nothing() {
             }
         }
     }
+    // the friction estimate of a candidate stops at the first load whose coating fails on the
+    // path (P_max > P_crit = 4 GPa): no row of the same (θ, α) follows a failed one (2 did on
+    // tri-tri before the early stop)
+    for p in ["square-tri", "tri-tri"] {
+        let mut r = csv::Reader::from_path(out.join(format!("friction_{p}.csv"))).unwrap();
+        let h = r.headers().unwrap().clone();
+        let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+        let (t, a, pm, e) = (
+            col("theta_deg"),
+            col("alpha_deg"),
+            col("p_max_GPa"),
+            col("error"),
+        );
+        let recs: Vec<csv::StringRecord> = r.records().map(Result::unwrap).collect();
+        for w in recs.windows(2) {
+            if w[0][t] == w[1][t] && w[0][a] == w[1][a] {
+                let failed = !w[0][e].is_empty() || w[0][pm].parse::<f64>().unwrap() > 4.0;
+                assert!(!failed, "{p}: a row follows a failed one: {:?}", w[1]);
+            }
+        }
+    }
     // the screen stage holds the cut θ (square-tri: 0–15°, 16 θ × 4 loads)
     let screen = std::fs::read_to_string(out.join("screen_square-tri.csv")).unwrap();
     assert_eq!(screen.lines().count(), 1 + 16 * 4);

@@ -18,8 +18,8 @@
 //!    the sliding path AND μ_est < 0.02 at every load up to it), then μ_est, then contacts.
 //! 6. **DEM confirmation** ([`confirm`]): the top `confirm` designs of each pattern at the
 //!    confirmation loads, independent `slide` runs side by side, one thread each (plus, with a
-//!    protocol shorter than the study's, the best design once with the study's protocol to
-//!    measure the difference).
+//!    protocol shorter than the study's, the design the report recommends once with the study's
+//!    protocol to measure the difference there: [`protocol_check_design`]).
 //! 7. **Outputs** ([`report`]): `report.md` (the answer first), the CSVs behind it with
 //!    sidecars, the PNGs.
 //!
@@ -671,9 +671,9 @@ fn confirm_estimates(
 }
 
 /// Stage 6: the DEM runs of the top designs (one batch, side by side), then — when the
-/// confirmation protocol is shorter than the study's — the study's protocol on the first
-/// pattern's answer at the middle confirmation load (alone, on every thread), to measure the
-/// shorter protocol's difference.
+/// confirmation protocol is shorter than the study's — the study's protocol once on the design
+/// the report recommends ([`protocol_check_design`]; alone, on every thread), to measure the
+/// shorter protocol's difference there.
 fn confirm_stage(
     patterns: &[PatternResult],
     p: &DesignParams,
@@ -713,21 +713,21 @@ fn confirm_stage(
     ));
     let mut outcomes = run_batch(&jobs, p.jobs, &store.path("dem"), progress)?;
     let mut dem = to_entries(&entries, &outcomes);
-    // the protocol check, on the first pattern's answer
+    // the protocol check, on the design the report recommends
     if p.protocol_check && !p.dem_is_study_protocol {
-        let w = p.confirm_loads[p.confirm_loads.len() / 2];
-        let first = patterns.iter().find_map(|pr| {
-            let a = answer::answer(pr, &dem, true, p);
-            a.index.map(|i| (pr, i, &pr.ranking[i]))
-        });
-        if let Some((pr, i, c)) = first {
+        let answers: Vec<answer::Answer> = patterns
+            .iter()
+            .map(|pr| answer::answer(pr, &dem, true, p))
+            .collect();
+        if let Some((pr, i, w)) = protocol_check_design(patterns, &answers, &p.confirm_loads) {
+            let c = &pr.ranking[i];
             let job = SlideJob {
                 name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
                 scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
                 params: dem_params(p, c.alpha_deg, w, true),
             };
             progress.note(&format!(
-                "DEM: the study's protocol (10 + 10 + 300 µs) on {} θ = {}°, α = {}° at {} mN, to measure the shorter protocol's difference",
+                "DEM: the study's protocol (10 + 10 + 300 µs) on the recommended design, {} θ = {}°, α = {}° at {} mN, to measure the shorter protocol's difference",
                 pr.scene.name,
                 c.theta_deg,
                 c.alpha_deg,
@@ -756,6 +756,39 @@ fn confirm_stage(
     Ok(dem)
 }
 
+/// The design and load of the study-protocol check: the answer of the first pattern whose
+/// answer the DEM confirmed (else the first pattern's answer: the report says it is not
+/// confirmed), at the middle of its design-protocol runs up to its superlubric load (the
+/// confirmed loads), else at the middle confirmation load. So the measured difference is that
+/// of the design the report recommends, at a load where the shorter protocol ran on it.
+/// `confirm_loads` in N. Returns (pattern, index into its ranking, load in N).
+pub fn protocol_check_design<'a>(
+    patterns: &'a [PatternResult],
+    answers: &[answer::Answer],
+    confirm_loads: &[f64],
+) -> Option<(&'a PatternResult, usize, f64)> {
+    let with_index = || {
+        patterns
+            .iter()
+            .zip(answers)
+            .filter_map(|(pr, a)| a.index.map(|i| (pr, i, a)))
+    };
+    let (pr, i, a) = with_index()
+        .find(|(_, _, a)| matches!(a.check, answer::Check::Confirmed(_)))
+        .or_else(|| with_index().next())?;
+    let w = match &a.check {
+        answer::Check::Confirmed(loads) if !loads.is_empty() => {
+            let mn = loads[loads.len() / 2];
+            confirm_loads
+                .iter()
+                .copied()
+                .find(|&w| label(n_to_mn(w)) == mn)?
+        }
+        _ => *confirm_loads.get(confirm_loads.len() / 2)?,
+    };
+    Some((pr, i, w))
+}
+
 /// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study).
 fn to_entries(
     entries: &[(String, usize, f64, f64, f64, bool)],
@@ -777,4 +810,101 @@ fn to_entries(
             },
         )
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::answer::{Answer, Check};
+    use super::rank::{Candidate, Score};
+    use super::*;
+
+    fn pattern(name: &str, n: usize) -> PatternResult {
+        let scene = surrogate::Scene::preset(name).unwrap();
+        let sym = PairSymmetry::of(&scene.slider.lattice, &scene.substrate.lattice);
+        let ranking = (0..n)
+            .map(|k| Candidate {
+                pattern: name.into(),
+                theta_deg: k as f64,
+                alpha_deg: 90.0,
+                line_deg: 0.0,
+                direction_deg: 90.0,
+                corrugation_nm: 0.1,
+                scan_load_mn: 3.86,
+                screen_intact_to_mn: 3.86,
+                reason: String::new(),
+                friction: vec![],
+                score: Score {
+                    superlubric_to_mn: 3.86,
+                    intact_to_mn: 3.86,
+                    mu_worst: 0.01,
+                    contacts: 100.0,
+                },
+            })
+            .collect();
+        PatternResult {
+            scene: DesignScene {
+                name: name.into(),
+                scene,
+                flags: vec![],
+                warnings: vec![],
+            },
+            sym,
+            thetas_deg: vec![],
+            screen: vec![],
+            screen_wall_s: None,
+            orientations: vec![],
+            levels: vec![],
+            levels_evaluated: 0,
+            stop: String::new(),
+            evaluated: vec![],
+            ranking,
+        }
+    }
+
+    /// The study-protocol check runs on the recommended design: the first *confirmed* answer
+    /// (not the estimate's rank 1, which the DEM may contradict), at the middle of its confirmed
+    /// loads; without a confirmed answer, the first pattern's answer at the middle load.
+    #[test]
+    fn protocol_check_runs_on_the_recommended_design() {
+        let pats = vec![pattern("square-tri", 3), pattern("tri-tri", 3)];
+        let loads = [0.35e-3, 2.1e-3, 3.86e-3];
+        let contradicted = Answer {
+            index: Some(0),
+            check: Check::Contradicted("P_max above P_crit".into()),
+            others: vec![],
+        };
+        // square-tri: rank 1 contradicted, rank 3 confirmed at 0.35 and 2.1 mN
+        let answers = vec![
+            Answer {
+                index: Some(2),
+                check: Check::Confirmed(vec![0.35, 2.1]),
+                others: vec![(1, Check::Contradicted("x".into()))],
+            },
+            contradicted.clone(),
+        ];
+        let (pr, i, w) = protocol_check_design(&pats, &answers, &loads).unwrap();
+        assert_eq!((pr.scene.name.as_str(), i, w), ("square-tri", 2, 2.1e-3));
+        // the first pattern unconfirmed, the second confirmed at one load: the second
+        let answers = vec![
+            contradicted.clone(),
+            Answer {
+                index: Some(1),
+                check: Check::Confirmed(vec![0.35]),
+                others: vec![],
+            },
+        ];
+        let (pr, i, w) = protocol_check_design(&pats, &answers, &loads).unwrap();
+        assert_eq!((pr.scene.name.as_str(), i, w), ("tri-tri", 1, 0.35e-3));
+        // none confirmed: the first pattern's answer at the middle confirmation load
+        let answers = vec![contradicted.clone(), contradicted];
+        let (pr, i, w) = protocol_check_design(&pats, &answers, &loads).unwrap();
+        assert_eq!((pr.scene.name.as_str(), i, w), ("square-tri", 0, 2.1e-3));
+        // no ranked design at all
+        let none = Answer {
+            index: None,
+            check: Check::Unchecked,
+            others: vec![],
+        };
+        assert!(protocol_check_design(&pats, &[none.clone(), none], &loads).is_none());
+    }
 }

@@ -355,6 +355,27 @@ pub fn answer_line(
     m
 }
 
+/// What the study-protocol run `s` is run on, in words: the recommended design (a pattern's
+/// answer, confirmed by the DEM or not) or another design.
+fn which_design(o: &DesignOutcome, s: &DemRow) -> String {
+    let found = o.patterns.iter().zip(&o.answers).find_map(|(pr, a)| {
+        let c = pr.ranking.get(a.index?)?;
+        (pr.scene.name == s.pattern && c.theta_deg == s.theta_deg && c.alpha_deg == s.alpha_deg)
+            .then_some(a)
+    });
+    match found.map(|a| &a.check) {
+        Some(Check::Confirmed(_)) => format!(
+            "the recommended design ({}'s answer, confirmed by the DEM)",
+            s.pattern
+        ),
+        Some(_) => format!(
+            "the recommended design ({}'s answer; not confirmed by the DEM)",
+            s.pattern
+        ),
+        None => "a design that is not the report's answer".to_string(),
+    }
+}
+
 /// The whole `report.md`.
 pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
     let mut m = String::new();
@@ -403,11 +424,26 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
                     && d.alpha_deg == s.alpha_deg
                     && d.load_mN == s.load_mN
             });
+            let what = which_design(o, s);
             match (short.and_then(|d| d.mu_dem), s.mu_dem) {
                 (Some(a), Some(b)) => {
+                    let word = |v: Option<bool>| match v {
+                        Some(true) => "superlubric",
+                        Some(false) => "not superlubric",
+                        None => "no verdict",
+                    };
+                    let (x, y) = (
+                        word(short.and_then(|d| d.superlubric_dem)),
+                        word(s.superlubric_dem),
+                    );
+                    let verdicts = if x == y {
+                        format!("same DEM verdict ({y})")
+                    } else {
+                        format!("**the DEM verdicts differ**: {x} (short) vs {y} (study protocol)")
+                    };
                     let _ = writeln!(
                         m,
-                        "Measured difference of the shorter protocol, on {} θ = {}°, α = {}°, {} mN: μ = {} (short) vs {} (study protocol): {:+.1} %.\n",
+                        "Measured difference of the shorter protocol on {what}, {} θ = {}°, α = {}°, {} mN: μ = {} (short) vs {} (study protocol): {:+.1} %; {verdicts}.\n",
                         s.pattern,
                         s.theta_deg,
                         s.alpha_deg,
@@ -478,7 +514,7 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         let judged = dem.iter().filter(|d| d.verdicts_agree.is_some()).count();
         let _ = writeln!(
             m,
-            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider, athermal quasi-static Prandtl–Tomlinson, no lock-in.\n"
+            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider, athermal quasi-static Prandtl–Tomlinson with overdamped slips and steady kinetic sliding of the coating (an upper bound of μ_DEM where the DEM sticks and slips: 1.95–2.9× on the 15-run comparison), no lock-in.\n"
         );
     }
     // 3. Ranking
@@ -570,12 +606,12 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         let paths: usize = pr.evaluated.iter().map(|e| e.eval.scan.len()).sum();
         let _ = writeln!(
             m,
-            "| 2. α scan + friction estimate | {} | {} θ: {} scan paths, {} friction paths × {} loads | {} |",
+            "| 2. α scan + friction estimate | {} | {} θ: {} scan paths, {} friction paths, {} (θ, α, W) estimates | Σ {} over θ (evaluated side by side) |",
             pr.scene.name,
             pr.evaluated.len(),
             paths,
             pr.evaluated.iter().map(|e| e.eval.alphas_deg.len()).sum::<usize>(),
-            p.loads.len(),
+            pr.evaluated.iter().map(|e| e.eval.friction.len()).sum::<usize>(),
             fmt_g(w, 3)
         );
     }
