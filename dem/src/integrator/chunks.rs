@@ -52,8 +52,10 @@ impl Chunking {
 /// all, each about [`Tuner::SEGMENT_S`] long, and keeps the mode with the smaller best time
 /// per step (interference only slows a segment down, so the best of three is robust to it:
 /// parallel is never kept when its best is slower, and one disturbed segment does not make it
-/// lose). A probe runs at the start and again after every [`Tuner::REPROBE_S`] of run time. The
-/// choice never changes results (chunking is fixed by the work).
+/// lose). Between probes, a parallel stretch of at least a segment whose time per step is worse
+/// than the one-thread best of the last probe (other jobs took cores since) switches to one
+/// thread at once. A probe runs at the start and again after every [`Tuner::REPROBE_S`] of run
+/// time. The choice never changes results (chunking is fixed by the work).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Tuner {
     /// The faster mode at the last probe (parallel until the first probe ends).
@@ -66,6 +68,8 @@ pub(crate) struct Tuner {
     seg: [u64; 2],
     /// Run time (s) since the last probe ended.
     since: f64,
+    /// Best one-thread time per step (s) of the last probe.
+    one_ref: f64,
 }
 
 impl Default for Tuner {
@@ -76,6 +80,7 @@ impl Default for Tuner {
             best: [f64::INFINITY; 2],
             seg: [8; 2],
             since: 0.0,
+            one_ref: f64::INFINITY,
         }
     }
 }
@@ -109,6 +114,9 @@ impl Tuner {
             return;
         }
         if self.left == 0 {
+            if par && steps >= self.seg[1] && secs / steps as f64 > self.one_ref {
+                self.use_par = false;
+            }
             self.since += secs;
             if self.since > Self::REPROBE_S {
                 self.left = Self::PROBE_SEGMENTS;
@@ -122,6 +130,7 @@ impl Tuner {
         self.left -= 1;
         if self.left == 0 {
             self.use_par = self.best[1] < self.best[0];
+            self.one_ref = self.best[0];
             self.best = [f64::INFINITY; 2];
             self.since = 0.0;
         }
@@ -158,6 +167,19 @@ mod tests {
         probe(&mut t, [9e-5, 8.5e-5, 9.5e-5], [8e-5, 12e-5, 8.2e-5]);
         assert!(!t.use_par && !t.wants_par());
         assert_eq!(t.plan(50), (false, 50));
+    }
+
+    #[test]
+    fn a_parallel_stretch_slower_than_one_thread_switches_to_one_thread() {
+        let mut t = Tuner::default();
+        probe(&mut t, [4.5e-5, 4.4e-5, 4.6e-5], [8e-5, 8.1e-5, 8e-5]);
+        assert!(t.use_par);
+        // other jobs took the cores: a long parallel call at 9e-5 s per step
+        t.record(true, 6000, 6000.0 * 9e-5);
+        assert!(!t.use_par && !t.wants_par());
+        // until the next probe
+        t.record(false, 100_000, Tuner::REPROBE_S);
+        assert!(t.wants_par());
     }
 
     #[test]

@@ -57,7 +57,7 @@ pub(crate) struct Team {
     stop: AtomicBool,
     /// Set while the caller runs steps on its own: waiting workers nap instead of spinning.
     idle: AtomicBool,
-    /// A chunk panicked on a worker.
+    /// A chunk of the pass panicked.
     panicked: AtomicBool,
 }
 
@@ -120,7 +120,7 @@ impl Team {
             wait.snooze(false);
         }
         if self.panicked.load(Ordering::Relaxed) {
-            panic!("a DEM worker thread panicked");
+            panic!("a chunk of a DEM pass panicked");
         }
     }
 
@@ -146,9 +146,10 @@ impl Team {
                     // SAFETY: as above: the pointee is alive while the claim is outstanding.
                     unsafe { (*job)(next as usize) }
                 });
-                if me == 0 {
-                    run();
-                } else if std::panic::catch_unwind(run).is_err() {
+                // a panicking chunk still counts as done, so that the pass completes (no
+                // thread then runs a chunk whose closure the caller's unwinding would drop);
+                // the caller panics once the pass is over (the hook has printed the message)
+                if std::panic::catch_unwind(run).is_err() {
                     self.panicked.store(true, Ordering::Relaxed);
                 }
                 count += 1;
@@ -338,5 +339,56 @@ impl Exec<'_, '_> {
             Exec::Team(crew) if par && n > 1 => crew.run(groups, job),
             _ => (0..n).for_each(job),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{with_team, Exec};
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    /// Every chunk of every pass runs exactly once, whatever the team size (more threads than
+    /// cores included), and passes do not overlap.
+    #[test]
+    fn each_chunk_runs_once_per_pass() {
+        for threads in [1, 2, 3, 5] {
+            let runs: Vec<AtomicUsize> = (0..40).map(|_| AtomicUsize::new(0)).collect();
+            let passes = 300;
+            with_team(threads, |crew| {
+                for p in 0..passes {
+                    let groups = [p % 13, (p * 7) % 27];
+                    let n = groups[0] + groups[1];
+                    Exec::Team(crew).pass(true, groups, &|c| {
+                        assert!(c < n);
+                        // a chunk of the previous pass would have left an odd count behind
+                        runs[c].fetch_add(1, Ordering::Relaxed);
+                    });
+                    for (c, r) in runs.iter().enumerate() {
+                        let k = r.swap(0, Ordering::Relaxed);
+                        assert_eq!(
+                            k,
+                            usize::from(c < n),
+                            "pass {p}, chunk {c}, {threads} threads"
+                        );
+                    }
+                }
+            });
+        }
+    }
+
+    /// A chunk that panics on any thread makes the pass panic on the calling thread, after the
+    /// pass is over (the workers then stop).
+    #[test]
+    fn a_panicking_chunk_is_reported_by_the_caller() {
+        let r = std::panic::catch_unwind(|| {
+            with_team(3, |crew| {
+                Exec::Team(crew).pass(true, [8, 8], &|c| {
+                    if c == 11 {
+                        panic!("chunk 11 fails (expected by the test)");
+                    }
+                });
+            })
+        });
+        assert!(r.is_err());
     }
 }
