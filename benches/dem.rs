@@ -6,17 +6,19 @@
 //!
 //! Throughput is reported in particle-steps (criterion's "elements"/s), the particle count
 //! being the model's own (`Sim::particles`: substrate + slider + control body), whether or not
-//! the active set integrates them all. Thread scaling: run with `RAYON_NUM_THREADS=1` and `=2`;
-//! `..._forced_parallel` always runs the passes in parallel (the others let `run_steps` pick the
-//! faster of parallel and one thread, which on a loaded machine can be one thread).
+//! the active set integrates them all. Thread scaling: run with `RAYON_NUM_THREADS=1`, `=2`, …;
+//! `..._forced_parallel` always runs the passes on the team of threads (the others let
+//! `run_steps` pick the faster of the team and one thread, which on a loaded machine can be one
+//! thread).
 //!
 //! Run: `cargo bench --bench dem -- --warm-up-time 1 --measurement-time 3`.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use dem::{prepare, SimParams, Start};
 
-/// Steps per benchmark iteration.
-const STEPS: u64 = 20;
+/// Steps per benchmark iteration (one `run_steps` call, which starts its team of threads once:
+/// the protocol calls it with hundreds to thousands of steps per sample).
+const STEPS: u64 = 200;
 
 fn study_sim(rigid_z: bool, prune: bool, active_set: bool, slide: bool, forced: bool) -> dem::Sim {
     let scene = surrogate::Scene::preset("square-tri").expect("preset square-tri");

@@ -88,10 +88,10 @@ pub struct SimParams {
     /// work and this knob, never on the thread count, so results are bit-identical for any
     /// number of threads.
     pub chunk_min: usize,
-    /// Below this many active particles + pairs a step runs on one thread (a parallel pass
-    /// costs a few µs of fork-join); above it `Sim::run_steps` times both modes now and then
-    /// and keeps the faster (on a shared machine a second thread can be slower). 0 forces the
-    /// parallel passes (tests). Does not change results.
+    /// Below this many active particles + pairs a step runs on one thread (handing a pass to
+    /// the team of threads costs a few µs); above it `Sim::run_steps` times both modes now and
+    /// then and keeps the faster (on a shared machine a second thread can be slower). 0 forces
+    /// the parallel passes (tests). Does not change results.
     pub parallel_min_work: usize,
     /// Largest admissible overlap as a fraction of the sphere radius; beyond it the run stops
     /// with [`crate::DemError::Unstable`].

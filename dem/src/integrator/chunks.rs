@@ -3,9 +3,9 @@
 //! Chunk sizes depend only on the amount of work (never on the thread count), and every
 //! reduction adds its per-chunk partial results in chunk order, so a run is bit-identical on
 //! any number of threads — or on one thread, which the engine uses when the work is too small
-//! for the fork-join to pay (a few hundred active particles under the active set).
+//! for a team of threads to pay (a few hundred active particles under the active set).
 
-/// Most chunks per pass: enough to balance 2–16 threads with work stealing.
+/// Most chunks per pass: enough to balance 2–16 threads with work stealing ([`super::team`]).
 const MAX_CHUNKS: usize = 96;
 
 /// Chunk sizes of the slider and substrate passes and whether to run them in parallel.
@@ -15,15 +15,16 @@ pub(crate) struct Chunking {
     pub sl: usize,
     /// Substrate spheres per chunk.
     pub sub: usize,
-    /// Whether the passes run on the rayon pool.
+    /// Whether the passes are large enough to share between threads.
     pub par: bool,
 }
 
 impl Chunking {
     /// Chunking for `n_sl` slider spheres, `n_sub` substrate spheres and `n_pairs` pairs, with
-    /// chunks of at least `min_chunk` particles (a task smaller than ~200 particles costs more
-    /// to hand out than to run), in parallel from `parallel_min_work` items on (the fork-join of
-    /// a pass costs a few µs, about the work of 2000 particles).
+    /// chunks of at least `min_chunk` particles (smaller chunks were measured slower on 2–16
+    /// threads: more hand-outs and cache lines shared between threads), in parallel from
+    /// `parallel_min_work` items on (handing a pass to a team and waiting for it costs a few
+    /// µs, about the work of 2000 particles).
     pub fn for_work(
         n_sl: usize,
         n_sub: usize,
@@ -45,51 +46,151 @@ impl Chunking {
     }
 }
 
-/// Picks, at run time, whether the eligible passes run in parallel or on one thread: on a
-/// machine shared with other jobs a second thread can make a step slower. Every
-/// [`Tuner::PERIOD`] calls of `Sim::run_steps` it times one call in each mode (per step) and
-/// keeps the faster. The choice never changes results (chunking is fixed by the work).
+/// Picks, at run time, whether the eligible passes run on a team of threads or on the calling
+/// thread alone: on a machine shared with other jobs a second thread can make a step slower.
+/// A *probe* times alternating segments of steps in each mode, [`Tuner::PROBE_SEGMENTS`] in
+/// all, each about [`Tuner::SEGMENT_S`] long, and keeps the mode with the smaller best time
+/// per step (interference only slows a segment down, so the best of three is robust to it:
+/// parallel is never kept when its best is slower, and one disturbed segment does not make it
+/// lose). Between probes, a parallel stretch of at least a segment whose time per step is worse
+/// than the one-thread best of the last probe (other jobs took cores since) switches to one
+/// thread at once. A probe runs at the start and again after every [`Tuner::REPROBE_S`] of run
+/// time. The choice never changes results (chunking is fixed by the work).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Tuner {
-    calls: u64,
-    t_par: f64,
-    /// The faster mode at the last probe.
+    /// The faster mode at the last probe (parallel until the first probe ends).
     pub use_par: bool,
-    /// The mode of the current call.
-    pub use_par_now: bool,
+    /// Probe segments left (even: a parallel segment next, odd: one thread).
+    left: u32,
+    /// Best time per step (s) in this probe: `[one thread, parallel]`.
+    best: [f64; 2],
+    /// Steps per probe segment: `[one thread, parallel]`.
+    seg: [u64; 2],
+    /// Run time (s) since the last probe ended.
+    since: f64,
+    /// Best one-thread time per step (s) of the last probe.
+    one_ref: f64,
 }
 
 impl Default for Tuner {
     fn default() -> Self {
         Tuner {
-            calls: 0,
-            t_par: 0.0,
             use_par: true,
-            use_par_now: true,
+            left: Self::PROBE_SEGMENTS,
+            best: [f64::INFINITY; 2],
+            seg: [8; 2],
+            since: 0.0,
+            one_ref: f64::INFINITY,
         }
     }
 }
 
 impl Tuner {
-    /// Calls between two probes.
-    pub const PERIOD: u64 = 32;
+    /// Segments of one probe (half in each mode).
+    pub const PROBE_SEGMENTS: u32 = 6;
+    /// Target length of a probe segment (s).
+    pub const SEGMENT_S: f64 = 1e-3;
+    /// Run time between two probes (s).
+    pub const REPROBE_S: f64 = 4.0;
 
-    /// The mode of the next call: probe parallel, probe sequential, or the current choice.
-    pub fn begin(&mut self) -> bool {
-        match self.calls % Self::PERIOD {
-            0 => true,
-            1 => false,
-            _ => self.use_par,
+    /// Whether the next steps may run in parallel (a probe is due or parallel was faster).
+    pub fn wants_par(&self) -> bool {
+        self.left > 0 || self.use_par
+    }
+
+    /// The mode and length (steps, at most `remaining`) of the next segment.
+    pub fn plan(&self, remaining: u64) -> (bool, u64) {
+        if self.left > 0 {
+            let par = self.left.is_multiple_of(2);
+            (par, remaining.min(self.seg[par as usize]))
+        } else {
+            (self.use_par, remaining)
         }
     }
 
-    /// Records the time per step (s) of the call just made in mode `par`.
-    pub fn end(&mut self, per_step: f64) {
-        match self.calls % Self::PERIOD {
-            0 => self.t_par = per_step,
-            1 => self.use_par = self.t_par <= per_step,
-            _ => {}
+    /// Records a segment of `steps` steps in mode `par` that took `secs` seconds.
+    pub fn record(&mut self, par: bool, steps: u64, secs: f64) {
+        if steps == 0 {
+            return;
         }
-        self.calls += 1;
+        if self.left == 0 {
+            if par && steps >= self.seg[1] && secs / steps as f64 > self.one_ref {
+                self.use_par = false;
+            }
+            self.since += secs;
+            if self.since > Self::REPROBE_S {
+                self.left = Self::PROBE_SEGMENTS;
+            }
+            return;
+        }
+        let m = par as usize;
+        let per = secs / steps as f64;
+        self.best[m] = self.best[m].min(per);
+        self.seg[m] = ((Self::SEGMENT_S / per.max(1e-9)).ceil() as u64).clamp(4, 1 << 16);
+        self.left -= 1;
+        if self.left == 0 {
+            self.use_par = self.best[1] < self.best[0];
+            self.one_ref = self.best[0];
+            self.best = [f64::INFINITY; 2];
+            self.since = 0.0;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Tuner;
+
+    /// Runs a probe with per-step times `par` / `one` (s) for the segments, in order.
+    fn probe(t: &mut Tuner, par: [f64; 3], one: [f64; 3]) {
+        for k in 0..3 {
+            let (p, n) = t.plan(1000);
+            assert!(p);
+            t.record(true, n, par[k] * n as f64);
+            let (p, n) = t.plan(1000);
+            assert!(!p);
+            t.record(false, n, one[k] * n as f64);
+        }
+    }
+
+    #[test]
+    fn the_faster_mode_wins_and_one_disturbed_segment_does_not_decide() {
+        let mut t = Tuner::default();
+        assert!(t.wants_par());
+        // parallel 1.8x faster, but its first segment was hit by another job
+        probe(&mut t, [9e-5, 4.4e-5, 4.5e-5], [8e-5, 8.1e-5, 8e-5]);
+        assert!(t.use_par && t.wants_par());
+        // segments sized to ~1 ms
+        assert_eq!(t.plan(u64::MAX), (true, u64::MAX));
+        // the next probe comes after REPROBE_S of run time; parallel is slower now
+        t.record(true, 100_000, Tuner::REPROBE_S + 1.0);
+        probe(&mut t, [9e-5, 8.5e-5, 9.5e-5], [8e-5, 12e-5, 8.2e-5]);
+        assert!(!t.use_par && !t.wants_par());
+        assert_eq!(t.plan(50), (false, 50));
+    }
+
+    #[test]
+    fn a_parallel_stretch_slower_than_one_thread_switches_to_one_thread() {
+        let mut t = Tuner::default();
+        probe(&mut t, [4.5e-5, 4.4e-5, 4.6e-5], [8e-5, 8.1e-5, 8e-5]);
+        assert!(t.use_par);
+        // other jobs took the cores: a long parallel call at 9e-5 s per step
+        t.record(true, 6000, 6000.0 * 9e-5);
+        assert!(!t.use_par && !t.wants_par());
+        // until the next probe
+        t.record(false, 100_000, Tuner::REPROBE_S);
+        assert!(t.wants_par());
+    }
+
+    #[test]
+    fn probe_segments_last_about_a_millisecond() {
+        let mut t = Tuner::default();
+        let (_, n) = t.plan(1000);
+        t.record(true, n, 1e-5 * n as f64);
+        let (_, n) = t.plan(1000);
+        t.record(false, n, 5e-5 * n as f64);
+        assert_eq!(t.plan(1000), (true, 100));
+        t.record(true, 100, 1e-3);
+        assert_eq!(t.plan(1000), (false, 20));
     }
 }

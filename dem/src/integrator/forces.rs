@@ -8,18 +8,12 @@
 
 use super::body::{dot3, g_of, mat_vec};
 use super::sim::{kick, kick_hm, spring_stretch, Index, Sim};
+use super::team::{Exec, Shards};
 use crate::model::{ContactModel, PairOut};
 use crate::params::DampingFrame;
 use crate::params::SimParams;
 use crate::system::PairHist;
 use crate::system::SystemSpec;
-use rayon::prelude::*;
-
-/// One substrate chunk of the force pass: (chunk index, ((v, f), x)).
-type SubstrateChunk<'a> = (
-    usize,
-    ((&'a mut [[f64; 2]], &'a mut [[f64; 2]]), &'a [[f64; 2]]),
-);
 
 /// Read-only inputs of the slider pass.
 struct SliderPass<'a> {
@@ -126,41 +120,40 @@ impl SliderPass<'_> {
         part
     }
 
-    /// Runs chunks `c0..c1` (recursively halved; in parallel when `par`), writing each chunk's
-    /// reaction into `parts`.
+    /// Runs the `nc` chunks over the slider spheres' `v`, `f` and their pairs' `hist`, `out`
+    /// (on the team of `exec` when `par`), writing chunk `c`'s reaction into `parts[c]`.
     #[allow(clippy::too_many_arguments)]
     fn run(
         &self,
-        c0: usize,
-        c1: usize,
+        exec: Exec,
+        par: bool,
+        nc: usize,
         v: &mut [[f64; 3]],
         f: &mut [[f64; 3]],
         hist: &mut [PairHist],
         out: &mut [PairOut],
         parts: &mut [[f64; 5]],
-        par: bool,
     ) {
-        if c1 - c0 == 1 {
-            parts[0] = self.chunk(c0, v, f, hist, out);
-            return;
-        }
-        let mid = (c0 + c1) / 2;
-        let ns = (mid - c0) * self.chunk;
-        let np = (self.pstart[mid * self.chunk] - self.pstart[c0 * self.chunk]) as usize;
-        let (v1, v2) = v.split_at_mut(ns);
-        let (f1, f2) = f.split_at_mut(ns);
-        let (h1, h2) = hist.split_at_mut(np);
-        let (o1, o2) = out.split_at_mut(np);
-        let (p1, p2) = parts.split_at_mut(mid - c0);
-        if par {
-            rayon::join(
-                || self.run(c0, mid, v1, f1, h1, o1, p1, par),
-                || self.run(mid, c1, v2, f2, h2, o2, p2, par),
-            );
-        } else {
-            self.run(c0, mid, v1, f1, h1, o1, p1, par);
-            self.run(mid, c1, v2, f2, h2, o2, p2, par);
-        }
+        let n = v.len();
+        let (v, f) = (Shards::new(v), Shards::new(f));
+        let (hist, out, parts) = (Shards::new(hist), Shards::new(out), Shards::new(parts));
+        exec.pass(par, [nc, 0], &|c| {
+            let (a0, a1) = (c * self.chunk, ((c + 1) * self.chunk).min(n));
+            let (p0, p1) = (self.pstart[a0] as usize, self.pstart[a1] as usize);
+            // SAFETY: chunk c alone takes slider spheres a0..a1, their pairs p0..p1 (the pair
+            // ranges of consecutive spheres are consecutive) and slot c; the pass runs each
+            // chunk once.
+            let (v, f, hist, out, part) = unsafe {
+                (
+                    v.range(a0, a1),
+                    f.range(a0, a1),
+                    hist.range(p0, p1),
+                    out.range(p0, p1),
+                    parts.range(c, c + 1),
+                )
+            };
+            part[0] = self.chunk(c, v, f, hist, out);
+        });
     }
 }
 
@@ -234,12 +227,11 @@ impl Sim {
     /// the common mode's. Updates the tangential histories by one step. With
     /// `defer_substrate` the substrate spheres' force and second half kick are left to the next
     /// step's fused first pass ([`Sim::kick_drift`]).
-    pub(crate) fn forces(&mut self, h: f64, defer_substrate: bool) {
+    pub(crate) fn forces(&mut self, exec: Exec, h: f64, defer_substrate: bool) {
         let p = &self.params;
         let rel = p.damping_frame == DampingFrame::Relative;
         let inv_tau = self.inv_tau();
         let (q, qd) = (self.q(), self.qdot());
-        let par = self.par();
         let s = &mut self.state;
         let ch = self.idx.chunks;
         let n_sl = s.act.sl.len();
@@ -291,7 +283,7 @@ impl Sim {
             };
             if n_sl > 0 {
                 let nc = ch.n_sl_chunks(n_sl);
-                pass.run(0, nc, sl_v, sl_f, hist, out, &mut parts[..nc], par);
+                pass.run(exec, ch.par, nc, sl_v, sl_f, hist, out, &mut parts[..nc]);
             }
         }
         let mut r = [0.0; 5];
@@ -302,7 +294,7 @@ impl Sim {
         }
         // 2. substrate spheres (deferred when pipelined: see `Sim::run_steps`)
         if !defer_substrate {
-            self.substrate_forces(h);
+            self.substrate_forces(exec, h);
         }
         let p = &self.params;
         let s = &mut self.state;
@@ -373,8 +365,8 @@ impl Sim {
         }
     }
 
-    /// Force and second half kick (`h`) of the active substrate spheres (one parallel pass).
-    pub(crate) fn substrate_forces(&mut self, h: f64) {
+    /// Force and second half kick (`h`) of the active substrate spheres (one pass).
+    pub(crate) fn substrate_forces(&mut self, exec: Exec, h: f64) {
         let inv_tau = self.inv_tau();
         let ctx = SubstrateForce::new(
             &self.idx,
@@ -385,7 +377,6 @@ impl Sim {
             h,
         );
         let ch = self.idx.chunks;
-        let par = self.par();
         let c = ch.sub;
         let crate::system::Active {
             sub,
@@ -395,25 +386,16 @@ impl Sim {
             out,
             ..
         } = &mut self.state.act;
-        let (ids, out) = (&*sub, &*out);
-        let body = |(k, ((v, f), x)): SubstrateChunk| {
-            ctx.chunk_with(k * c, ids, out, v, f, x);
-        };
-        if par {
-            sub_v
-                .par_chunks_mut(c)
-                .zip(sub_f.par_chunks_mut(c))
-                .zip(sub_x.par_chunks(c))
-                .enumerate()
-                .for_each(body);
-        } else {
-            sub_v
-                .chunks_mut(c)
-                .zip(sub_f.chunks_mut(c))
-                .zip(sub_x.chunks(c))
-                .enumerate()
-                .for_each(body);
-        }
+        let (ids, out, x) = (&*sub, &*out, &*sub_x);
+        let nc = x.len().div_ceil(c);
+        let (v, f) = (Shards::new(sub_v), Shards::new(sub_f));
+        exec.pass(ch.par, [0, nc], &|k| {
+            let (a, b) = (k * c, ((k + 1) * c).min(x.len()));
+            // SAFETY: chunk k alone takes substrate spheres a..b; the pass runs each chunk
+            // once.
+            let (v, f) = unsafe { (v.range(a, b), f.range(a, b)) };
+            ctx.chunk_with(a, ids, out, v, f, &x[a..b]);
+        });
     }
 
     /// Second half kick of the control layer.

@@ -13,18 +13,24 @@
 //!    common mode (O(1)) ([`super::forces`]).
 //!
 //! Work is split into chunks whose size depends only on the work, and partial sums are added
-//! in chunk order, so results are bit-identical for any thread count.
+//! in chunk order, so results are bit-identical for any thread count. [`Sim::run_steps`] runs
+//! the passes of its steps on a team of threads that stays hot between passes
+//! ([`super::team`]).
 
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
 
 use super::body::{dot3, Body};
 use super::chunks::Chunking;
+use super::team::{with_team, Exec, Shards};
 use crate::model::ContactModel;
 use crate::params::SimParams;
 use crate::system::{Active, State, SystemSpec};
 use crate::DemError;
-use rayon::prelude::*;
+
+/// Calls of [`Sim::run_steps`] shorter than this run on the calling thread (starting a team
+/// costs ~20 µs per thread), unless the parallel passes are forced.
+const MIN_TEAM_STEPS: u64 = 16;
 
 /// Instantaneous observables of a state (SI).
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
@@ -110,21 +116,9 @@ pub struct Sim {
     pub(crate) h_min: f64,
     pub(crate) overhang0: f64,
     pub(crate) tuner: super::chunks::Tuner,
+    /// Per chunk of the kick-drift pass: its largest squared displacement (m²).
+    pub(crate) d2: Vec<f64>,
 }
-
-/// One slider chunk of the kick-drift pass: ((x, v), f), (x at the evaluation, ids).
-type SliderChunk<'a> = (
-    ((&'a mut [[f64; 3]], &'a mut [[f64; 3]]), &'a [[f64; 3]]),
-    (&'a [[f64; 3]], &'a [u32]),
-);
-/// One substrate chunk of the kick-drift pass: (index, ((x, v), (f, x at the evaluation))).
-type SubstrateChunk<'a> = (
-    usize,
-    (
-        (&'a mut [[f64; 2]], &'a mut [[f64; 2]]),
-        (&'a mut [[f64; 2]], &'a [[f64; 2]]),
-    ),
-);
 
 #[inline]
 pub(crate) fn kick(v: &mut f64, f: f64, h: f64, m: f64) {
@@ -256,9 +250,10 @@ impl Sim {
             h_min,
             overhang0,
             tuner: Default::default(),
+            d2: Vec::new(),
         };
         sim.evaluate(true);
-        sim.forces(0.0, false);
+        sim.forces(Exec::Alone, 0.0, false);
         Ok(sim)
     }
 
@@ -338,22 +333,23 @@ impl Sim {
         }
     }
 
-    /// One velocity-Verlet step (see the module doc). Errors with [`DemError::Unstable`] when
-    /// a position or the control layer's state is no longer finite.
+    /// One velocity-Verlet step (see the module doc), on the calling thread. Errors with
+    /// [`DemError::Unstable`] when a position or the control layer's state is no longer
+    /// finite.
     pub fn step(&mut self) -> Result<(), DemError> {
-        self.step_inner(false, false)
+        self.step_inner(Exec::Alone, false, false)
     }
 
     /// One step. `fused`: the substrate spheres' force and second half kick of the previous step
     /// were deferred and are done in this step's first pass, fused with their first half kick
     /// and drift. `defer`: leave this step's substrate force and second half kick to the next
     /// step. Each particle sees the same arithmetic either way (bit-identical results).
-    fn step_inner(&mut self, fused: bool, defer: bool) -> Result<(), DemError> {
+    fn step_inner(&mut self, exec: Exec, fused: bool, defer: bool) -> Result<(), DemError> {
         let h = 0.5 * self.dt;
         self.kick_control(h);
         self.kick_common(h);
         self.drift_frame();
-        let d2 = self.kick_drift(h, fused);
+        let d2 = self.kick_drift(exec, h, fused);
         if !d2.is_finite() {
             return Err(self.unstable("non-finite particle position".into()));
         }
@@ -362,7 +358,7 @@ impl Sim {
         if d2 > lim * lim || (inactive_moves && self.frame_disp() > lim) {
             self.evaluate(false);
         }
-        self.forces(h, defer);
+        self.forces(exec, h, defer);
         let s = &mut self.state;
         s.step += 1;
         s.t = s.step as f64 * self.dt;
@@ -374,41 +370,60 @@ impl Sim {
         Ok(())
     }
 
-    /// Runs `n` steps, bit-identical to `n` calls of [`Sim::step`] but with two parallel passes
-    /// per step instead of three: between two steps the substrate spheres' force and second
-    /// half kick are fused with their next first half kick and drift (the substrate force needs
-    /// only the pair forces of the slider pass and the substrate's own state). The calling
-    /// thread joins the rayon pool for the duration (no cross-thread hand-off per pass).
-    ///
-    /// Whether the eligible passes actually run in parallel is re-decided every few calls by
-    /// timing both modes ([`super::chunks::Tuner`]): never slower with more threads, and the
-    /// results do not depend on it.
-    pub fn run_steps(&mut self, n: u64) -> Result<(), DemError> {
-        let mut res = Ok(());
-        // parallel_min_work = 0 forces the parallel passes (no timing probes)
-        let eligible = self.idx.chunks.par && self.params.parallel_min_work > 0;
-        let mode = !eligible || self.tuner.begin();
-        self.tuner.use_par_now = mode;
-        let t0 = std::time::Instant::now();
-        rayon::scope(|_| {
-            for k in 0..n {
-                if let Err(e) = self.step_inner(k > 0, k + 1 < n) {
-                    res = Err(e);
-                    break;
-                }
-            }
-        });
-        if eligible && n > 0 {
-            self.tuner.end(t0.elapsed().as_secs_f64() / n as f64);
+    /// Steps `k0..k1` of a call of `n` steps (the first fuses nothing, the last defers
+    /// nothing).
+    fn steps(&mut self, exec: Exec, k0: u64, k1: u64, n: u64) -> Result<(), DemError> {
+        for k in k0..k1 {
+            self.step_inner(exec, k > 0, k + 1 < n)?;
         }
-        self.tuner.use_par_now = self.tuner.use_par;
-        res
+        Ok(())
     }
 
-    /// Whether the eligible passes run in parallel in this call.
-    #[inline]
-    pub(crate) fn par(&self) -> bool {
-        self.idx.chunks.par && self.tuner.use_par_now
+    /// Runs `n` steps, bit-identical to `n` calls of [`Sim::step`] but with two passes per
+    /// step instead of three: between two steps the substrate spheres' force and second half
+    /// kick are fused with their next first half kick and drift (the substrate force needs
+    /// only the pair forces of the slider pass and the substrate's own state).
+    ///
+    /// When the work is large enough (`parallel_min_work`) and the call long enough, the
+    /// passes run on a team of `rayon::current_num_threads()` threads (the caller and scoped
+    /// workers, [`super::team`]) kept for the whole call. Whether they actually do is decided
+    /// by timing both modes now and then ([`super::chunks::Tuner`]): never slower with more
+    /// threads, and the results do not depend on it.
+    pub fn run_steps(&mut self, n: u64) -> Result<(), DemError> {
+        let threads = rayon::current_num_threads();
+        // parallel_min_work = 0 forces the parallel passes (no timing probes)
+        let forced = self.params.parallel_min_work == 0;
+        let team = threads > 1
+            && self.idx.chunks.par
+            && (forced || (n >= MIN_TEAM_STEPS && self.tuner.wants_par()));
+        if !team {
+            let t0 = std::time::Instant::now();
+            let r = self.steps(Exec::Alone, 0, n, n);
+            // (a call too short for a team is too short to time a mode)
+            if self.idx.chunks.par && !forced && n >= MIN_TEAM_STEPS {
+                self.tuner.record(false, n, t0.elapsed().as_secs_f64());
+            }
+            return r;
+        }
+        with_team(threads, |crew| {
+            let mut k = 0;
+            while k < n {
+                let (par, len) = if forced {
+                    (true, n - k)
+                } else {
+                    self.tuner.plan(n - k)
+                };
+                crew.set_idle(!par);
+                let exec = if par { Exec::Team(crew) } else { Exec::Alone };
+                let t0 = std::time::Instant::now();
+                self.steps(exec, k, k + len, n)?;
+                if !forced {
+                    self.tuner.record(par, len, t0.elapsed().as_secs_f64());
+                }
+                k += len;
+            }
+            Ok(())
+        })
     }
 
     /// First half kick of the control layer (lateral unless held; Z and the tilts through the
@@ -479,10 +494,11 @@ impl Sim {
     }
 
     /// First half kick and drift of the active particles; returns the largest squared
-    /// displacement since the last active-set evaluation (m²). One parallel pass. With `fused`
-    /// the substrate spheres first get their deferred force and second half kick of the
-    /// previous step ([`super::forces::SubstrateForce`]).
-    fn kick_drift(&mut self, h: f64, fused: bool) -> f64 {
+    /// displacement since the last active-set evaluation (m²). One pass over the slider
+    /// chunks, then the substrate chunks. With `fused` the substrate spheres first get their
+    /// deferred force and second half kick of the previous step
+    /// ([`super::forces::SubstrateForce`]).
+    fn kick_drift(&mut self, exec: Exec, h: f64, fused: bool) -> f64 {
         let inv_tau = self.inv_tau();
         let sf = super::forces::SubstrateForce::new(
             &self.idx,
@@ -499,8 +515,7 @@ impl Sim {
         let qd = self.qdot();
         let tilting = self.body.tilt.is_some();
         let off = &self.body.off;
-        let par = self.par();
-        let Chunking { sl, sub, .. } = self.idx.chunks;
+        let Chunking { sl, sub, par } = self.idx.chunks;
         let crate::system::Active {
             sl: sl_ids,
             sl_x,
@@ -515,8 +530,22 @@ impl Sim {
             out,
             ..
         } = &mut self.state.act;
-        let (sub_ids, out) = (&*sub_ids, &*out);
-        let slider = |(((x, v), f), (x0, ids)): SliderChunk| {
+        let (sl_ids, sl_f, sl_x0) = (&*sl_ids, &*sl_f, &*sl_x0);
+        let (sub_ids, sub_x0, out) = (&*sub_ids, &*sub_x0, &*out);
+        let n_sl = sl_x.len().div_ceil(sl);
+        let n_sub = sub_x.len().div_ceil(sub);
+        if self.d2.len() < n_sl + n_sub {
+            self.d2.resize(n_sl + n_sub, 0.0);
+        }
+        let d2s = Shards::new(&mut self.d2[..n_sl + n_sub]);
+        let (slx, slv) = (Shards::new(sl_x), Shards::new(sl_v));
+        let (sbx, sbv, sbf) = (Shards::new(sub_x), Shards::new(sub_v), Shards::new(sub_f));
+        let slider = |c: usize| {
+            let (a, b) = (c * sl, (c + 1) * sl);
+            // SAFETY: chunk c alone takes elements c·sl..(c+1)·sl and slot c (disjoint from
+            // every other chunk), and the pass runs each chunk once.
+            let (x, v, slot) = unsafe { (slx.range(a, b), slv.range(a, b), d2s.range(c, c + 1)) };
+            let (f, x0, ids) = (&sl_f[a..a + x.len()], &sl_x0[a..], &sl_ids[a..]);
             // largest squared displacement; the plain sum only flags a non-finite value (two
             // independent accumulators, no NaN-aware max in the loop's dependency chain)
             let (mut d2, mut sum) = (0.0f64, 0.0f64);
@@ -545,18 +574,30 @@ impl Sim {
                     d2 = m;
                 }
             }
-            if sum.is_finite() {
-                d2
-            } else {
-                f64::NAN
-            }
+            slot[0] = if sum.is_finite() { d2 } else { f64::NAN };
         };
-        let substrate = |(k, ((x, v), (f, x0))): SubstrateChunk| {
+        let substrate = |k: usize| {
+            let (a, b) = (k * sub, (k + 1) * sub);
+            // SAFETY: substrate chunk k alone takes elements k·sub..(k+1)·sub and slot
+            // n_sl + k, and the pass runs each chunk once.
+            let (x, v, f, slot) = unsafe {
+                (
+                    sbx.range(a, b),
+                    sbv.range(a, b),
+                    sbf.range(a, b),
+                    d2s.range(n_sl + k, n_sl + k + 1),
+                )
+            };
             if fused {
-                sf.chunk_with(k * sub, sub_ids, out, v, f, x);
+                sf.chunk_with(a, sub_ids, out, v, f, x);
             }
             let (mut d2, mut sum) = (0.0f64, 0.0f64);
-            for (((x, v), f), x0) in x.iter_mut().zip(v.iter_mut()).zip(f.iter()).zip(x0) {
+            for (((x, v), f), x0) in x
+                .iter_mut()
+                .zip(v.iter_mut())
+                .zip(f.iter())
+                .zip(&sub_x0[a..])
+            {
                 kick_hm(&mut v[0], f[0], hm);
                 kick_hm(&mut v[1], f[1], hm);
                 x[0] += dt * v[0];
@@ -568,55 +609,19 @@ impl Sim {
                     d2 = m;
                 }
             }
-            if sum.is_finite() {
-                d2
+            slot[0] = if sum.is_finite() { d2 } else { f64::NAN };
+        };
+        exec.pass(par, [n_sl, n_sub], &|c| {
+            if c < n_sl {
+                slider(c)
             } else {
-                f64::NAN
+                substrate(c - n_sl)
             }
-        };
-        let (ds, db) = if par {
-            rayon::join(
-                || {
-                    sl_x.par_chunks_mut(sl)
-                        .zip(sl_v.par_chunks_mut(sl))
-                        .zip(sl_f.par_chunks(sl))
-                        .zip(sl_x0.par_chunks(sl).zip(sl_ids.par_chunks(sl)))
-                        .map(slider)
-                        .reduce(|| 0.0, nan_max)
-                },
-                || {
-                    sub_x
-                        .par_chunks_mut(sub)
-                        .zip(sub_v.par_chunks_mut(sub))
-                        .zip(sub_f.par_chunks_mut(sub).zip(sub_x0.par_chunks(sub)))
-                        .enumerate()
-                        .map(substrate)
-                        .reduce(|| 0.0, nan_max)
-                },
-            )
-        } else {
-            (
-                sl_x.chunks_mut(sl)
-                    .zip(sl_v.chunks_mut(sl))
-                    .zip(sl_f.chunks(sl))
-                    .zip(sl_x0.chunks(sl).zip(sl_ids.chunks(sl)))
-                    .map(slider)
-                    .fold(0.0, nan_max),
-                sub_x
-                    .chunks_mut(sub)
-                    .zip(sub_v.chunks_mut(sub))
-                    .zip(sub_f.chunks_mut(sub).zip(sub_x0.chunks(sub)))
-                    .enumerate()
-                    .map(substrate)
-                    .fold(0.0, nan_max),
-            )
-        };
+        });
         // NaN must win the max
-        if ds.is_nan() || db.is_nan() {
-            f64::NAN
-        } else {
-            ds.max(db)
-        }
+        self.d2[..n_sl + n_sub]
+            .iter()
+            .fold(0.0, |a, &b| nan_max(a, b))
     }
 
     /// Upper bound of the displacement (m) of every inactive particle since the last
