@@ -536,3 +536,45 @@ fn friction_campaign_runs_resumes_and_shards() {
     fails_naming(&["figures", "--friction", "--shard", "0/500"], "--shard");
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// A slide too short for an advance ratio (`"advance_ratio": null` in its summary) is still a
+/// finished run: the batch reads it back (it used to stop with "not a run summary of this
+/// version") and leaves the column empty.
+#[test]
+fn a_run_without_an_advance_ratio_is_read_back() {
+    let d = tmpdir("batch-null-ratio");
+    let out = bin()
+        .arg("slide")
+        .args([
+            "--pattern",
+            "tri-tri",
+            "--slider-radius-um",
+            "9",
+            "--substrate-um",
+            "60x40",
+            "--equilibrate-us",
+            "0.02",
+            "--relax-us",
+            "0.02",
+            "--slide-us",
+            "0.02",
+            "--model",
+            "reduced",
+            "--load-mn",
+            "0.35,0.7",
+            "--jobs",
+            "2",
+            "--out-dir",
+        ])
+        .arg(&d)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let r = rows(&d.join("runs.csv"));
+    assert_eq!(r.len(), 2);
+    for row in &r {
+        assert_eq!(row["status"], "ok", "{row:?}");
+        assert_eq!(row["advance_ratio"], "", "{row:?}");
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
