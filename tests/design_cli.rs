@@ -375,3 +375,71 @@ fn dem_stage_runs_side_by_side_reuses_runs_and_reports_failures() {
     assert!(report.contains("| failed:"), "{report}");
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `--shard i/n` computes a share of the DEM runs and no report; the call without it reuses
+/// every shard's runs (none recomputed) and writes the same dem.csv as an unsharded design.
+#[test]
+fn dem_stage_in_shards_then_the_report() {
+    let d = tmpdir("design-shard");
+    let proto = [
+        "--pattern",
+        "square-tri",
+        "--confirm",
+        "1",
+        "--confirm-loads",
+        "0.01,0.06,0.09",
+        "--dem-equilibrate-us",
+        "0.1",
+        "--dem-relax-us",
+        "0.05",
+        "--dem-slide-us",
+        "0.3",
+        "--no-protocol-check",
+        "--jobs",
+        "1",
+    ];
+    let sharded = d.join("sharded");
+    for s in ["0/2", "1/2"] {
+        let o = design(&[&proto[..], &["--shard", s]].concat(), &sharded);
+        assert_ok(&o);
+        let log = String::from_utf8_lossy(&o.stderr);
+        assert!(log.contains(&format!("DEM shard {s}")), "{log}");
+        assert!(
+            !sharded.join("report.md").exists(),
+            "no report from a shard"
+        );
+    }
+    let o = design(&proto, &sharded);
+    assert_ok(&o);
+    let log = String::from_utf8_lossy(&o.stderr);
+    assert!(log.contains("DEM: 3 of 3 runs reused"), "{log}");
+    let whole = d.join("whole");
+    assert_ok(&design(&proto, &whole));
+    // dem.csv without the wall-time column
+    let strip = |p: &Path| -> Vec<String> {
+        let t = std::fs::read_to_string(p).unwrap();
+        let mut r = csv::Reader::from_reader(t.as_bytes());
+        let h = r.headers().unwrap().clone();
+        let w = h.iter().position(|c| c == "wall_s").unwrap();
+        r.records()
+            .map(|x| {
+                let x = x.unwrap();
+                x.iter()
+                    .enumerate()
+                    .filter(|(i, _)| *i != w)
+                    .map(|(_, v)| v.to_string())
+                    .collect::<Vec<_>>()
+                    .join(",")
+            })
+            .collect()
+    };
+    assert_eq!(
+        strip(&sharded.join("dem.csv")),
+        strip(&whole.join("dem.csv"))
+    );
+    // bad shards are named
+    let e = design(&[&proto[..], &["--shard", "2/2"]].concat(), &d.join("bad"));
+    assert!(!e.status.success());
+    assert!(String::from_utf8_lossy(&e.stderr).contains("--shard"));
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -185,6 +185,12 @@ pub struct Args {
     /// DEM runs side by side, one thread each [default: the number of CPU cores].
     #[arg(long, value_name = "N")]
     jobs: Option<usize>,
+    /// Compute only shard I of N (zero-based) of the DEM confirmation runs, e.g. on N machines
+    /// or Slurm tasks, into `--out/dem/`, and stop before the report; then run the same
+    /// command without `--shard` on one `--out` holding every shard's `dem/` runs: it reuses
+    /// them and writes the report.
+    #[arg(long, value_name = "I/N")]
+    shard: Option<String>,
     /// Equilibration in µs of each confirmation run (study: 10).
     #[arg(
         long = "dem-equilibrate-us",
@@ -491,6 +497,15 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             ..ModelSpec::default()
         },
     };
+    let dem_shard = match &a.shard {
+        Some(t) => {
+            if a.no_dem {
+                bail!("`--shard`: shards the DEM confirmation runs, but --no-dem skips them");
+            }
+            crate::study::Shard::parse(t, "--shard")?
+        }
+        None => crate::study::Shard::ALL,
+    };
     let params = DesignParams {
         thetas_deg,
         theta_text: a.theta.clone(),
@@ -510,6 +525,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         confirm_loads,
         no_dem: a.no_dem,
         jobs,
+        dem_shard,
         dem,
         dem_is_study_protocol,
         dem_flags: format!(" --model {}", a.dem_model.request().name()),
@@ -540,6 +556,18 @@ pub fn run(a: Args) -> Result<()> {
     let t0 = std::time::Instant::now();
     let store = Store::new(&a.out);
     let o = design(&scenes, &params, &store, &rep)?;
+    if !params.dem_shard.is_all() {
+        crate::study::Progress::note(
+            &rep,
+            &format!(
+                "design: shard {}/{} of the DEM runs done in {:.1} s (no report from a shard)",
+                params.dem_shard.index,
+                params.dem_shard.count,
+                t0.elapsed().as_secs_f64()
+            ),
+        );
+        return Ok(());
+    }
     let failed = o.dem.iter().filter(|d| d.outcome.error.is_some()).count();
     crate::study::Progress::note(
         &rep,

@@ -259,6 +259,36 @@ pub fn design(
         patterns.push(pattern(ds, p, store, progress)?);
     }
     // 6. DEM confirmation
+    if !p.no_dem && !p.dem_shard.is_all() {
+        // a shard of the DEM stage: its share of the runs, no report
+        confirm_estimates(&mut patterns, p, store)?;
+        let (jobs, _) = confirm_jobs(&patterns, p);
+        let part = p.dem_shard.range(jobs.len());
+        progress.note(&format!(
+            "DEM shard {}/{}: runs {}..{} of {} into {}; run the design without --shard (same --out, every shard's dem/ runs in it) to write the report",
+            p.dem_shard.index,
+            p.dem_shard.count,
+            part.start,
+            part.end,
+            jobs.len(),
+            store.path("dem").display()
+        ));
+        let dem: Vec<SlideOutcome> = if part.is_empty() {
+            Vec::new()
+        } else {
+            run_batch(&jobs[part], p.jobs, &store.path("dem"), progress)?
+        };
+        let failed = dem.iter().filter(|o| o.error.is_some()).count();
+        if failed > 0 {
+            progress.note(&format!("DEM shard: {failed} run(s) failed"));
+        }
+        return Ok(DesignOutcome {
+            patterns,
+            dem: Vec::new(),
+            dem_ran: false,
+            answers: Vec::new(),
+        });
+    }
     let dem = if p.no_dem {
         Vec::new()
     } else {
@@ -670,18 +700,17 @@ fn confirm_estimates(
     Ok(())
 }
 
-/// Stage 6: the DEM runs of the top designs (one batch, side by side), then — when the
-/// confirmation protocol is shorter than the study's — the study's protocol once on the design
-/// the report recommends ([`protocol_check_design`]; alone, on every thread), to measure the
-/// shorter protocol's difference there.
-fn confirm_stage(
+/// One DEM run of the confirmation: pattern, rank, θ (°), α (°), W (N), study protocol.
+type ConfirmEntry = (String, usize, f64, f64, f64, bool);
+
+/// The confirmation runs (top `confirm` designs × confirmation loads), in order, with what
+/// each one is.
+fn confirm_jobs(
     patterns: &[PatternResult],
     p: &DesignParams,
-    store: &Store,
-    progress: &dyn Progress,
-) -> Result<Vec<DemEntry>> {
+) -> (Vec<SlideJob>, Vec<ConfirmEntry>) {
     let mut jobs = Vec::new();
-    let mut entries: Vec<(String, usize, f64, f64, f64, bool)> = Vec::new();
+    let mut entries: Vec<ConfirmEntry> = Vec::new();
     for pr in patterns {
         for (k, c) in pr.ranking.iter().take(p.confirm).enumerate() {
             for &w in &p.confirm_loads {
@@ -701,6 +730,20 @@ fn confirm_stage(
             }
         }
     }
+    (jobs, entries)
+}
+
+/// Stage 6: the DEM runs of the top designs (one batch, side by side), then — when the
+/// confirmation protocol is shorter than the study's — the study's protocol once on the design
+/// the report recommends ([`protocol_check_design`]; alone, on every thread), to measure the
+/// shorter protocol's difference there.
+fn confirm_stage(
+    patterns: &[PatternResult],
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<Vec<DemEntry>> {
+    let (jobs, mut entries) = confirm_jobs(patterns, p);
     if jobs.is_empty() {
         progress.note("DEM: nothing to confirm (no ranked design)");
         return Ok(Vec::new());

@@ -60,6 +60,11 @@ pub struct DesignParams {
     pub no_dem: bool,
     /// DEM runs side by side (one thread each).
     pub jobs: usize,
+    /// Shard of the DEM confirmation runs to compute ([`crate::study::Shard::ALL`]: every
+    /// run, then the report). With a part, the design computes its share of the runs into
+    /// `--out/dem/` and stops before the report; a call without a shard (all shards' `dem/`
+    /// runs in the same `--out`) reuses them and writes the report.
+    pub dem_shard: crate::study::Shard,
     /// The DEM protocol of every confirmation run (α and line are set per run).
     pub dem: DemParams,
     /// The study's protocol (10 + 10 + 300 µs) is used; otherwise the report says it is shorter.
