@@ -2,6 +2,7 @@
 //! (which writes everything under `--out`).
 
 use super::dem_args::ModelArg;
+use super::friction_args::FrictionKnobArgs;
 use super::{checks, parse_list_or_range, SceneArgs};
 use crate::study::dem_run::{DemParams, ModelSpec};
 use crate::study::design::store::Store;
@@ -11,7 +12,6 @@ use anyhow::{bail, Result};
 use dem::protocol::RunIo;
 use dem::{SimParams, Start};
 use std::path::PathBuf;
-use surrogate::friction::FrictionParams;
 use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 
 /// The study's load list (mN): 0.35 to 3.5 in steps of 0.35, and 3.86.
@@ -129,48 +129,8 @@ pub struct Args {
     /// minima of the α scan, at least one coarse step apart).
     #[arg(long = "best-alphas", value_name = "N", default_value_t = 1)]
     alphas_per_theta: usize,
-    /// Friction estimate: path length in µm along non-lattice directions (as `friction`).
-    #[arg(
-        long = "length-um",
-        value_name = "UM",
-        default_value_t = 12.0,
-        allow_hyphen_values = true
-    )]
-    length_um: f64,
-    /// Friction estimate: longest lattice period in µm used as an exact periodic path.
-    #[arg(
-        long = "max-period-um",
-        value_name = "UM",
-        default_value_t = 12.0,
-        allow_hyphen_values = true
-    )]
-    max_period_um: f64,
-    /// Friction estimate: largest sample spacing along the path in µm.
-    #[arg(
-        long = "step-um",
-        value_name = "UM",
-        default_value_t = 0.05,
-        allow_hyphen_values = true
-    )]
-    step_um: f64,
-    /// Friction estimate: start of a quasi-periodic path in µm skipped by the Prandtl–Tomlinson
-    /// term.
-    #[arg(
-        long = "transient-um",
-        value_name = "UM",
-        default_value_t = 3.0,
-        allow_hyphen_values = true
-    )]
-    transient_um: f64,
-    /// Pulling spring stiffness K0 in N/m of the friction estimate (study: 50; the DEM runs
-    /// keep the study's 50).
-    #[arg(
-        long = "k0-n-m",
-        value_name = "N_M",
-        default_value_t = 50.0,
-        allow_hyphen_values = true
-    )]
-    k0_n_m: f64,
+    #[command(flatten)]
+    friction: FrictionKnobArgs,
     /// Designs per pattern confirmed with DEM `slide` runs (the top of the ranking; ≥ 1 unless
     /// --no-dem).
     #[arg(long, value_name = "K", default_value_t = 3)]
@@ -397,29 +357,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             a.scan_um
         );
     }
-    let um = |v: f64, flag: &str| checks::positive(v, flag).map(um_to_m);
-    let friction = FrictionParams {
-        length: um(a.length_um, "--length-um")?,
-        max_period: um(a.max_period_um, "--max-period-um")?,
-        step: um(a.step_um, "--step-um")?,
-        transient: um_to_m(checks::non_negative(a.transient_um, "--transient-um")?),
-        k0: checks::positive(a.k0_n_m, "--k0-n-m")?,
-        ..FrictionParams::default()
-    };
-    if friction.step > friction.length.min(friction.max_period) {
-        bail!(
-            "`--step-um`: {} must not exceed --length-um or --max-period-um",
-            a.step_um
-        );
-    }
-    if friction.transient >= friction.length {
-        bail!(
-            "`--transient-um`: {} must be shorter than --length-um {}",
-            a.transient_um,
-            a.length_um
-        );
-    }
-    friction.validate()?;
+    let friction = a.friction.params()?;
     if !a.no_dem && a.confirm == 0 {
         bail!("`--confirm`: 0 designs to confirm with the DEM on; give --confirm ≥ 1, or --no-dem to stop before the DEM");
     }

@@ -1,5 +1,6 @@
 //! `superlube friction`: flags → [`crate::study::friction::friction`] → CSV (streamed) + sidecar.
 
+use super::friction_args::FrictionKnobArgs;
 use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs, SweepPlan};
@@ -9,8 +10,6 @@ use crate::study::{
 };
 use anyhow::{bail, Result};
 use std::path::PathBuf;
-use surrogate::friction::FrictionParams;
-use surrogate::units::um_to_m;
 
 /// Options of `superlube friction`: the surrogate friction estimate μ_est (coating term +
 /// Prandtl–Tomlinson corrugation term from the quasi-static path) for every θ × α × W.
@@ -39,48 +38,8 @@ pub struct Args {
     /// moiré estimate at each θ (as in `corrugation`); the substrate row a1 when commensurate.
     #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
     line_deg: Option<f64>,
-    /// Path length in µm along a pulling direction that is not a substrate lattice direction
-    /// (quasi-periodic landscape); lattice directions use one exact period (≤ --max-period-um).
-    #[arg(
-        long = "length-um",
-        value_name = "UM",
-        default_value_t = 12.0,
-        allow_hyphen_values = true
-    )]
-    length_um: f64,
-    /// Longest substrate lattice period in µm used as an exact periodic path.
-    #[arg(
-        long = "max-period-um",
-        value_name = "UM",
-        default_value_t = 12.0,
-        allow_hyphen_values = true
-    )]
-    max_period_um: f64,
-    /// Largest sample spacing along the path in µm.
-    #[arg(
-        long = "step-um",
-        value_name = "UM",
-        default_value_t = 0.05,
-        allow_hyphen_values = true
-    )]
-    step_um: f64,
-    /// Start of a quasi-periodic path in µm skipped by the Prandtl–Tomlinson term (the spring
-    /// loading from rest); < --length-um.
-    #[arg(
-        long = "transient-um",
-        value_name = "UM",
-        default_value_t = 3.0,
-        allow_hyphen_values = true
-    )]
-    transient_um: f64,
-    /// Pulling spring stiffness K0 in N/m (study: 50).
-    #[arg(
-        long = "k0-n-m",
-        value_name = "N_M",
-        default_value_t = 50.0,
-        allow_hyphen_values = true
-    )]
-    k0_n_m: f64,
+    #[command(flatten)]
+    knobs: FrictionKnobArgs,
     /// Output CSV, one row per (θ, α, W), θ outer: `pattern,theta_deg,alpha_deg,load_mN,mu_est,
     /// p_max_GPa,failed_fraction,…` (units in the names; README "superlube friction"), streamed
     /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent.
@@ -118,41 +77,13 @@ pub fn run(a: Args) -> Result<()> {
     execute(prepare(a)?)
 }
 
-/// The estimate's knobs from the flags (errors name the flag).
-fn knobs(a: &Args) -> Result<FrictionParams> {
-    let um = |v: f64, flag: &str| checks::positive(v, flag).map(um_to_m);
-    let k = FrictionParams {
-        length: um(a.length_um, "--length-um")?,
-        max_period: um(a.max_period_um, "--max-period-um")?,
-        step: um(a.step_um, "--step-um")?,
-        transient: um_to_m(checks::non_negative(a.transient_um, "--transient-um")?),
-        k0: checks::positive(a.k0_n_m, "--k0-n-m")?,
-        ..FrictionParams::default()
-    };
-    if k.step > k.length.min(k.max_period) {
-        bail!(
-            "`--step-um`: {} must not exceed --length-um or --max-period-um",
-            a.step_um
-        );
-    }
-    if k.transient >= k.length {
-        bail!(
-            "`--transient-um`: {} must be shorter than --length-um {}",
-            a.transient_um,
-            a.length_um
-        );
-    }
-    k.validate()?;
-    Ok(k)
-}
-
 /// Every check of `superlube friction`, before any work: flags, scene, every path, outputs,
 /// size.
 pub fn prepare(a: Args) -> Result<Prepared> {
     let alphas = checks::alphas(&a.alpha)?;
     let loads = checks::loads(&a.load_mn)?;
     let line = checks::line_deg(a.line_deg)?;
-    let knobs = knobs(&a)?;
+    let knobs = a.knobs.params()?;
     let sc = a.scene.resolve(None)?;
     let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {
         (Some(t), _) => checks::thetas(t)?,

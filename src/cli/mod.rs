@@ -12,6 +12,7 @@ mod equilibrate;
 mod export_lammps;
 mod figures;
 mod friction;
+mod friction_args;
 mod lammps_check;
 mod landscape;
 mod merge;
