@@ -59,6 +59,8 @@ fn columns_order_and_ranges() {
     for col in [
         "mu_coating",
         "mu_corrugation",
+        "mu_quasi_static",
+        "mu_est_spread",
         "eta",
         "barrier_pJ",
         "max_lateral_force_mN",

@@ -9,7 +9,7 @@
 //! | [`LandscapeRow`] | `landscape --out`, `figures` (landscape_*.csv) | `x_um,y_um,dz_nm` |
 //! | [`LandscapeZRow`] | `landscape --shard i/n --out` (a shard, merged by `superlube merge`), the landscape's spill file | `x_um,y_um,z_um` (z exact, see [`exact_um`]) |
 //! | [`CorrugationRow`] | `corrugation --out`, `figures` (corrugation_square-tri.csv) | `theta_deg,load_mN,line_deg,alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN` |
-//! | [`FrictionRow`] | `friction --out`, `design` (friction_<pattern>.csv) | `pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,mu_coating,mu_corrugation,eta,barrier_pJ,max_lateral_force_mN,p_max_mean_GPa,contacts_mean,k_spring_N_m,line_deg,direction_deg,path_length_um,path_step_um,samples,periodic,slips,error` |
+//! | [`FrictionRow`] | `friction --out`, `design` (friction_<pattern>.csv) | `pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,mu_coating,mu_corrugation,mu_quasi_static,mu_est_spread,eta,barrier_pJ,max_lateral_force_mN,p_max_mean_GPa,contacts_mean,k_spring_N_m,line_deg,direction_deg,path_length_um,path_step_um,samples,periodic,slips,error` |
 //! | [`DemSample`] | `equilibrate --out`, `slide --out` | `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts` |
 //! | [`EquilibrateReport`], [`SlideReport`] | `equilibrate --json`, `slide --json` | JSON objects (keys documented on the fields) |
 //! | [`BatchRow`] | `slide --out-dir DIR` (`DIR/runs.csv`), `figures --friction` (`runs.csv`) | `name,pattern,theta_deg,alpha_deg,load_mN,sigma_h_um,seed,E_GPa,p_crit_GPa,mu1,mu2,mu_constant,mount,model_requested,model,rigid_z,equilibrate_us,relax_us,slide_us,speed_m_s,dt_us,friction_mN,friction_std_mN,mu,mean_contacts,max_p_max_GPa,mean_failed_contacts,locked_in,advance_ratio,steps,wall_s,status,error` |
@@ -339,7 +339,8 @@ pub struct FrictionRow {
     pub alpha_deg: f64,
     /// Normal load W (mN).
     pub load_mN: f64,
-    /// Estimated friction coefficient μ_est = μ_coating + μ_corrugation.
+    /// Estimated friction coefficient μ_est in the DEM protocol: the inertial model's mean
+    /// spring force / W (`surrogate::friction`).
     pub mu_est: Option<f64>,
     /// Largest P_max along the path (GPa): the coating is intact on the whole path iff
     /// ≤ P_crit.
@@ -348,8 +349,13 @@ pub struct FrictionRow {
     pub failed_fraction: Option<f64>,
     /// Coating term ⟨Σ μ(p0_i) F_n,i |e_t,i|⟩ / W.
     pub mu_coating: Option<f64>,
-    /// Corrugation (Prandtl–Tomlinson) term: dissipation per unit length / W.
+    /// Corrugation (Prandtl–Tomlinson) term: dissipation per unit length / W (overdamped).
     pub mu_corrugation: Option<f64>,
+    /// Quasi-static (overdamped) estimate μ_coating + μ_corrugation: ≥ μ_est in stick-slip,
+    /// equal in steady sliding.
+    pub mu_quasi_static: Option<f64>,
+    /// Standard deviation of μ over the inertial model's runs (the scatter of one DEM run).
+    pub mu_est_spread: Option<f64>,
     /// Stick-slip parameter η = max(−V'')/K (> 1: stick-slip).
     pub eta: Option<f64>,
     /// Enthalpy barrier U0 = max V − min V along the path (pJ).
@@ -400,6 +406,8 @@ impl FrictionRow {
             failed_fraction: None,
             mu_coating: None,
             mu_corrugation: None,
+            mu_quasi_static: None,
+            mu_est_spread: None,
             eta: None,
             barrier_pJ: None,
             max_lateral_force_mN: None,
@@ -422,6 +430,8 @@ impl FrictionRow {
                 row.failed_fraction = Some(e.failed_fraction);
                 row.mu_coating = Some(e.mu_coating);
                 row.mu_corrugation = Some(e.mu_corrugation);
+                row.mu_quasi_static = Some(e.mu_quasi_static);
+                row.mu_est_spread = Some(e.mu_est_spread);
                 row.eta = Some(e.eta);
                 row.barrier_pJ = Some(j_to_pj(e.barrier));
                 row.max_lateral_force_mN = Some(n_to_mn(e.max_lateral_force));

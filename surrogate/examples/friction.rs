@@ -18,9 +18,11 @@ fn scene(pattern: &str, sigma_h: f64, seed: u64, mount: Mount) -> Scene {
 
 fn row(label: &str, e: &FrictionEstimate, ms: f64) {
     println!(
-        "| {label} | {:.2} | {:.5} | {:.5} | {:.5} | {:.3} | {:.3e} | {:.4} | {:.3} | {:.3} | {:.3} | {:.1} | {:.2} µm{} | {} | {:.0} |",
+        "| {label} | {:.2} | {:.5} ± {:.5} | {:.5} | {:.5} | {:.5} | {:.3} | {:.3e} | {:.4} | {:.3} | {:.3} | {:.3} | {:.1} | {:.2} µm{} | {} | {:.0} |",
         e.load * 1e3,
         e.mu_est,
+        e.mu_est_spread,
+        e.mu_quasi_static,
         e.mu_coating,
         e.mu_corrugation,
         e.eta,
@@ -38,8 +40,8 @@ fn row(label: &str, e: &FrictionEstimate, ms: f64) {
 }
 
 fn header() {
-    println!("| configuration | W (mN) | μ_est | μ_coat | μ_PT | η | U0 (J) | max F_lat (mN) | mean P_max (GPa) | max P_max (GPa) | failed_fraction | mean contacts | path | samples | ms |");
-    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    println!("| configuration | W (mN) | μ_est ± spread | μ_qs | μ_coat | μ_PT | η | U0 (J) | max F_lat (mN) | mean P_max (GPa) | max P_max (GPa) | failed_fraction | mean contacts | path | samples | ms |");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
 }
 
 /// (label, pattern, θ°, α° from the contact line, σ_h µm, seed)

@@ -15,6 +15,8 @@ fn finite(e: &FrictionEstimate) {
         ("mu_est", e.mu_est),
         ("mu_coating", e.mu_coating),
         ("mu_corrugation", e.mu_corrugation),
+        ("mu_quasi_static", e.mu_quasi_static),
+        ("mu_est_spread", e.mu_est_spread),
         ("eta", e.eta),
         ("barrier", e.barrier),
         ("max_lateral_force", e.max_lateral_force),
@@ -27,7 +29,14 @@ fn finite(e: &FrictionEstimate) {
     ] {
         assert!(v.is_finite() && v >= 0.0, "{name} = {v}");
     }
-    assert!((e.mu_est - e.mu_coating - e.mu_corrugation).abs() <= 1e-12 * e.mu_est);
+    assert!(
+        (e.mu_quasi_static - e.mu_coating - e.mu_corrugation).abs() <= 1e-12 * e.mu_quasi_static
+    );
+    if e.eta <= 1.0 {
+        // steady sliding: the quasi-static value, exactly
+        assert_eq!(e.mu_est, e.mu_quasi_static);
+        assert_eq!(e.mu_est_spread, 0.0);
+    }
     assert!(e.failed_fraction <= 1.0);
     assert!(e.samples >= 2 && e.length > 0.0);
 }
@@ -198,7 +207,14 @@ fn square_tri_design_point_alpha_0_vs_90() {
         assert!(e.mu_est < 0.02 && e.failed_fraction == 0.0, "{e:?}");
         assert!(e.mu_coating >= 0.01 - 1e-12);
     }
-    assert!(a0.mu_est > 0.1, "{a0:?}");
+    // the DEM measures μ = 0.115 here (surrogate/README.md): inertia lets each slip run past
+    // the next well, so the estimate falls well below the overdamped (quasi-static) one
+    assert!(a0.mu_est > 0.05, "{a0:?}");
+    assert!(a0.mu_est < 0.7 * a0.mu_quasi_static, "{a0:?}");
+    assert!(
+        a0.mu_est_spread > 0.0 && a0.mu_est_spread < 0.3 * a0.mu_est,
+        "{a0:?}"
+    );
 }
 
 #[test]

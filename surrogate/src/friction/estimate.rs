@@ -1,5 +1,6 @@
 //! [`estimate_friction`]: the pipeline (path → samples → coating term → Prandtl–Tomlinson term).
 
+use super::inertial::{self, Inertial};
 use super::path::{lattice_period, solve_samples, Sample};
 use super::tomlinson::{self, Profile};
 use super::FrictionParams;
@@ -18,11 +19,18 @@ pub struct FrictionEstimate {
     pub direction: f64,
     /// Normal load W (N).
     pub load: f64,
-    /// Estimated friction coefficient of steady sliding, `mu_coating + mu_corrugation`.
+    /// Estimated friction coefficient in the DEM protocol: the mean spring force of the
+    /// inertial model ([`crate::friction`], "Inertial model") over `starts` runs / W.
     pub mu_est: f64,
+    /// Standard deviation of the inertial runs' μ over their starts: the scatter of one DEM
+    /// run's μ to expect (0 in steady sliding).
+    pub mu_est_spread: f64,
+    /// The quasi-static (overdamped) estimate `mu_coating + mu_corrugation`: an upper bound of
+    /// μ_est where the slider sticks and slips, equal to it in steady sliding.
+    pub mu_quasi_static: f64,
     /// Coating term `⟨Σ μ(p0_i) F_n,i |e_t,i|⟩_path / W`.
     pub mu_coating: f64,
-    /// Prandtl–Tomlinson (corrugation) term: dissipation per unit length / W.
+    /// Prandtl–Tomlinson (corrugation) term: dissipation per unit length / W (overdamped).
     pub mu_corrugation: f64,
     /// `η = max(−V'')/K` over the path (`2π²U0/(K a²)` for a sinusoidal profile): stick-slip iff
     /// η > 1.
@@ -59,7 +67,7 @@ pub struct FrictionEstimate {
     pub window: f64,
 }
 
-/// Estimates the friction coefficient μ_est of steady sliding for `solver`'s scene at rotation
+/// Estimates the friction coefficient μ_est of the DEM protocol for `solver`'s scene at rotation
 /// `theta` (rad), pulled along `direction` (rad from the substrate x axis) under load `load` W
 /// (N), from the quasi-static path ([`crate::friction`] documents the formula).
 ///
@@ -67,7 +75,8 @@ pub struct FrictionEstimate {
 /// [`crate::solver::Model::Auto`] (so the slider obeys the scene's mount), in parallel
 /// (rayon, one candidate search per `params.segment` of path), deterministically.
 /// Cost: `length/step + 1` equilibria (≈ 61–241 with the defaults; ≈ 0.3–0.5 ms each for the
-/// study's 3505-sphere slider) plus O(samples) for the model. Several loads of one (θ,
+/// study's 3505-sphere slider) plus O(samples) for the Prandtl–Tomlinson model and, where
+/// η > 1, `params.starts` runs of the inertial model (≈ 1.5 ms each, in parallel). Several loads of one (θ,
 /// direction): [`estimate_friction_loads`] (same results, cheaper).
 ///
 /// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
@@ -158,16 +167,38 @@ pub fn estimate_friction_loads(
         .filter(|&w| check_load(w).is_ok())
         .collect();
     let mut solved = solve_samples(solver, theta, e, &valid, &s, params).into_iter();
+    let body = Body::of(solver, params);
     Ok(loads
         .iter()
         .map(|&load| {
             check_load(load)?;
             let smp = solved.next().unwrap_or_else(|| Ok(Vec::new()))?;
             Ok(from_samples(
-                &smp, theta, direction, load, period, length, h, n, params,
+                &smp, theta, direction, load, period, length, h, n, params, &body,
             ))
         })
         .collect())
+}
+
+/// The sliding body of the inertial model: mass (kg) and damping coefficient (kg/s).
+struct Body {
+    mass: f64,
+    gamma: f64,
+}
+
+impl Body {
+    /// Slider spheres plus control-layer spheres (one per slider sphere); the control layer is
+    /// damped relative to the support with τ.
+    fn of(solver: &Solver, params: &FrictionParams) -> Body {
+        let scene = solver.scene();
+        let n = solver.slider_count() as f64;
+        let m_s = scene.material.sphere_mass(scene.sphere_radius);
+        let m_c = scene.material.sphere_mass(params.control_sphere_radius);
+        Body {
+            mass: n * (m_s + m_c),
+            gamma: n * m_c / params.tau,
+        }
+    }
 }
 
 /// Steps 3–4 of the estimate from the solved samples of one load.
@@ -182,6 +213,7 @@ fn from_samples(
     h: f64,
     n: usize,
     params: &FrictionParams,
+    body: &Body,
 ) -> FrictionEstimate {
     // 3. Path averages: periodic paths average the n distinct samples of one period (the last
     //    repeats the first); quasi-periodic ones use the trapezoid rule over [0, L].
@@ -223,11 +255,36 @@ fn from_samples(
     let vmin = v.iter().copied().fold(f64::INFINITY, f64::min);
     let vmax = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let mu_corrugation = pt.friction / load;
+    let mu_quasi = mu_coating + mu_corrugation;
+    // η ≤ 1: no instability, steady sliding: the quasi-static value is the exact dissipation
+    // per unit length (the inertial model would only add its window's sampling)
+    let smooth = pt.eta <= 1.0;
+    let coat: Vec<f64> = smp.iter().map(|x| x.coating).collect();
+    let (dynm, spread) = inertial::ensemble(
+        &f,
+        &coat,
+        h,
+        &Inertial {
+            mass: body.mass,
+            gamma: body.gamma,
+            k: k_spring,
+            speed: params.speed,
+            duration: params.slide_time,
+            window_start: params.window_start,
+        },
+        params.starts,
+    );
     FrictionEstimate {
         theta,
         direction,
         load,
-        mu_est: mu_coating + mu_corrugation,
+        mu_est: if smooth {
+            mu_quasi
+        } else {
+            dynm.friction / load
+        },
+        mu_est_spread: if smooth { 0.0 } else { spread / load },
+        mu_quasi_static: mu_quasi,
         mu_coating,
         mu_corrugation,
         eta: pt.eta,

@@ -31,6 +31,21 @@ pub struct FrictionParams {
     /// Length (m) of path that shares one candidate-pair search (a speed knob; results are
     /// identical for any value > 0). Default 0.5 µm.
     pub segment: f64,
+    /// Support speed (m/s) of the inertial model ([`super::inertial`]), as in the DEM. Study: 0.1.
+    pub speed: f64,
+    /// Sliding time (s) of the inertial model, as in the DEM protocol. Study: 300 µs.
+    pub slide_time: f64,
+    /// Start (s) of the inertial model's measuring window, as in the DEM protocol (friction over
+    /// the last 2/3 of the slide). Study: 100 µs.
+    pub window_start: f64,
+    /// Damping time τ (s) of the DEM (control layer relative to the support). Study: 1 µs.
+    pub tau: f64,
+    /// Radius (m) of the DEM's control-layer spheres (one per slider sphere; their mass adds to
+    /// the slider's). Study: 0.5 µm.
+    pub control_sphere_radius: f64,
+    /// Runs of the inertial model averaged into μ_est, started evenly along the path (its
+    /// stick-slip is chaotic: one run scatters by ±20–30 %). Default 8.
+    pub starts: usize,
 }
 
 impl Default for FrictionParams {
@@ -45,6 +60,12 @@ impl Default for FrictionParams {
             k_substrate_xy: 1e3,
             direction_tol: 1e-6,
             segment: 0.5e-6,
+            speed: 0.1,
+            slide_time: 300e-6,
+            window_start: 100e-6,
+            tau: 1e-6,
+            control_sphere_radius: 0.5e-6,
+            starts: 8,
         }
     }
 }
@@ -93,6 +114,46 @@ impl FrictionParams {
                     "must be a positive stiffness in N/m",
                 ));
             }
+        }
+        if !(self.speed.is_finite() && self.speed > 0.0) {
+            return Err(SceneError::invalid(
+                "friction.speed_m_s",
+                self.speed,
+                "must be a positive speed in m/s",
+            ));
+        }
+        for (f, v) in [
+            ("friction.slide_us", self.slide_time),
+            ("friction.tau_us", self.tau),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(SceneError::invalid(
+                    f,
+                    v * 1e6,
+                    "must be a positive time in µs",
+                ));
+            }
+        }
+        if !(self.window_start.is_finite()
+            && self.window_start >= 0.0
+            && self.window_start < self.slide_time)
+        {
+            return Err(SceneError::invalid(
+                "friction.window_start_us",
+                self.window_start * 1e6,
+                "must be ≥ 0 and shorter than the sliding time",
+            ));
+        }
+        pos_um(
+            "friction.control_sphere_radius_um",
+            self.control_sphere_radius,
+        )?;
+        if self.starts == 0 {
+            return Err(SceneError::invalid(
+                "friction.starts",
+                0.0,
+                "must be at least 1 run of the inertial model",
+            ));
         }
         if !(self.direction_tol.is_finite() && self.direction_tol >= 0.0) {
             return Err(SceneError::invalid(
