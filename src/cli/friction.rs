@@ -12,7 +12,9 @@ use anyhow::{bail, Result};
 use std::path::PathBuf;
 
 /// Options of `superlube friction`: the surrogate friction estimate μ_est (coating term +
-/// Prandtl–Tomlinson corrugation term from the quasi-static path) for every θ × α × W.
+/// Prandtl–Tomlinson corrugation term from the quasi-static path; where the path sticks and
+/// slips, the slider's centre of mass run along it with the DEM's mass, damping and speed) for
+/// every θ × α × W.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(flatten)]

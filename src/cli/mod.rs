@@ -50,7 +50,8 @@ enum Command {
     Landscape(landscape::Args),
     /// Corrugation and static-friction barrier along pulling directions α (quasi-static).
     Corrugation(corrugation::Args),
-    /// Surrogate friction estimate μ_est per θ × α × load (coating + Prandtl–Tomlinson terms).
+    /// Surrogate friction estimate μ_est per θ × α × load (coating + Prandtl–Tomlinson terms on
+    /// the quasi-static path, with the slider's inertia where it sticks and slips).
     Friction(friction::Args),
     /// Design: screen → shortlist → α scan + friction estimate → ranking → DEM confirmation,
     /// with report.md (the best θ and α per pattern and the load up to which it stays

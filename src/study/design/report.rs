@@ -514,7 +514,7 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         let judged = dem.iter().filter(|d| d.verdicts_agree.is_some()).count();
         let _ = writeln!(
             m,
-            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider, athermal quasi-static Prandtl–Tomlinson with overdamped slips and steady kinetic sliding of the coating (an upper bound of μ_DEM where the DEM sticks and slips: 1.95–2.9× on the 15-run comparison), no lock-in.\n"
+            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider on the static path (the slider's centre of mass moves along it with the DEM's mass and damping, but not vertically: where failed contacts pin the slider on a flat substrate μ_est is an upper bound, 2.1–2.8× μ_DEM on the 17-run comparison), no lock-in.\n"
         );
     }
     // 3. Ranking
