@@ -15,7 +15,7 @@
 //! **The answer** of a pattern is the best-ranked *confirmed* design among the DEM-checked top K;
 //! when none is confirmed, the surrogate's best with what the DEM said about it; without the DEM
 //! (`--no-dem`), the surrogate's best. Its load is the estimate's `superlubric_to` (the DEM
-//! checks it at the confirmation loads up to that load, not in between).
+//! checks it at the confirmation loads up to that load and at that load itself, not in between).
 
 use super::{DemEntry, DesignParams, PatternResult};
 use surrogate::units::{n_to_mn, pa_to_gpa};

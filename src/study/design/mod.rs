@@ -632,7 +632,7 @@ fn confirm_estimates(
         let mut solver: Option<Solver> = None;
         let ds = &pr.scene;
         for c in pr.ranking.iter_mut().take(p.confirm) {
-            for &w in &p.confirm_loads {
+            for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
                 let wm = label(n_to_mn(w));
                 if c.friction.iter().any(|r| r.load_mN == wm) {
                     continue;
@@ -700,6 +700,23 @@ fn confirm_estimates(
     Ok(())
 }
 
+/// The DEM loads (N, ascending) of a design to confirm: the confirmation loads plus its own
+/// superlubric load (`superlubric_to`, the load its answer would name), so the claimed limit
+/// itself is run, not only the confirmation loads around it. `confirm_loads` and `loads` (the
+/// design's loads, one of which the superlubric load is) in N.
+pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64]) -> Vec<f64> {
+    let mut w = confirm_loads.to_vec();
+    if let Some(&own) = loads.iter().find(|&&l| {
+        c.score.superlubric_to_mn > 0.0 && label(n_to_mn(l)) == c.score.superlubric_to_mn
+    }) {
+        if !w.iter().any(|&x| label(n_to_mn(x)) == label(n_to_mn(own))) {
+            w.push(own);
+        }
+    }
+    w.sort_by(f64::total_cmp);
+    w
+}
+
 /// One DEM run of the confirmation: pattern, rank, θ (°), α (°), W (N), study protocol.
 type ConfirmEntry = (String, usize, f64, f64, f64, bool);
 
@@ -713,7 +730,7 @@ fn confirm_jobs(
     let mut entries: Vec<ConfirmEntry> = Vec::new();
     for pr in patterns {
         for (k, c) in pr.ranking.iter().take(p.confirm).enumerate() {
-            for &w in &p.confirm_loads {
+            for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
                 jobs.push(SlideJob {
                     name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, false),
                     scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
@@ -902,6 +919,24 @@ mod tests {
             evaluated: vec![],
             ranking,
         }
+    }
+
+    /// A design is confirmed at the confirmation loads and at its own superlubric load (once,
+    /// in order); a design superlubric nowhere only at the confirmation loads.
+    #[test]
+    fn each_design_is_also_confirmed_at_its_own_limit() {
+        let loads = [0.35e-3, 1.75e-3, 2.1e-3, 2.45e-3, 3.86e-3];
+        let confirm = [0.35e-3, 2.1e-3, 3.86e-3];
+        let mut c = pattern("tri-tri", 1).ranking.remove(0);
+        c.score.superlubric_to_mn = 2.45;
+        assert_eq!(
+            loads_to_confirm(&c, &confirm, &loads),
+            vec![0.35e-3, 2.1e-3, 2.45e-3, 3.86e-3]
+        );
+        c.score.superlubric_to_mn = 2.1;
+        assert_eq!(loads_to_confirm(&c, &confirm, &loads), confirm.to_vec());
+        c.score.superlubric_to_mn = 0.0;
+        assert_eq!(loads_to_confirm(&c, &confirm, &loads), confirm.to_vec());
     }
 
     /// The study-protocol check runs on the recommended design: the first *confirmed* answer
