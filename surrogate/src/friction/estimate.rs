@@ -257,33 +257,34 @@ fn from_samples(
     let mu_corrugation = pt.friction / load;
     let mu_quasi = mu_coating + mu_corrugation;
     // η ≤ 1: no instability, steady sliding: the quasi-static value is the exact dissipation
-    // per unit length (the inertial model would only add its window's sampling)
-    let smooth = pt.eta <= 1.0;
-    let coat: Vec<f64> = smp.iter().map(|x| x.coating).collect();
-    let (dynm, spread) = inertial::ensemble(
-        &f,
-        &coat,
-        h,
-        &Inertial {
-            mass: body.mass,
-            gamma: body.gamma,
-            k: k_spring,
-            speed: params.speed,
-            duration: params.slide_time,
-            window_start: params.window_start,
-        },
-        params.starts,
-    );
+    // per unit length, so the inertial model (which would only add its window's sampling) runs
+    // only where the path can stick and slip
+    let (mu_est, mu_est_spread) = if pt.eta <= 1.0 {
+        (mu_quasi, 0.0)
+    } else {
+        let coat: Vec<f64> = smp.iter().map(|x| x.coating).collect();
+        let (friction, spread) = inertial::ensemble(
+            &f,
+            &coat,
+            h,
+            &Inertial {
+                mass: body.mass,
+                gamma: body.gamma,
+                k: k_spring,
+                speed: params.speed,
+                duration: params.slide_time,
+                window_start: params.window_start,
+            },
+            params.starts,
+        );
+        (friction / load, spread / load)
+    };
     FrictionEstimate {
         theta,
         direction,
         load,
-        mu_est: if smooth {
-            mu_quasi
-        } else {
-            dynm.friction / load
-        },
-        mu_est_spread: if smooth { 0.0 } else { spread / load },
+        mu_est,
+        mu_est_spread,
         mu_quasi_static: mu_quasi,
         mu_coating,
         mu_corrugation,

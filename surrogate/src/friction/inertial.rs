@@ -56,10 +56,6 @@ pub(crate) struct InertialRun {
     pub friction: f64,
     /// Times the slider stuck (u → 0) in the window.
     pub sticks: usize,
-    /// Standard deviation of the spring force over the window (N).
-    pub force_std: f64,
-    /// Time step used (s).
-    pub dt: f64,
 }
 
 /// A periodic, piecewise linear profile over samples `y[0..=n]` spaced `h` (`y[n]` closes the
@@ -83,38 +79,24 @@ impl Lin<'_> {
 /// The mean of [`run`] over `starts` runs starting in steady sliding at `x = j·n·h/starts`,
 /// `j = 0..starts` (evenly spread over the profile): the stick-slip of an underdamped slider is
 /// chaotic, and a single run's window mean scatters by ±20–30 % with its start. Returns the
-/// mean run (friction, sticks and force spread averaged) and the standard deviation of the
-/// runs' friction (N) — the scatter a single DEM run of the same length has to expect.
-/// Parallel over the starts (rayon), deterministic.
-pub(crate) fn ensemble(
-    f: &[f64],
-    c: &[f64],
-    h: f64,
-    p: &Inertial,
-    starts: usize,
-) -> (InertialRun, f64) {
+/// runs' mean friction and its standard deviation (N) — the scatter a single DEM run of the
+/// same length has to expect. Parallel over the starts (rayon), deterministic.
+pub(crate) fn ensemble(f: &[f64], c: &[f64], h: f64, p: &Inertial, starts: usize) -> (f64, f64) {
     use rayon::prelude::*;
+    let starts = starts.max(1);
     let n = (f.len() - 1) as f64;
-    let runs: Vec<InertialRun> = (0..starts.max(1))
+    let friction: Vec<f64> = (0..starts)
         .into_par_iter()
-        .map(|j| run(f, c, h, p, j as f64 * n * h / starts.max(1) as f64))
+        .map(|j| run(f, c, h, p, j as f64 * n * h / starts as f64).friction)
         .collect();
-    let k = runs.len() as f64;
-    let mean = runs.iter().map(|r| r.friction).sum::<f64>() / k;
-    let var = runs
+    let k = friction.len() as f64;
+    let mean = friction.iter().sum::<f64>() / k;
+    let var = friction
         .iter()
-        .map(|r| (r.friction - mean) * (r.friction - mean))
+        .map(|r| (r - mean) * (r - mean))
         .sum::<f64>()
         / (k - 1.0).max(1.0);
-    (
-        InertialRun {
-            friction: mean,
-            sticks: (runs.iter().map(|r| r.sticks).sum::<usize>() as f64 / k).round() as usize,
-            force_std: runs.iter().map(|r| r.force_std).sum::<f64>() / k,
-            dt: runs[0].dt,
-        },
-        var.sqrt(),
-    )
+    (mean, var.sqrt())
 }
 
 /// Runs the model on the force profile `f` (= V', N) and Coulomb profile `c` (N, ≥ 0), both
@@ -125,7 +107,7 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
     let fp = Lin { h, y: f };
     let cp = Lin { h, y: c };
     // the fastest natural frequency sets the largest step; a moving slider also crosses at most
-    // a quarter sample per step
+    // half a sample per step
     let slope = f
         .windows(2)
         .map(|w| ((w[1] - w[0]) / h).abs())
@@ -141,9 +123,7 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
     let spring = |t: f64, x: f64| k * (x0_support + v * t - x);
     let mut t = 0.0f64;
     let mut sum = 0.0; // ∫ s dt over the window
-    let mut sum2 = 0.0; // ∫ s² dt
     let mut sticks = 0usize;
-    let mut dt_min = dt_max;
     while t < t_end {
         let coulomb = cp.at(x);
         if u == 0.0 {
@@ -162,7 +142,6 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
                 if b > a {
                     let (sa, sb) = (spring(a, x), spring(b, x));
                     sum += 0.5 * (sa + sb) * (b - a);
-                    sum2 += (sa * sa + sa * sb + sb * sb) / 3.0 * (b - a);
                 }
                 t = t2;
                 if t >= t_end {
@@ -181,12 +160,10 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
             if t > t_w {
                 let s = spring(t, x);
                 sum += s * dt;
-                sum2 += s * s * dt;
             }
             continue;
         }
         let dt = dt_max.min(0.5 * h / u.abs()).min(t_end - t);
-        dt_min = dt_min.min(dt);
         let drive = spring(t, x) - fp.at(x) - g * (u - v);
         let un = u + (drive - coulomb.copysign(u)) / m * dt;
         if un * u <= 0.0 {
@@ -203,16 +180,12 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
             let s = spring(t, x);
             let w = dt.min(t - t_w);
             sum += s * w;
-            sum2 += s * s * w;
         }
     }
     let span = (t_end - t_w).max(f64::MIN_POSITIVE);
-    let mean = sum / span;
     InertialRun {
-        friction: mean,
+        friction: sum / span,
         sticks,
-        force_std: (sum2 / span - mean * mean).max(0.0).sqrt(),
-        dt: dt_min,
     }
 }
 
