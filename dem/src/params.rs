@@ -134,3 +134,26 @@ impl Default for SimParams {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::SimParams;
+    use surrogate::friction::FrictionParams;
+
+    /// The surrogate's friction estimate mirrors the DEM protocol with its own copies of these
+    /// knobs (the `surrogate` crate cannot read `SimParams`): the defaults must stay equal, or
+    /// μ_est would silently estimate another protocol than the DEM runs.
+    #[test]
+    fn friction_estimate_defaults_mirror_the_dem_protocol() {
+        let d = SimParams::default();
+        let f = FrictionParams::default();
+        assert_eq!(f.k0, d.k0);
+        assert_eq!(f.k_slider_xy, d.k_slider_xy);
+        assert_eq!(f.k_substrate_xy, d.k_substrate_xy);
+        assert_eq!(f.speed, d.support_speed);
+        assert_eq!(f.slide_time, d.slide_time);
+        assert!((f.window_start - d.measure_from * d.slide_time).abs() <= 1e-12 * d.slide_time);
+        assert_eq!(f.tau, d.damping_time);
+        assert_eq!(f.control_sphere_radius, d.control_sphere_radius);
+    }
+}

@@ -1,6 +1,7 @@
 //! [`FrictionParams`]: every knob of the surrogate friction estimate.
 
 use crate::error::SceneError;
+use crate::units::{m_to_um, s_to_us};
 use serde::{Deserialize, Serialize};
 
 /// Knobs of [`super::estimate_friction`] (SI). Defaults: the study's stiffnesses and a path that
@@ -79,7 +80,7 @@ impl FrictionParams {
             } else {
                 Err(SceneError::invalid(
                     field,
-                    v * 1e6,
+                    m_to_um(v),
                     "must be a positive length in µm",
                 ))
             }
@@ -91,14 +92,14 @@ impl FrictionParams {
         if self.step > self.length.min(self.max_period) {
             return Err(SceneError::invalid(
                 "friction.step_um",
-                self.step * 1e6,
+                m_to_um(self.step),
                 "must not exceed the path length or the longest period",
             ));
         }
         if !(self.transient.is_finite() && self.transient >= 0.0 && self.transient < self.length) {
             return Err(SceneError::invalid(
                 "friction.transient_um",
-                self.transient * 1e6,
+                m_to_um(self.transient),
                 "must be ≥ 0 and shorter than the path length",
             ));
         }
@@ -129,7 +130,7 @@ impl FrictionParams {
             if !(v.is_finite() && v > 0.0) {
                 return Err(SceneError::invalid(
                     f,
-                    v * 1e6,
+                    s_to_us(v),
                     "must be a positive time in µs",
                 ));
             }
@@ -140,7 +141,7 @@ impl FrictionParams {
         {
             return Err(SceneError::invalid(
                 "friction.window_start_us",
-                self.window_start * 1e6,
+                s_to_us(self.window_start),
                 "must be ≥ 0 and shorter than the sliding time",
             ));
         }
