@@ -76,6 +76,9 @@ fn columns_order_and_ranges() {
             "{col} missing: {header}"
         );
     }
+    let col = |name: &str| header.split(',').position(|c| c == name).unwrap();
+    let (i_mu_est, i_mu_qs) = (col("mu_est"), col("mu_quasi_static"));
+    let (i_line, i_alpha, i_direction) = (col("line_deg"), col("alpha_deg"), col("direction_deg"));
     let r = rows(&out);
     assert_eq!(r.len(), 3 * 2 * 3);
     // θ outer, α, then W
@@ -89,17 +92,17 @@ fn columns_order_and_ranges() {
     assert_eq!(key[6], ("5.0".into(), "0.0".into(), "0.02".into()));
     assert_eq!(key[17], ("10.0".into(), "90.0".into(), "0.06".into()));
     for x in &r {
-        let mu: f64 = x[4].parse().unwrap();
+        let mu: f64 = x[i_mu_est].parse().unwrap();
         assert!(mu.is_finite() && mu > 0.0, "{x:?}");
         // the quasi-static estimate is at least the coating's μ1
-        let mu_qs: f64 = x[9].parse().unwrap();
+        let mu_qs: f64 = x[i_mu_qs].parse().unwrap();
         assert!(mu_qs >= 0.01 - 1e-12, "{x:?}");
         assert!(x.last().unwrap().is_empty(), "{x:?}");
         // direction = line + α
         let (line, alpha, dir): (f64, f64, f64) = (
-            x[17].parse().unwrap(),
-            x[2].parse().unwrap(),
-            x[18].parse().unwrap(),
+            x[i_line].parse().unwrap(),
+            x[i_alpha].parse().unwrap(),
+            x[i_direction].parse().unwrap(),
         );
         assert!((line + alpha - dir).abs() < 1e-6, "{x:?}");
     }
