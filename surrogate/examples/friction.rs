@@ -6,6 +6,7 @@ use std::time::Instant;
 use surrogate::friction::{estimate_friction, FrictionEstimate, FrictionParams};
 use surrogate::map::{contact_line_direction, MapParams};
 use surrogate::solver::Solver;
+use surrogate::units::{deg_to_rad, m_to_um, n_to_mn, pa_to_gpa, um_to_m};
 use surrogate::{Mount, Scene};
 
 fn scene(pattern: &str, sigma_h: f64, seed: u64, mount: Mount) -> Scene {
@@ -19,7 +20,7 @@ fn scene(pattern: &str, sigma_h: f64, seed: u64, mount: Mount) -> Scene {
 fn row(label: &str, e: &FrictionEstimate, ms: f64) {
     println!(
         "| {label} | {:.2} | {:.5} ± {:.5} | {:.5} | {:.5} | {:.5} | {:.3} | {:.3e} | {:.4} | {:.3} | {:.3} | {:.3} | {:.1} | {:.2} µm{} | {} | {:.0} |",
-        e.load * 1e3,
+        n_to_mn(e.load),
         e.mu_est,
         e.mu_est_spread,
         e.mu_quasi_static,
@@ -27,12 +28,12 @@ fn row(label: &str, e: &FrictionEstimate, ms: f64) {
         e.mu_corrugation,
         e.eta,
         e.barrier,
-        e.max_lateral_force * 1e3,
-        e.p_max_mean / 1e9,
-        e.p_max_max / 1e9,
+        n_to_mn(e.max_lateral_force),
+        pa_to_gpa(e.p_max_mean),
+        pa_to_gpa(e.p_max_max),
         e.failed_fraction,
         e.contacts_mean,
-        e.length * 1e6,
+        m_to_um(e.length),
         if e.periodic { " (period)" } else { "" },
         e.samples,
         ms
@@ -76,9 +77,9 @@ fn main() {
     let p = FrictionParams::default();
     println!(
         "defaults: length {} µm, max period {} µm, step {} µm, K0 {} N/m, {} threads\n",
-        p.length * 1e6,
-        p.max_period * 1e6,
-        p.step * 1e6,
+        m_to_um(p.length),
+        m_to_um(p.max_period),
+        m_to_um(p.step),
         p.k0,
         rayon::current_num_threads()
     );
@@ -86,13 +87,13 @@ fn main() {
     let mut total = 0.0;
     let mut count = 0;
     for &(label, pattern, th, al, sh, seed) in CONFIGS {
-        let sc = scene(pattern, sh * 1e-6, seed, Mount::default());
+        let sc = scene(pattern, um_to_m(sh), seed, Mount::default());
         let solver = Solver::new(&sc).unwrap();
-        let theta = th.to_radians();
+        let theta = deg_to_rad(th);
         let line = contact_line_direction(&sc, theta, &MapParams::default()).angle;
         for &w in &loads {
             let t = Instant::now();
-            let e = estimate_friction(&solver, theta, line + al.to_radians(), w, &p).unwrap();
+            let e = estimate_friction(&solver, theta, line + deg_to_rad(al), w, &p).unwrap();
             let ms = t.elapsed().as_secs_f64() * 1e3;
             total += ms;
             count += 1;
@@ -110,10 +111,10 @@ fn main() {
     println!("| configuration | W (mN) | variant | μ_est | μ_coat | μ_PT | η | rel. diff. μ_est vs finest |");
     println!("|---|---|---|---|---|---|---|---|");
     for &(label, pattern, th, al, sh, seed) in CONFIGS {
-        let sc = scene(pattern, sh * 1e-6, seed, Mount::default());
+        let sc = scene(pattern, um_to_m(sh), seed, Mount::default());
         let solver = Solver::new(&sc).unwrap();
-        let theta = th.to_radians();
-        let dir = contact_line_direction(&sc, theta, &MapParams::default()).angle + al.to_radians();
+        let theta = deg_to_rad(th);
+        let dir = contact_line_direction(&sc, theta, &MapParams::default()).angle + deg_to_rad(al);
         for &w in &[1.4e-3, 3.86e-3] {
             let variants = [
                 ("default", p),
@@ -162,7 +163,7 @@ fn main() {
                 }
                 println!(
                     "| {label} | {:.2} | {n} | {:.5} | {:.5} | {:.5} | {:.3} | {:+.2e} |",
-                    w * 1e3,
+                    n_to_mn(w),
                     e.mu_est,
                     e.mu_coating,
                     e.mu_corrugation,
