@@ -99,6 +99,13 @@ pub(crate) fn ensemble(f: &[f64], c: &[f64], h: f64, p: &Inertial, starts: usize
     (mean, var.sqrt())
 }
 
+/// The part of the step `[t0, t1]` inside the measuring window `t ≥ t_w` (s): the weight of the
+/// step's end-of-step spring force in the window integral (a step that straddles the window's
+/// start counts only its part after it).
+fn in_window(t0: f64, t1: f64, t_w: f64) -> f64 {
+    (t1 - t0.max(t_w)).max(0.0)
+}
+
 /// Runs the model on the force profile `f` (= V', N) and Coulomb profile `c` (N, ≥ 0), both
 /// sampled at `s_k = k·h`, `k = 0..=n` (see the module documentation), starting in steady
 /// sliding at `x_start` (m).
@@ -156,11 +163,9 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
                 u = 0.0;
             }
             x += u * dt;
+            let t0 = t;
             t += dt;
-            if t > t_w {
-                let s = spring(t, x);
-                sum += s * dt;
-            }
+            sum += spring(t, x) * in_window(t0, t, t_w);
             continue;
         }
         let dt = dt_max.min(0.5 * h / u.abs()).min(t_end - t);
@@ -175,12 +180,9 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
             u = un;
         }
         x += u * dt;
+        let t0 = t;
         t += dt;
-        if t > t_w {
-            let s = spring(t, x);
-            let w = dt.min(t - t_w);
-            sum += s * w;
-        }
+        sum += spring(t, x) * in_window(t0, t, t_w);
     }
     let span = (t_end - t_w).max(f64::MIN_POSITIVE);
     InertialRun {
@@ -203,6 +205,15 @@ mod tests {
             duration: 300e-6,
             window_start: 100e-6,
         }
+    }
+
+    #[test]
+    fn a_step_counts_only_its_part_inside_the_window() {
+        // before, straddling, inside, and ending exactly at the window's start
+        assert_eq!(in_window(1.0, 2.0, 3.0), 0.0);
+        assert_eq!(in_window(2.5, 3.5, 3.0), 0.5);
+        assert_eq!(in_window(3.25, 3.75, 3.0), 0.5);
+        assert_eq!(in_window(2.0, 3.0, 3.0), 0.0);
     }
 
     #[test]
