@@ -2,6 +2,7 @@
 //! deck (engine: `dem::export`), to run with MPI LAMMPS on a cluster.
 
 use super::checks::{alpha as check_alpha, line_deg as check_line_deg};
+use super::protocol_args::ProtocolArgs;
 use super::SceneArgs;
 use anyhow::{bail, Context, Result};
 use dem::export::{export_lammps, files, ExportOptions};
@@ -45,31 +46,8 @@ pub struct Args {
         allow_hyphen_values = true
     )]
     equilibrate_us: f64,
-    /// Relaxation time in µs with the pulling spring attached (0: none).
-    #[arg(
-        long = "relax-us",
-        value_name = "US",
-        default_value_t = 10.0,
-        allow_hyphen_values = true
-    )]
-    relax_us: f64,
-    /// Sliding time in µs (0: equilibrate/relax only). Friction = mean spring force over the
-    /// last 2/3.
-    #[arg(
-        long = "slide-us",
-        value_name = "US",
-        default_value_t = 300.0,
-        allow_hyphen_values = true
-    )]
-    slide_us: f64,
-    /// Support speed in m/s.
-    #[arg(
-        long = "speed-m-s",
-        value_name = "M_S",
-        default_value_t = 0.1,
-        allow_hyphen_values = true
-    )]
-    speed_m_s: f64,
+    #[command(flatten)]
+    protocol: ProtocolArgs,
     /// Time step in µs [default: 0.25 × the Rust engine's stable-step estimate, as `slide`].
     #[arg(long = "dt-us", value_name = "US", allow_hyphen_values = true)]
     dt_us: Option<f64>,
@@ -117,12 +95,7 @@ pub fn run(a: Args) -> Result<()> {
     }
     number(a.load_mn, "--load-mn", true)?;
     number(a.equilibrate_us, "--equilibrate-us", true)?;
-    number(a.relax_us, "--relax-us", false)?;
-    number(a.slide_us, "--slide-us", false)?;
-    number(a.speed_m_s, "--speed-m-s", false)?;
-    if a.slide_us > 0.0 && a.speed_m_s <= 0.0 {
-        bail!("`--speed-m-s`: must be positive for a sliding run (or use --slide-us 0)");
-    }
+    a.protocol.check(false)?;
     number(a.sample_us, "--sample-us", true)?;
     number(a.dump_us, "--dump-us", false)?;
     if let Some(dt) = a.dt_us {
@@ -153,9 +126,9 @@ pub fn run(a: Args) -> Result<()> {
         load: mn_to_n(a.load_mn),
         alpha: line + alpha,
         equilibrate_time: us_to_s(a.equilibrate_us),
-        relax_time: us_to_s(a.relax_us),
-        slide_time: us_to_s(a.slide_us),
-        support_speed: a.speed_m_s,
+        relax_time: us_to_s(a.protocol.relax_us),
+        slide_time: us_to_s(a.protocol.slide_us),
+        support_speed: a.protocol.speed_m_s,
         sample_interval: us_to_s(a.sample_us),
         prune_substrate: a.prune,
         ..SimParams::default()

@@ -16,6 +16,7 @@ mod friction_args;
 mod lammps_check;
 mod landscape;
 mod merge;
+mod protocol_args;
 mod range;
 mod scene_args;
 mod screen;

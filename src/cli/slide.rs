@@ -4,6 +4,7 @@
 
 use super::dem_args::DemArgs;
 use super::parse_list_or_range;
+use super::protocol_args::ProtocolArgs;
 use crate::study::batch::{run_name, run_part, summary_inputs, BatchOptions, SlideJob};
 use crate::study::rows::{BatchRow, ConfigStatsRow};
 use crate::study::sink::csv_bytes;
@@ -17,31 +18,8 @@ use std::path::{Path, PathBuf};
 pub struct Args {
     #[command(flatten)]
     dem: DemArgs,
-    /// Relaxation time in µs with the pulling spring attached and the support at rest (≥ 0).
-    #[arg(
-        long = "relax-us",
-        value_name = "US",
-        default_value_t = 10.0,
-        allow_hyphen_values = true
-    )]
-    relax_us: f64,
-    /// Sliding time in µs (> 0). Friction = mean spring force over the last 2/3 (study:
-    /// 100–300 µs of 300 µs).
-    #[arg(
-        long = "slide-us",
-        value_name = "US",
-        default_value_t = 300.0,
-        allow_hyphen_values = true
-    )]
-    slide_us: f64,
-    /// Support speed in m/s (= µm/µs; > 0).
-    #[arg(
-        long = "speed-m-s",
-        value_name = "M_S",
-        default_value_t = 0.1,
-        allow_hyphen_values = true
-    )]
-    speed_m_s: f64,
+    #[command(flatten)]
+    protocol: ProtocolArgs,
     /// Seeds of the substrate heights (σ_h > 0 needed), a list `1,2,3` or a range `1:5:1`: one
     /// run per seed, and `DIR/seeds.csv` with mean, spread, min and max per configuration.
     /// Replaces `--seed`.
@@ -88,18 +66,12 @@ pub fn seeds(text: &str) -> Result<Vec<u64>> {
 
 /// Runs `superlube slide`.
 pub fn run(a: Args) -> Result<()> {
-    for (v, f) in [
-        (a.relax_us, "--relax-us"),
-        (a.slide_us, "--slide-us"),
-        (a.speed_m_s, "--speed-m-s"),
-    ] {
-        if !(v.is_finite() && v >= 0.0) {
-            bail!("`{f}`: {v} must be a non-negative number");
-        }
-    }
-    if a.slide_us <= 0.0 || a.speed_m_s <= 0.0 {
-        bail!("`--slide-us` and `--speed-m-s` must be positive for a sliding run");
-    }
+    a.protocol.check(true)?;
+    let ProtocolArgs {
+        relax_us,
+        slide_us,
+        speed_m_s,
+    } = a.protocol;
     let (thetas, alphas, loads) = a.dem.lists()?;
     let seed_list = a.seeds.as_deref().map(seeds).transpose()?;
     let side_by_side = jobs(a.jobs)?;
@@ -119,7 +91,7 @@ pub fn run(a: Args) -> Result<()> {
             }
             a.dem.scene.seed = s.first().copied();
         }
-        let (sc, params) = a.dem.setup(a.relax_us, a.slide_us, a.speed_m_s)?;
+        let (sc, params) = a.dem.setup(relax_us, slide_us, speed_m_s)?;
         let rep = Reporter::stderr();
         sc.log(&rep);
         let outs = a.dem.outputs("slide", &sc, &params);
@@ -186,7 +158,13 @@ fn run_batch_command(
                             warnings.push(w.clone());
                         }
                     }
-                    let params = a.dem.params(al, w, a.relax_us, a.slide_us, a.speed_m_s)?;
+                    let params = a.dem.params(
+                        al,
+                        w,
+                        a.protocol.relax_us,
+                        a.protocol.slide_us,
+                        a.protocol.speed_m_s,
+                    )?;
                     jobs.push(SlideJob {
                         name: run_name(&sc.scene, &params),
                         scene: sc.scene,
