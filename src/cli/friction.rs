@@ -44,7 +44,10 @@ pub struct Args {
     knobs: FrictionKnobArgs,
     /// Output CSV, one row per (θ, α, W), θ outer: `pattern,theta_deg,alpha_deg,load_mN,mu_est,
     /// p_max_GPa,failed_fraction,…` (units in the names; README "superlube friction"), streamed
-    /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent.
+    /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent. Where the
+    /// coating fails (failed_fraction > 0) on a flat substrate with the default `--tilt springs`
+    /// mount, mu_est can be an upper bound: 2.1–2.8× the DEM's on tri-tri 30° at 2.45–3.86 mN
+    /// (0.95–1.04 on the rough substrates; surrogate/README.md, "Against the DEM").
     #[arg(long, value_name = "FILE.csv")]
     out: Option<PathBuf>,
     /// Run a sweep above the size limit (2·10⁶ solves) anyway; without it such a sweep is
