@@ -2,6 +2,7 @@
 //! scene and [`DemParams`], and the writing of their outputs.
 
 use super::parse_list_or_range;
+use super::protocol_args::ProtocolArgs;
 use super::{checks, SceneArgs};
 use crate::study::dem_run::{DemOutcome, DemParams, ModelSpec};
 use crate::study::sink::csv_bytes;
@@ -12,7 +13,7 @@ use dem::protocol::RunIo;
 use dem::{SimParams, Start};
 use serde::Serialize;
 use std::path::PathBuf;
-use surrogate::units::{us_to_s, NM};
+use surrogate::units::NM;
 
 use super::scene_args::Resolved;
 
@@ -195,11 +196,11 @@ impl DemArgs {
         Ok((thetas, alphas, loads))
     }
 
-    /// The validated scene (θ applied) and the run parameters of a single run; `relax_us`,
-    /// `slide_us` (µs) and `speed` (m/s) only for slide. Every flag is checked here, and every
-    /// output path, before any work. A list in `--theta`, `--alpha` or `--load-mn` is refused
-    /// (naming the flag): only `slide --out-dir` runs batches.
-    pub fn setup(&self, relax_us: f64, slide_us: f64, speed: f64) -> Result<(Resolved, DemParams)> {
+    /// The validated scene (θ applied) and the run parameters of a single run with the sliding
+    /// `protocol` ([`ProtocolArgs::AT_REST`] for equilibrate). Every flag is checked here, and
+    /// every output path, before any work. A list in `--theta`, `--alpha` or `--load-mn` is
+    /// refused (naming the flag): only `slide --out-dir` runs batches.
+    pub fn setup(&self, protocol: &ProtocolArgs) -> Result<(Resolved, DemParams)> {
         let (thetas, alphas, loads) = self.lists()?;
         for (n, flag) in [
             (thetas.len(), "--theta"),
@@ -211,7 +212,7 @@ impl DemArgs {
             }
         }
         let sc = self.scene.resolve(thetas[0])?;
-        let p = self.params(alphas[0], loads[0], relax_us, slide_us, speed)?;
+        let p = self.params(alphas[0], loads[0], protocol)?;
         check_outputs(&[
             ("--out", self.out.as_deref()),
             ("--json", self.json.as_deref()),
@@ -221,15 +222,14 @@ impl DemArgs {
         Ok((sc, p))
     }
 
-    /// The run parameters at pulling angle `alpha_deg` (degrees) and load `load_mn` (mN), from
-    /// every other flag (checked, naming the flag); output paths are not checked here.
+    /// The run parameters at pulling angle `alpha_deg` (degrees) and load `load_mn` (mN) with
+    /// the sliding `protocol`, from every other flag (checked, naming the flag); output paths
+    /// are not checked here.
     pub fn params(
         &self,
         alpha_deg: f64,
         load_mn: f64,
-        relax_us: f64,
-        slide_us: f64,
-        speed: f64,
+        protocol: &ProtocolArgs,
     ) -> Result<DemParams> {
         let load = checks::load(load_mn)?;
         let alpha = checks::alpha(alpha_deg)?;
@@ -252,16 +252,14 @@ impl DemArgs {
         };
         checks::every(self.checkpoint_every, "--checkpoint-every", "checkpoint")?;
         checks::every(self.xyz_every, "--xyz-every", "snapshot")?;
-        let sim = SimParams {
+        let mut sim = SimParams {
             dt,
             load,
             equilibrate_time: equilibrate,
-            relax_time: us_to_s(relax_us),
-            slide_time: us_to_s(slide_us),
-            support_speed: speed,
             sample_interval: sample,
             ..SimParams::default()
         };
+        protocol.apply(&mut sim);
         let params = DemParams {
             sim,
             alpha,

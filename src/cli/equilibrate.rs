@@ -2,6 +2,7 @@
 //! summary, sidecars.
 
 use super::dem_args::DemArgs;
+use super::protocol_args::ProtocolArgs;
 use crate::study::equilibrate::equilibrate;
 use crate::study::Reporter;
 use anyhow::Result;
@@ -15,7 +16,7 @@ pub struct Args {
 
 /// Runs `superlube equilibrate`.
 pub fn run(a: Args) -> Result<()> {
-    let (sc, params) = a.dem.setup(0.0, 0.0, 0.0)?;
+    let (sc, params) = a.dem.setup(&ProtocolArgs::AT_REST)?;
     let rep = Reporter::stderr();
     sc.log(&rep);
     let outs = a.dem.outputs("equilibrate", &sc, &params);

@@ -121,18 +121,16 @@ pub fn run(a: Args) -> Result<()> {
         Some(l) => l,
         None => contact_line_direction(&scene, scene.slider.theta, &MapParams::default()).angle,
     };
-    let params = SimParams {
+    let mut params = SimParams {
         dt: a.dt_us.map(us_to_s),
         load: mn_to_n(a.load_mn),
         alpha: line + alpha,
         equilibrate_time: us_to_s(a.equilibrate_us),
-        relax_time: us_to_s(a.protocol.relax_us),
-        slide_time: us_to_s(a.protocol.slide_us),
-        support_speed: a.protocol.speed_m_s,
         sample_interval: us_to_s(a.sample_us),
         prune_substrate: a.prune,
         ..SimParams::default()
     };
+    a.protocol.apply(&mut params);
     let opts = ExportOptions {
         mu: a.mu.unwrap_or(scene.coating.mu1),
         dump_interval: us_to_s(a.dump_us),

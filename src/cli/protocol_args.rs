@@ -5,6 +5,8 @@
 
 use super::checks::non_negative;
 use anyhow::{bail, Result};
+use dem::SimParams;
+use surrogate::units::us_to_s;
 
 /// The sliding protocol of one DEM run, in µs and m/s as given on the command line.
 #[derive(clap::Args, Debug, Clone, Copy)]
@@ -38,6 +40,20 @@ pub struct ProtocolArgs {
 }
 
 impl ProtocolArgs {
+    /// No relaxation and no sliding: the protocol of `equilibrate`.
+    pub const AT_REST: ProtocolArgs = ProtocolArgs {
+        relax_us: 0.0,
+        slide_us: 0.0,
+        speed_m_s: 0.0,
+    };
+
+    /// Sets the protocol on `sim`: `relax_time`, `slide_time` (s) and `support_speed` (m/s).
+    pub fn apply(&self, sim: &mut SimParams) {
+        sim.relax_time = us_to_s(self.relax_us);
+        sim.slide_time = us_to_s(self.slide_us);
+        sim.support_speed = self.speed_m_s;
+    }
+
     /// Checks every flag, naming it: times ≥ 0 and finite, speed ≥ 0 and finite; a run that
     /// slides (`--slide-us` > 0, required when `must_slide`) needs `--speed-m-s` > 0.
     pub fn check(&self, must_slide: bool) -> Result<()> {

@@ -67,11 +67,6 @@ pub fn seeds(text: &str) -> Result<Vec<u64>> {
 /// Runs `superlube slide`.
 pub fn run(a: Args) -> Result<()> {
     a.protocol.check(true)?;
-    let ProtocolArgs {
-        relax_us,
-        slide_us,
-        speed_m_s,
-    } = a.protocol;
     let (thetas, alphas, loads) = a.dem.lists()?;
     let seed_list = a.seeds.as_deref().map(seeds).transpose()?;
     let side_by_side = jobs(a.jobs)?;
@@ -91,7 +86,7 @@ pub fn run(a: Args) -> Result<()> {
             }
             a.dem.scene.seed = s.first().copied();
         }
-        let (sc, params) = a.dem.setup(relax_us, slide_us, speed_m_s)?;
+        let (sc, params) = a.dem.setup(&a.protocol)?;
         let rep = Reporter::stderr();
         sc.log(&rep);
         let outs = a.dem.outputs("slide", &sc, &params);
@@ -158,13 +153,7 @@ fn run_batch_command(
                             warnings.push(w.clone());
                         }
                     }
-                    let params = a.dem.params(
-                        al,
-                        w,
-                        a.protocol.relax_us,
-                        a.protocol.slide_us,
-                        a.protocol.speed_m_s,
-                    )?;
+                    let params = a.dem.params(al, w, &a.protocol)?;
                     jobs.push(SlideJob {
                         name: run_name(&sc.scene, &params),
                         scene: sc.scene,
