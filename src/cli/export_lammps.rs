@@ -1,7 +1,7 @@
 //! `superlube export-lammps`: the Tier-2 model of one (θ, α, W) as a LAMMPS data file and input
 //! deck (engine: `dem::export`), to run with MPI LAMMPS on a cluster.
 
-use super::checks::{alpha as check_alpha, line_deg as check_line_deg};
+use super::checks::{alpha as check_alpha, line_deg as check_line_deg, non_negative, positive};
 use super::protocol_args::ProtocolArgs;
 use super::SceneArgs;
 use anyhow::{bail, Context, Result};
@@ -79,30 +79,21 @@ pub struct Args {
     out: PathBuf,
 }
 
-fn number(v: f64, flag: &str, positive: bool) -> Result<()> {
-    let ok = v.is_finite() && if positive { v > 0.0 } else { v >= 0.0 };
-    if !ok {
-        let what = if positive { "positive" } else { "non-negative" };
-        bail!("`{flag}`: {v} must be a {what} number");
-    }
-    Ok(())
-}
-
 /// Runs `superlube export-lammps`.
 pub fn run(a: Args) -> Result<()> {
     if a.out.exists() && !a.out.is_dir() {
         bail!("`--out`: {} exists and is not a directory", a.out.display());
     }
-    number(a.load_mn, "--load-mn", true)?;
-    number(a.equilibrate_us, "--equilibrate-us", true)?;
+    positive(a.load_mn, "--load-mn")?;
+    positive(a.equilibrate_us, "--equilibrate-us")?;
     a.protocol.check(false)?;
-    number(a.sample_us, "--sample-us", true)?;
-    number(a.dump_us, "--dump-us", false)?;
+    positive(a.sample_us, "--sample-us")?;
+    non_negative(a.dump_us, "--dump-us")?;
     if let Some(dt) = a.dt_us {
-        number(dt, "--dt-us", true)?;
+        positive(dt, "--dt-us")?;
     }
     if let Some(mu) = a.mu {
-        number(mu, "--mu", false)?;
+        non_negative(mu, "--mu")?;
     }
     let alpha = check_alpha(a.alpha)?;
     let line_given = check_line_deg(a.line_deg)?;
