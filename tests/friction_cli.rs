@@ -69,6 +69,8 @@ fn columns_order_and_ranges() {
         "direction_deg",
         "path_length_um",
         "path_step_um",
+        "tilt_pair_ratio",
+        "mount_resonance",
         "error",
     ] {
         assert!(
@@ -205,4 +207,66 @@ fn bad_input_names_the_flag() {
     check(&["--shard", "3/3"], "--shard");
     assert!(!Path::new(out).exists());
     std::fs::remove_dir_all(&d).ok();
+}
+
+/// The study's tri-tri scene at 30° (its full 100 µm slider): on the study's spring mount the
+/// tilt mode is at ω_t/ω_p = 0.89 of the stuck pairs' lateral mode, so the 2.45 mN row, whose
+/// coating fails, is flagged `mount_resonance` (its μ_est an upper bound of the DEM's, measured
+/// 2.8× there) and the intact 0.35 mN row is not; with K1 = 10⁷ N/m (ratio 2.8) nothing is.
+#[test]
+fn mount_resonance_flags_failed_rows_on_the_study_mount() {
+    let d = tmpdir("friction_resonance");
+    let run = |k1: Option<&str>, out: &Path| {
+        let mut c = bin();
+        c.args([
+            "friction",
+            "--pattern",
+            "tri-tri",
+            "--theta",
+            "30",
+            "--alpha",
+            "0",
+            "--load-mn",
+            "0.35,2.45",
+        ]);
+        if let Some(k) = k1 {
+            c.args(["--tilt-k1-n-m", k]);
+        }
+        let o = c.arg("--out").arg(out).output().unwrap();
+        assert_ok(&o);
+        let text = std::fs::read_to_string(out).unwrap();
+        let header: Vec<String> = text
+            .lines()
+            .next()
+            .unwrap()
+            .split(',')
+            .map(String::from)
+            .collect();
+        let r = rows(out);
+        let get = move |i: usize, name: &str| {
+            let c = header.iter().position(|c| c == name).unwrap();
+            r[i][c].clone()
+        };
+        (o, get)
+    };
+    let study = d.join("study.csv");
+    let (o, get) = run(None, &study);
+    let ratio: f64 = get(0, "tilt_pair_ratio").parse().unwrap();
+    assert!((ratio - 0.89).abs() < 0.01, "{ratio}");
+    assert_eq!(get(0, "failed_fraction").parse::<f64>().unwrap(), 0.0);
+    assert_eq!(get(0, "mount_resonance"), "false");
+    assert!(get(1, "failed_fraction").parse::<f64>().unwrap() > 0.0);
+    assert_eq!(get(1, "mount_resonance"), "true");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("note: the springs mount's tilt mode is at 0.89"),
+        "{err}"
+    );
+
+    let stiff = d.join("stiff.csv");
+    let (o, get) = run(Some("1e7"), &stiff);
+    let ratio: f64 = get(1, "tilt_pair_ratio").parse().unwrap();
+    assert!((ratio - 0.89 * 10f64.sqrt()).abs() < 0.03, "{ratio}");
+    assert_eq!(get(1, "mount_resonance"), "false");
+    assert!(!String::from_utf8_lossy(&o.stderr).contains("tilt mode"));
 }

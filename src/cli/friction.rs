@@ -4,7 +4,7 @@ use super::friction_args::FrictionKnobArgs;
 use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs, SweepPlan};
-use crate::study::friction::{check, estimate, friction, FrictionSweepParams};
+use crate::study::friction::{check, estimate, friction, resonance_note, FrictionSweepParams};
 use crate::study::{
     check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Reporter, Sweep, SweepRun,
 };
@@ -44,10 +44,13 @@ pub struct Args {
     knobs: FrictionKnobArgs,
     /// Output CSV, one row per (θ, α, W), θ outer: `pattern,theta_deg,alpha_deg,load_mN,mu_est,
     /// p_max_GPa,failed_fraction,…` (units in the names; README "superlube friction"), streamed
-    /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent. Where the
-    /// coating fails (failed_fraction > 0) on a flat substrate with the default `--tilt springs`
-    /// mount, mu_est can be an upper bound: 2.1–2.8× the DEM's on tri-tri 30° at 2.45–3.86 mN
-    /// (0.95–1.04 on the rough substrates; surrogate/README.md, "Against the DEM").
+    /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent. Rows with
+    /// mount_resonance = true (contacts fail and the `--tilt springs` mount's tilt mode is tuned
+    /// to the stuck contact pairs' lateral mode, tilt_pair_ratio in 0.6–1.15; the study's mount
+    /// is at 0.89) may have mu_est as an upper bound: on flat tri-tri 30° at 2.45–3.86 mN the DEM's
+    /// friction measured 2.1–2.8× lower; on the 2 flagged rough-substrate runs it was not (0.95,
+    /// 1.04); mu_est/mu_DEM 0.96–1.46 off the resonance; surrogate/README.md, "The mount's
+    /// resonance").
     #[arg(long, value_name = "FILE.csv")]
     out: Option<PathBuf>,
     /// Run a sweep above the size limit (2·10⁶ solves) anyway; without it such a sweep is
@@ -133,6 +136,9 @@ fn execute(p: Prepared) -> Result<()> {
     } = p;
     let rep = Reporter::stderr();
     sc.log(&rep);
+    if let Some(note) = resonance_note(&sc.scene, &params.knobs) {
+        crate::study::Progress::note(&rep, &format!("note: {note}"));
+    }
     // θ is swept: the recorded scene does not keep a θ of its own.
     let mut recorded = scene_file(&sc.scene);
     recorded.slider.theta_deg = None;

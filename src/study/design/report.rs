@@ -16,6 +16,7 @@ use super::answer::{Answer, Check};
 use super::rank::{Candidate, RankingRow};
 use super::{DesignOutcome, DesignParams, PatternResult};
 use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
+use crate::study::friction::resonance_note;
 use crate::study::meta::Inputs;
 use crate::study::progress::Progress;
 use crate::study::rows::{label, CorrugationRow, FrictionRow};
@@ -514,7 +515,7 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         let judged = dem.iter().filter(|d| d.verdicts_agree.is_some()).count();
         let _ = writeln!(
             m,
-            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider on the static path (the slider's centre of mass moves along it with the DEM's mass and damping, but not vertically: where failed contacts pin the slider on a flat substrate μ_est is an upper bound, 2.1–2.8× μ_DEM on the 17-run comparison), no lock-in.\n"
+            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider on the static path (the slider's centre of mass moves along it with the DEM's mass and damping, but not vertically: where contacts fail and the springs mount's tilt mode is tuned to the stuck contact pairs' lateral mode, column `mount_resonance` of `friction_<p>.csv`, μ_est may be an upper bound: up to 2.8× μ_DEM measured, 0.96–1.46× off the resonance), no lock-in.\n"
         );
     }
     // 3. Ranking
@@ -545,6 +546,21 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
                 c.screen_intact_to_mn,
                 fmt_g(c.corrugation_nm, 3),
                 c.reason
+            );
+        }
+    }
+    for pr in &o.patterns {
+        let flagged = pr
+            .ranking
+            .iter()
+            .filter(|c| c.friction.iter().any(|r| r.mount_resonance == Some(true)))
+            .count();
+        if let (Some(note), true) = (resonance_note(&pr.scene.scene, &p.friction), flagged > 0) {
+            let _ = writeln!(
+                m,
+                "\n{}: {flagged} of {} candidates have loads with failed contacts on a mount in resonance; {note}. Their verdicts stand (μ_est may be an upper bound there).",
+                pr.scene.name,
+                pr.ranking.len()
             );
         }
     }

@@ -2,6 +2,7 @@
 
 use super::inertial::{self, Inertial};
 use super::path::{lattice_period, solve_samples, Sample};
+use super::resonance::TiltResonance;
 use super::tomlinson::{self, Profile};
 use super::FrictionParams;
 use crate::error::SceneError;
@@ -65,6 +66,13 @@ pub struct FrictionEstimate {
     pub slips: usize,
     /// Length (m) of that window.
     pub window: f64,
+    /// `ω_t/ω_p` of the spring mount ([`TiltResonance`]); `None` without springs.
+    pub tilt_pair_ratio: Option<f64>,
+    /// Whether the estimate is outside its tested range because of the mount's tilt resonance:
+    /// [`TiltResonance::in_band`] and contacts fail along the path (`failed_fraction > 0`).
+    /// μ_est may be an upper bound there: the DEM measured 2.1–2.8× lower on flat tri-tri 30°,
+    /// not lower on the two flagged rough-substrate runs (the verdict unchanged on all).
+    pub mount_resonance: bool,
 }
 
 /// Estimates the friction coefficient μ_est of the DEM protocol for `solver`'s scene at rotation
@@ -168,13 +176,14 @@ pub fn estimate_friction_loads(
         .collect();
     let mut solved = solve_samples(solver, theta, e, &valid, &s, params).into_iter();
     let body = Body::of(solver, params);
+    let tilt = TiltResonance::of(scene, params);
     Ok(loads
         .iter()
         .map(|&load| {
             check_load(load)?;
             let smp = solved.next().unwrap_or_else(|| Ok(Vec::new()))?;
             Ok(from_samples(
-                &smp, theta, direction, load, period, length, h, n, params, &body,
+                &smp, theta, direction, load, period, length, h, n, params, &body, tilt,
             ))
         })
         .collect())
@@ -214,6 +223,7 @@ fn from_samples(
     n: usize,
     params: &FrictionParams,
     body: &Body,
+    tilt: Option<TiltResonance>,
 ) -> FrictionEstimate {
     // 3. Path averages: periodic paths average the n distinct samples of one period (the last
     //    repeats the first); quasi-periodic ones use the trapezoid rule over [0, L].
@@ -302,5 +312,7 @@ fn from_samples(
         periodic: period.is_some(),
         slips: pt.jumps,
         window: pt.window,
+        tilt_pair_ratio: tilt.map(|t| t.ratio),
+        mount_resonance: failed_fraction > 0.0 && tilt.is_some_and(|t| t.in_band()),
     }
 }
