@@ -103,7 +103,7 @@
 //! mode of the stuck contact pairs ([`TiltResonance`]: ω_t/ω_p in [`RESONANCE_BAND`]; the study's
 //! mount is at 0.89), the DEM's tilt rocks the failed contacts during slips (their count changes 16
 //! → 4 within a slip, the slider 0.5 nm higher) and its mean friction is 0.36–0.47 of μ_est
-//! (reduced model; 0.43 with the full model at 2.45 mN). Off the resonance (K1 ≤ 3·10⁵ or ≥ 2·10⁶
+//! (reduced model; 0.43 with the full model at 2.45 mN). Off the resonance (K1 ≤ 4·10⁵ or ≥ 2·10⁶
 //! N/m, or a locked or free mount) μ_est is within 0.96–1.46 of the DEM on the same runs (measured,
 //! `surrogate/README.md`, "The mount's resonance"). `FrictionEstimate::mount_resonance` flags the
 //! rows where μ_est is such an upper bound. Also
