@@ -283,3 +283,46 @@ fn commensurate_slider_in_the_hollows_locks_in() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("LOCKED IN"));
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// A DEM run on a `springs` mount in the measured tilt resonance (ω_t/ω_p in 0.6–1.15; here a
+/// tiny slider with K1 = 5000 N/m, r = 0.66) whose coating may fail (P_crit lowered to 1 GPa,
+/// below the surrogate's P_max 1.44 GPa) says so on stderr and records the ratio in its JSON;
+/// the study's K1 on the tiny slider (r = 9.3), a constant-μ run (no coating switch, no
+/// resonance measured) and an intact coating (the study's P_crit) do not warn.
+#[test]
+fn a_run_on_a_resonant_mount_says_so() {
+    let d = tmpdir("resonant_mount");
+    let run = |extra: &[&str], name: &str| {
+        let js = d.join(format!("{name}.json"));
+        let out = bin()
+            .arg("equilibrate")
+            .args(TINY)
+            .args(["--equilibrate-us", "0.01"])
+            .args(extra)
+            .arg("--out")
+            .arg(d.join(format!("{name}.csv")))
+            .arg("--json")
+            .arg(&js)
+            .output()
+            .unwrap();
+        assert_ok(&out);
+        let warned = String::from_utf8_lossy(&out.stderr).contains("tilt mode is at");
+        let r = json(&js)["tilt_pair_ratio"].as_f64().unwrap();
+        (warned, r)
+    };
+    let soft = ["--tilt-k1-n-m", "5000", "--p-crit-gpa", "1"];
+    let (warned, r) = run(&soft, "soft");
+    assert!(warned);
+    assert!((0.6..=1.15).contains(&r), "{r}");
+    let (warned, r_study) = run(&["--p-crit-gpa", "1"], "study");
+    assert!(!warned);
+    assert!(
+        (r_study / r - (1e6f64 / 5000.0).sqrt()).abs() < 1e-9,
+        "{r_study}"
+    );
+    let (warned, _) = run(&[&soft[..], &["--mu", "0.01"]].concat(), "constant");
+    assert!(!warned);
+    let (warned, r_intact) = run(&soft[..2], "intact");
+    assert!(!warned);
+    assert_eq!(r_intact, r);
+}

@@ -491,6 +491,9 @@ pub struct RunInfo {
     pub model_requested: &'static str,
     /// Why this model (κ = S_n/k_z, P_max, Prandtl–Tomlinson η; dem/README.md "Model choice").
     pub model_reason: String,
+    /// ω_t/ω_p of the `springs` mount (`surrogate::friction::TiltResonance`): in 0.6–1.15 the
+    /// friction where contacts fail depends strongly on K1; `null` without springs.
+    pub tilt_pair_ratio: Option<f64>,
     /// Active set in use.
     pub active_set: bool,
     /// Mean number of particles integrated per step (the active set; all particles without it).

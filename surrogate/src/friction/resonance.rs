@@ -51,6 +51,23 @@ impl TiltResonance {
     /// The ratio of `scene`'s mount with the ties of `params`; `None` unless the mount is
     /// `springs` with K1 > 0.
     pub fn of(scene: &Scene, params: &FrictionParams) -> Option<TiltResonance> {
+        Self::with_ties(
+            scene,
+            params.k_slider_xy,
+            params.k_substrate_xy,
+            params.control_sphere_radius,
+        )
+    }
+
+    /// The ratio of `scene`'s mount with slider ties `k_xy` and substrate tethers `k_tether`
+    /// (N/m) and control spheres of radius `r_control` (m), as a DEM run has them; `None` unless
+    /// the mount is `springs` with K1 > 0.
+    pub fn with_ties(
+        scene: &Scene,
+        k_xy: f64,
+        k_tether: f64,
+        r_control: f64,
+    ) -> Option<TiltResonance> {
         if !matches!(scene.slider.mount, Mount::Springs { k1 } if k1 > 0.0) {
             return None;
         }
@@ -66,10 +83,10 @@ impl TiltResonance {
             syy += (p[1] - c[1]).powi(2);
         }
         let m_s = scene.material.sphere_mass(scene.sphere_radius);
-        let unit = m_s + scene.material.sphere_mass(params.control_sphere_radius);
+        let unit = m_s + scene.material.sphere_mass(r_control);
         let w2 = [k[0] / (unit * syy), k[1] / (unit * sxx)];
         let tilt_omega = (0.5 * (w2[0] + w2[1])).sqrt();
-        let pair_omega = ((params.k_slider_xy + params.k_substrate_xy) / (2.0 * m_s)).sqrt();
+        let pair_omega = ((k_xy + k_tether) / (2.0 * m_s)).sqrt();
         let ratio = tilt_omega / pair_omega;
         ratio.is_finite().then_some(TiltResonance {
             tilt_omega,
