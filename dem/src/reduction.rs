@@ -124,6 +124,9 @@ pub struct ModelChoice {
     pub p_ref_gpa: f64,
     /// Prandtl–Tomlinson η of the slide ([`stick_slip_eta`]); `None` without sliding.
     pub stick_slip_eta: Option<f64>,
+    /// Whether a contact may reach coating failure while sliding: the surrogate's P_max ×
+    /// [`SLIDING_P_MAX_FACTOR`] ≥ P_crit (then `auto` keeps the full model).
+    pub coating_may_fail: bool,
     /// Human-readable reason for the choice.
     pub reason: String,
 }
@@ -163,6 +166,7 @@ pub fn choose_model(
     };
     let exact = "prune and the active set are exact";
     let eta = stick_slip_eta(scene, params, &solver);
+    let coating_may_fail = p_ref * SLIDING_P_MAX_FACTOR >= scene.coating.p_crit;
     let (rigid_z, reason) = match request {
         ModelRequest::Full => (false, format!("full model as requested; {exact}")),
         ModelRequest::Reduced => (
@@ -185,7 +189,7 @@ pub fn choose_model(
                     None => String::new(),
                 }
             );
-            if p_ref * SLIDING_P_MAX_FACTOR >= scene.coating.p_crit {
+            if coating_may_fail {
                 (
                     false,
                     format!(
@@ -228,6 +232,7 @@ pub fn choose_model(
         stiffness_ratio: kappa,
         p_ref_gpa: p_ref * 1e-9,
         stick_slip_eta: eta.map(|e| e.0),
+        coating_may_fail,
         reason,
     })
 }

@@ -9,11 +9,10 @@ use super::rows::{label, DemCase, DemSample, RunInfo};
 use anyhow::{Context, Result};
 use dem::model::Friction;
 use dem::protocol::{run, step_counts, Phase, RunIo, RunKind};
-use dem::reduction::SLIDING_P_MAX_FACTOR;
 use dem::{choose_model, prepare, ModelChoice, ModelRequest, Prepared, SimParams, Start};
 use std::path::PathBuf;
-use surrogate::friction::{TiltResonance, RESONANCE_BAND};
-use surrogate::units::{gpa_to_pa, n_to_mn, rad_to_deg, s_to_us};
+use surrogate::friction::TiltResonance;
+use surrogate::units::{n_to_mn, rad_to_deg, s_to_us};
 use surrogate::Scene;
 
 /// Parameters of a DEM run (SI).
@@ -143,15 +142,13 @@ pub fn run_dem(
         sim_params.k_substrate_xy,
         sim_params.control_sphere_radius,
     );
-    // Only where the coating is expected to fail while sliding (the auto model's test).
-    let may_fail = gpa_to_pa(choice.p_ref_gpa) * SLIDING_P_MAX_FACTOR >= scene.coating.p_crit;
-    if let Some(t) = tilt.filter(|t| t.in_band() && p.friction.is_none() && may_fail) {
+    // Only where the coating may fail while sliding (the auto model's test).
+    if let Some(t) = tilt.filter(|t| t.in_band() && p.friction.is_none() && choice.coating_may_fail)
+    {
         progress.note(&format!(
-            "note: the springs mount's tilt mode is at {:.2} of a stuck contact pair's lateral \
-             frequency (resonance band {}–{}): where contacts fail, this run's friction depends \
-             strongly on K1 (tri-tri 30°, 2.45 mN: μ = 0.039 at the study's 10⁶ N/m, 0.107 at \
-             10⁷; surrogate/README.md, \"The mount's resonance\")",
-            t.ratio, RESONANCE_BAND[0], RESONANCE_BAND[1]
+            "note: {t}: where contacts fail, this run's friction depends strongly on K1 (tri-tri \
+             30°, 2.45 mN: μ = 0.039 at the study's 10⁶ N/m, 0.107 at 10⁷; surrogate/README.md, \
+             \"The mount's resonance\")"
         ));
     }
     let mut prepared = prepare(scene, sim_params, p.start, p.friction)?;

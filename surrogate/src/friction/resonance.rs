@@ -101,6 +101,20 @@ impl TiltResonance {
     }
 }
 
+impl std::fmt::Display for TiltResonance {
+    /// The ratio against the band, the common head of the warnings that cite it: "the springs
+    /// mount's tilt mode is at 0.89 of a stuck contact pair's lateral frequency (resonance band
+    /// 0.6–1.15)".
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "the springs mount's tilt mode is at {:.2} of a stuck contact pair's lateral \
+             frequency (resonance band {}–{})",
+            self.ratio, RESONANCE_BAND[0], RESONANCE_BAND[1]
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
