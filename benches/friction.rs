@@ -4,7 +4,10 @@
 //! - square-tri θ = 0, α = 90° (the design point; one 3√3 µm period: 105 samples),
 //! - square-tri θ = 0, α = 0° (along the contact lines; one 3 µm period: 61 samples),
 //! - square-tri θ = 10.2°, α = 90° and tri-tri θ = 30°, α = 90° (quasi-periodic: 12 µm, 241
-//!   samples, the worst case of the defaults).
+//!   samples),
+//! - square-tri θ = 0.1°, α = 90.5° (quasi-periodic, and the slider drifts off the placement's
+//!   crest: the drift check, the line across the pull and the path from the new start; the worst
+//!   case of the defaults).
 //!
 //! And the unit of `superlube friction` and `superlube design`: the study's 11 loads
 //! (0.35 … 3.86 mN) of one (θ, α) sharing one path (`estimate_friction_loads`), per (θ, α):
@@ -27,6 +30,8 @@ fn bench(c: &mut Criterion) {
         ("square-tri", 0.0, 0.0),
         ("square-tri", 10.2, 90.0),
         ("tri-tri", 30.0, 90.0),
+        // the slider drifts off the crest into a groove: the transverse line and a second path
+        ("square-tri", 0.1, 90.5),
     ] {
         let sc = Scene::preset(pattern).unwrap();
         let s = Solver::new(&sc).unwrap();

@@ -27,6 +27,23 @@ fn friction(extra: &[&str], out: &Path) -> std::process::Output {
         .unwrap()
 }
 
+/// The cell of row `i` (0 = first data row) in column `name` of the CSV at `path`.
+fn cells(path: &Path) -> impl Fn(usize, &str) -> String {
+    let text = std::fs::read_to_string(path).unwrap();
+    let header: Vec<String> = text
+        .lines()
+        .next()
+        .unwrap()
+        .split(',')
+        .map(String::from)
+        .collect();
+    let r = rows(path);
+    move |i: usize, name: &str| {
+        let c = header.iter().position(|c| c == name).unwrap();
+        r[i][c].clone()
+    }
+}
+
 fn rows(path: &Path) -> Vec<Vec<String>> {
     let mut r = csv::Reader::from_path(path).unwrap();
     r.records()
@@ -69,6 +86,7 @@ fn columns_order_and_ranges() {
         "direction_deg",
         "path_length_um",
         "path_step_um",
+        "transverse_offset_um",
         "tilt_pair_ratio",
         "mount_resonance",
         "error",
@@ -234,20 +252,7 @@ fn mount_resonance_flags_failed_rows_on_the_study_mount() {
         }
         let o = c.arg("--out").arg(out).output().unwrap();
         assert_ok(&o);
-        let text = std::fs::read_to_string(out).unwrap();
-        let header: Vec<String> = text
-            .lines()
-            .next()
-            .unwrap()
-            .split(',')
-            .map(String::from)
-            .collect();
-        let r = rows(out);
-        let get = move |i: usize, name: &str| {
-            let c = header.iter().position(|c| c == name).unwrap();
-            r[i][c].clone()
-        };
-        (o, get)
+        (o, cells(out))
     };
     let study = d.join("study.csv");
     let (o, get) = run(None, &study);
@@ -269,4 +274,69 @@ fn mount_resonance_flags_failed_rows_on_the_study_mount() {
     assert!((ratio - 0.89 * 10f64.sqrt()).abs() < 0.03, "{ratio}");
     assert_eq!(get(1, "mount_resonance"), "false");
     assert!(!String::from_utf8_lossy(&o.stderr).contains("tilt mode"));
+}
+
+/// The study's square-tri scene at θ ≈ 0: the placement sits on a crest between grooves along
+/// the substrate rows. Pulled along the rows' normal off the scene's mirror line (θ = 0.1°,
+/// α = 90.5°) the slider drifts off the crest (the DEM: 0.85 µm sideways, 26 failed contacts,
+/// locked in at 2.1 mN), so the estimate's path runs in the groove, where the coating fails at
+/// 2.1 mN; at 0.35 mN the crest holds. On the mirror line (θ = 0, α = 90°) there is no
+/// transverse force and the path stays on the crest, as the DEM's slider does; with
+/// `--transverse-um 0` the path runs through the placement (the coating intact at 2.1 mN).
+#[test]
+fn a_slider_released_on_a_crest_drifts_into_the_groove() {
+    let d = tmpdir("friction_transverse");
+    let read = |out: &Path| {
+        let get = cells(out);
+        move |i: usize, name: &str| -> f64 { get(i, name).parse().unwrap() }
+    };
+    let study = |extra: &[&str], out: &Path| {
+        bin()
+            .args([
+                "friction",
+                "--pattern",
+                "square-tri",
+                "--load-mn",
+                "0.35,2.1",
+            ])
+            .args(extra)
+            .arg("--out")
+            .arg(out)
+            .output()
+            .unwrap()
+    };
+    let off_mirror = d.join("off_mirror.csv");
+    assert_ok(&study(&["--theta", "0.1", "--alpha", "90.5"], &off_mirror));
+    let get = read(&off_mirror);
+    assert_eq!(get(0, "transverse_offset_um"), 0.0);
+    assert_eq!(get(0, "failed_fraction"), 0.0);
+    assert!(
+        get(1, "transverse_offset_um").abs() > 0.5,
+        "{}",
+        get(1, "transverse_offset_um")
+    );
+    assert!(
+        get(1, "failed_fraction") > 0.1,
+        "{}",
+        get(1, "failed_fraction")
+    );
+    assert!(get(1, "p_max_GPa") > 4.0 && get(1, "mu_est") > 0.05);
+
+    let straight = d.join("straight.csv");
+    assert_ok(&study(
+        &["--theta", "0.1", "--alpha", "90.5", "--transverse-um", "0"],
+        &straight,
+    ));
+    let get = read(&straight);
+    assert_eq!(get(1, "transverse_offset_um"), 0.0);
+    assert!(get(1, "p_max_GPa") < 3.5 && get(1, "failed_fraction") == 0.0);
+
+    let mirror = d.join("mirror.csv");
+    assert_ok(&study(&["--theta", "0", "--alpha", "90"], &mirror));
+    let get = read(&mirror);
+    for i in 0..2 {
+        assert_eq!(get(i, "transverse_offset_um"), 0.0);
+        assert!(get(i, "mu_est") < 0.02 && get(i, "failed_fraction") == 0.0);
+    }
+    std::fs::remove_dir_all(&d).ok();
 }

@@ -51,6 +51,17 @@ pub struct FrictionKnobArgs {
         allow_hyphen_values = true
     )]
     pub k0_n_m: f64,
+    /// Friction estimate: half-width in µm of the line across the pull, through the placement,
+    /// on which the path's start settles sideways: the slider released there rolls downhill
+    /// (V + ½K0y²) to the first minimum, as the DEM's slider does (only K0 holds it across the
+    /// pull), and the path runs from there. 0 keeps the path through the placement.
+    #[arg(
+        long = "transverse-um",
+        value_name = "UM",
+        default_value_t = 1.5,
+        allow_hyphen_values = true
+    )]
+    pub transverse_um: f64,
 }
 
 impl FrictionKnobArgs {
@@ -63,6 +74,7 @@ impl FrictionKnobArgs {
             step: um(self.step_um, "--step-um")?,
             transient: um_to_m(checks::non_negative(self.transient_um, "--transient-um")?),
             k0: checks::positive(self.k0_n_m, "--k0-n-m")?,
+            transverse: um_to_m(checks::non_negative(self.transverse_um, "--transverse-um")?),
             ..FrictionParams::default()
         };
         if k.step > k.length.min(k.max_period) {

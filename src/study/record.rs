@@ -93,6 +93,7 @@ pub fn friction_knobs(k: &surrogate::friction::FrictionParams) -> Value {
         "step_um": label(m_to_um(k.step)),
         "transient_um": label(m_to_um(k.transient)),
         "k0_N_m": k.k0,
+        "transverse_um": label(m_to_um(k.transverse)),
         "k_slider_xy_N_m": k.k_slider_xy,
         "k_substrate_xy_N_m": k.k_substrate_xy,
         "direction_tol_rad": k.direction_tol,

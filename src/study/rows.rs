@@ -9,7 +9,7 @@
 //! | [`LandscapeRow`] | `landscape --out`, `figures` (landscape_*.csv) | `x_um,y_um,dz_nm` |
 //! | [`LandscapeZRow`] | `landscape --shard i/n --out` (a shard, merged by `superlube merge`), the landscape's spill file | `x_um,y_um,z_um` (z exact, see [`exact_um`]) |
 //! | [`CorrugationRow`] | `corrugation --out`, `figures` (corrugation_square-tri.csv) | `theta_deg,load_mN,line_deg,alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN` |
-//! | [`FrictionRow`] | `friction --out`, `design` (friction_<pattern>.csv) | `pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,mu_coating,mu_corrugation,mu_quasi_static,mu_est_spread,eta,barrier_pJ,max_lateral_force_mN,p_max_mean_GPa,contacts_mean,k_spring_N_m,line_deg,direction_deg,path_length_um,path_step_um,samples,periodic,slips,tilt_pair_ratio,mount_resonance,error` |
+//! | [`FrictionRow`] | `friction --out`, `design` (friction_<pattern>.csv) | `pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,mu_coating,mu_corrugation,mu_quasi_static,mu_est_spread,eta,barrier_pJ,max_lateral_force_mN,p_max_mean_GPa,contacts_mean,k_spring_N_m,line_deg,direction_deg,path_length_um,path_step_um,samples,periodic,slips,transverse_offset_um,tilt_pair_ratio,mount_resonance,error` |
 //! | [`DemSample`] | `equilibrate --out`, `slide --out` | `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts` |
 //! | [`EquilibrateReport`], [`SlideReport`] | `equilibrate --json`, `slide --json` | JSON objects (keys documented on the fields) |
 //! | [`BatchRow`] | `slide --out-dir DIR` (`DIR/runs.csv`), `figures --friction` (`runs.csv`) | `name,pattern,theta_deg,alpha_deg,load_mN,sigma_h_um,seed,E_GPa,p_crit_GPa,mu1,mu2,mu_constant,mount,model_requested,model,rigid_z,equilibrate_us,relax_us,slide_us,speed_m_s,dt_us,friction_mN,friction_std_mN,mu,mean_contacts,max_p_max_GPa,mean_failed_contacts,locked_in,advance_ratio,steps,wall_s,status,error` |
@@ -382,6 +382,10 @@ pub struct FrictionRow {
     pub periodic: Option<bool>,
     /// Stick-slip jumps in the Prandtl–Tomlinson measuring window.
     pub slips: Option<usize>,
+    /// Start of the path across the pull (µm, along the pull direction rotated by +90°): where
+    /// the slider released at the placement settles sideways (0: the placement is a transverse
+    /// minimum).
+    pub transverse_offset_um: Option<f64>,
     /// ω_t/ω_p: the spring mount's tilt frequency over the lateral frequency of a stuck
     /// slider–substrate pair (`surrogate::friction::TiltResonance`); empty without springs.
     pub tilt_pair_ratio: Option<f64>,
@@ -427,6 +431,7 @@ impl FrictionRow {
             samples: None,
             periodic: None,
             slips: None,
+            transverse_offset_um: None,
             tilt_pair_ratio: None,
             mount_resonance: None,
             error: String::new(),
@@ -451,6 +456,7 @@ impl FrictionRow {
                 row.samples = Some(e.samples);
                 row.periodic = Some(e.periodic);
                 row.slips = Some(e.slips);
+                row.transverse_offset_um = Some(clean(m_to_um(e.transverse_offset)));
                 row.tilt_pair_ratio = e.tilt_pair_ratio;
                 row.mount_resonance = Some(e.mount_resonance);
             }

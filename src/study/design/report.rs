@@ -668,7 +668,7 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
                 .collect();
             let _ = writeln!(
                 m,
-                "# θ = {}°: α scan (corrugation_{}.csv rows) and the friction estimate of its best α\nsuperlube corrugation {f} --theta {} --load-mn {} --alpha {} --distance-um {} --step-um {}{line}\nsuperlube friction {f} --theta {} --alpha {} --load-mn {}{line} --length-um {} --max-period-um {} --step-um {} --transient-um {} --k0-n-m {}",
+                "# θ = {}°: α scan (corrugation_{}.csv rows) and the friction estimate of its best α\nsuperlube corrugation {f} --theta {} --load-mn {} --alpha {} --distance-um {} --step-um {}{line}\nsuperlube friction {f} --theta {} --alpha {} --load-mn {}{line} --length-um {} --max-period-um {} --step-um {} --transient-um {} --k0-n-m {} --transverse-um {}",
                 e.eval.theta_deg,
                 pr.scene.name,
                 e.eval.theta_deg,
@@ -688,7 +688,8 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
                 label(m_to_um(p.friction.max_period)),
                 label(m_to_um(p.friction.step)),
                 label(m_to_um(p.friction.transient)),
-                p.friction.k0
+                p.friction.k0,
+                label(m_to_um(p.friction.transverse))
             );
         }
     }

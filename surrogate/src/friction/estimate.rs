@@ -4,6 +4,7 @@ use super::inertial::{self, Inertial};
 use super::path::{lattice_period, solve_samples, Sample};
 use super::resonance::TiltResonance;
 use super::tomlinson::{self, Profile};
+use super::transverse::{descend, leaves_crest};
 use super::FrictionParams;
 use crate::error::SceneError;
 use crate::map::check_slider_stays_on_substrate;
@@ -43,7 +44,8 @@ pub struct FrictionEstimate {
     pub max_lateral_force: f64,
     /// Path average of P_max (Pa).
     pub p_max_mean: f64,
-    /// Largest P_max along the path (Pa).
+    /// Largest P_max along the path and at the placement, where the DEM's slide starts before
+    /// the slider drifts to the path's start (Pa).
     pub p_max_max: f64,
     /// Path average of the fraction of the normal load carried by failed contacts (p0 > P_crit),
     /// `⟨Σ_failed F_z⟩ / W`, in [0, 1].
@@ -66,6 +68,10 @@ pub struct FrictionEstimate {
     pub slips: usize,
     /// Length (m) of that window.
     pub window: f64,
+    /// Start of the path across the pull (m, along e⊥ = e rotated by +90°): where the slider
+    /// released at the placement settles sideways (`friction/transverse.rs`); 0 when the
+    /// placement is a transverse minimum or `FrictionParams::transverse` is 0.
+    pub transverse_offset: f64,
     /// `ω_t/ω_p` of the spring mount ([`TiltResonance`]); `None` without springs.
     pub tilt_pair_ratio: Option<f64>,
     /// Whether the estimate is outside its tested range because of the mount's tilt resonance:
@@ -79,12 +85,16 @@ pub struct FrictionEstimate {
 /// `theta` (rad), pulled along `direction` (rad from the substrate x axis) under load `load` W
 /// (N), from the quasi-static path ([`crate::friction`] documents the formula).
 ///
-/// The path starts at the scene's placement; its samples are solved with
-/// [`crate::solver::Model::Auto`] (so the slider obeys the scene's mount), in parallel
-/// (rayon, one candidate search per `params.segment` of path), deterministically.
+/// The path runs parallel to the pull from the scene's placement or, where the slider drifts
+/// off a crest of the landscape across the pull, from the first minimum beside it
+/// (`friction/transverse.rs`); its samples are solved with [`crate::solver::Model::Auto`] (so
+/// the slider obeys the scene's mount), in parallel (rayon, one candidate search per
+/// `params.segment` of path), deterministically.
 /// Cost: `length/step + 1` equilibria (≈ 61–241 with the defaults; ≈ 0.3–0.5 ms each for the
-/// study's 3505-sphere slider) plus O(samples) for the Prandtl–Tomlinson model and, where
-/// η > 1, `params.starts` runs of the inertial model (≈ 1.5 ms each, in parallel). Several loads of one (θ,
+/// study's 3505-sphere slider), a tenth of that plus 3 for the drift check (none more on a mirror
+/// line of the scene), and where the slider drifts `transverse/step` more; plus O(samples) for
+/// the Prandtl–Tomlinson model and, where η > 1, `params.starts` runs of the inertial model
+/// (≈ 1.5 ms each, in parallel). Measured 18–76 ms per (θ, α, W) (`cargo bench --bench friction`). Several loads of one (θ,
 /// direction): [`estimate_friction_loads`] (same results, cheaper).
 ///
 /// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
@@ -145,6 +155,7 @@ pub fn estimate_friction_loads(
     }
     let scene = solver.scene();
     let e = [direction.cos(), direction.sin()];
+    let e_perp = [-e[1], e[0]];
 
     // 1. The path: one lattice period along lattice directions, else a fixed length.
     let period = lattice_period(
@@ -158,35 +169,159 @@ pub fn estimate_friction_loads(
     let h = length / n as f64;
     let s: Vec<f64> = (0..=n).map(|k| k as f64 * h).collect();
     let end = [length * e[0], length * e[1]];
+    let (side, m_side, h_side) = if params.transverse > 0.0 {
+        let m = (params.transverse / params.step - 1e-9).ceil().max(1.0) as usize;
+        (params.transverse, m, params.transverse / m as f64)
+    } else {
+        (0.0, 0, 0.0)
+    };
+    let reach = [side * e_perp[0].abs(), side * e_perp[1].abs()];
     check_slider_stays_on_substrate(
         scene,
         [
-            [end[0].min(0.0), end[1].min(0.0)],
-            [end[0].max(0.0), end[1].max(0.0)],
+            [end[0].min(0.0) - reach[0], end[1].min(0.0) - reach[1]],
+            [end[0].max(0.0) + reach[0], end[1].max(0.0) + reach[1]],
         ],
         "friction.length_um",
     )?;
 
-    // 2. One equilibrium per sample and load (valid loads only), reduced to the sums the
-    //    estimate needs.
     let valid: Vec<f64> = loads
         .iter()
         .copied()
         .filter(|&w| check_load(w).is_ok())
         .collect();
-    let mut solved = solve_samples(solver, theta, e, &valid, &s, params).into_iter();
+
+    // 2. Where the path runs across the pull (`transverse.rs`): per load, the offset (in
+    //    samples of h_side along e⊥) of its start from the placement.
+    let (start, placement_p_max) = if m_side > 0 {
+        transverse_starts(solver, theta, e, &valid, &s, h_side, m_side, params)
+    } else {
+        (vec![0; valid.len()], vec![0.0; valid.len()])
+    };
+
+    // 3. One equilibrium per sample and load along the path from its start, reduced to the
+    //    sums the estimate needs: one path (and pair search) per distinct start.
+    let mut groups: std::collections::BTreeMap<i64, Vec<usize>> = Default::default();
+    for (i, &j) in start.iter().enumerate() {
+        groups.entry(j).or_default().push(i);
+    }
+    let mut solved: Vec<Option<Result<Vec<Sample>, SceneError>>> =
+        valid.iter().map(|_| None).collect();
+    for (&j, members) in &groups {
+        let y = j as f64 * h_side;
+        let group_loads: Vec<f64> = members.iter().map(|&i| valid[i]).collect();
+        let origin = [y * e_perp[0], y * e_perp[1]];
+        let path = solve_samples(solver, theta, origin, e, &group_loads, &s, params);
+        for (&i, r) in members.iter().zip(path) {
+            solved[i] = Some(r);
+        }
+    }
     let body = Body::of(solver, params);
     let tilt = TiltResonance::of(scene, params);
+    let mut per_valid = start.into_iter().zip(solved).zip(placement_p_max);
     Ok(loads
         .iter()
         .map(|&load| {
             check_load(load)?;
-            let smp = solved.next().unwrap_or_else(|| Ok(Vec::new()))?;
-            Ok(from_samples(
+            let ((j, smp), p_placed) = per_valid.next().expect("one path per valid load");
+            let offset = j as f64 * h_side;
+            let smp = smp.expect("every start's path solved")?;
+            let mut est = from_samples(
                 &smp, theta, direction, load, period, length, h, n, params, &body, tilt,
-            ))
+            );
+            est.transverse_offset = offset;
+            // the DEM's slide starts at the placement, before the drift: its P_max counts
+            est.p_max_max = est.p_max_max.max(p_placed);
+            Ok(est)
         })
         .collect())
+}
+
+/// Step 2 of [`estimate_friction_loads`] (`transverse.rs`): per load of `loads` (N), the start
+/// of the path across the pull, in samples of `h` (m) along e⊥ (0: through the placement), and
+/// P_max (Pa) at the placement where the path leaves it (else 0).
+/// `s`: the path's samples (m) along `e`; `m`: samples of the one-sided line across the pull.
+#[allow(clippy::too_many_arguments)]
+fn transverse_starts(
+    solver: &Solver,
+    theta: f64,
+    e: [f64; 2],
+    loads: &[f64],
+    s: &[f64],
+    h: f64,
+    m: usize,
+    params: &FrictionParams,
+) -> (Vec<i64>, Vec<f64>) {
+    let e_perp = [-e[1], e[0]];
+    let tol_f = |w: f64| 1e-9 * w;
+    // F_⊥ and C along the straight path, every 10th sample (and its end)
+    let mut coarse: Vec<f64> = s.iter().step_by(10).copied().collect();
+    if coarse.last() != s.last() {
+        coarse.push(*s.last().expect("a path has samples"));
+    }
+    let along = solve_samples(solver, theta, [0.0, 0.0], e, loads, &coarse, params);
+    let pushed = |r: &Result<Vec<Sample>, SceneError>, w: f64| {
+        r.as_ref()
+            .is_ok_and(|x| x.iter().any(|x| x.f_perp.abs() > tol_f(w)))
+    };
+    let mut start = vec![0i64; loads.len()];
+    let mut placed = vec![0.0; loads.len()];
+    if !along.iter().zip(loads).any(|(r, &w)| pushed(r, w)) {
+        // a mirror line of the scene: no transverse force anywhere
+        return (start, placed);
+    }
+    // U'' at the placement from y = −h, 0, +h (U = V + ½K0y²)
+    let stencil = solve_samples(
+        solver,
+        theta,
+        [-h * e_perp[0], -h * e_perp[1]],
+        e_perp,
+        loads,
+        &[0.0, h, 2.0 * h],
+        params,
+    );
+    let mut side = vec![None; loads.len()];
+    for (i, (&w, (path, st))) in loads.iter().zip(along.iter().zip(&stencil)).enumerate() {
+        let (Ok(path), Ok(st)) = (path, st) else {
+            continue;
+        };
+        if solver.scene().coating.failed(path[0].p_max) {
+            // contacts failed at the start pin it (μ2): the DEM's slider stays (rough
+            // square-tri 0°/90° at 2.45 mN, square-tri 10.2°/90° at 3.86 mN)
+            continue;
+        }
+        let k_y = (st[0].v - 2.0 * st[1].v + st[2].v) / (h * h) + params.k0;
+        let f: Vec<f64> = path.iter().map(|x| x.f_perp).collect();
+        let c: Vec<f64> = path.iter().map(|x| x.coating).collect();
+        let distance = params.speed * params.slide_time;
+        side[i] = leaves_crest(k_y, &coarse, &f, &c, distance, h, tol_f(w));
+    }
+    // the line on each side that a load leaves to: the first minimum of U downhill
+    for sign in [-1.0f64, 1.0] {
+        let which: Vec<usize> = (0..loads.len())
+            .filter(|&i| side[i] == Some(sign))
+            .collect();
+        if which.is_empty() {
+            continue;
+        }
+        let w_side: Vec<f64> = which.iter().map(|&i| loads[i]).collect();
+        let y: Vec<f64> = (0..=m).map(|j| j as f64 * h).collect();
+        let dir = [sign * e_perp[0], sign * e_perp[1]];
+        let line = solve_samples(solver, theta, [0.0, 0.0], dir, &w_side, &y, params);
+        for (&i, r) in which.iter().zip(line) {
+            let Ok(r) = r else { continue };
+            let u: Vec<f64> = r
+                .iter()
+                .zip(&y)
+                .map(|(x, &yj)| x.v + 0.5 * params.k0 * yj * yj)
+                .collect();
+            // a guard against rounding only: lifting W by 10⁻⁹ of a sample
+            let j = descend(&u, 1, 1e-9 * loads[i] * h);
+            start[i] = sign as i64 * j as i64;
+            placed[i] = r[0].p_max;
+        }
+    }
+    (start, placed)
 }
 
 /// The sliding body of the inertial model: mass (kg) and damping coefficient (kg/s).
@@ -312,6 +447,7 @@ fn from_samples(
         periodic: period.is_some(),
         slips: pt.jumps,
         window: pt.window,
+        transverse_offset: 0.0,
         tilt_pair_ratio: tilt.map(|t| t.ratio),
         mount_resonance: failed_fraction > 0.0 && tilt.is_some_and(|t| t.in_band()),
     }

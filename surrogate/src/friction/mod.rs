@@ -4,7 +4,9 @@
 //! For a scene (with its slider mount), a rotation θ, a pulling direction e (unit vector in the
 //! substrate plane, angle φ from the x axis) and a load W, [`estimate_friction`] solves the
 //! equilibrium ([`crate::solver::Model::Auto`]) at samples `s_k = k·h` of a straight path
-//! `shift = s·e` from the scene's placement. From the samples it builds the quasi-static
+//! `shift = y₀·e⊥ + s·e` parallel to the pull, from the scene's placement (y₀ = 0) or, where the
+//! slider drifts off a crest of the landscape across the pull, from the first minimum beside it
+//! (see "The start across the pull"). From the samples it builds the quasi-static
 //! (overdamped) estimate
 //!
 //! ```text
@@ -91,6 +93,17 @@
 //! the window spans whole stick-slip cycles. The step (≤ 0.05 µm) resolves the landscape, which
 //! varies on the 1.5–3 µm scale of the lattices (measured convergence: see the crate README).
 //!
+//! ## The start across the pull
+//! The DEM's pulling spring holds the slider across the pull with only K0 = 50 N/m. Where the
+//! placement is a crest of the landscape across the pull (square-tri near θ = 0: grooves 1.5 µm
+//! apart and 60–85 nm deep along the substrate rows) and the path is not a mirror line of the
+//! scene, the slider drifts into the groove while it slides (`dy/ds = F_⊥/C`, C the coating's
+//! Coulomb force) and the DEM slides, or fails and locks in, there. `transverse.rs` integrates
+//! that drift over the DEM's sliding distance, linearised about the crest, and starts the path at
+//! the first minimum of `V + ½K0y²` on the side it leaves to (`transverse_offset`; ±1.5 µm
+//! searched, `FrictionParams::transverse`). The placement's P_max still counts in `p_max_max`
+//! (the DEM's slide starts there).
+//!
 //! ## Reported alongside
 //! η, the barrier `U0 = max V − min V`, the largest lateral force, the mean and largest P_max
 //! along the path, `failed_fraction = ⟨Σ_{p0 > P_crit} F_z⟩/W` (the path-averaged fraction of
@@ -107,8 +120,9 @@
 //! N/m, or a locked or free mount) μ_est is within 0.96–1.46 of the DEM on the same runs (measured,
 //! `surrogate/README.md`, "The mount's resonance"). `FrictionEstimate::mount_resonance` flags the
 //! rows where μ_est is such an upper bound. Also
-//! thermal activation, the slider's freedom to drift sideways
-//! off the path (a 1-D model along e), the coupling of Coulomb friction and corrugation in the
+//! thermal activation, the slider's wandering across the pull along the path (only the drift off
+//! the placement's crest is modelled: the path is then straight again, and the DEM's slider
+//! wanders ±0.3–0.7 µm across it on tri-tri 21.8° and 26°), the coupling of Coulomb friction and corrugation in the
 //! jumps (the two terms are added), lock-in of commensurate interfaces under high load (the
 //! model always slides, with a large μ_PT), and the lateral compliance of the spheres in the
 //! contact geometry (contacts of the rigid slider only: the DEM closes some near-contacts at
@@ -120,6 +134,7 @@ mod params;
 mod path;
 mod resonance;
 mod tomlinson;
+mod transverse;
 
 pub use estimate::{estimate_friction, estimate_friction_loads, FrictionEstimate};
 pub use params::FrictionParams;

@@ -44,6 +44,11 @@ pub struct FrictionParams {
     /// Radius (m) of the DEM's control-layer spheres (one per slider sphere; their mass adds to
     /// the slider's). Study: 0.5 µm.
     pub control_sphere_radius: f64,
+    /// Half-width (m) of the line across the pull, through the placement, on which the path's
+    /// start settles sideways (`friction/transverse.rs`): the path starts at the first minimum of
+    /// `V + ½K0 y²` downhill from the placement within ±`transverse`. Default 1.5 µm (half the
+    /// study's 3 µm spacing); 0 keeps the path through the placement.
+    pub transverse: f64,
     /// Runs of the inertial model averaged into μ_est, started evenly along the path (its
     /// stick-slip is chaotic: one run scatters by ±20–30 %). Default 8.
     pub starts: usize,
@@ -66,6 +71,7 @@ impl Default for FrictionParams {
             window_start: 100e-6,
             tau: 1e-6,
             control_sphere_radius: 0.5e-6,
+            transverse: 1.5e-6,
             starts: 8,
         }
     }
@@ -149,6 +155,13 @@ impl FrictionParams {
             "friction.control_sphere_radius_um",
             self.control_sphere_radius,
         )?;
+        if !(self.transverse.is_finite() && self.transverse >= 0.0) {
+            return Err(SceneError::invalid(
+                "friction.transverse_um",
+                m_to_um(self.transverse),
+                "must be a non-negative length in µm (0: the path runs through the placement)",
+            ));
+        }
         if self.starts == 0 {
             return Err(SceneError::invalid(
                 "friction.starts",

@@ -41,6 +41,9 @@ pub(crate) struct Sample {
     pub v: f64,
     /// Quasi-static pulling force `F_pull = dV/ds = −Σ F_n n·e` (N).
     pub f_pull: f64,
+    /// Force of the contacts on the slider across the path, along e⊥ = e rotated by +90°:
+    /// `F_⊥ = Σ F_n n·e⊥ = −dV/dy` (N).
+    pub f_perp: f64,
     /// Coating friction force `Σ μ(p0_i) F_n,i |e − (e·n_i) n_i|` (N).
     pub coating: f64,
     /// Vertical load carried by failed contacts `Σ_{p0 > P_crit} F_z` (N).
@@ -55,14 +58,15 @@ pub(crate) struct Sample {
     pub k_lateral: f64,
 }
 
-/// Solves every sample `s` (m) of the path from the scene's placement along the unit direction
-/// `e` at rotation `theta` (rad) for each load of `loads` (N) with [`Model::Auto`]
+/// Solves every sample `s` (m) of the path from the scene's placement shifted by `origin` (m)
+/// along the unit direction `e` at rotation `theta` (rad) for each load of `loads` (N) with [`Model::Auto`]
 /// ([`Solver::solve_along_loads`]: one candidate search per `params.segment` of path and one
 /// pair list per sample serve every load; parallel, deterministic), and reduces each equilibrium
 /// to a [`Sample`]. Per load (in order): its samples, or its first failed solve.
 pub(crate) fn solve_samples(
     solver: &Solver,
     theta: f64,
+    origin: [f64; 2],
     e: [f64; 2],
     loads: &[f64],
     s: &[f64],
@@ -75,7 +79,7 @@ pub(crate) fn solve_samples(
     let sub = solver.substrate();
     let path = StraightPath {
         theta,
-        origin: [0.0, 0.0],
+        origin,
         e,
         s,
         segment: params.segment,
@@ -108,6 +112,7 @@ pub(crate) fn solve_samples(
                 };
                 smp.v += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
                 smp.f_pull -= c.force_n * en;
+                smp.f_perp += c.force_n * (n[1] * e[0] - n[0] * e[1]);
                 smp.coating += mu * c.force_n * (1.0 - en * en).max(0.0).sqrt();
                 if c.failed {
                     smp.failed_load += c.force_z;

@@ -1,0 +1,169 @@
+//! Where the path runs across the pull: the valley the DEM's slider drifts into sideways.
+//!
+//! The DEM pulls the control layer through an isotropic spring K0 (50 N/m), so across the pull
+//! only K0 holds the slider, against landscape curvatures of 10²–10³ N/m near commensurate
+//! orientations. The scene's placement is always a stationary point of the landscape across the
+//! pull (the slider and substrate are both symmetric under inversion about it), but it can be a
+//! ridge: square-tri at θ ≈ 0 has grooves 1.5 µm apart and 60–85 nm deep along the substrate rows,
+//! and the placement sits on a crest. Off a mirror line of the scene the path then pushes the
+//! slider sideways and it drifts into the groove: square-tri θ = 0.1°, α = 90.5°, 2.1 mN, DEM (design
+//! protocol): the control layer moves 0.85 µm across the pull within 12 µs of the slide, 45 nm
+//! lower, with 26 failed contacts (P_max 4.3 GPa), and locks in, where the straight path through
+//! the placement has 227 contacts and P_max 2.9 GPa. The static solver at the DEM's drifted pose
+//! gives 40 contacts, P_max 4.33 GPa and 26 failed contacts: the landscape is right, the path was
+//! not. On a mirror line (square-tri θ = 0, α = 90°) the transverse force is zero by symmetry
+//! and the DEM's slider stays on the crest.
+//!
+//! Where the coating has failed at the placement, the failed contacts (μ2) pin the slider and it
+//! does not drift: the DEM's slider stays within 1 pm across the pull on rough square-tri 0°/90°
+//! at 2.45 mN and on square-tri 10.2°/90° at 3.86 mN (19 failed spheres at the start), so those
+//! loads keep the path through the placement. Elsewhere [`leaves_crest`] decides where it runs. While the slider slides along e with its
+//! contacts slipping, a transverse force F turns the slip direction (Coulomb friction C opposes
+//! the velocity), so the slider drifts sideways at `dy/ds = F/C` per unit sliding distance. With
+//! the force on the straight path `F_⊥(s)` (at y = 0) and the curvature of the transverse
+//! profile at the placement,
+//!
+//! ```text
+//! U(y) = V(y·e⊥) + ½ K0 y²,   e⊥ = e rotated by +90°,   k_y = U''(0),
+//! dy/ds = (F_⊥(s) − k_y y) / C(s),   y(0) = 0,
+//! ```
+//!
+//! is integrated over the DEM's sliding distance (speed × slide time; exactly on each interval,
+//! the path repeated periodically), with F_⊥ and C sampled every 10th sample of the path and
+//! k_y from the samples at y = 0, ±h (h ≤ the path's step). If |y| reaches h, the slider has left
+//! the crest and the path runs through the first minimum of U downhill on that side ([`descend`]
+//! on `y_j = ±j·h`, `j·h ≤ transverse`); otherwise it runs through the placement. What it leaves
+//! out: F_⊥ and C are those of the straight path and k_y that of the placement (a linearisation
+//! about the crest, used only to decide whether and which way the slider leaves it; the DEM took
+//! the other side on 1 of 4 checked drifts, by the same distance), and along the path the slider
+//! is again kept on a straight line, so a valley that bends away from the pull is not followed
+//! (the DEM's slider wanders ±0.3–0.7 µm across the pull on tri-tri 21.8° and 26°). Cost: a tenth
+//! of the path plus 3 equilibria per (θ, direction), none more on mirror lines (no transverse
+//! force), and where a load leaves the crest `transverse/h` more and the path solved from the
+//! new start instead.
+
+/// Index of the first local minimum of `u` reached by steepest descent from `start`: move to the
+/// lower neighbour while it is lower by more than `tol` (a tie between the neighbours goes to
+/// the higher index); stops at either end of `u`. O(len(u)).
+pub(crate) fn descend(u: &[f64], start: usize, tol: f64) -> usize {
+    let mut j = start.min(u.len().saturating_sub(1));
+    loop {
+        let left = if j > 0 { u[j - 1] } else { f64::INFINITY };
+        let right = u.get(j + 1).copied().unwrap_or(f64::INFINITY);
+        let (lower, next) = if right <= left {
+            (right, j + 1)
+        } else {
+            (left, j - 1)
+        };
+        if lower < u[j] - tol {
+            j = next;
+        } else {
+            return j;
+        }
+    }
+}
+
+/// Whether the slider leaves the crest it is placed on while it slides ([module
+/// documentation](self)), and to which side: `Some(±1.0)` when the drift `y` along the path
+/// reaches `h`, else `None`.
+///
+/// `k_y`: U''(0) (N/m); `s`: positions (m, ascending from 0) of the samples of `F_⊥` and `C`
+/// (N) along the straight path, whose last interval closes a period (the path repeats from
+/// the first sample); `distance` (m): how far the slider slides; forces within `tol_f` (N) of
+/// zero count as zero (rounding). Exact on each interval for F and C constant there.
+/// O(distance / sample spacing).
+pub(crate) fn leaves_crest(
+    k_y: f64,
+    s: &[f64],
+    f_perp: &[f64],
+    coat: &[f64],
+    distance: f64,
+    h: f64,
+    tol_f: f64,
+) -> Option<f64> {
+    if s.len() < 2 || f_perp.iter().all(|f| f.abs() <= tol_f) {
+        return None;
+    }
+    let n = s.len() - 1;
+    let (mut y, mut run) = (0.0f64, 0.0f64);
+    let mut k = 0usize;
+    while run < distance {
+        let i = k % n;
+        let ds = s[i + 1] - s[i];
+        let (f, c) = (f_perp[i], coat[i]);
+        if c <= 0.0 {
+            // nothing holds it: it goes with the force
+            if f.abs() > tol_f {
+                y = f.signum() * h;
+            }
+        } else {
+            let a = (-k_y / c).clamp(-50.0 / ds, 50.0 / ds);
+            let g = if (a * ds).abs() < 1e-9 {
+                ds
+            } else {
+                (a * ds).exp_m1() / a
+            };
+            y = y * (a * ds).exp() + f / c * g;
+        }
+        if y.abs() >= h {
+            return Some(y.signum());
+        }
+        run += ds;
+        k += 1;
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{descend, leaves_crest};
+
+    #[test]
+    fn a_crest_is_left_only_when_the_path_pushes_off_it() {
+        // a crest of U'' = −440 N/m, C = 0.01 × 2 mN, samples every 0.5 µm of a 3 µm period
+        let s: Vec<f64> = (0..=6).map(|k| k as f64 * 0.5e-6).collect();
+        let (h, k_y, coat) = (0.05e-6, -440.0, vec![2e-5; 7]);
+        // on a mirror line: no transverse force, the slider stays on the crest
+        assert_eq!(
+            leaves_crest(k_y, &s, &[0.0; 7], &coat, 30e-6, h, 1e-12),
+            None
+        );
+        // a push of 10⁻⁹ N to −e⊥ grows at 440/2e-5 = 22/µm: off to −e⊥
+        let mut f = vec![0.0; 7];
+        f[1] = -1e-9;
+        assert_eq!(
+            leaves_crest(k_y, &s, &f, &coat, 30e-6, h, 1e-12),
+            Some(-1.0)
+        );
+        // the same push in a groove (U'' > 0): it stays
+        assert_eq!(leaves_crest(440.0, &s, &f, &coat, 30e-6, h, 1e-12), None);
+        // a push below the rounding tolerance counts as none
+        assert_eq!(leaves_crest(k_y, &s, &f, &coat, 30e-6, h, 1e-8), None);
+        // held by a large Coulomb force over a short slide, it does not get off in time
+        assert_eq!(leaves_crest(k_y, &s, &f, &[1.0; 7], 1e-6, h, 1e-12), None);
+        // nothing holds it: it goes with the force at once
+        assert_eq!(
+            leaves_crest(k_y, &s, &f, &[0.0; 7], 30e-6, h, 1e-12),
+            Some(-1.0)
+        );
+    }
+
+    #[test]
+    fn descent_stops_in_the_first_valley_downhill() {
+        // a ridge at index 3 between valleys at 1 and 6 (6 the deeper): from the ridge's
+        // left flank it goes left, not to the deeper valley
+        let u = [3.0, 1.0, 2.0, 4.0, 3.0, 2.0, 0.0, 5.0];
+        assert_eq!(descend(&u, 2, 0.0), 1);
+        assert_eq!(descend(&u, 4, 0.0), 6);
+        // a stable start stays
+        assert_eq!(descend(&u, 1, 0.0), 1);
+        // an exact tie on a symmetric ridge goes up the index
+        let sym = [1.0, 2.0, 3.0, 2.0, 1.0];
+        assert_eq!(descend(&sym, 2, 0.0), 4);
+        // drops within the tolerance do not move it
+        assert_eq!(descend(&[1.0, 0.9, 1.0], 0, 0.2), 0);
+        // a monotone profile ends at its lower end
+        assert_eq!(descend(&[5.0, 4.0, 3.0], 0, 0.0), 2);
+        assert_eq!(descend(&[7.0], 0, 0.0), 0);
+    }
+}
