@@ -222,6 +222,8 @@ fn bad_input_names_the_flag() {
     check(&["--step-um", "0"], "--step-um");
     check(&["--transient-um", "20"], "--transient-um");
     check(&["--alpha", "7", "--length-um", "40"], "friction.length_um");
+    check(&["--transverse-um", "-1"], "--transverse-um");
+    check(&["--transverse-um", "20"], "friction.transverse_um");
     check(&["--shard", "3/3"], "--shard");
     assert!(!Path::new(out).exists());
     std::fs::remove_dir_all(&d).ok();

@@ -99,7 +99,8 @@ pub struct FrictionEstimate {
 ///
 /// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
 /// direction (`theta_deg`, `alpha_deg`), a path that takes the slider off the substrate
-/// (`friction.length_um`), a failed solve.
+/// (`friction.length_um`; `friction.transverse_um` where only the search across the pull does), a
+/// failed solve.
 pub fn estimate_friction(
     solver: &Solver,
     theta: f64,
@@ -175,15 +176,21 @@ pub fn estimate_friction_loads(
     } else {
         (0.0, 0, 0.0)
     };
-    let reach = [side * e_perp[0].abs(), side * e_perp[1].abs()];
-    check_slider_stays_on_substrate(
-        scene,
-        [
-            [end[0].min(0.0) - reach[0], end[1].min(0.0) - reach[1]],
-            [end[0].max(0.0) + reach[0], end[1].max(0.0) + reach[1]],
-        ],
-        "friction.length_um",
-    )?;
+    // the path, then the path with the search across the pull
+    for (r, field) in [
+        (0.0, "friction.length_um"),
+        (side, "friction.transverse_um"),
+    ] {
+        let reach = [r * e_perp[0].abs(), r * e_perp[1].abs()];
+        check_slider_stays_on_substrate(
+            scene,
+            [
+                [end[0].min(0.0) - reach[0], end[1].min(0.0) - reach[1]],
+                [end[0].max(0.0) + reach[0], end[1].max(0.0) + reach[1]],
+            ],
+            field,
+        )?;
+    }
 
     let valid: Vec<f64> = loads
         .iter()

@@ -23,6 +23,7 @@ pub use params::MapParams;
 
 use crate::error::SceneError;
 use crate::scene::Scene;
+use crate::units::m_to_um;
 
 /// Checks that the slider disc (radius + one sphere radius), with its centre moved anywhere in the
 /// rectangle spanned by `extent` (min/max shift `[[x_lo, y_lo], [x_hi, y_hi]]`, m) around the
@@ -41,20 +42,28 @@ pub fn check_slider_stays_on_substrate(
     let y_lo = o[1] + extent[0][1] - r;
     let y_hi = o[1] + extent[1][1] + r;
     if x_lo < -0.5 * lx || x_hi > 0.5 * lx || y_lo < -0.5 * ly || y_hi > 0.5 * ly {
+        let um = m_to_um;
+        // lengths as given (to 0.1 nm), not with the binary rounding of the µm → m conversion
+        let given = |v: f64| (um(v) * 1e4).round() / 1e4;
+        let remedy = if field.ends_with("transverse_um") {
+            "a narrower search across the pull"
+        } else {
+            "a shorter path"
+        };
         return Err(SceneError::invalid(
             field,
             format!(
                 "slider x {:.2}..{:.2} µm, y {:.2}..{:.2} µm",
-                x_lo * 1e6,
-                x_hi * 1e6,
-                y_lo * 1e6,
-                y_hi * 1e6
+                um(x_lo),
+                um(x_hi),
+                um(y_lo),
+                um(y_hi)
             ),
             &format!(
-                "the slider (radius {} µm) leaves the {}x{} µm substrate; use a smaller slider, a larger substrate or a shorter path",
-                scene.slider.radius * 1e6,
-                lx * 1e6,
-                ly * 1e6
+                "the slider (radius {} µm) leaves the {}x{} µm substrate; use a smaller slider, a larger substrate or {remedy}",
+                given(scene.slider.radius),
+                given(lx),
+                given(ly)
             ),
         ));
     }
