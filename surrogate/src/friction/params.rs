@@ -44,9 +44,9 @@ pub struct FrictionParams {
     /// Radius (m) of the DEM's control-layer spheres (one per slider sphere; their mass adds to
     /// the slider's). Study: 0.5 µm.
     pub control_sphere_radius: f64,
-    /// Half-width (m) of the line across the pull, through the placement, on which the path's
-    /// start settles sideways (`friction/transverse.rs`): the path starts at the first minimum of
-    /// `V + ½K0 y²` downhill from the placement within ±`transverse`. Default 1.5 µm (half the
+    /// Half-width (m) of the search across the pull (`friction/transverse.rs`): where the slider
+    /// drifts off the placement's crest while it slides, the path starts at the first minimum of
+    /// `V + ½K0 y²` on that side within `transverse` of the placement. Default 1.5 µm (half the
     /// study's 3 µm spacing); 0 keeps the path through the placement.
     pub transverse: f64,
     /// Runs of the inertial model averaged into μ_est, started evenly along the path (its

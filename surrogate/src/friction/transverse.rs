@@ -17,9 +17,12 @@
 //! Where the coating has failed at the placement, the failed contacts (μ2) pin the slider and it
 //! does not drift: the DEM's slider stays within 1 pm across the pull on rough square-tri 0°/90°
 //! at 2.45 mN and on square-tri 10.2°/90° at 3.86 mN (19 failed spheres at the start), so those
-//! loads keep the path through the placement. Elsewhere [`leaves_crest`] decides where it runs. While the slider slides along e with its
-//! contacts slipping, a transverse force F turns the slip direction (Coulomb friction C opposes
-//! the velocity), so the slider drifts sideways at `dy/ds = F/C` per unit sliding distance. With
+//! loads keep the path through the placement.
+//!
+//! Elsewhere [`leaves_crest`] decides where the path runs. While the slider slides along e with
+//! its contacts slipping, a transverse force F turns the slip direction (Coulomb friction C
+//! opposes the velocity), so the slider drifts sideways at `dy/ds = F/C` per unit sliding
+//! distance. With
 //! the force on the straight path `F_⊥(s)` (at y = 0) and the curvature of the transverse
 //! profile at the placement,
 //!
@@ -38,9 +41,9 @@
 //! the other side on 1 of 4 checked drifts, by the same distance), and along the path the slider
 //! is again kept on a straight line, so a valley that bends away from the pull is not followed
 //! (the DEM's slider wanders ±0.3–0.7 µm across the pull on tri-tri 21.8° and 26°). Cost: a tenth
-//! of the path plus 3 equilibria per (θ, direction), none more on mirror lines (no transverse
-//! force), and where a load leaves the crest `transverse/h` more and the path solved from the
-//! new start instead.
+//! of the path's equilibria per (θ, direction); where that shows a transverse force (never on a
+//! mirror line), 3 more for k_y; and where a load leaves the crest, `transverse/h` more for the
+//! line on that side, with the path then solved from the new start instead of the placement.
 
 /// Index of the first local minimum of `u` reached by steepest descent from `start`: move to the
 /// lower neighbour while it is lower by more than `tol` (a tie between the neighbours goes to
