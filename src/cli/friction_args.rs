@@ -51,10 +51,12 @@ pub struct FrictionKnobArgs {
         allow_hyphen_values = true
     )]
     pub k0_n_m: f64,
-    /// Friction estimate: half-width in µm of the line across the pull, through the placement,
-    /// on which the path's start settles sideways: the slider released there rolls downhill
-    /// (V + ½K0y²) to the first minimum, as the DEM's slider does (only K0 holds it across the
-    /// pull), and the path runs from there. 0 keeps the path through the placement.
+    /// Friction estimate: how far in µm across the pull the path's start is searched. Only K0
+    /// holds the DEM's slider across the pull, so where the placement is a crest of the
+    /// landscape and the pull pushes the slider off it (not on a mirror line of the scene, not
+    /// where the coating has failed at the placement), it drifts into the groove beside it; the
+    /// path then starts at the first minimum of V + ½K0y² on that side (column
+    /// transverse_offset_um). 0 keeps the path through the placement.
     #[arg(
         long = "transverse-um",
         value_name = "UM",
