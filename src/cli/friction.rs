@@ -49,7 +49,7 @@ pub struct Args {
     /// to the stuck contact pairs' lateral mode, tilt_pair_ratio in 0.6–1.15; the study's mount
     /// is at 0.89) may have mu_est as an upper bound: on flat tri-tri 30° at 2.45–3.86 mN the DEM's
     /// friction measured 2.1–2.8× lower; on the 2 flagged rough-substrate runs it was not (0.95,
-    /// 1.03); mu_est/mu_DEM 0.96–1.46 off the resonance; surrogate/README.md, "The mount's
+    /// 1.04); mu_est/mu_DEM 0.96–1.46 off the resonance; surrogate/README.md, "The mount's
     /// resonance").
     #[arg(long, value_name = "FILE.csv")]
     out: Option<PathBuf>,

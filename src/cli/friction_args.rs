@@ -55,7 +55,7 @@ pub struct FrictionKnobArgs {
     /// holds the DEM's slider across the pull, so where the placement is a crest of the
     /// landscape and the pull pushes the slider off it (not on a mirror line of the scene, not
     /// where the coating has failed at the placement), it drifts into the groove beside it; the
-    /// path then starts at the first minimum of V + ½K0y² on that side (column
+    /// path then starts at the lowest V + ½K0y² on that side (column
     /// transverse_offset_um). 0 keeps the path through the placement.
     #[arg(
         long = "transverse-um",

@@ -4,7 +4,7 @@ use super::inertial::{self, Inertial};
 use super::path::{lattice_period, solve_samples, Sample};
 use super::resonance::TiltResonance;
 use super::tomlinson::{self, Profile};
-use super::transverse::{descend, leaves_crest};
+use super::transverse::{deepest, leaves_crest};
 use super::FrictionParams;
 use crate::error::SceneError;
 use crate::map::check_slider_stays_on_substrate;
@@ -86,7 +86,7 @@ pub struct FrictionEstimate {
 /// (N), from the quasi-static path ([`crate::friction`] documents the formula).
 ///
 /// The path runs parallel to the pull from the scene's placement or, where the slider drifts
-/// off a crest of the landscape across the pull, from the first minimum beside it
+/// off a crest of the landscape across the pull, from the deepest groove beside it
 /// (`friction/transverse.rs`); its samples are solved with [`crate::solver::Model::Auto`] (so
 /// the slider obeys the scene's mount), in parallel (rayon, one candidate search per
 /// `params.segment` of path), deterministically.
@@ -303,7 +303,7 @@ fn transverse_starts(
         let distance = params.speed * params.slide_time;
         side[i] = leaves_crest(k_y, &coarse, &f, &c, distance, h, tol_f(w));
     }
-    // the line on each side that a load leaves to: the first minimum of U downhill
+    // the line on each side that a load leaves to: the lowest U on it
     for sign in [-1.0f64, 1.0] {
         let which: Vec<usize> = (0..loads.len())
             .filter(|&i| side[i] == Some(sign))
@@ -322,8 +322,7 @@ fn transverse_starts(
                 .zip(&y)
                 .map(|(x, &yj)| x.v + 0.5 * params.k0 * yj * yj)
                 .collect();
-            // a guard against rounding only: lifting W by 10⁻⁹ of a sample
-            let j = descend(&u, 1, 1e-9 * loads[i] * h);
+            let j = deepest(&u);
             start[i] = sign as i64 * j as i64;
             placed[i] = r[0].p_max;
         }

@@ -5,7 +5,7 @@
 //! substrate plane, angle φ from the x axis) and a load W, [`estimate_friction`] solves the
 //! equilibrium ([`crate::solver::Model::Auto`]) at samples `s_k = k·h` of a straight path
 //! `shift = y₀·e⊥ + s·e` parallel to the pull, from the scene's placement (y₀ = 0) or, where the
-//! slider drifts off a crest of the landscape across the pull, from the first minimum beside it
+//! slider drifts off a crest of the landscape across the pull, from the deepest groove beside it
 //! (see "The start across the pull"). From the samples it builds the quasi-static
 //! (overdamped) estimate
 //!
@@ -100,7 +100,7 @@
 //! scene, the slider drifts into the groove while it slides (`dy/ds = F_⊥/C`, C the coating's
 //! Coulomb force) and the DEM slides, or fails and locks in, there. `transverse.rs` integrates
 //! that drift over the DEM's sliding distance, linearised about the crest, and starts the path at
-//! the first minimum of `V + ½K0y²` on the side it leaves to (`transverse_offset`; ±1.5 µm
+//! the lowest `V + ½K0y²` on the side it leaves to (`transverse_offset`; ±1.5 µm
 //! searched, `FrictionParams::transverse`). The placement's P_max still counts in `p_max_max`
 //! (the DEM's slide starts there).
 //!

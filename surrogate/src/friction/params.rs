@@ -45,7 +45,7 @@ pub struct FrictionParams {
     /// the slider's). Study: 0.5 µm.
     pub control_sphere_radius: f64,
     /// Half-width (m) of the search across the pull (`friction/transverse.rs`): where the slider
-    /// drifts off the placement's crest while it slides, the path starts at the first minimum of
+    /// drifts off the placement's crest while it slides, the path starts at the lowest
     /// `V + ½K0 y²` on that side within `transverse` of the placement. Default 1.5 µm (half the
     /// study's 3 µm spacing); 0 keeps the path through the placement.
     pub transverse: f64,
