@@ -382,9 +382,8 @@ pub struct FrictionRow {
     pub periodic: Option<bool>,
     /// Stick-slip jumps in the Prandtl–Tomlinson measuring window.
     pub slips: Option<usize>,
-    /// Start of the path across the pull (µm, along the pull direction rotated by +90°): where
-    /// the slider released at the placement settles sideways (0: the placement is a transverse
-    /// minimum).
+    /// Start of the path across the pull (µm, along the pull direction rotated by +90°): the
+    /// groove the slider drifts into off the placement's crest while it slides (0: it stays).
     pub transverse_offset_um: Option<f64>,
     /// ω_t/ω_p: the spring mount's tilt frequency over the lateral frequency of a stuck
     /// slider–substrate pair (`surrogate::friction::TiltResonance`); empty without springs.

@@ -68,9 +68,10 @@ pub struct FrictionEstimate {
     pub slips: usize,
     /// Length (m) of that window.
     pub window: f64,
-    /// Start of the path across the pull (m, along e⊥ = e rotated by +90°): where the slider
-    /// released at the placement settles sideways (`friction/transverse.rs`); 0 when the
-    /// placement is a transverse minimum or `FrictionParams::transverse` is 0.
+    /// Start of the path across the pull (m, along e⊥ = e rotated by +90°): the groove the
+    /// slider drifts into off the placement's crest while it slides (`friction/transverse.rs`);
+    /// 0 where it stays (no transverse force, a stable placement, a coating already failed
+    /// there, or `FrictionParams::transverse` = 0).
     pub transverse_offset: f64,
     /// `ω_t/ω_p` of the spring mount ([`TiltResonance`]); `None` without springs.
     pub tilt_pair_ratio: Option<f64>,
@@ -91,11 +92,12 @@ pub struct FrictionEstimate {
 /// the slider obeys the scene's mount), in parallel (rayon, one candidate search per
 /// `params.segment` of path), deterministically.
 /// Cost: `length/step + 1` equilibria (≈ 61–241 with the defaults; ≈ 0.3–0.5 ms each for the
-/// study's 3505-sphere slider), a tenth of that plus 3 for the drift check (none more on a mirror
-/// line of the scene), and where the slider drifts `transverse/step` more; plus O(samples) for
-/// the Prandtl–Tomlinson model and, where η > 1, `params.starts` runs of the inertial model
-/// (≈ 1.5 ms each, in parallel). Measured 18–76 ms per (θ, α, W) (`cargo bench --bench friction`). Several loads of one (θ,
-/// direction): [`estimate_friction_loads`] (same results, cheaper).
+/// study's 3505-sphere slider), a tenth of that for the drift check (3 more where it shows a
+/// transverse force, never on a mirror line of the scene, and `transverse/step` more where the
+/// slider drifts); plus O(samples) for the Prandtl–Tomlinson model and, where η > 1,
+/// `params.starts` runs of the inertial model (≈ 1.5 ms each, in parallel). Measured 24–73 ms
+/// per (θ, α, W) (`cargo bench --bench friction`). Several loads of one (θ, direction):
+/// [`estimate_friction_loads`] (same results, cheaper).
 ///
 /// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
 /// direction (`theta_deg`, `alpha_deg`), a path that takes the slider off the substrate

@@ -32,7 +32,7 @@ pub struct FrictionParams {
     /// Length (m) of path that shares one candidate-pair search (a speed knob; results are
     /// identical for any value > 0). Default 0.5 µm.
     pub segment: f64,
-    /// Support speed (m/s) of the inertial model ([`super::inertial`]), as in the DEM. Study: 0.1.
+    /// Support speed (m/s) of the inertial model (`friction/inertial.rs`), as in the DEM. Study: 0.1.
     pub speed: f64,
     /// Sliding time (s) of the inertial model, as in the DEM protocol. Study: 300 µs.
     pub slide_time: f64,

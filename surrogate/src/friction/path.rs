@@ -59,8 +59,8 @@ pub(crate) struct Sample {
 }
 
 /// Solves every sample `s` (m) of the path from the scene's placement shifted by `origin` (m)
-/// along the unit direction `e` at rotation `theta` (rad) for each load of `loads` (N) with [`Model::Auto`]
-/// ([`Solver::solve_along_loads`]: one candidate search per `params.segment` of path and one
+/// along the unit direction `e` at rotation `theta` (rad) for each load of `loads` (N) with
+/// [`Model::Auto`] ([`Solver::solve_along_loads`]: one candidate search per `params.segment` of path and one
 /// pair list per sample serve every load; parallel, deterministic), and reduces each equilibrium
 /// to a [`Sample`]. Per load (in order): its samples, or its first failed solve.
 pub(crate) fn solve_samples(

@@ -22,9 +22,8 @@
 //! Elsewhere [`leaves_crest`] decides where the path runs. While the slider slides along e with
 //! its contacts slipping, a transverse force F turns the slip direction (Coulomb friction C
 //! opposes the velocity), so the slider drifts sideways at `dy/ds = F/C` per unit sliding
-//! distance. With
-//! the force on the straight path `F_⊥(s)` (at y = 0) and the curvature of the transverse
-//! profile at the placement,
+//! distance. With the force on the straight path `F_⊥(s)` (at y = 0) and the curvature of the
+//! transverse profile at the placement,
 //!
 //! ```text
 //! U(y) = V(y·e⊥) + ½ K0 y²,   e⊥ = e rotated by +90°,   k_y = U''(0),
@@ -40,11 +39,12 @@
 //! is underdamped (damping ratio ≈ 0.03) and runs past dips shallower than its start. On
 //! square-tri 0.2°/91.5° at 1.75 mN a dip 0.1 µm off the crest keeps the coating intact, while
 //! the DEM's slider goes on into the groove at 0.75 µm and fails there (max P_max 5.4 GPa); the
-//! lowest U is that groove. What it leaves out: F_⊥ and C are those of the straight path and k_y that of the placement (a linearisation
-//! about the crest, used only to decide whether and which way the slider leaves it; the DEM took
-//! the other side on 1 of 4 checked drifts, by the same distance), and along the path the slider
-//! is again kept on a straight line, so a valley that bends away from the pull is not followed
-//! (the DEM's slider wanders ±0.3–0.7 µm across the pull on tri-tri 21.8° and 26°). Cost: a tenth
+//! lowest U is that groove. What it leaves out: F_⊥ and C are those of the straight path and k_y
+//! that of the placement (a linearisation about the crest, used only to decide whether and which
+//! way the slider leaves it; the DEM took the other side on 1 of 4 checked drifts, by the same
+//! distance), and along the path the slider is again kept on a straight line, so a valley that
+//! bends away from the pull is not followed (the DEM's slider wanders ±0.3–0.7 µm across the pull
+//! on tri-tri 21.8° and 26°). Cost: a tenth
 //! of the path's equilibria per (θ, direction); where that shows a transverse force (never on a
 //! mirror line), 3 more for k_y; and where a load leaves the crest, `transverse/h` more for the
 //! line on that side, with the path then solved from the new start instead of the placement.
