@@ -4,7 +4,7 @@ use super::inertial::{self, Inertial};
 use super::path::{lattice_period, solve_samples, Sample};
 use super::resonance::TiltResonance;
 use super::tomlinson::{self, Profile};
-use super::transverse::{deepest, leaves_crest};
+use super::transverse::{leaves_crest, lowest};
 use super::FrictionParams;
 use crate::error::SceneError;
 use crate::map::check_slider_stays_on_substrate;
@@ -87,7 +87,7 @@ pub struct FrictionEstimate {
 /// (N), from the quasi-static path ([`crate::friction`] documents the formula).
 ///
 /// The path runs parallel to the pull from the scene's placement or, where the slider drifts
-/// off a crest of the landscape across the pull, from the deepest groove beside it
+/// off a crest of the landscape across the pull, from the lowest groove beside it
 /// (`friction/transverse.rs`); its samples are solved with [`crate::solver::Model::Auto`] (so
 /// the slider obeys the scene's mount), in parallel (rayon, one candidate search per
 /// `params.segment` of path), deterministically.
@@ -95,9 +95,9 @@ pub struct FrictionEstimate {
 /// study's 3505-sphere slider), a tenth of that for the drift check (3 more where it shows a
 /// transverse force, never on a mirror line of the scene, and `transverse/step` more where the
 /// slider drifts); plus O(samples) for the Prandtl–Tomlinson model and, where η > 1,
-/// `params.starts` runs of the inertial model (≈ 1.5 ms each, in parallel). Measured 24–73 ms
-/// per (θ, α, W) (`cargo bench --bench friction`). Several loads of one (θ, direction):
-/// [`estimate_friction_loads`] (same results, cheaper).
+/// `params.starts` runs of the inertial model (≈ 1.5 ms each, in parallel). Measured 17–58 ms
+/// per (θ, α, W) (`cargo bench --bench friction`; 24–73 ms on a busier machine). Several loads
+/// of one (θ, direction): [`estimate_friction_loads`] (same results, cheaper).
 ///
 /// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
 /// direction (`theta_deg`, `alpha_deg`), a path that takes the slider off the substrate
@@ -324,7 +324,7 @@ fn transverse_starts(
                 .zip(&y)
                 .map(|(x, &yj)| x.v + 0.5 * params.k0 * yj * yj)
                 .collect();
-            let j = deepest(&u);
+            let j = lowest(&u);
             start[i] = sign as i64 * j as i64;
             placed[i] = r[0].p_max;
         }

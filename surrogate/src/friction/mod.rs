@@ -5,7 +5,7 @@
 //! substrate plane, angle φ from the x axis) and a load W, [`estimate_friction`] solves the
 //! equilibrium ([`crate::solver::Model::Auto`]) at samples `s_k = k·h` of a straight path
 //! `shift = y₀·e⊥ + s·e` parallel to the pull, from the scene's placement (y₀ = 0) or, where the
-//! slider drifts off a crest of the landscape across the pull, from the deepest groove beside it
+//! slider drifts off a crest of the landscape across the pull, from the lowest groove beside it
 //! (see "The start across the pull"). From the samples it builds the quasi-static
 //! (overdamped) estimate
 //!
