@@ -282,8 +282,8 @@ fn mount_resonance_flags_failed_rows_on_the_study_mount() {
 /// the substrate rows. Pulled along the rows' normal off the scene's mirror line (θ = 0.1°,
 /// α = 90.5°) the slider drifts off the crest (the DEM: 0.85 µm sideways, 26 failed contacts,
 /// locked in at 2.1 mN), so the estimate's path runs in the groove, where the coating fails at
-/// 0.7 and 2.1 mN and holds at 0.35 mN, as in the DEM. On the mirror line (θ = 0, α = 90°) there is no
-/// transverse force and the path stays on the crest, as the DEM's slider does; with
+/// 0.7 and 2.1 mN and holds at 0.35 mN, as in the DEM. On the mirror line (θ = 0, α = 90°)
+/// there is no transverse force and the path stays on the crest, as the DEM's slider does; with
 /// `--transverse-um 0` the path runs through the placement (the coating intact at 2.1 mN).
 #[test]
 fn a_slider_released_on_a_crest_drifts_into_the_groove() {
