@@ -519,7 +519,7 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         );
         let _ = writeln!(
             m,
-            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider on the static path (the slider's centre of mass moves along it with the DEM's mass and damping, but neither vertically nor in tilt: where contacts fail and the springs mount's tilt mode is tuned to the stuck contact pairs' lateral mode, column `mount_resonance` of `friction_<p>.csv`, μ_est may be an upper bound: up to 2.8× μ_DEM measured, 0.96–1.46× off the resonance), no lock-in; a quasi-periodic path covers {path} µm where the study's DEM slides {slid} µm, so a failing region further along is missed (README, \"Path length, a known limit\": `--length-um {slid}` sees it, at about twice the cost).\n"
+            "\nVerdicts agree on {agree} of {judged} runs with a result. Known limits of the estimate (README, \"superlube friction\"): rigid slider on the static path (the slider's centre of mass moves along it with the DEM's mass and damping, but neither vertically nor in tilt: where contacts fail and the springs mount's tilt mode is tuned to the stuck contact pairs' lateral mode, column `mount_resonance` of `friction_<p>.csv`, μ_est may be an upper bound: up to 2.8× μ_DEM measured, 0.96–1.46× off the resonance), no lock-in; a quasi-periodic path covers {path} µm where the study's DEM slides {slid} µm, so a failing region further along can be missed (README, \"Path length, a known limit\").\n"
         );
     }
     // 3. Ranking
