@@ -178,11 +178,12 @@ pub fn estimate_friction_loads(
     } else {
         (0.0, 0, 0.0)
     };
-    // the path, then the path with the search across the pull
-    for (r, field) in [
+    // the path, then (where there is one) the path with the search across the pull
+    let reaches = [
         (0.0, "friction.length_um"),
         (side, "friction.transverse_um"),
-    ] {
+    ];
+    for &(r, field) in &reaches[..if side > 0.0 { 2 } else { 1 }] {
         let reach = [r * e_perp[0].abs(), r * e_perp[1].abs()];
         check_slider_stays_on_substrate(
             scene,
@@ -289,6 +290,7 @@ fn transverse_starts(
         &[0.0, h, 2.0 * h],
         params,
     );
+    let distance = params.speed * params.slide_time;
     let mut side = vec![None; loads.len()];
     for (i, (&w, (path, st))) in loads.iter().zip(along.iter().zip(&stencil)).enumerate() {
         let (Ok(path), Ok(st)) = (path, st) else {
@@ -302,10 +304,10 @@ fn transverse_starts(
         let k_y = (st[0].v - 2.0 * st[1].v + st[2].v) / (h * h) + params.k0;
         let f: Vec<f64> = path.iter().map(|x| x.f_perp).collect();
         let c: Vec<f64> = path.iter().map(|x| x.coating).collect();
-        let distance = params.speed * params.slide_time;
         side[i] = leaves_crest(k_y, &coarse, &f, &c, distance, h, tol_f(w));
     }
     // the line on each side that a load leaves to: the lowest U on it
+    let y: Vec<f64> = (0..=m).map(|j| j as f64 * h).collect();
     for sign in [-1.0f64, 1.0] {
         let which: Vec<usize> = (0..loads.len())
             .filter(|&i| side[i] == Some(sign))
@@ -314,7 +316,6 @@ fn transverse_starts(
             continue;
         }
         let w_side: Vec<f64> = which.iter().map(|&i| loads[i]).collect();
-        let y: Vec<f64> = (0..=m).map(|j| j as f64 * h).collect();
         let dir = [sign * e_perp[0], sign * e_perp[1]];
         let line = solve_samples(solver, theta, [0.0, 0.0], dir, &w_side, &y, params);
         for (&i, r) in which.iter().zip(line) {
