@@ -41,7 +41,7 @@ fn equilibrate_writes_series_and_summary_matching_the_surrogate() {
     let text = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(
         text.lines().next().unwrap(),
-        "t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts"
+        "t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts,p_max_peak_GPa"
     );
     let j = json(&js);
     for k in [

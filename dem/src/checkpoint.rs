@@ -146,11 +146,12 @@ impl Bin for Sample {
             self.failed_contacts as f64,
             self.slider_x_um,
             self.contact_fz_mn,
+            self.p_max_peak_gpa,
         ]
         .put(w);
     }
     fn get(r: &mut &[u8]) -> Option<Self> {
-        let a = <[f64; 9]>::get(r)?;
+        let a = <[f64; 10]>::get(r)?;
         Some(Sample {
             t_us: a[0],
             support_x_um: a[1],
@@ -161,6 +162,7 @@ impl Bin for Sample {
             failed_contacts: a[6] as usize,
             slider_x_um: a[7],
             contact_fz_mn: a[8],
+            p_max_peak_gpa: a[9],
         })
     }
 }
@@ -187,7 +189,7 @@ fn flatten(prefix: &str, v: &serde_json::Value, out: &mut Vec<(String, String)>)
 /// (the friction law: the coating's or a constant `--mu`). Floats in shortest round-trip form.
 pub fn header_fields(sim: &Sim) -> Vec<(String, String)> {
     let mut h = vec![
-        ("format".to_string(), "2".to_string()),
+        ("format".to_string(), "3".to_string()),
         (
             "layout.substrate_spheres".into(),
             sim.n_substrate().to_string(),
@@ -299,6 +301,7 @@ pub fn save(path: &Path, sim: &Sim, samples: &[Sample]) -> Result<(), DemError> 
     s.stats.put(&mut w);
     s.xyz_bytes.put(&mut w);
     s.xyz_frames.put(&mut w);
+    s.p0_peak.put(&mut w);
     samples.to_vec().put(&mut w);
     let mut file = Vec::with_capacity(w.len() + 12);
     file.extend_from_slice(MAGIC);
@@ -426,6 +429,7 @@ pub fn load(path: &Path, sim: &mut Sim) -> Result<Vec<Sample>, DemError> {
         s.stats = Bin::get(&mut r)?;
         s.xyz_bytes = Bin::get(&mut r)?;
         s.xyz_frames = Bin::get(&mut r)?;
+        s.p0_peak = Bin::get(&mut r)?;
         Bin::get(&mut r)
     };
     let samples = g().ok_or_else(bad)?;

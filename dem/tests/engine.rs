@@ -296,6 +296,63 @@ fn checkpoint_and_resume_are_bit_identical() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// `p_max_peak_GPa` of a sample is the largest p0 at any step since the previous sample: a run
+/// sampled every 10 steps reports, at each sample, exactly the maximum of the per-step P_max of
+/// the same run sampled every step (sampling does not change the trajectory), and somewhere more
+/// than its own instantaneous P_max (so the column is not the instantaneous value); the slide
+/// summary's `max_p_max_GPa` is the largest of them.
+#[test]
+fn the_peak_pressure_of_a_sample_is_the_largest_at_any_step_since_the_last() {
+    let scene = small("tri-tri", 6.0, 21.8);
+    let p = slide_params(&scene);
+    let sampled_every = |k: f64| {
+        let mut sim = prepare(&scene, p.clone(), Start::Surrogate, None)
+            .unwrap()
+            .sim;
+        sim.params.sample_interval = k * sim.dt;
+        let samples = run_slide(&mut sim);
+        (sim.state, samples)
+    };
+    let (sa, every_step) = sampled_every(1.0);
+    let (sb, every_10th) = sampled_every(10.0);
+    assert!(sa == sb, "sampling changed the trajectory");
+    assert!(every_10th.len() > 20 && every_step.len() > 10 * (every_10th.len() - 2));
+    let mut strict = 0;
+    let mut k = 1; // every_step[0] is the start, as every_10th[0]
+    for w in every_10th.windows(2) {
+        let (prev, b) = (w[0], w[1]);
+        assert!(b.p_max_peak_gpa >= b.p_max_gpa);
+        let mut peak = 0.0f64;
+        while k < every_step.len() && every_step[k].t_us <= b.t_us {
+            assert!(every_step[k].t_us > prev.t_us);
+            peak = peak.max(every_step[k].p_max_gpa);
+            k += 1;
+        }
+        assert_eq!(every_step[k - 1].t_us, b.t_us, "sample times differ");
+        assert_eq!(b.p_max_peak_gpa, peak, "at t = {} µs", b.t_us);
+        strict += (b.p_max_peak_gpa > b.p_max_gpa) as usize;
+    }
+    assert!(
+        strict > 0,
+        "no sample's peak exceeds its instantaneous P_max"
+    );
+    let summary = dem::protocol::slide_summary(&every_10th, &p, 0, 0.0);
+    let (t0, t1) = (
+        (p.equilibrate_time + p.relax_time + p.measure_from * p.slide_time) * 1e6,
+        (p.equilibrate_time + p.relax_time + p.slide_time) * 1e6,
+    );
+    let in_window = every_step
+        .iter()
+        .filter(|s| s.t_us >= t0 - 1e-9 && s.t_us <= t1 + 1e-9)
+        .map(|s| s.p_max_gpa)
+        .fold(0.0, f64::max);
+    assert!(
+        summary.max_p_max_gpa >= in_window,
+        "{} < {in_window}",
+        summary.max_p_max_gpa
+    );
+}
+
 /// A small slider with a constant, large μ dragged at steady state perpendicular to its contact
 /// lines (square-tri θ = 0, α = 90°: near-zero corrugation): the pulling force → μW.
 #[test]

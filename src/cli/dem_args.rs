@@ -139,7 +139,8 @@ pub struct DemArgs {
     )]
     pub sample_us: f64,
     /// Time-series CSV `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,
-    /// failed_contacts` (written atomically, with a sidecar FILE.csv.meta.json); stdout if
+    /// failed_contacts,p_max_peak_GPa` (the last: the largest p0 at any step since the previous
+    /// row) (written atomically, with a sidecar FILE.csv.meta.json); stdout if
     /// absent.
     #[arg(long, value_name = "FILE.csv")]
     pub out: Option<PathBuf>,

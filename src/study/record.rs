@@ -131,6 +131,9 @@ pub fn dem(scene: &surrogate::Scene, p: &DemParams) -> Value {
         "speed_m_s": s.support_speed,
         "dt_us": s.dt.map(|d| label(s_to_us(d))),
         "sample_us": label(s_to_us(s.sample_interval)),
+        // what `max_p_max_GPa` is: since this key, the largest p0 at any step (before it, at
+        // the samples only), so a stored run of an older build is never mixed with new ones
+        "p_max_observed": "every step",
         "start": match p.start {
             dem::Start::Surrogate => json!("surrogate"),
             dem::Start::Gap(g) => json!({"gap_nm": label(surrogate::units::m_to_nm(g))}),

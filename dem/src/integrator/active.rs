@@ -584,6 +584,6 @@ impl Sim {
             self.params.parallel_min_work,
         );
         idx.parts.clear();
-        idx.parts.resize(idx.chunks.n_sl_chunks(na), [0.0; 5]);
+        idx.parts.resize(idx.chunks.n_sl_chunks(na), [0.0; 6]);
     }
 }

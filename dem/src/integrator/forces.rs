@@ -47,7 +47,7 @@ struct SliderPass<'a> {
 impl SliderPass<'_> {
     /// Forces and second half kick of slider chunk `c` (its spheres' `v`, `f` and its pairs'
     /// `hist`, `out`); returns the chunk's reaction on the control layer
-    /// `[F_x, F_y, Q_z, Q_tx, Q_ty]`.
+    /// `[F_x, F_y, Q_z, Q_tx, Q_ty]` and the largest p0 of its pairs (Pa).
     fn chunk(
         &self,
         c: usize,
@@ -55,10 +55,10 @@ impl SliderPass<'_> {
         f: &mut [[f64; 3]],
         hist: &mut [PairHist],
         out: &mut [PairOut],
-    ) -> [f64; 5] {
+    ) -> [f64; 6] {
         let a0 = c * self.chunk;
         let pbase = self.pstart[a0] as usize;
-        let mut part = [0.0; 5];
+        let mut part = [0.0f64; 6];
         for (l, (v, f)) in v.iter_mut().zip(f.iter_mut()).enumerate() {
             let a = a0 + l;
             let o = self.off[self.ids[a] as usize];
@@ -77,6 +77,7 @@ impl SliderPass<'_> {
                 let hp = &mut hist[p - pbase];
                 let r = self.model.pair(d, vr, &mut hp.xi, self.m_eff, self.dt);
                 hp.ever_failed |= r.failed;
+                part[5] = part[5].max(r.p0);
                 acc[0] += r.force[0];
                 acc[1] += r.force[1];
                 acc[2] += r.force[2];
@@ -132,7 +133,7 @@ impl SliderPass<'_> {
         f: &mut [[f64; 3]],
         hist: &mut [PairHist],
         out: &mut [PairOut],
-        parts: &mut [[f64; 5]],
+        parts: &mut [[f64; 6]],
     ) {
         let n = v.len();
         let (v, f) = (Shards::new(v), Shards::new(f));
@@ -287,10 +288,12 @@ impl Sim {
             }
         }
         let mut r = [0.0; 5];
+        let mut peak = 0.0f64;
         for part in parts.iter().take(ch.n_sl_chunks(n_sl)) {
             for k in 0..5 {
                 r[k] += part[k];
             }
+            peak = peak.max(part[5]);
         }
         // 2. substrate spheres (deferred when pipelined: see `Sim::run_steps`)
         if !defer_substrate {
@@ -298,6 +301,7 @@ impl Sim {
         }
         let p = &self.params;
         let s = &mut self.state;
+        s.p0_peak = s.p0_peak.max(peak);
         // 3. common mode of the inactive slider spheres
         let m = self.body.m_s;
         {

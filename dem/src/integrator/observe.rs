@@ -45,6 +45,7 @@ impl Sim {
             o.ever_failed += s.act.hist[k].ever_failed as usize;
         }
         o.ever_failed += self.idx.ever_failed_inactive;
+        o.p_max_peak = s.p0_peak.max(o.p_max);
         let mut zsum = s.act.sl_x.iter().map(|x| x[2]).sum::<f64>();
         if self.idx.n_in > 0 {
             let mut qw = self.q();
@@ -71,6 +72,15 @@ impl Sim {
             ];
             o.slider_travel = dc[0] * ca + dc[1] * sa;
         }
+        o
+    }
+
+    /// Observables of the current state ([`Sim::observe`]) and a fresh start of the peak
+    /// pressure: `p_max_peak` is the largest p0 since the previous call (or the run's start),
+    /// and the next call's peak starts from here. What each time-series sample takes. O(n + p).
+    pub fn observe_sample(&mut self) -> Observables {
+        let o = self.observe();
+        self.state.p0_peak = 0.0;
         o
     }
 

@@ -45,6 +45,9 @@ pub struct Observables {
     pub ever_failed: usize,
     /// Largest p0 over the contacts (Pa).
     pub p_max: f64,
+    /// Largest p0 (Pa) at any force evaluation since the peak was last taken
+    /// ([`Sim::take_p0_peak`]), now included (≥ `p_max`).
+    pub p_max_peak: f64,
     /// Largest overlap (m).
     pub max_overlap: f64,
     /// Mean z of the slider sphere centres (m).
@@ -89,7 +92,7 @@ pub(crate) struct Index {
     pub chunks: Chunking,
     /// Per slider chunk: its reaction on the control layer (lateral x, y; generalized z, t_x,
     /// t_y).
-    pub parts: Vec<[f64; 5]>,
+    pub parts: Vec<[f64; 6]>,
 }
 
 /// The DEM engine: static layout, contact model, knobs, state and work buffers.

@@ -95,7 +95,7 @@ pub fn run(
         super::xyz::prepare_file(p, sim).map_err(|e| xyz_err(p, e))?;
     }
     if samples.is_empty() {
-        samples.push(Sample::from_obs(&sim.observe()));
+        samples.push(Sample::from_obs(&sim.observe_sample()));
     }
     let next = |step: u64, k: u64| step.checked_div(k).map_or(u64::MAX, |q| (q + 1) * k);
     while sim.state.step < total {
@@ -127,7 +127,7 @@ pub fn run(
         if step.is_multiple_of(every) || step == total {
             sim.check()?;
             checked = true;
-            let s = Sample::from_obs(&sim.observe());
+            let s = Sample::from_obs(&sim.observe_sample());
             samples.push(s);
             progress(&Progress {
                 step,

@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 /// One time-series row. Serialised (CSV) columns, in order:
-/// `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts`.
+/// `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts,p_max_peak_GPa`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 pub struct Sample {
     /// Simulated time since the start of the run (µs).
@@ -22,6 +22,11 @@ pub struct Sample {
     pub p_max_gpa: f64,
     /// Contacts whose coating has failed now (p0 > P_crit).
     pub failed_contacts: usize,
+    /// Largest p0 (GPa) at any step since the previous sample, this one included (≥
+    /// `p_max_GPa`): the DEM's step is ~200× shorter than the default sampling interval, and
+    /// the slider's vertical ringing during fast slips raises p0 for a few steps at a time.
+    #[serde(rename = "p_max_peak_GPa")]
+    pub p_max_peak_gpa: f64,
     /// Control-layer travel along α since the spring was attached (µm) (not in the CSV).
     #[serde(skip)]
     pub slider_x_um: f64,
@@ -42,6 +47,7 @@ impl Sample {
             contacts: o.contacts,
             p_max_gpa: pa_to_gpa(o.p_max),
             failed_contacts: o.failed,
+            p_max_peak_gpa: pa_to_gpa(o.p_max_peak),
             slider_x_um: m_to_um(o.slider_travel),
             contact_fz_mn: n_to_mn(o.contact_fz),
         }

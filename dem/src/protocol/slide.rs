@@ -17,7 +17,8 @@ pub struct SlideSummary {
     pub mu: f64,
     /// Mean contact number over the window.
     pub mean_contacts: f64,
-    /// Largest P_max over the window (GPa).
+    /// Largest p0 over the window (GPa), at any step (each sample's `p_max_peak_GPa`), not only
+    /// at the samples.
     #[serde(rename = "max_p_max_GPa")]
     pub max_p_max_gpa: f64,
     /// Mean failed contacts over the window.
@@ -62,7 +63,10 @@ pub fn slide_summary(samples: &[Sample], p: &SimParams, steps: u64, wall_s: f64)
         friction_std_mn: sd,
         mu: f / load_mn,
         mean_contacts: w.iter().map(|s| s.contacts as f64).sum::<f64>() / n,
-        max_p_max_gpa: w.iter().map(|s| s.p_max_gpa).fold(0.0, f64::max),
+        max_p_max_gpa: w
+            .iter()
+            .map(|s| s.p_max_gpa.max(s.p_max_peak_gpa))
+            .fold(0.0, f64::max),
         mean_failed_contacts: w.iter().map(|s| s.failed_contacts as f64).sum::<f64>() / n,
         locked_in: li.locked_in,
         advance_ratio: li.advance_ratio,
