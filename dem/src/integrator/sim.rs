@@ -46,7 +46,7 @@ pub struct Observables {
     /// Largest p0 over the contacts (Pa).
     pub p_max: f64,
     /// Largest p0 (Pa) at any force evaluation since the peak was last taken
-    /// ([`Sim::take_p0_peak`]), now included (≥ `p_max`).
+    /// ([`Sim::observe_sample`]), now included (≥ `p_max`).
     pub p_max_peak: f64,
     /// Largest overlap (m).
     pub max_overlap: f64,
@@ -91,7 +91,7 @@ pub(crate) struct Index {
     /// Chunking of the slider and substrate passes.
     pub chunks: Chunking,
     /// Per slider chunk: its reaction on the control layer (lateral x, y; generalized z, t_x,
-    /// t_y).
+    /// t_y) and the largest p0 (Pa) of its pairs.
     pub parts: Vec<[f64; 6]>,
 }
 

@@ -18,7 +18,7 @@ pub struct SlideSummary {
     /// Mean contact number over the window.
     pub mean_contacts: f64,
     /// Largest p0 over the window (GPa), at any step (each sample's `p_max_peak_GPa`), not only
-    /// at the samples.
+    /// at the samples; the window's first sample's peak reaches back one sampling interval.
     #[serde(rename = "max_p_max_GPa")]
     pub max_p_max_gpa: f64,
     /// Mean failed contacts over the window.

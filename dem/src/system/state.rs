@@ -207,7 +207,7 @@ pub struct State {
     /// Frames written so far.
     pub xyz_frames: u64,
     /// Largest p0 (Pa) of any pair at any force evaluation since the last time-series sample
-    /// ([`crate::integrator::Sim::take_p0_peak`]): pressure peaks shorter than the sampling
+    /// ([`crate::integrator::Sim::observe_sample`]): pressure peaks shorter than the sampling
     /// interval (the slider's vertical ringing during fast slips) are not lost.
     pub p0_peak: f64,
 }
