@@ -241,6 +241,29 @@ fn an_interrupted_batch_resumes_without_repeating_finished_runs() {
     let log = String::from_utf8_lossy(&out.stderr);
     assert!(log.contains("3 finished earlier"), "{log}");
     assert!(!log.contains(": model:"), "{log}");
+    // two stored runs of other inputs (as an older build's would be): one refusal names both,
+    // before anything runs
+    for n in &names[..2] {
+        let side = part.join("runs").join(n).join("slide.json.meta.json");
+        let text = read(&side);
+        std::fs::write(&side, text.replace("\"sha256:", "\"sha256:0")).unwrap();
+    }
+    let out = slide(&batch).arg("--out-dir").arg(&part).output().unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("2 of 3 stored runs")
+            && err.contains("nothing was run")
+            && err.contains(&*names[0].to_string_lossy())
+            && err.contains(&*names[1].to_string_lossy())
+            && !err.contains(&*third),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::metadata(&first_json).unwrap().modified().unwrap(),
+        before,
+        "a refused batch rewrote a run"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 

@@ -158,7 +158,7 @@ fn finished(path: &Path, inputs: &Inputs) -> Result<Option<PathBuf>> {
     if s.input_hash != inputs.hash() {
         let diff = input_differences(&s.inputs(), inputs, 8);
         bail!(
-            "{} was made with other inputs than this batch's run ({}): never mixed; remove it or use another output directory",
+            "{} was made with other inputs than this batch's run ({}): never mixed",
             path.display(),
             if diff.is_empty() {
                 format!("written by superlube {}", s.version)
@@ -355,9 +355,50 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
 }
 
 /// The outcomes of the jobs that finished earlier (`None` for those still to run), without
-/// running anything. Errors: a result file of other inputs.
+/// running anything. Errors: result files of other inputs (or unreadable ones), every such run
+/// named in one error (a folder of an older build's runs is refused at once, not run by run).
 pub fn finished_runs(jobs: &[SlideJob], dir: &Path) -> Result<Vec<Option<SlideOutcome>>> {
-    jobs.iter().map(|j| reuse(dir, j, &job_inputs(j))).collect()
+    let mut out: Vec<Option<SlideOutcome>> = Vec::with_capacity(jobs.len());
+    let mut refused: Vec<(String, String)> = Vec::new();
+    for j in jobs {
+        match reuse(dir, j, &job_inputs(j)) {
+            Ok(o) => out.push(o),
+            Err(e) => {
+                refused.push((j.name.clone(), format!("{e:#}")));
+                out.push(None);
+            }
+        }
+    }
+    if let [(_, first), rest @ ..] = refused.as_slice() {
+        let names: Vec<&str> = refused.iter().map(|(n, _)| n.as_str()).collect();
+        bail!(
+            "{} of {} stored runs under {} cannot be reused (nothing was run): {}{}; remove {} or use another output directory",
+            refused.len(),
+            jobs.len(),
+            dir.display(),
+            first,
+            if rest.is_empty() {
+                String::new()
+            } else {
+                let more = &names[1..];
+                let shown = more.len().min(6);
+                format!(
+                    " (and {} more: {}{})",
+                    rest.len(),
+                    more[..shown].join(", "),
+                    if more.len() > shown { ", …" } else { "" }
+                )
+            },
+            if refused.len() == jobs.len() {
+                dir.display().to_string()
+            } else if rest.is_empty() {
+                "that run's folder".to_string()
+            } else {
+                "those runs' folders".to_string()
+            },
+        );
+    }
+    Ok(out)
 }
 
 /// Runs `jobs` (see the module docs) with up to `side_by_side` runs at once, under `dir`, with
@@ -384,7 +425,7 @@ pub fn run_batch(
 /// each run gets the process's threads divided by the runs side by side (one each when they
 /// fill the cores; all of them for a lone run). Returns one outcome per job, in order. Errors:
 /// only a result file of other inputs (checked for every job before any work) or a thread pool
-/// that cannot be built; a failing run is an outcome.
+/// that cannot be built; a failing run is an outcome. Stored runs: [`finished_runs`].
 pub fn run_batch_with(
     jobs: &[SlideJob],
     opts: &BatchOptions,
@@ -392,10 +433,7 @@ pub fn run_batch_with(
     progress: &dyn Progress,
 ) -> Result<Vec<SlideOutcome>> {
     let inputs: Vec<Inputs> = jobs.iter().map(job_inputs).collect();
-    let mut out: Vec<Option<SlideOutcome>> = Vec::with_capacity(jobs.len());
-    for (j, i) in jobs.iter().zip(&inputs) {
-        out.push(reuse(dir, j, i)?);
-    }
+    let mut out = finished_runs(jobs, dir)?;
     let todo: Vec<usize> = (0..jobs.len()).filter(|&k| out[k].is_none()).collect();
     if !todo.is_empty() {
         progress.stage(&opts.stage, 1000 * todo.len() as u64, "‰ of runs");
