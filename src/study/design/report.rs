@@ -471,7 +471,7 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         }
         let _ = writeln!(
             m,
-            "| pattern | rank | θ (°) | α (°) | W (mN) | protocol | μ_est | μ_DEM | μ_est/μ_DEM | verdict est / DEM | max P_max DEM (GPa) | contacts DEM | status | wall (s) |"
+            "| pattern | rank | θ (°) | α (°) | W (mN) | protocol | μ_est | μ_DEM | μ_est/μ_DEM | verdict est / DEM | max P_max DEM, any step (GPa) | contacts DEM | status | wall (s) |"
         );
         let _ = writeln!(
             m,
