@@ -130,7 +130,9 @@ pub struct DemArgs {
     /// pressure-switched μ1/μ2 (reference runs).
     #[arg(long, value_name = "MU", allow_hyphen_values = true)]
     pub mu: Option<f64>,
-    /// Sampling interval of the time series in µs (> 0).
+    /// Sampling interval of the time series in µs (> 0). Each row's `p_max_peak_GPa` and the
+    /// `slide` summary's `max_p_max_GPa` cover every step between rows, so a finer interval is not
+    /// needed to catch pressure peaks.
     #[arg(
         long = "sample-us",
         value_name = "US",
