@@ -358,19 +358,29 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
 /// running anything. Errors: result files of other inputs (or unreadable ones), every such run
 /// named in one error (a folder of an older build's runs is refused at once, not run by run).
 pub fn finished_runs(jobs: &[SlideJob], dir: &Path) -> Result<Vec<Option<SlideOutcome>>> {
+    let inputs: Vec<Inputs> = jobs.iter().map(job_inputs).collect();
+    stored_runs(jobs, &inputs, dir)
+}
+
+/// [`finished_runs`] with each job's recorded inputs `inputs` (in job order).
+fn stored_runs(
+    jobs: &[SlideJob],
+    inputs: &[Inputs],
+    dir: &Path,
+) -> Result<Vec<Option<SlideOutcome>>> {
     let mut out: Vec<Option<SlideOutcome>> = Vec::with_capacity(jobs.len());
-    let mut refused: Vec<(String, String)> = Vec::new();
-    for j in jobs {
-        match reuse(dir, j, &job_inputs(j)) {
+    let mut refused: Vec<(&str, String)> = Vec::new();
+    for (j, i) in jobs.iter().zip(inputs) {
+        match reuse(dir, j, i) {
             Ok(o) => out.push(o),
             Err(e) => {
-                refused.push((j.name.clone(), format!("{e:#}")));
+                refused.push((j.name.as_str(), format!("{e:#}")));
                 out.push(None);
             }
         }
     }
     if let [(_, first), rest @ ..] = refused.as_slice() {
-        let names: Vec<&str> = refused.iter().map(|(n, _)| n.as_str()).collect();
+        const SHOWN: usize = 6;
         bail!(
             "{} of {} stored runs under {} cannot be reused (nothing was run): {}{}; remove {} or use another output directory",
             refused.len(),
@@ -380,13 +390,12 @@ pub fn finished_runs(jobs: &[SlideJob], dir: &Path) -> Result<Vec<Option<SlideOu
             if rest.is_empty() {
                 String::new()
             } else {
-                let more = &names[1..];
-                let shown = more.len().min(6);
+                let names: Vec<&str> = rest.iter().take(SHOWN).map(|(n, _)| *n).collect();
                 format!(
                     " (and {} more: {}{})",
                     rest.len(),
-                    more[..shown].join(", "),
-                    if more.len() > shown { ", …" } else { "" }
+                    names.join(", "),
+                    if rest.len() > SHOWN { ", …" } else { "" }
                 )
             },
             if refused.len() == jobs.len() {
@@ -425,7 +434,7 @@ pub fn run_batch(
 /// each run gets the process's threads divided by the runs side by side (one each when they
 /// fill the cores; all of them for a lone run). Returns one outcome per job, in order. Errors:
 /// only a result file of other inputs (checked for every job before any work) or a thread pool
-/// that cannot be built; a failing run is an outcome. Stored runs: [`finished_runs`].
+/// that cannot be built; a failing run is an outcome. Stored runs: as [`finished_runs`].
 pub fn run_batch_with(
     jobs: &[SlideJob],
     opts: &BatchOptions,
@@ -433,7 +442,7 @@ pub fn run_batch_with(
     progress: &dyn Progress,
 ) -> Result<Vec<SlideOutcome>> {
     let inputs: Vec<Inputs> = jobs.iter().map(job_inputs).collect();
-    let mut out = finished_runs(jobs, dir)?;
+    let mut out = stored_runs(jobs, &inputs, dir)?;
     let todo: Vec<usize> = (0..jobs.len()).filter(|&k| out[k].is_none()).collect();
     if !todo.is_empty() {
         progress.stage(&opts.stage, 1000 * todo.len() as u64, "‰ of runs");
