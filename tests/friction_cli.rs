@@ -232,32 +232,33 @@ fn bad_input_names_the_flag() {
 /// The study's tri-tri scene at 30° (its full 100 µm slider): on the study's spring mount the
 /// tilt mode is at ω_t/ω_p = 0.89 of the stuck pairs' lateral mode, so the 2.45 mN row, whose
 /// coating fails, is flagged `mount_resonance` (its μ_est an upper bound of the DEM's, measured
-/// 2.8× there) and the intact 0.35 mN row is not; with K1 = 10⁷ N/m (ratio 2.8) nothing is.
+/// 2.8× there) and the intact 0.35 mN row is not; with K1 = 10⁷ N/m (ratio 2.8) nothing is, and
+/// nothing is on a substrate rough enough to detune the resonance (σ_h = 10 nm).
 #[test]
 fn mount_resonance_flags_failed_rows_on_the_study_mount() {
     let d = tmpdir("friction_resonance");
-    let run = |k1: Option<&str>, out: &Path| {
-        let mut c = bin();
-        c.args([
-            "friction",
-            "--pattern",
-            "tri-tri",
-            "--theta",
-            "30",
-            "--alpha",
-            "0",
-            "--load-mn",
-            "0.35,2.45",
-        ]);
-        if let Some(k) = k1 {
-            c.args(["--tilt-k1-n-m", k]);
-        }
-        let o = c.arg("--out").arg(out).output().unwrap();
+    let run = |extra: &[&str], out: &Path| {
+        let o = bin()
+            .args([
+                "friction",
+                "--pattern",
+                "tri-tri",
+                "--theta",
+                "30",
+                "--alpha",
+                "0",
+            ])
+            .args(["--load-mn", "0.35,2.45"])
+            .args(extra)
+            .arg("--out")
+            .arg(out)
+            .output()
+            .unwrap();
         assert_ok(&o);
         (o, cells(out))
     };
     let study = d.join("study.csv");
-    let (o, get) = run(None, &study);
+    let (o, get) = run(&[], &study);
     let ratio: f64 = get(0, "tilt_pair_ratio").parse().unwrap();
     assert!((ratio - 0.89).abs() < 0.01, "{ratio}");
     assert_eq!(get(0, "failed_fraction").parse::<f64>().unwrap(), 0.0);
@@ -270,10 +271,21 @@ fn mount_resonance_flags_failed_rows_on_the_study_mount() {
         "{err}"
     );
 
-    let stiff = d.join("stiff.csv");
-    let (o, get) = run(Some("1e7"), &stiff);
-    let ratio: f64 = get(1, "tilt_pair_ratio").parse().unwrap();
-    assert!((ratio - 0.89 * 10f64.sqrt()).abs() < 0.03, "{ratio}");
+    let (o, get) = run(&["--tilt-k1-n-m", "1e7"], &d.join("stiff.csv"));
+    let stiff: f64 = get(1, "tilt_pair_ratio").parse().unwrap();
+    assert!((stiff - 0.89 * 10f64.sqrt()).abs() < 0.03, "{stiff}");
+    assert_eq!(get(1, "mount_resonance"), "false");
+    assert!(!String::from_utf8_lossy(&o.stderr).contains("tilt mode"));
+
+    // A rough substrate (σ_h = 10 nm ≥ 5 nm) detunes the resonance: the coating fails at
+    // 2.45 mN, the ratio is the study's, and the row is not flagged.
+    let (o, get) = run(
+        &["--sigma-h-um", "0.01", "--seed", "1"],
+        &d.join("rough.csv"),
+    );
+    assert!(get(1, "failed_fraction").parse::<f64>().unwrap() > 0.0);
+    let rough: f64 = get(1, "tilt_pair_ratio").parse().unwrap();
+    assert_eq!(rough, ratio);
     assert_eq!(get(1, "mount_resonance"), "false");
     assert!(!String::from_utf8_lossy(&o.stderr).contains("tilt mode"));
 }

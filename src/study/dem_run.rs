@@ -143,7 +143,8 @@ pub fn run_dem(
         sim_params.control_sphere_radius,
     );
     // Only where the coating may fail while sliding (the auto model's test).
-    if let Some(t) = tilt.filter(|t| t.in_band() && p.friction.is_none() && choice.coating_may_fail)
+    if let Some(t) =
+        tilt.filter(|t| t.expected() && p.friction.is_none() && choice.coating_may_fail)
     {
         progress.note(&format!(
             "note: {t}: where contacts fail, this run's friction depends strongly on K1 (tri-tri \

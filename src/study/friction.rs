@@ -87,14 +87,15 @@ pub fn line_at(scene: &Scene, theta: f64, line: Option<f64>) -> LineChoice {
 }
 
 /// The warning for a scene whose springs mount's tilt mode lies in the measured resonance band
-/// ([`surrogate::friction::TiltResonance`]), where μ_est of failed-coating rows (column
-/// `mount_resonance`) is an upper bound; `None` outside the band or without springs.
+/// on a substrate too smooth to detune it ([`surrogate::friction::TiltResonance::expected`]),
+/// where μ_est of failed-coating rows (column `mount_resonance`) may be an upper bound; `None`
+/// outside the band, on a rough enough substrate or without springs.
 pub fn resonance_note(scene: &Scene, knobs: &FrictionParams) -> Option<String> {
-    let t = TiltResonance::of(scene, knobs).filter(|t| t.in_band())?;
+    let t = TiltResonance::of(scene, knobs).filter(|t| t.expected())?;
     Some(format!(
         "{t}: where contacts fail (column mount_resonance) the DEM's friction can be up to 2.8× \
-         below mu_est (measured on 3 of the 5 such runs of the 17-run DEM comparison; \
-         surrogate/README.md, \"The mount's resonance\")"
+         below mu_est (measured on the 3 such runs of the 17-run DEM comparison; substrate \
+         roughness σ_h ≥ 5 nm detunes it; surrogate/README.md, \"The mount's resonance\")"
     ))
 }
 

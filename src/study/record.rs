@@ -98,6 +98,9 @@ pub fn friction_knobs(k: &surrogate::friction::FrictionParams) -> Value {
         "k_substrate_xy_N_m": k.k_substrate_xy,
         "direction_tol_rad": k.direction_tol,
         "segment_um": label(m_to_um(k.segment)),
+        // which rows `mount_resonance` flags: since this key, not on a substrate rough enough to
+        // detune the resonance, so a stored estimate of an older build is never mixed with new ones
+        "mount_resonance_rule": "band, failed contacts, sigma_h below max(5 nm, delta_crit/2)",
     })
 }
 

@@ -76,9 +76,9 @@ pub struct FrictionEstimate {
     /// `ω_t/ω_p` of the spring mount ([`TiltResonance`]); `None` without springs.
     pub tilt_pair_ratio: Option<f64>,
     /// Whether the estimate is outside its tested range because of the mount's tilt resonance:
-    /// [`TiltResonance::in_band`] and contacts fail along the path (`failed_fraction > 0`).
-    /// μ_est may be an upper bound there: the DEM measured 2.1–2.8× lower on flat tri-tri 30°,
-    /// not lower on the two flagged rough-substrate runs (the verdict unchanged on all).
+    /// [`TiltResonance::expected`] (the ratio in the band, the substrate not rough enough to
+    /// detune it) and contacts fail along the path (`failed_fraction > 0`). μ_est may be an upper
+    /// bound there: the DEM measured 2.1–2.8× lower on flat tri-tri 30° (the verdict unchanged).
     pub mount_resonance: bool,
 }
 
@@ -458,6 +458,6 @@ fn from_samples(
         window: pt.window,
         transverse_offset: 0.0,
         tilt_pair_ratio: tilt.map(|t| t.ratio),
-        mount_resonance: failed_fraction > 0.0 && tilt.is_some_and(|t| t.in_band()),
+        mount_resonance: failed_fraction > 0.0 && tilt.is_some_and(|t| t.expected()),
     }
 }
