@@ -13,6 +13,7 @@
 //! at pressure `p_ref` (Hertz: `a = π p0 R_eff / (2E*)`). Cost O(1).
 
 use crate::SimParams;
+use surrogate::contact::Hertz;
 
 /// Estimated critical steps (s) and the dominating mode.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -48,7 +49,11 @@ pub struct StabilityInput {
 
 /// The stable-step estimate for `params` (reads `rigid_z` and the spring constants).
 pub fn stable_step(inp: &StabilityInput, params: &SimParams) -> StableStep {
-    let a = std::f64::consts::PI * inp.p_ref * inp.r_eff / (2.0 * inp.e_star);
+    let hertz = Hertz {
+        e_star: inp.e_star,
+        r_eff: inp.r_eff,
+    };
+    let a = hertz.contact_radius_for_p0(inp.p_ref);
     let sn = 2.0 * inp.e_star * a;
     let kt = 8.0 * inp.g_star * a;
     let ms = inp.m_sphere;

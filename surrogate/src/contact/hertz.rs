@@ -78,6 +78,20 @@ impl Hertz {
         }
     }
 
+    /// Contact radius `a` (m) at which the maximum pressure is `p0` (Pa): `a = π p0 R_eff / (2E*)`.
+    #[inline]
+    pub fn contact_radius_for_p0(&self, p0: f64) -> f64 {
+        std::f64::consts::PI * p0 * self.r_eff / (2.0 * self.e_star)
+    }
+
+    /// Overlap δ (m) at which the maximum pressure is `p0` (Pa): `δ = a² / R_eff` with `a` of
+    /// [`Hertz::contact_radius_for_p0`].
+    #[inline]
+    pub fn overlap_for_p0(&self, p0: f64) -> f64 {
+        let a = self.contact_radius_for_p0(p0);
+        a * a / self.r_eff
+    }
+
     /// Maximum pressure p0 (Pa) of a contact carrying normal force `f` (N):
     /// `p0 = (6 F E*² / (π³ R_eff²))^{1/3}`.
     #[inline]
@@ -106,6 +120,8 @@ mod tests {
             assert!((p_from_f - h.p0(d)).abs() < 1e-12 * h.p0(d));
             assert!((h.p0_for_force(f) - h.p0(d)).abs() < 1e-12 * h.p0(d));
             assert!((h.overlap_for_force(f) - d).abs() < 1e-12 * d);
+            assert!((h.overlap_for_p0(h.p0(d)) - d).abs() < 1e-12 * d);
+            assert!((h.contact_radius_for_p0(h.p0(d)) - a).abs() < 1e-12 * a);
             let e = 1e-6 * d;
             let num = (h.force(d + e) - h.force(d - e)) / (2.0 * e);
             assert!((num - h.stiffness(d)).abs() < 1e-6 * h.stiffness(d));

@@ -59,12 +59,11 @@ pub const RESONANCE_BAND: [f64; 2] = [0.6, 1.15];
 /// "Roughness detunes the resonance").
 pub const DETUNING_SIGMA_H: f64 = 5e-9;
 
-/// Overlap δ_crit (m) of two of `scene`'s equal spheres whose Hertz pressure p0 is P_crit:
-/// `a = π P_crit R_eff / (2E*)`, `δ_crit = a² / R_eff` (9.8 nm on the study's scene). O(1).
+/// Overlap δ_crit (m) of two of `scene`'s equal spheres whose Hertz pressure p0 is P_crit
+/// ([`Hertz::overlap_for_p0`]: `a = π P_crit R_eff / (2E*)`, `δ_crit = a² / R_eff`; 9.8 nm on the
+/// study's scene). O(1).
 pub fn critical_overlap(scene: &Scene) -> f64 {
-    let h = Hertz::equal_spheres(scene.sphere_radius, &scene.material);
-    let a = std::f64::consts::PI * scene.coating.p_crit * h.r_eff / (2.0 * h.e_star);
-    a * a / h.r_eff
+    Hertz::equal_spheres(scene.sphere_radius, &scene.material).overlap_for_p0(scene.coating.p_crit)
 }
 
 /// Whether `scene`'s substrate is rough enough to detune the mount's resonance:
