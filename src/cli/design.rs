@@ -133,6 +133,47 @@ pub struct Args {
     alphas_per_theta: usize,
     #[command(flatten)]
     friction: FrictionKnobArgs,
+    /// Fabrication tolerance of the slider orientation in degrees: a design's superlubric
+    /// limit is the lowest over every θ within ± this of its nominal θ (and every direction
+    /// within --direction-tol), sampled every ≤ --theta-tol-step. A misaligned slider keeps the
+    /// nominal pulling direction in the substrate frame (the tribometer's axis does not turn
+    /// with the slider). 0 and --direction-tol 0: the nominal answer.
+    #[arg(
+        long = "theta-tol",
+        value_name = "DEG",
+        default_value_t = 0.1,
+        allow_hyphen_values = true
+    )]
+    theta_tol: f64,
+    /// Tolerance of the pulling direction in the substrate frame, in degrees.
+    #[arg(
+        long = "direction-tol",
+        value_name = "DEG",
+        default_value_t = 0.5,
+        allow_hyphen_values = true
+    )]
+    direction_tol: f64,
+    /// Largest sampling step in degrees of the θ tolerance: the first sample off the nominal is
+    /// at most this far, so a window narrower than the tolerance cannot pass.
+    #[arg(
+        long = "theta-tol-step",
+        value_name = "DEG",
+        default_value_t = 0.02,
+        allow_hyphen_values = true
+    )]
+    theta_tol_step: f64,
+    /// Largest sampling step in degrees of the direction tolerance.
+    #[arg(
+        long = "direction-tol-step",
+        value_name = "DEG",
+        default_value_t = 0.25,
+        allow_hyphen_values = true
+    )]
+    direction_tol_step: f64,
+    /// Further substrate seeds (comma list) whose height realisations the robust limit must
+    /// also hold on (σ_h > 0 only): the worst case counts.
+    #[arg(long, value_name = "S1,S2")]
+    seeds: Option<String>,
     /// Designs per pattern confirmed with DEM `slide` runs (the top of the ranking; ≥ 1 unless
     /// --no-dem).
     #[arg(long, value_name = "K", default_value_t = 3)]
@@ -446,7 +487,33 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         }
         None => crate::study::Shard::ALL,
     };
+    let theta_tol_deg = checks::non_negative(a.theta_tol, "--theta-tol")?;
+    let direction_tol_deg = checks::non_negative(a.direction_tol, "--direction-tol")?;
+    if direction_tol_deg >= 90.0 {
+        bail!("`--direction-tol`: ±{direction_tol_deg}° is not a tolerance; give less than 90°");
+    }
+    let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step")?;
+    let direction_tol_step_deg = checks::positive(a.direction_tol_step, "--direction-tol-step")?;
+    let seeds: Vec<u64> = match &a.seeds {
+        None => Vec::new(),
+        Some(t) => t
+            .split(',')
+            .map(|x| {
+                x.trim().parse::<u64>().map_err(|_| {
+                    anyhow::anyhow!(
+                        "`--seeds`: `{}` is not a non-negative integer seed",
+                        x.trim()
+                    )
+                })
+            })
+            .collect::<Result<_>>()?,
+    };
     let params = DesignParams {
+        theta_tol_deg,
+        direction_tol_deg,
+        theta_tol_step_deg,
+        direction_tol_step_deg,
+        seeds,
         thetas_deg,
         theta_text: a.theta.clone(),
         symmetry_cut: !a.no_symmetry_cut,
@@ -478,7 +545,22 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
     };
     let scenes = scenes(a)?;
     for s in &scenes {
-        cut(s, &params)?;
+        let (_, sym) = cut(s, &params)?;
+        let (lo, hi, _) = sym.domain();
+        if 2.0 * params.theta_tol_deg >= hi - lo {
+            bail!(
+                "`--theta-tol`: ±{}° spans the whole θ domain of {} ([{lo}°, {hi}°]); give a tolerance below {}°",
+                params.theta_tol_deg,
+                s.name,
+                0.5 * (hi - lo)
+            );
+        }
+        if !params.seeds.is_empty() && s.scene.substrate.sigma_h == 0.0 {
+            bail!(
+                "`--seeds`: {} has a flat substrate (σ_h = 0), so every seed gives the same one; give --sigma-h-um > 0 or leave --seeds out",
+                s.name
+            );
+        }
     }
     check_outputs(&[("--out", Some(&a.out.join("report.md")))])?;
     Ok((scenes, params))

@@ -23,6 +23,7 @@ mod screen;
 mod slide;
 mod slurm;
 mod sweep_args;
+mod tolerance;
 
 pub use range::parse_list_or_range;
 pub use scene_args::SceneArgs;
@@ -54,6 +55,9 @@ enum Command {
     /// Surrogate friction estimate μ_est per θ × α × load (coating + Prandtl–Tomlinson terms on
     /// the quasi-static path, with the slider's inertia where it sticks and slips).
     Friction(friction::Args),
+    /// Tolerance map of one design: the superlubric limit load (friction estimate) over
+    /// θ ± range × pulling direction ± range, with the fabrication tolerance box (CSV + PNG).
+    Tolerance(tolerance::Args),
     /// Design: screen → shortlist → α scan + friction estimate → ranking → DEM confirmation,
     /// with report.md (the best θ and α per pattern and the load up to which it stays
     /// superlubric).
@@ -106,6 +110,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Landscape(a) => landscape::run(a),
         Command::Corrugation(a) => corrugation::run(a),
         Command::Friction(a) => friction::run(a),
+        Command::Tolerance(a) => tolerance::run(a),
         Command::Design(a) => design::run(a),
         Command::Figures(a) => figures::run(a),
         Command::Equilibrate(a) => equilibrate::run(a),

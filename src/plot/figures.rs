@@ -112,10 +112,13 @@ pub fn landscape_png(
             x_label: "slider shift x (µm)".into(),
             y_label: "slider shift y (µm)".into(),
             value_label: "Δz = z − min z (nm)".into(),
-            n: stats.n,
+            n: [stats.n, stats.n],
             da: [m_to_um(cell.a[0]) / d, m_to_um(cell.a[1]) / d],
             db: [m_to_um(cell.b[0]) / d, m_to_um(cell.b[1]) / d],
             values: dz_nm,
+            free_aspect: false,
+            outlines: Vec::new(),
+            marks: Vec::new(),
         },
     )
 }

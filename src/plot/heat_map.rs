@@ -5,8 +5,8 @@ use anyhow::Result;
 use plotters::prelude::*;
 use std::path::Path;
 
-/// A scalar field on an N×N grid of points `origin + i·da + j·db` (plot units), row-major
-/// `values[j·N + i]`.
+/// A scalar field on an Ni×Nj grid of points `i·da + j·db` (plot units), row-major
+/// `values[j·Ni + i]`, with optional closed outlines and point marks drawn on top.
 pub struct HeatMap<'a> {
     /// Title above the plot.
     pub title: String,
@@ -16,20 +16,27 @@ pub struct HeatMap<'a> {
     pub y_label: String,
     /// Colour-bar label with unit.
     pub value_label: String,
-    /// Points per side N.
-    pub n: usize,
+    /// Points along i and along j (Ni, Nj).
+    pub n: [usize; 2],
     /// Step between neighbouring points along i (plot units).
     pub da: [f64; 2],
     /// Step between neighbouring points along j (plot units).
     pub db: [f64; 2],
     /// Values, row-major.
     pub values: &'a [f64],
+    /// Axes of different quantities: a square plot instead of equal scales.
+    pub free_aspect: bool,
+    /// Closed outlines drawn in white over the map (plot units).
+    pub outlines: Vec<Vec<(f64, f64)>>,
+    /// Points marked with a white cross (plot units).
+    pub marks: Vec<(f64, f64)>,
 }
 
-/// Draws `map` to the PNG `path` (1000×820 px): one parallelogram tile per grid point coloured
-/// with viridis between the min and max value, equal axis scales, and a labelled colour bar.
+/// Draws `map` to the PNG `path` (about 1000×720 px): one parallelogram tile per grid point
+/// coloured with viridis between the min and max value, equal axis scales (unless
+/// `free_aspect`), a labelled colour bar, then the outlines and marks.
 pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
-    let n = map.n;
+    let [ni, nj] = map.n;
     let (lo, hi) = map
         .values
         .iter()
@@ -42,19 +49,26 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
     let mut yr = (f64::INFINITY, f64::NEG_INFINITY);
     for (i, j) in [
         (-0.5, -0.5),
-        (n as f64 - 0.5, -0.5),
-        (-0.5, n as f64 - 0.5),
-        (n as f64 - 0.5, n as f64 - 0.5),
+        (ni as f64 - 0.5, -0.5),
+        (-0.5, nj as f64 - 0.5),
+        (ni as f64 - 0.5, nj as f64 - 0.5),
     ] {
         let p = pt(i, j);
         xr = (xr.0.min(p.0), xr.1.max(p.0));
         yr = (yr.0.min(p.1), yr.1.max(p.1));
     }
-    // Equal aspect: plot area width/height follows the data aspect.
-    let aspect = (yr.1 - yr.0) / (xr.1 - xr.0);
+    // Equal aspect: plot area width/height follows the data aspect (square for free axes).
+    let aspect = if map.free_aspect {
+        1.0
+    } else {
+        (yr.1 - yr.0) / (xr.1 - xr.0)
+    };
     let plot_h = 700u32;
     let plot_w = ((plot_h as f64 - 110.0) / aspect + 120.0).clamp(380.0, 1100.0) as u32;
     let size = (plot_w + 190, plot_h + 20);
+    // tick decimals: one for spans of a few units, more for small spans
+    let decimals = |span: f64| (-(span / 5.0).log10().floor()).clamp(1.0, 4.0) as usize;
+    let (px, py) = (decimals(xr.1 - xr.0), decimals(yr.1 - yr.0));
     png_atomic(path, size, |root| {
         // The title spans the whole image (heat map + colour bar) so long titles are not cut.
         let root = root
@@ -74,15 +88,15 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             .y_desc(&map.y_label)
             .label_style((FONT, 18))
             .axis_desc_style((FONT, 20))
-            .x_label_formatter(&|v| format!("{v:.1}"))
-            .y_label_formatter(&|v| format!("{v:.1}"))
+            .x_label_formatter(&|v| format!("{v:.px$}"))
+            .y_label_formatter(&|v| format!("{v:.py$}"))
             .draw()
             .map_err(perr("heat map axes"))?;
-        let mut tiles = Vec::with_capacity(n * n);
-        for j in 0..n {
-            for i in 0..n {
+        let mut tiles = Vec::with_capacity(ni * nj);
+        for j in 0..nj {
+            for i in 0..ni {
                 let (fi, fj) = (i as f64, j as f64);
-                let c = viridis((map.values[j * n + i] - lo) / span);
+                let c = viridis((map.values[j * ni + i] - lo) / span);
                 tiles.push(Polygon::new(
                     vec![
                         pt(fi - 0.5, fj - 0.5),
@@ -95,6 +109,23 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             }
         }
         chart.draw_series(tiles).map_err(perr("heat map tiles"))?;
+        for o in &map.outlines {
+            let mut closed = o.clone();
+            closed.extend(o.first().copied());
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    closed,
+                    WHITE.stroke_width(3),
+                )))
+                .map_err(perr("heat map outline"))?;
+        }
+        chart
+            .draw_series(
+                map.marks
+                    .iter()
+                    .map(|&p| Cross::new(p, 9, WHITE.stroke_width(3))),
+            )
+            .map_err(perr("heat map marks"))?;
         colour_bar(&right, lo, hi, &map.value_label, 12)?;
         Ok(())
     })

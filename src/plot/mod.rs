@@ -10,6 +10,7 @@ pub mod figures;
 pub mod friction;
 mod heat_map;
 mod line_plot;
+pub mod tolerance;
 
 pub use colormap::viridis;
 pub use contact_map::{contact_map, ContactMapData};

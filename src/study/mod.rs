@@ -120,6 +120,8 @@ pub mod sink;
 pub mod slide;
 pub mod slurm;
 pub mod sweep;
+pub mod tolerance;
+pub mod verdict;
 
 pub use budget::Estimate;
 pub use meta::Inputs;

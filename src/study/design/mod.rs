@@ -45,6 +45,7 @@ use super::record;
 use super::rows::{label, ScreenRow};
 use super::screen::{screen, ScreenParams};
 use super::sink::csv_bytes;
+use super::tolerance::{robust, LimitParams, Robust, ToleranceBox};
 use anyhow::{bail, Result};
 use confirm::{run_batch, SlideJob, SlideOutcome};
 use rank::Candidate;
@@ -180,6 +181,85 @@ pub struct DesignOutcome {
     pub dem_ran: bool,
     /// The answer per pattern (the ranking checked against the DEM, [`answer`]).
     pub answers: Vec<answer::Answer>,
+    /// Per pattern, the tolerance map around its answer (θ points per row, rows) when the
+    /// design has a tolerance ([`answer_map`]).
+    pub maps: Vec<Option<AnswerMap>>,
+}
+
+/// The tolerance map around a pattern's answer (`tolerance_<pattern>.csv/.png`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct AnswerMap {
+    /// θ (degrees) and pulling direction (degrees from x) of the answer.
+    pub nominal: (f64, f64),
+    /// Grid points along θ (the rows run direction outer, θ inner).
+    pub theta_points: usize,
+    /// The map's rows.
+    pub rows: Vec<crate::study::tolerance::ToleranceRow>,
+}
+
+/// The tolerance map around the answer `c` of `ds`: θ ±2·tol in 17 points × direction ±2·tol
+/// in 9 points (at least ±0.1° and ±0.5°), at the design's loads; stored and reused.
+pub fn answer_map(
+    ds: &DesignScene,
+    c: &Candidate,
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<AnswerMap> {
+    let grid = |tol: f64, min: f64, n: usize| -> Vec<f64> {
+        let r = (2.0 * tol).max(min);
+        (0..n)
+            .map(|k| label(-r + 2.0 * r * k as f64 / (n - 1) as f64))
+            .collect()
+    };
+    let mp = crate::study::tolerance::MapParams {
+        theta_deg: c.theta_deg,
+        direction_deg: c.direction_deg,
+        theta_offsets_deg: grid(p.theta_tol_deg, 0.1, 17),
+        direction_offsets_deg: grid(p.direction_tol_deg, 0.5, 9),
+        limit: LimitParams {
+            loads: p.loads.clone(),
+            mu_superlubric: p.mu_superlubric,
+            line: p.line,
+            friction: p.friction,
+        },
+    };
+    let inputs = Inputs {
+        workflow: "design/tolerance-map".into(),
+        scene: Some(scene_file(&ds.scene.with_theta(deg_to_rad(c.theta_deg)))),
+        params: json!({
+            "theta_deg": c.theta_deg,
+            "direction_deg": c.direction_deg,
+            "theta_offsets_deg": mp.theta_offsets_deg,
+            "direction_offsets_deg": mp.direction_offsets_deg,
+            "load_mN": p.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
+            "mu_superlubric": p.mu_superlubric,
+            "line_deg": p.line.map(rad_to_deg),
+            "friction": record::friction_knobs(&p.friction),
+        }),
+    };
+    let rel = format!("stages/{}/tolerance_map.json", ds.name);
+    if let Some(m) = store.load_json::<AnswerMap>(&rel, &inputs)? {
+        return Ok(m);
+    }
+    let mut sc = ds.scene.clone();
+    sc.slider.theta = 0.0;
+    let solver = Solver::new(&sc)?;
+    let n = mp.theta_offsets_deg.len() * mp.direction_offsets_deg.len();
+    progress.stage(
+        &format!("{}: tolerance map around the answer", ds.name),
+        n as u64,
+        "points",
+    );
+    let rows = crate::study::tolerance::map(&solver, &mp, &|| progress.advance(1))?;
+    progress.finish();
+    let m = AnswerMap {
+        nominal: (c.theta_deg, c.direction_deg),
+        theta_points: mp.theta_offsets_deg.len(),
+        rows,
+    };
+    store.save_json(&rel, &inputs, &m)?;
+    Ok(m)
 }
 
 /// The design's inputs: with `with_dem` false, those of the surrogate tiers (recorded in
@@ -224,6 +304,11 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
             "scan_step_um": label(m_to_um(p.scan_step)),
             "alphas_per_theta": p.alphas_per_theta,
             "friction": record::friction_knobs(&p.friction),
+            "theta_tol_deg": p.theta_tol_deg,
+            "direction_tol_deg": p.direction_tol_deg,
+            "theta_tol_step_deg": p.theta_tol_step_deg,
+            "direction_tol_step_deg": p.direction_tol_step_deg,
+            "seeds": p.seeds,
     });
     if with_dem {
         params["dem"] = dem;
@@ -287,6 +372,7 @@ pub fn design(
             dem: Vec::new(),
             dem_ran: false,
             answers: Vec::new(),
+            maps: Vec::new(),
         });
     }
     let dem = if p.no_dem {
@@ -299,11 +385,23 @@ pub fn design(
         .iter()
         .map(|pr| answer::answer(pr, &dem, !p.no_dem, p))
         .collect();
+    let answers: Vec<answer::Answer> = answers;
+    let mut maps = Vec::new();
+    for (pr, a) in patterns.iter().zip(&answers) {
+        let c = a.index.and_then(|i| pr.ranking.get(i));
+        maps.push(match c {
+            Some(c) if !tolerance_box(p).is_point() && c.score.nominal_to_mn > 0.0 => {
+                Some(answer_map(&pr.scene, c, p, store, progress)?)
+            }
+            _ => None,
+        });
+    }
     let outcome = DesignOutcome {
         patterns,
         dem,
         dem_ran: !p.no_dem,
         answers,
+        maps,
     };
     let rows = report::dem_rows(&outcome, p);
     let top = label(n_to_mn(*p.loads.last().unwrap_or(&0.0)));
@@ -367,7 +465,11 @@ fn pattern(
     let mut levels_evaluated = 0;
     let mut stop = "every level evaluated".to_string();
     let mut solver: Option<Solver> = None;
+    let bx = tolerance_box(p);
+    let mut solvers: Vec<Solver> = Vec::new();
+    let mut exact_best: Vec<usize> = Vec::new();
     for level in &levels {
+        let from = ranking.len();
         let w_mn = label(n_to_mn(level.load));
         if w_mn < best && ranking.len() >= need {
             stop = format!(
@@ -428,12 +530,34 @@ fn pattern(
             });
         }
         progress.finish();
+        // the robust limits of this level's candidates (the stop rule above then compares
+        // each level's bound with the best robust limit: a robust design may sit lower)
+        if !bx.is_point() {
+            let fresh = &mut ranking[from..];
+            fresh.sort_by(rank::compare);
+            if fresh.iter().any(|c| c.score.nominal_to_mn > 0.0) {
+                if solvers.is_empty() {
+                    solvers = seed_solvers(ds, p, None)?;
+                }
+                robust_stage(
+                    ds,
+                    fresh,
+                    &bx,
+                    &solvers,
+                    p,
+                    store,
+                    &mut exact_best,
+                    progress,
+                )?;
+            }
+        }
         best = ranking
             .iter()
+            .filter(|c| c.score.exact)
             .map(|c| c.score.superlubric_to_mn)
             .fold(best, f64::max);
     }
-    // 5. ranking
+    // 5. ranking (by the robust limit with a tolerance: computed level by level above)
     ranking.sort_by(rank::compare);
     if let Some(b) = ranking.first() {
         progress.note(&format!(
@@ -458,6 +582,172 @@ fn pattern(
         evaluated,
         ranking,
     })
+}
+
+/// The tolerance box of the design's `--theta-tol` × `--direction-tol`.
+pub fn tolerance_box(p: &DesignParams) -> ToleranceBox {
+    ToleranceBox::new(
+        p.theta_tol_deg,
+        p.direction_tol_deg,
+        p.theta_tol_step_deg,
+        p.direction_tol_step_deg,
+    )
+}
+
+/// One solver per substrate realisation: the scene's own (reusing `own` when built), then one
+/// per extra seed of `p.seeds`.
+fn seed_solvers(ds: &DesignScene, p: &DesignParams, own: Option<Solver>) -> Result<Vec<Solver>> {
+    let mut sc = ds.scene.clone();
+    sc.slider.theta = 0.0;
+    let mut v = vec![match own {
+        Some(s) => s,
+        None => Solver::new(&sc)?,
+    }];
+    for &seed in &p.seeds {
+        if seed != sc.substrate.seed {
+            let mut o = sc.clone();
+            o.substrate.seed = seed;
+            v.push(Solver::new(&o)?);
+        }
+    }
+    Ok(v)
+}
+
+/// The robust limit of one candidate as stored (`stages/<pattern>/robust_<θ>_<α>.json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RobustStage {
+    /// The robust limit and windows.
+    pub robust: Robust,
+    /// Wall time when computed (s).
+    pub wall_s: f64,
+}
+
+/// Stage 4b: the robust limit and windows of the candidates `ranking` (one level's, in nominal
+/// order) superlubric at their nominal (θ, α) ([`crate::study::tolerance::robust`]), written
+/// into their scores; reused when stored. Exact for the best `max(confirm, 3)` designs found so
+/// far (`best`, updated); below them an upper bound (`exact: false`).
+#[allow(clippy::too_many_arguments)]
+fn robust_stage(
+    ds: &DesignScene,
+    ranking: &mut [Candidate],
+    bx: &ToleranceBox,
+    solvers: &[Solver],
+    p: &DesignParams,
+    store: &Store,
+    best: &mut Vec<usize>,
+    progress: &dyn Progress,
+) -> Result<()> {
+    let limit = LimitParams {
+        loads: p.loads.clone(),
+        mu_superlubric: p.mu_superlubric,
+        line: p.line,
+        friction: p.friction,
+    };
+    let todo = ranking
+        .iter()
+        .filter(|c| c.score.nominal_to_mn > 0.0)
+        .count();
+    progress.stage(
+        &format!(
+            "{}: robust limit over θ ±{}° × direction ±{}°{}",
+            ds.name,
+            p.theta_tol_deg,
+            p.direction_tol_deg,
+            if solvers.len() > 1 {
+                format!(" × {} substrates", solvers.len())
+            } else {
+                String::new()
+            }
+        ),
+        todo as u64,
+        "designs",
+    );
+    let t0 = Instant::now();
+    let mut paths = 0usize;
+    // exact robust limits for the best `keep` designs; below them an upper bound suffices
+    let keep = p.confirm.max(3);
+    // `best`: exact robust limits found so far (load counts), descending
+    let count = |mn: f64| p.loads.iter().filter(|&&w| label(n_to_mn(w)) <= mn).count();
+    for c in ranking.iter_mut().filter(|c| c.score.nominal_to_mn > 0.0) {
+        let floor = if best.len() >= keep {
+            best[keep - 1]
+        } else {
+            0
+        };
+        if count(c.score.nominal_to_mn) < floor {
+            // cannot reach the top `keep`: its nominal limit is its bound
+            c.score.exact = false;
+            progress.advance(1);
+            continue;
+        }
+        let inputs = Inputs {
+            workflow: "design/robust".into(),
+            scene: Some(scene_file(&ds.scene.with_theta(deg_to_rad(c.theta_deg)))),
+            params: json!({
+                "theta_deg": c.theta_deg,
+                "direction_deg": c.direction_deg,
+                "nominal": c.friction,
+                "theta_offsets_deg": bx.theta_offsets_deg,
+                "direction_offsets_deg": bx.direction_offsets_deg,
+                "seeds": p.seeds,
+                "floor": floor,
+                "load_mN": p.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
+                "mu_superlubric": p.mu_superlubric,
+                "line_deg": p.line.map(rad_to_deg),
+                "friction": record::friction_knobs(&p.friction),
+            }),
+        };
+        let rel = format!(
+            "stages/{}/robust_{}_{}.json",
+            ds.name,
+            tag(c.theta_deg),
+            tag(c.alpha_deg)
+        );
+        let r = match store.load_json::<RobustStage>(&rel, &inputs)? {
+            Some(st) => st.robust,
+            None => {
+                let t = Instant::now();
+                let r = robust(
+                    solvers,
+                    c.theta_deg,
+                    c.direction_deg,
+                    &c.friction,
+                    bx,
+                    &limit,
+                    floor,
+                )?;
+                let st = RobustStage {
+                    robust: r,
+                    wall_s: t.elapsed().as_secs_f64(),
+                };
+                store.save_json(&rel, &inputs, &st)?;
+                paths += st.robust.paths;
+                st.robust
+            }
+        };
+        let at = |w: &[f64]| w.last().copied().unwrap_or(0.0);
+        c.score.superlubric_to_mn = if r.superlubric_to == 0 {
+            0.0
+        } else {
+            label(n_to_mn(p.loads[r.superlubric_to - 1]))
+        };
+        c.score.theta_window_deg = at(&r.theta_window_deg);
+        c.score.direction_window_deg = at(&r.direction_window_deg);
+        c.score.verdict = r.verdict;
+        c.score.exact = r.exact;
+        if r.exact {
+            best.push(r.superlubric_to);
+            best.sort_unstable_by(|a, b| b.cmp(a));
+        }
+        progress.advance(1);
+    }
+    progress.finish();
+    progress.note(&format!(
+        "{}: robust limits of {todo} designs in {:.1} s ({paths} friction paths)",
+        ds.name,
+        t0.elapsed().as_secs_f64()
+    ));
+    Ok(())
 }
 
 /// The screen's parameters for θ (degrees).
@@ -895,6 +1185,11 @@ mod tests {
                 friction: vec![],
                 score: Score {
                     superlubric_to_mn: 3.86,
+                    nominal_to_mn: 3.86,
+                    theta_window_deg: 0.0,
+                    direction_window_deg: 0.0,
+                    verdict: crate::study::verdict::Verdict::Superlubric,
+                    exact: true,
                     intact_to_mn: 3.86,
                     mu_worst: 0.01,
                     contacts: 100.0,

@@ -6,18 +6,23 @@
 //!
 //! **Score**, compared in this order:
 //! 1. `superlubric_to` — the highest load W_k of the list such that the candidate is
-//!    superlubric at every load W_1 … W_k (0: not even at the lowest load): higher is better;
-//! 2. `mu_worst` — the largest μ_est over those loads (over the lowest load alone when
+//!    superlubric at every load W_1 … W_k (0: not even at the lowest load) — with a fabrication
+//!    tolerance, the **robust** limit: the lowest such load over every sample of the tolerance
+//!    box ([`crate::study::tolerance::robust`]): higher is better;
+//! 2. the window — the θ half-width, then the direction half-width, inside which the candidate
+//!    stays superlubric at its nominal limit load: wider is better (0 without tolerance);
+//! 3. `mu_worst` — the largest μ_est over those loads (over the lowest load alone when
 //!    `superlubric_to` is 0): lower is better;
-//! 3. `contacts` — the path-averaged contact number at `superlubric_to` (at the lowest load
+//! 4. `contacts` — the path-averaged contact number at `superlubric_to` (at the lowest load
 //!    when 0): more is better (the load is spread over more asperities);
-//! 4. then θ and α ascending (a fixed order for ties).
+//! 5. then θ and α ascending (a fixed order for ties).
 //!
 //! A candidate not superlubric at the lowest load has only that load estimated
 //! ([`super::scan`]); its `intact_to` then counts that load only.
 
 use super::scan::ThetaEval;
 use crate::study::rows::FrictionRow;
+use crate::study::verdict::Verdict;
 use serde::{Deserialize, Serialize};
 use std::cmp::Ordering;
 use surrogate::units::pa_to_gpa;
@@ -52,8 +57,20 @@ pub struct Candidate {
 /// The score of a candidate (see the module docs; loads in mN).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Score {
-    /// Highest load up to which the candidate is superlubric (mN; 0: none).
+    /// Highest load up to which the candidate is superlubric (mN; 0: none): over the whole
+    /// tolerance box once [`Score::nominal_to_mn`] is set apart from it.
     pub superlubric_to_mn: f64,
+    /// The same at the nominal (θ, α) alone (mN).
+    pub nominal_to_mn: f64,
+    /// θ half-width (degrees) inside which it stays superlubric at the nominal limit load.
+    pub theta_window_deg: f64,
+    /// Direction half-width (degrees) inside which it stays superlubric at that load.
+    pub direction_window_deg: f64,
+    /// The worst verdict at `superlubric_to_mn` (over the box's samples with a tolerance).
+    pub verdict: Verdict,
+    /// Whether `superlubric_to_mn` is exact (else an upper bound: the robust evaluation stopped
+    /// once the design could not reach the top of the ranking).
+    pub exact: bool,
     /// Highest load up to which its coating is intact on the whole path (mN; 0: none).
     pub intact_to_mn: f64,
     /// Largest μ_est up to `superlubric_to` (at the lowest load when that is 0).
@@ -81,6 +98,14 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
     let upto = &rows[..n_sl.max(1).min(rows.len())];
     Score {
         superlubric_to_mn: load(n_sl),
+        nominal_to_mn: load(n_sl),
+        theta_window_deg: 0.0,
+        direction_window_deg: 0.0,
+        verdict: match n_sl {
+            0 => Verdict::Not,
+            n => Verdict::of_row(&rows[n - 1], mu_sl, p_crit),
+        },
+        exact: true,
         intact_to_mn: load(n_in),
         mu_worst: upto
             .iter()
@@ -130,11 +155,35 @@ pub fn candidates(
         .collect()
 }
 
+/// Ranking group: exact robust limits above zero first, then upper bounds (designs whose
+/// evaluation stopped below the top), then those superlubric nowhere.
+fn group(s: &Score) -> u8 {
+    match (s.exact, s.superlubric_to_mn > 0.0) {
+        (true, true) => 0,
+        (false, _) => 1,
+        (true, false) => 2,
+    }
+}
+
 /// The ranking order (best first).
 pub fn compare(a: &Candidate, b: &Candidate) -> Ordering {
-    b.score
-        .superlubric_to_mn
-        .total_cmp(&a.score.superlubric_to_mn)
+    group(&a.score)
+        .cmp(&group(&b.score))
+        .then(
+            b.score
+                .superlubric_to_mn
+                .total_cmp(&a.score.superlubric_to_mn),
+        )
+        .then(
+            b.score
+                .theta_window_deg
+                .total_cmp(&a.score.theta_window_deg),
+        )
+        .then(
+            b.score
+                .direction_window_deg
+                .total_cmp(&a.score.direction_window_deg),
+        )
         .then(a.score.mu_worst.total_cmp(&b.score.mu_worst))
         .then(b.score.contacts.total_cmp(&a.score.contacts))
         .then(a.theta_deg.total_cmp(&b.theta_deg))
@@ -157,9 +206,28 @@ pub struct RankingRow {
     pub line_deg: f64,
     /// Pulling direction (degrees from x).
     pub direction_deg: f64,
-    /// Highest load up to which superlubric: coating intact on the path and μ_est < the limit
-    /// at every load up to it (mN; 0: none).
+    /// θ tolerance of the design (degrees; `--theta-tol`).
+    pub theta_tol_deg: f64,
+    /// Pulling-direction tolerance (degrees; `--direction-tol`).
+    pub direction_tol_deg: f64,
+    /// Robust limit: highest load up to which superlubric (coating intact on the path and
+    /// μ_est < the limit at every load up to it) at every sample of the tolerance box and every
+    /// seed (mN; 0: none). Equal to the nominal with zero tolerances.
     pub superlubric_to_mN: f64,
+    /// The same at the nominal (θ, α) alone (mN).
+    pub superlubric_to_nominal_mN: f64,
+    /// θ half-width (degrees) around the nominal inside which every sample stays superlubric
+    /// at `superlubric_to_nominal_mN` (sampled out to `theta_tol_deg`: equal to it means "at
+    /// least").
+    pub theta_window_deg: f64,
+    /// The same along the pulling direction (degrees; at most `direction_tol_deg`).
+    pub direction_window_deg: f64,
+    /// The worst verdict at `superlubric_to_mN` over the box: superlubric, borderline (within
+    /// the estimate's measured uncertainty of the μ or P_crit threshold) or not.
+    pub verdict: String,
+    /// Whether `superlubric_to_mN` is exact; `false`: an upper bound (the robust evaluation
+    /// stops once a design cannot reach the designs ranked above it, which are exact).
+    pub robust_exact: bool,
     /// Largest μ_est up to `superlubric_to_mN` (at the lowest load when that is 0).
     pub mu_worst: f64,
     /// Path-averaged contacts at `superlubric_to_mN`.
@@ -179,8 +247,8 @@ pub struct RankingRow {
 }
 
 impl RankingRow {
-    /// The row of `c` at rank `rank`.
-    pub fn new(rank: usize, c: &Candidate) -> RankingRow {
+    /// The row of `c` at rank `rank` (tolerances in degrees).
+    pub fn new(rank: usize, c: &Candidate, tol: (f64, f64)) -> RankingRow {
         RankingRow {
             rank,
             pattern: c.pattern.clone(),
@@ -188,7 +256,14 @@ impl RankingRow {
             alpha_deg: c.alpha_deg,
             line_deg: c.line_deg,
             direction_deg: c.direction_deg,
+            theta_tol_deg: tol.0,
+            direction_tol_deg: tol.1,
             superlubric_to_mN: c.score.superlubric_to_mn,
+            superlubric_to_nominal_mN: c.score.nominal_to_mn,
+            theta_window_deg: c.score.theta_window_deg,
+            direction_window_deg: c.score.direction_window_deg,
+            verdict: c.score.verdict.to_string(),
+            robust_exact: c.score.exact,
             mu_worst: c.score.mu_worst,
             contacts_mean: c.score.contacts,
             coating_intact_to_mN: c.score.intact_to_mn,

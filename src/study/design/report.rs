@@ -287,6 +287,7 @@ pub fn answer_line(
             a.index.unwrap_or(0) + 1
         );
     }
+    m.push_str(&tolerance_words(pr, b, p));
     let runs: Vec<String> = dem
         .iter()
         .filter(|d| {
@@ -356,6 +357,66 @@ pub fn answer_line(
     m
 }
 
+/// The tolerance sentences of the answer `b`: the robust limit over the box and the window at
+/// the nominal limit, the verdict where borderline, and the nominal optimum where it differs.
+fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> String {
+    let mut m = String::new();
+    let sc = &b.score;
+    if p.theta_tol_deg > 0.0 || p.direction_tol_deg > 0.0 {
+        let _ = write!(
+            m,
+            " Over the fabrication tolerance θ ±{}° × pull direction ±{}° (the pull direction stays fixed in the substrate frame when the slider is misaligned) it holds to **{} mN**",
+            p.theta_tol_deg, p.direction_tol_deg, sc.superlubric_to_mn
+        );
+        if sc.nominal_to_mn > sc.superlubric_to_mn {
+            let _ = write!(
+                m,
+                "; its nominal {} mN holds only within θ ±{}°, direction ±{}°.",
+                sc.nominal_to_mn, sc.theta_window_deg, sc.direction_window_deg
+            );
+        } else {
+            m.push('.');
+        }
+    }
+    if sc.superlubric_to_mn > 0.0 && sc.verdict != crate::study::verdict::Verdict::Superlubric {
+        let _ = write!(
+            m,
+            " **Borderline** at {} mN: within the estimate's measured uncertainty of a threshold ({}).",
+            sc.superlubric_to_mn,
+            crate::study::verdict::band_words(p.mu_superlubric, pr.scene.scene.coating.p_crit)
+        );
+    }
+    if let Some(n) = pr
+        .ranking
+        .iter()
+        .filter(|c| c.score.nominal_to_mn > sc.superlubric_to_mn)
+        .max_by(|a, c| a.score.nominal_to_mn.total_cmp(&c.score.nominal_to_mn))
+    {
+        let within = |w: f64, step: f64| {
+            if w > 0.0 {
+                format!("±{w}°")
+            } else {
+                format!("less than ±{step}° (the first sample)")
+            }
+        };
+        let _ = write!(
+            m,
+            " The nominal optimum differs: θ = {}°, α = {}° reaches {} mN only within θ {} (direction {}), {}{} mN over the tolerance.",
+            n.theta_deg,
+            n.alpha_deg,
+            n.score.nominal_to_mn,
+            within(n.score.theta_window_deg, p.theta_tol_step_deg.min(p.theta_tol_deg)),
+            within(
+                n.score.direction_window_deg,
+                p.direction_tol_step_deg.min(p.direction_tol_deg)
+            ),
+            if n.score.exact { "" } else { "≤ " },
+            n.score.superlubric_to_mn
+        );
+    }
+    m
+}
+
 /// What the study-protocol run `s` is run on, in words: the recommended design (a pattern's
 /// answer, confirmed by the DEM or not) or another design.
 fn which_design(o: &DesignOutcome, s: &DemRow) -> String {
@@ -396,6 +457,15 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         let _ = writeln!(m, "{}", answer_line(pr, a, &dem, p, w_top));
     }
     // 2. How sure
+    for (pr, tm) in o.patterns.iter().zip(&o.maps) {
+        if tm.is_some() {
+            let _ = writeln!(
+                m,
+                "\n![{0}: superlubric limit over θ × pull direction around the answer, tolerance box drawn](tolerance_{0}.png)",
+                pr.scene.name
+            );
+        }
+    }
     let _ = writeln!(m, "\n## How sure: surrogate estimate against the DEM\n");
     if !o.dem_ran {
         let _ = writeln!(
@@ -743,7 +813,7 @@ pub fn write(
             pr.ranking
                 .iter()
                 .enumerate()
-                .map(|(k, c)| RankingRow::new(k + 1, c))
+                .map(|(k, c)| RankingRow::new(k + 1, c, (p.theta_tol_deg, p.direction_tol_deg)))
         })
         .collect();
     if store.write_if_changed(
@@ -838,6 +908,42 @@ pub fn write(
         if !store.path(&rel).exists() || fr_changed || dem_changed {
             outs.attempt(&rel, &store.path(&rel), || {
                 chart_png(&store.path(&rel), &mu_chart(pr, &dem, p))
+            });
+            wrote.push(rel);
+        }
+    }
+    // tolerance maps around the answers
+    for (pr, m) in o.patterns.iter().zip(&o.maps) {
+        let Some(m) = m else { continue };
+        let name = &pr.scene.name;
+        let rel = format!("tolerance_{name}.csv");
+        let changed = store.write_if_changed(
+            &mut outs,
+            &rel,
+            csv_bytes(&m.rows),
+            Some(m.rows.len() as u64),
+        );
+        if changed {
+            wrote.push(rel);
+        }
+        let rel = format!("tolerance_{name}.png");
+        if !store.path(&rel).exists() || changed {
+            let title = format!(
+                "{name}: superlubric limit around the answer θ = {}°, direction {}° (box ±{}° × ±{}°)",
+                m.nominal.0,
+                fmt_g(m.nominal.1, 4),
+                p.theta_tol_deg,
+                p.direction_tol_deg
+            );
+            outs.attempt(&rel, &store.path(&rel), || {
+                crate::plot::tolerance::tolerance_png(
+                    &store.path(&rel),
+                    &title,
+                    &m.rows,
+                    m.theta_points,
+                    m.nominal,
+                    (p.theta_tol_deg, p.direction_tol_deg),
+                )
             });
             wrote.push(rel);
         }

@@ -1,0 +1,264 @@
+//! `superlube tolerance`: flags → [`crate::study::tolerance::map`] → `DIR/map.csv` and
+//! `DIR/map.png`, each with its sidecar.
+
+use super::design::STUDY_LOADS;
+use super::friction_args::FrictionKnobArgs;
+use super::{checks, SceneArgs};
+use crate::plot::tolerance::tolerance_png;
+use crate::study::rows::label;
+use crate::study::sink::csv_bytes;
+use crate::study::tolerance::{map, LimitParams, MapParams};
+use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs, Progress, Reporter};
+use anyhow::{bail, Result};
+use serde_json::json;
+use std::path::PathBuf;
+use surrogate::solver::Solver;
+use surrogate::units::{n_to_mn, rad_to_deg};
+
+/// Options of `superlube tolerance`: the superlubric limit load (friction estimate) of one
+/// design over θ ± range × pulling direction ± range. A misaligned slider keeps the nominal
+/// pulling direction in the substrate frame (the tribometer's axis does not turn with the
+/// slider), so the map's y axis is the direction from the substrate's x axis.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Nominal slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    theta: Option<f64>,
+    /// Nominal pulling angle α in degrees from the slider's contact line at the nominal θ
+    /// (as in `design`'s ranking; 90 = across the lines). Give this or --direction-deg.
+    #[arg(
+        long,
+        value_name = "DEG",
+        allow_hyphen_values = true,
+        conflicts_with = "direction_deg"
+    )]
+    alpha: Option<f64>,
+    /// Nominal pulling direction in degrees from the substrate's x axis (design's
+    /// `direction_deg`). Give this or --alpha.
+    #[arg(long = "direction-deg", value_name = "DEG", allow_hyphen_values = true)]
+    direction_deg: Option<f64>,
+    /// Half-width in degrees of the map in θ around the nominal (≥ 0).
+    #[arg(
+        long = "theta-range",
+        value_name = "DEG",
+        default_value_t = 0.2,
+        allow_hyphen_values = true
+    )]
+    theta_range: f64,
+    /// Points of the map along θ (odd keeps the nominal on the grid; 1 with range 0).
+    #[arg(long = "theta-points", value_name = "N", default_value_t = 41)]
+    theta_points: usize,
+    /// Half-width in degrees of the map in pulling direction around the nominal (≥ 0).
+    #[arg(
+        long = "direction-range",
+        value_name = "DEG",
+        default_value_t = 1.0,
+        allow_hyphen_values = true
+    )]
+    direction_range: f64,
+    /// Points of the map along the direction.
+    #[arg(long = "direction-points", value_name = "N", default_value_t = 21)]
+    direction_points: usize,
+    /// Fabrication tolerance in θ (degrees), drawn as the box on the map (≤ --theta-range).
+    #[arg(
+        long = "theta-tol",
+        value_name = "DEG",
+        default_value_t = 0.1,
+        allow_hyphen_values = true
+    )]
+    theta_tol: f64,
+    /// Tolerance of the pulling direction (degrees), drawn as the box (≤ --direction-range).
+    #[arg(
+        long = "direction-tol",
+        value_name = "DEG",
+        default_value_t = 0.5,
+        allow_hyphen_values = true
+    )]
+    direction_tol: f64,
+    /// Normal loads W in mN, strictly increasing [default: the study's 0.35 … 3.86].
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS, allow_hyphen_values = true)]
+    load_mn: String,
+    /// Friction coefficient below which a load counts as superlubric.
+    #[arg(
+        long = "mu-superlubric",
+        value_name = "MU",
+        default_value_t = 0.02,
+        allow_hyphen_values = true
+    )]
+    mu_superlubric: f64,
+    /// Contact-line angle in degrees from the substrate x axis that α is measured from
+    /// [default: the moiré estimate at each θ].
+    #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
+    line_deg: Option<f64>,
+    #[command(flatten)]
+    knobs: FrictionKnobArgs,
+    /// Output folder: map.csv (one row per point, direction outer, θ inner: theta_deg,
+    /// direction_deg, offsets, superlubric_to_mN, confident_to_mN, limited_by, …) and map.png
+    /// (heat map of superlubric_to_mN with the nominal point and the tolerance box), each with a
+    /// .meta.json sidecar.
+    #[arg(long, value_name = "DIR")]
+    out: PathBuf,
+}
+
+/// Grid of `n` points over ±`range` (degrees): `[0]` for one point.
+fn grid(range: f64, n: usize, flag_range: &str, flag_points: &str) -> Result<Vec<f64>> {
+    checks::non_negative(range, flag_range)?;
+    match (n, range > 0.0) {
+        (0, _) => bail!("`{flag_points}`: 0 points; give at least 1"),
+        (1, true) => {
+            bail!("`{flag_points}`: 1 point cannot span ±{range}°; give ≥ 2 or `{flag_range} 0`")
+        }
+        (1, false) => Ok(vec![0.0]),
+        _ if n > 2001 => bail!("`{flag_points}`: {n} points is more than 2001"),
+        _ => Ok((0..n)
+            .map(|k| label(-range + 2.0 * range * k as f64 / (n - 1) as f64))
+            .collect()),
+    }
+}
+
+/// Runs `superlube tolerance`.
+pub fn run(a: Args) -> Result<()> {
+    // every check before any work
+    let loads = checks::loads(&a.load_mn)?;
+    if loads.windows(2).any(|w| w[1] <= w[0]) {
+        bail!("`--load-mn`: loads must be strictly increasing");
+    }
+    let thetas = grid(
+        a.theta_range,
+        a.theta_points,
+        "--theta-range",
+        "--theta-points",
+    )?;
+    let dirs = grid(
+        a.direction_range,
+        a.direction_points,
+        "--direction-range",
+        "--direction-points",
+    )?;
+    checks::non_negative(a.theta_tol, "--theta-tol")?;
+    checks::non_negative(a.direction_tol, "--direction-tol")?;
+    if a.theta_tol > a.theta_range || a.direction_tol > a.direction_range {
+        bail!(
+            "the tolerance box (`--theta-tol` {}, `--direction-tol` {}) must lie on the map (`--theta-range` {}, `--direction-range` {})",
+            a.theta_tol, a.direction_tol, a.theta_range, a.direction_range
+        );
+    }
+    checks::positive(a.mu_superlubric, "--mu-superlubric")?;
+    let line = checks::line_deg(a.line_deg)?;
+    let knobs = a.knobs.params()?;
+    knobs.validate()?;
+    let sc = a.scene.resolve(a.theta)?;
+    let theta_deg = label(rad_to_deg(sc.scene.slider.theta));
+    let direction_deg = match (a.alpha, a.direction_deg) {
+        (Some(al), None) => {
+            checks::alpha(al)?;
+            let l = crate::study::friction::line_at(&sc.scene, sc.scene.slider.theta, line);
+            label(rad_to_deg(l.angle) + al)
+        }
+        (None, Some(d)) if d.is_finite() => d,
+        (None, Some(d)) => bail!("`--direction-deg`: {d} is not a finite angle"),
+        _ => bail!("give the nominal pulling direction: `--alpha DEG` (from the contact line) or `--direction-deg DEG` (from x)"),
+    };
+    let csv = a.out.join("map.csv");
+    let png = a.out.join("map.png");
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| anyhow::anyhow!("`--out`: cannot create {}: {e}", a.out.display()))?;
+    check_outputs(&[("--out", Some(&csv)), ("--out", Some(&png))])?;
+    let mut scene0 = sc.scene.clone();
+    scene0.slider.theta = 0.0;
+    let solver = Solver::new(&scene0)?;
+    let params = MapParams {
+        theta_deg,
+        direction_deg,
+        theta_offsets_deg: thetas,
+        direction_offsets_deg: dirs,
+        limit: LimitParams {
+            loads,
+            mu_superlubric: a.mu_superlubric,
+            line,
+            friction: knobs,
+        },
+    };
+    let rep = Reporter::stderr();
+    sc.log(&rep);
+    let n = params.theta_offsets_deg.len() * params.direction_offsets_deg.len();
+    rep.stage("tolerance map", n as u64, "points");
+    let t0 = std::time::Instant::now();
+    let rows = map(&solver, &params, &|| rep.advance(1))?;
+    rep.finish();
+    let paths: usize = rows.iter().map(|r| r.loads_estimated).sum();
+    rep.note(&format!(
+        "tolerance: {n} points ({paths} load estimates) in {:.1} s",
+        t0.elapsed().as_secs_f64()
+    ));
+    let mut recorded = scene_file(&sc.scene);
+    recorded.slider.theta_deg = Some(theta_deg);
+    let mut outs = Outputs::new(
+        Inputs {
+            workflow: "tolerance".into(),
+            scene: Some(recorded),
+            params: json!({
+                "theta_deg": theta_deg,
+                "direction_deg": direction_deg,
+                "theta_offsets_deg": record::axis(&params.theta_offsets_deg),
+                "direction_offsets_deg": record::axis(&params.direction_offsets_deg),
+                "theta_tol_deg": a.theta_tol,
+                "direction_tol_deg": a.direction_tol,
+                "load_mN": params.limit.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
+                "mu_superlubric": a.mu_superlubric,
+                "line_deg": line.map(rad_to_deg),
+                "friction": record::friction_knobs(&params.limit.friction),
+            }),
+        },
+        sc.warnings.clone(),
+    );
+    outs.write(
+        "--out",
+        Some(&csv),
+        csv_bytes(&rows),
+        Some(rows.len() as u64),
+    );
+    let nominal = rows
+        .iter()
+        .find(|r| r.theta_offset_deg == 0.0 && r.direction_offset_deg == 0.0);
+    let box_min = rows
+        .iter()
+        .filter(|r| {
+            r.theta_offset_deg.abs() <= a.theta_tol + 1e-9
+                && r.direction_offset_deg.abs() <= a.direction_tol + 1e-9
+        })
+        .map(|r| r.superlubric_to_mN)
+        .fold(f64::INFINITY, f64::min);
+    let title = format!(
+        "{}: superlubric limit around θ = {}°, direction {}° (box ±{}° × ±{}°: {} mN)",
+        sc.scene.pattern,
+        theta_deg,
+        direction_deg,
+        a.theta_tol,
+        a.direction_tol,
+        if box_min.is_finite() {
+            format!("{box_min}")
+        } else {
+            "–".into()
+        }
+    );
+    outs.attempt("--out", &png, || {
+        tolerance_png(
+            &png,
+            &title,
+            &rows,
+            params.theta_offsets_deg.len(),
+            (theta_deg, direction_deg),
+            (a.theta_tol, a.direction_tol),
+        )
+    });
+    if let Some(r) = nominal {
+        rep.note(&format!(
+            "nominal θ = {theta_deg}°, direction {direction_deg}°: superlubric up to {} mN; over the box ±{}° × ±{}°: {} mN",
+            r.superlubric_to_mN, a.theta_tol, a.direction_tol, box_min
+        ));
+    }
+    outs.finish()
+}

@@ -1,0 +1,118 @@
+//! The verdict of one friction estimate (θ, α, W): superlubric, borderline or not.
+//!
+//! The estimate's own rule (`superlubric` in [`crate::study::design::rank`]) is a yes/no on two
+//! thresholds: μ_est < μ_sl (0.02) and the path's largest P_max ≤ P_crit. The verdict widens each
+//! threshold by the estimate's measured error against the DEM, so that a row the DEM could place
+//! on the other side of a threshold is called **borderline**, never a plain yes:
+//!
+//! - μ: μ_est/μ_DEM measured 0.83–1.10 over the 14 configurations of the 17-run DEM comparison
+//!   that are off the springs mount's resonance ([`MU_RATIO`]);
+//! - P_max: the DEM's largest P_max (every step) over the estimate's path P_max measured
+//!   0.962–1.048 over the 10 runs of that table that slide smoothly ([`P_RATIO`]).
+//!
+//! superlubric ⇔ μ_est/0.83 < μ_sl and 1.048·P_max ≤ P_crit;
+//! not ⇔ no estimate, or μ_est/1.10 ≥ μ_sl, or 0.962·P_max > P_crit; borderline otherwise.
+//! With the study's thresholds: superlubric needs μ_est < 0.0166 and P_max ≤ 3.82 GPa; not is
+//! μ_est ≥ 0.022 or P_max > 4.16 GPa. The measurement: docs/validation/friction-estimate.md.
+//! Cost: a few comparisons.
+
+use super::rows::FrictionRow;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use surrogate::units::pa_to_gpa;
+
+/// Range of μ_est/μ_DEM measured off the mount resonance (lowest, highest).
+pub const MU_RATIO: (f64, f64) = (0.83, 1.10);
+
+/// Range of (DEM max P_max)/(estimate's path P_max) measured on smoothly sliding runs (lowest,
+/// highest).
+pub const P_RATIO: (f64, f64) = (0.962, 1.048);
+
+/// The verdict of one estimate (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    /// Outside both uncertainty bands on the good side: the DEM is expected to agree.
+    Superlubric,
+    /// Within the measured uncertainty of the μ or the P_crit threshold.
+    Borderline,
+    /// Beyond a threshold by more than the uncertainty, or no estimate.
+    Not,
+}
+
+impl Verdict {
+    /// The verdict of μ_est and the path's P_max (Pa) against μ_sl and P_crit (Pa); `None`
+    /// (no estimate) is `Not`.
+    pub fn of(mu_est: Option<f64>, p_max: Option<f64>, mu_sl: f64, p_crit: f64) -> Verdict {
+        let (Some(mu), Some(p)) = (mu_est, p_max) else {
+            return Verdict::Not;
+        };
+        if mu / MU_RATIO.1 >= mu_sl || p * P_RATIO.0 > p_crit {
+            Verdict::Not
+        } else if mu / MU_RATIO.0 < mu_sl && p * P_RATIO.1 <= p_crit {
+            Verdict::Superlubric
+        } else {
+            Verdict::Borderline
+        }
+    }
+
+    /// The verdict of a friction row (`Not` where it has an error).
+    pub fn of_row(r: &FrictionRow, mu_sl: f64, p_crit: f64) -> Verdict {
+        if !r.error.is_empty() {
+            return Verdict::Not;
+        }
+        Verdict::of(r.mu_est, r.p_max_GPa.map(|p| p * 1e9), mu_sl, p_crit)
+    }
+
+    /// The lowercase word (`superlubric`, `borderline`, `not`).
+    pub fn word(self) -> &'static str {
+        match self {
+            Verdict::Superlubric => "superlubric",
+            Verdict::Borderline => "borderline",
+            Verdict::Not => "not",
+        }
+    }
+}
+
+impl fmt::Display for Verdict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.word())
+    }
+}
+
+/// The band in words, for reports and `--help`: the μ_est and P_max ranges that are borderline.
+pub fn band_words(mu_sl: f64, p_crit: f64) -> String {
+    format!(
+        "borderline = μ_est in [{:.4}, {:.4}) or path P_max in ({:.2}, {:.2}] GPa (the estimate's measured error against the DEM: μ_est/μ_DEM {}–{}, DEM/estimate P_max {}–{})",
+        mu_sl * MU_RATIO.0,
+        mu_sl * MU_RATIO.1,
+        pa_to_gpa(p_crit / P_RATIO.1),
+        pa_to_gpa(p_crit / P_RATIO.0),
+        MU_RATIO.0,
+        MU_RATIO.1,
+        P_RATIO.0,
+        P_RATIO.1
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bands_split_the_thresholds() {
+        let v = |mu: f64, p_gpa: f64| Verdict::of(Some(mu), Some(p_gpa * 1e9), 0.02, 4e9);
+        assert_eq!(v(0.010, 3.0), Verdict::Superlubric);
+        assert_eq!(v(0.0165, 3.8), Verdict::Superlubric);
+        // μ within the band on either side of 0.02
+        assert_eq!(v(0.0170, 3.0), Verdict::Borderline);
+        assert_eq!(v(0.0211, 3.0), Verdict::Borderline);
+        assert_eq!(v(0.0221, 3.0), Verdict::Not);
+        // P_max within the band on either side of 4 GPa
+        assert_eq!(v(0.010, 3.9), Verdict::Borderline);
+        assert_eq!(v(0.010, 4.1), Verdict::Borderline);
+        assert_eq!(v(0.010, 4.2), Verdict::Not);
+        assert_eq!(Verdict::of(None, Some(1e9), 0.02, 4e9), Verdict::Not);
+        assert_eq!(Verdict::Borderline.to_string(), "borderline");
+    }
+}

@@ -1,0 +1,234 @@
+//! `superlube tolerance` and `design --theta-tol/--direction-tol` on small scenes: the map's
+//! files and sidecars, its nominal point against `superlube friction`, the screen's bound,
+//! zero tolerance reproducing the nominal ranking, the robust ranking's order, and bad input
+//! refused naming the flag before anything is written.
+
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
+use std::path::Path;
+
+/// A 15 µm slider (≈ 80 spheres) and four loads scaled to its sphere count.
+const SMALL: [&str; 6] = [
+    "--slider-radius-um",
+    "15",
+    "--substrate-um",
+    "60x60",
+    "--load-mn",
+    "0.01,0.03,0.06,0.09",
+];
+
+fn rows(path: &Path) -> Vec<std::collections::HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let h = r.headers().unwrap().clone();
+    r.records()
+        .map(|x| {
+            let x = x.unwrap();
+            h.iter()
+                .zip(x.iter())
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect()
+        })
+        .collect()
+}
+
+fn num(r: &std::collections::HashMap<String, String>, k: &str) -> f64 {
+    r[k].parse().unwrap_or_else(|_| panic!("{k} = {:?}", r[k]))
+}
+
+#[test]
+fn map_files_nominal_point_and_the_screen_bound() {
+    let d = tmpdir("tolerance-map");
+    let out = d.join("map");
+    let o = bin()
+        .args([
+            "tolerance",
+            "--pattern",
+            "tri-tri",
+            "--theta",
+            "30",
+            "--alpha",
+            "0",
+        ])
+        .args(SMALL)
+        .args(["--theta-range", "0.4", "--theta-points", "5"])
+        .args(["--direction-range", "1", "--direction-points", "3"])
+        .args(["--theta-tol", "0.2", "--direction-tol", "0.5", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    for f in [
+        "map.csv",
+        "map.png",
+        "map.csv.meta.json",
+        "map.png.meta.json",
+    ] {
+        assert!(out.join(f).exists(), "{f} missing");
+    }
+    let m = rows(&out.join("map.csv"));
+    assert_eq!(m.len(), 15);
+    // direction outer, θ inner
+    assert_eq!(num(&m[0], "theta_offset_deg"), -0.4);
+    assert_eq!(num(&m[1], "theta_offset_deg"), -0.2);
+    assert_eq!(num(&m[0], "direction_offset_deg"), -1.0);
+    assert_eq!(num(&m[5], "direction_offset_deg"), 0.0);
+    for r in &m {
+        // the screen's placement bound is never exceeded; confident ≤ superlubric
+        assert!(num(r, "superlubric_to_mN") <= num(r, "placement_intact_to_mN"));
+        assert!(num(r, "confident_to_mN") <= num(r, "superlubric_to_mN"));
+        // the pull direction is fixed in the substrate frame: α follows the contact line
+        assert!(
+            (num(r, "direction_deg")
+                - num(r, "direction_offset_deg")
+                - m[7]["direction_deg"].parse::<f64>().unwrap())
+            .abs()
+                < 1e-9
+        );
+    }
+    // the nominal point against `superlube friction` at the same θ, α and loads
+    let nominal = &m[7];
+    assert_eq!(num(nominal, "theta_offset_deg"), 0.0);
+    let fr = d.join("fr.csv");
+    let o = bin()
+        .args([
+            "friction",
+            "--pattern",
+            "tri-tri",
+            "--theta",
+            "30",
+            "--alpha",
+            "0",
+        ])
+        .args(SMALL)
+        .arg("--out")
+        .arg(&fr)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let mut expect = 0.0;
+    for r in rows(&fr) {
+        let ok = r["error"].is_empty() && num(&r, "p_max_GPa") <= 4.0 && num(&r, "mu_est") < 0.02;
+        if !ok {
+            break;
+        }
+        expect = num(&r, "load_mN");
+    }
+    assert_eq!(num(nominal, "superlubric_to_mN"), expect);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn tolerance_bad_input_names_the_flag() {
+    let d = tmpdir("tolerance-bad");
+    let out = d.join("x");
+    let o = out.to_str().unwrap();
+    let run = |extra: &[&str], flag: &str| {
+        let mut a: Vec<&str> = vec!["tolerance", "--pattern", "tri-tri", "--alpha", "0"];
+        a.extend(SMALL);
+        a.extend(extra);
+        a.extend(["--out", o]);
+        fails_naming(&a, flag);
+    };
+    run(&["--theta-range", "-0.1"], "--theta-range");
+    run(&["--direction-range", "NaN"], "--direction-range");
+    run(&["--theta-points", "0"], "--theta-points");
+    run(&["--theta-tol", "0.5"], "--theta-tol");
+    run(&["--theta-tol", "-1"], "--theta-tol");
+    fails_naming(
+        &["tolerance", "--pattern", "tri-tri", "--out", o],
+        "--direction-deg",
+    );
+    assert!(!out.exists(), "nothing may be written");
+    std::fs::remove_dir_all(&d).ok();
+}
+
+fn design(extra: &[&str], out: &Path) {
+    let o = bin()
+        .args(["design", "--theta", "0:30:1", "--no-dem"])
+        .args(SMALL)
+        .args(extra)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+}
+
+#[test]
+fn zero_tolerance_is_the_nominal_ranking_and_the_robust_one_is_ordered() {
+    let d = tmpdir("tolerance-design");
+    let nominal = d.join("nominal");
+    design(&["--theta-tol", "0", "--direction-tol", "0"], &nominal);
+    let n = rows(&nominal.join("ranking.csv"));
+    assert!(!n.is_empty());
+    for r in &n {
+        assert_eq!(r["superlubric_to_mN"], r["superlubric_to_nominal_mN"]);
+        assert_eq!(num(r, "theta_window_deg"), 0.0);
+        assert_eq!(r["robust_exact"], "true");
+    }
+    // ranked by the nominal limit, then μ: non-increasing limits within a pattern
+    for w in n.windows(2) {
+        if w[0]["pattern"] == w[1]["pattern"] {
+            assert!(num(&w[0], "superlubric_to_mN") >= num(&w[1], "superlubric_to_mN"));
+        }
+    }
+    let robust = d.join("robust");
+    design(
+        &[
+            "--theta-tol",
+            "1",
+            "--theta-tol-step",
+            "0.5",
+            "--direction-tol",
+            "0.5",
+        ],
+        &robust,
+    );
+    let r = rows(&robust.join("ranking.csv"));
+    for x in &r {
+        // the robust limit never exceeds the nominal one, windows stay inside the box
+        assert!(num(x, "superlubric_to_mN") <= num(x, "superlubric_to_nominal_mN"));
+        assert!(num(x, "theta_window_deg") <= 1.0);
+        assert!(num(x, "direction_window_deg") <= 0.5);
+        assert!(["superlubric", "borderline", "not"].contains(&x["verdict"].as_str()));
+    }
+    // a design that fails somewhere in its box is never ranked above one superlubric over its
+    // whole box at a higher robust load (exact limits come first, in order)
+    for w in r.windows(2) {
+        if w[0]["pattern"] == w[1]["pattern"]
+            && w[0]["robust_exact"] == "true"
+            && w[1]["robust_exact"] == "true"
+        {
+            assert!(num(&w[0], "superlubric_to_mN") >= num(&w[1], "superlubric_to_mN"));
+        }
+    }
+    let report = std::fs::read_to_string(robust.join("report.md")).unwrap();
+    assert!(report.contains("fabrication tolerance θ ±1°"), "{report}");
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn design_tolerance_bad_input_names_the_flag() {
+    let d = tmpdir("tolerance-design-bad");
+    let out = d.join("x");
+    let o = out.to_str().unwrap();
+    let run = |extra: &[&str], flag: &str| {
+        let mut a: Vec<&str> = vec!["design", "--no-dem"];
+        a.extend(SMALL);
+        a.extend(extra);
+        a.extend(["--out", o]);
+        fails_naming(&a, flag);
+    };
+    run(&["--theta-tol", "-0.1"], "--theta-tol");
+    run(&["--theta-tol", "NaN"], "--theta-tol");
+    run(&["--direction-tol", "-1"], "--direction-tol");
+    // square-tri's θ domain is 0–15°: ±8° spans it
+    run(
+        &["--pattern", "square-tri", "--theta-tol", "8"],
+        "--theta-tol",
+    );
+    run(&["--seeds", "1,2"], "--seeds");
+    run(&["--sigma-h-um", "0.01", "--seeds", "x"], "--seeds");
+    assert!(!out.exists(), "nothing may be written");
+    std::fs::remove_dir_all(&d).ok();
+}
