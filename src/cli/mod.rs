@@ -17,7 +17,7 @@ mod lammps_check;
 mod landscape;
 mod merge;
 mod protocol_args;
-mod range;
+
 mod scene_args;
 mod screen;
 mod slide;
@@ -25,7 +25,7 @@ mod slurm;
 mod sweep_args;
 mod tolerance;
 
-pub use range::parse_list_or_range;
+pub use crate::study::range::parse_list_or_range;
 pub use scene_args::SceneArgs;
 
 use crate::study::{Estimate, Sweep};

@@ -111,6 +111,7 @@ pub mod merge;
 pub mod meta;
 pub mod output;
 pub mod progress;
+pub mod range;
 pub mod record;
 pub mod resume;
 pub mod rows;

@@ -13,7 +13,7 @@
 //! superlubric ⇔ μ_est/0.83 < μ_sl and 1.048·P_max ≤ P_crit;
 //! not ⇔ no estimate, or μ_est/1.10 ≥ μ_sl, or 0.962·P_max > P_crit; borderline otherwise.
 //! With the study's thresholds: superlubric needs μ_est < 0.0166 and P_max ≤ 3.82 GPa; not is
-//! μ_est ≥ 0.022 or P_max > 4.16 GPa. The measurement: docs/validation/friction-estimate.md.
+//! μ_est ≥ 0.022 or P_max > 4.16 GPa. The measurement: docs/validation/verdict-band.md.
 //! Cost: a few comparisons.
 
 use super::rows::FrictionRow;

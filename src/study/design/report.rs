@@ -192,7 +192,7 @@ fn theta_text(v: &[f64]) -> String {
     if v.len() >= 3 {
         let step = label(v[1] - v[0]);
         let range = format!("{}:{}:{}", v[0], v[v.len() - 1], step);
-        if crate::cli::parse_list_or_range(&range, "--theta").is_ok_and(|r| r == v) {
+        if crate::study::range::parse_list_or_range(&range, "--theta").is_ok_and(|r| r == v) {
             return range;
         }
     }
