@@ -168,3 +168,36 @@ def test_scene_keywords_and_files(tmp_path):
     assert t.to_dict()["material"]["youngs_GPa"] == 50
     assert t.to_dict()["substrate"]["seed"] == 7 and t.name == "a"
     assert s.replace(youngs_GPa=100).to_dict()["material"]["youngs_GPa"] == 100
+
+
+def test_sigint_raises_keyboard_interrupt(private_tmp):
+    import os
+    import signal
+    import threading
+
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    t0 = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            _long_screen(progress=False)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - t0 < 10, "did not stop promptly"
+    assert list(private_tmp.iterdir()) == []
+
+
+def test_corrugation_friction_equilibrate_columns(cli_bin, tmp_path):
+    scene = superlube.Scene("square-tri", radius_um=9, size_um=[60, 40])
+    cor = superlube.corrugation(scene, theta_deg=0, load_mN=1.4, alpha_deg=[0, 90],
+                                distance_um=3, step_um=0.5)  # fmt: skip
+    assert list(cor["alpha_deg"]) == [0.0, 90.0] and "corrugation_nm" in cor.columns
+    fr = superlube.friction(scene, theta_deg=[0], alpha_deg=[0], load_mN=[1.4], length_um=6)
+    assert len(fr) == 1 and "load_mN" in fr.columns
+    eq = superlube.equilibrate(scene, load_mN=1.4, equilibrate_us=0.1, rigid_z=True)
+    assert "t_us" in eq.columns and len(eq) > 0 and "summary" in eq.attrs
+    scene.write(tmp_path / "s.toml")
+    r = subprocess.run([cli_bin, "friction", "--scene", tmp_path / "s.toml", "--theta", "0",
+                        "--alpha", "0", "--load-mn", "1.4", "--length-um", "6"],
+                       check=True, capture_output=True, text=True)  # fmt: skip
+    assert list(fr.columns) == r.stdout.splitlines()[0].split(",")
