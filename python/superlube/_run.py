@@ -150,7 +150,11 @@ class _Reporter:
             self.close()
             self.stage = key
             self.bar = tqdm(total=p["total"], desc=p["stage"], unit=f" {p['unit']}", leave=False)
-        self.bar.n = min(p["done"], p["total"])
+        step = min(p["done"], p["total"]) - self.bar.n
+        if step >= 0:
+            self.bar.update(step)  # keeps tqdm's rate and ETA right
+        else:
+            self.bar.n = p["done"]
         if p["status"]:
             self.bar.set_postfix_str(p["status"], refresh=False)
         self.bar.refresh()
