@@ -286,6 +286,9 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
                 slide(&job.scene, &params, progress)
             }))
             .unwrap_or_else(|p| {
+                if p.is::<crate::study::progress::Cancelled>() {
+                    std::panic::resume_unwind(p); // the caller's interrupt, not this run's failure
+                }
                 let msg = p
                     .downcast_ref::<&str>()
                     .map(|s| s.to_string())

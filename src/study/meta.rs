@@ -259,11 +259,28 @@ pub fn input_differences(a: &Inputs, b: &Inputs, max: usize) -> Vec<String> {
     out
 }
 
-/// The process's arguments, the program name written as `superlube`.
+/// The command line of a command run in process (the Python module), recorded instead of the
+/// process's arguments while set ([`set_command_line`]).
+static COMMAND_LINE: std::sync::Mutex<Option<Vec<String>>> = std::sync::Mutex::new(None);
+
+/// Sets (or with `None` clears) the command line the sidecars record, for a caller that runs
+/// a command in process with its own arguments (one command at a time).
+pub fn set_command_line(argv: Option<Vec<String>>) {
+    *COMMAND_LINE.lock().unwrap_or_else(|e| e.into_inner()) = argv;
+}
+
+/// The process's arguments (or those set by [`set_command_line`]), the program name written as
+/// `superlube`.
 pub fn command_line() -> Vec<String> {
-    let mut v: Vec<String> = std::env::args_os()
-        .map(|a| a.to_string_lossy().into_owned())
-        .collect();
+    let set = COMMAND_LINE
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .clone();
+    let mut v: Vec<String> = set.unwrap_or_else(|| {
+        std::env::args_os()
+            .map(|a| a.to_string_lossy().into_owned())
+            .collect()
+    });
     if let Some(first) = v.first_mut() {
         *first = "superlube".into();
     }

@@ -3,8 +3,9 @@
 //! terminal, plain lines every few percent when stderr is a log file or a batch job's output).
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::cell::RefCell;
 use std::io::IsTerminal;
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// What a workflow tells its caller while it runs. Implementations must be cheap and
@@ -44,6 +45,33 @@ pub const LINE_EVERY_PERCENT: u64 = 5;
 pub struct Reporter {
     bar: bool,
     state: Mutex<State>,
+    /// Set by [`with_reporter`]: every call goes there instead of stderr.
+    forward: Option<Arc<dyn Progress + Send>>,
+}
+
+/// The payload of a panic by which a [`Progress`] stops the workflow it watches (a caller's
+/// interrupt: the Python module's Ctrl-C or a raising callback). Code that catches panics (the
+/// DEM batch's per-run `catch_unwind`) must resume this one, not record it as a failure.
+#[derive(Debug, Clone, Copy)]
+pub struct Cancelled;
+
+thread_local! {
+    static FORWARD: RefCell<Option<Arc<dyn Progress + Send>>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` with every [`Reporter::stderr`] made on this thread forwarding to `progress`
+/// (library callers of the commands, e.g. the Python module, see the progress of
+/// `cli::run` without a terminal). Restores the previous reporter afterwards, also on panic.
+pub fn with_reporter<R>(progress: Arc<dyn Progress + Send>, f: impl FnOnce() -> R) -> R {
+    struct Restore(Option<Arc<dyn Progress + Send>>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            let prev = self.0.take();
+            FORWARD.with(|c| *c.borrow_mut() = prev);
+        }
+    }
+    let _restore = Restore(FORWARD.with(|c| c.borrow_mut().replace(progress)));
+    f()
 }
 
 struct State {
@@ -59,8 +87,11 @@ struct State {
 
 impl Reporter {
     /// A bar if stderr is a terminal, plain lines otherwise.
+    /// Inside [`with_reporter`]: forwards there instead.
     pub fn stderr() -> Reporter {
-        Reporter::new(std::io::stderr().is_terminal())
+        let mut r = Reporter::new(std::io::stderr().is_terminal());
+        r.forward = FORWARD.with(|c| c.borrow().clone());
+        r
     }
 
     /// `bar = true`: live bar; `false`: plain lines.
@@ -77,6 +108,7 @@ impl Reporter {
                 next_pct: LINE_EVERY_PERCENT,
                 pb: None,
             }),
+            forward: None,
         }
     }
 
@@ -136,6 +168,9 @@ impl State {
 
 impl Progress for Reporter {
     fn stage(&self, name: &str, total: u64, unit: &str) {
+        if let Some(f) = &self.forward {
+            return f.stage(name, total, unit);
+        }
         let mut s = self.lock();
         if let Some(pb) = s.pb.take() {
             pb.finish_and_clear();
@@ -162,6 +197,9 @@ impl Progress for Reporter {
     }
 
     fn advance(&self, n: u64) {
+        if let Some(f) = &self.forward {
+            return f.advance(n);
+        }
         let mut s = self.lock();
         s.done += n;
         if let Some(pb) = &s.pb {
@@ -171,6 +209,9 @@ impl Progress for Reporter {
     }
 
     fn update(&self, done: u64, status: &str) {
+        if let Some(f) = &self.forward {
+            return f.update(done, status);
+        }
         let mut s = self.lock();
         s.done = done;
         s.status = status.to_string();
@@ -182,6 +223,9 @@ impl Progress for Reporter {
     }
 
     fn note(&self, line: &str) {
+        if let Some(f) = &self.forward {
+            return f.note(line);
+        }
         let s = self.lock();
         match &s.pb {
             Some(pb) => pb.suspend(|| eprintln!("{line}")),
@@ -190,6 +234,9 @@ impl Progress for Reporter {
     }
 
     fn finish(&self) {
+        if let Some(f) = &self.forward {
+            return f.finish();
+        }
         let mut s = self.lock();
         if let Some(pb) = s.pb.take() {
             pb.finish_and_clear();

@@ -1,0 +1,21 @@
+"""Native bridge (Rust, pyo3) of the superlube package: see superlube.run_command."""
+
+from typing import Any, Callable, Dict, List, Optional, Tuple
+
+__version__: str
+
+def run(
+    argv: List[str],
+    callback: Optional[Callable[[Dict[str, Any]], Any]] = None,
+    threads: Optional[int] = None,
+) -> None:
+    """Runs one `superlube` command line (argv[0] = program name) in process, GIL released.
+    ValueError: bad flag or input (before any work); RuntimeError: failure during the run;
+    KeyboardInterrupt: Ctrl-C; or the callback's exception (the run stops at its next step)."""
+
+def flags(command: str) -> List[Tuple[str, bool]]:
+    """Long options of `command` as (name, takes a value)."""
+
+def scene(path: Optional[str], overlay: str) -> Tuple[str, str, List[str]]:
+    """Scene file `path` (or none) with the TOML `overlay` on top → (merged TOML, resolved
+    scene as JSON, warnings). ValueError naming the bad field."""
