@@ -42,6 +42,7 @@ __all__ = [
     "landscape",
     "corrugation",
     "friction",
+    "tolerance",
     "design",
     "equilibrate",
     "slide",
@@ -147,6 +148,30 @@ def friction(scene: SceneLike = None, *, progress: Any = None, threads: Optional
     θ, α, load).
     """
     return _table("friction", scene, options, progress, threads)
+
+
+def tolerance(scene: SceneLike = None, *, progress: Any = None,
+              threads: Optional[int] = None, **options: Any) -> Any:  # fmt: skip
+    """Tolerance map of one design: the superlubric limit load (mN, friction estimate) over
+    θ ± range × pulling direction ± range (degrees; the pull direction is fixed in the
+    substrate frame when the slider is misaligned).
+
+    Options (``superlube tolerance --help``): ``theta_deg`` (nominal θ), ``alpha`` (degrees from
+    the contact line) or ``direction_deg`` (from x), ``theta_range``, ``theta_points``,
+    ``direction_range``, ``direction_points``, ``theta_tol``, ``direction_tol`` (degrees),
+    ``load_mN``, ``mu_superlubric``, ``line_deg`` and the path options of the estimate.
+
+    Returns a DataFrame with ``map.csv``'s columns (``theta_deg, direction_deg,
+    theta_offset_deg, direction_offset_deg, …, superlubric_to_mN, confident_to_mN,
+    limited_by``), one row per point, direction outer, θ inner.
+    """
+    tmp, paths = _go("tolerance", [_scene(scene)], options, {"out": "tolerance"}, progress,
+                     threads)  # fmt: skip
+    try:
+        p = os.path.join(paths["out"], "map.csv")
+        return _run._attach(_run.read_table(p), p)
+    finally:
+        _run.remove(tmp)
 
 
 def equilibrate(scene: SceneLike = None, *, progress: Any = None,

@@ -105,6 +105,17 @@ def friction(
     threads: Optional[int] = None,
     **options: Any,
 ) -> Table: ...
+def tolerance(
+    scene: SceneLike = None,
+    *,
+    theta_deg: Optional[float] = None,
+    alpha: Optional[float] = None,
+    direction_deg: Optional[float] = None,
+    load_mN: Optional[Values] = None,
+    progress: ProgressArg = None,
+    threads: Optional[int] = None,
+    **options: Any,
+) -> Table: ...
 def equilibrate(
     scene: SceneLike = None,
     *,

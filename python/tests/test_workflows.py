@@ -229,3 +229,20 @@ def test_design_on_scenes_returns_ranking_and_answer():
     assert set(ranking["pattern"]) == {"square-tri", "tri-tri"}
     assert ranking["rank"].min() == 1 and "superlubric_to_mN" in ranking.columns
     assert summary["report_md"].startswith("# superlube design")
+
+
+def test_tolerance_map_equals_cli(cli_bin, tmp_path):
+    scene = superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60])
+    opts = dict(theta_deg=30, alpha=0, load_mN="0.05,0.1", theta_range=0.2, theta_points=3,
+                direction_range=0.5, direction_points=3, theta_tol=0.1, direction_tol=0.5)  # fmt: skip
+    m = superlube.tolerance(scene, **opts)
+    assert len(m) == 9 and "superlubric_to_mN" in m.columns
+    scene.write(tmp_path / "s.toml")
+    subprocess.run([cli_bin, "tolerance", "--scene", tmp_path / "s.toml", "--theta", "30",
+                    "--alpha", "0", "--load-mn", "0.05,0.1", "--theta-range", "0.2",
+                    "--theta-points", "3", "--direction-range", "0.5", "--direction-points",
+                    "3", "--out", tmp_path / "cli"], check=True, capture_output=True)  # fmt: skip
+    import csv
+    with open(tmp_path / "cli" / "map.csv") as f:
+        cli = list(csv.DictReader(f))
+    assert [float(r["superlubric_to_mN"]) for r in cli] == list(m["superlubric_to_mN"])
