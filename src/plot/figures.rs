@@ -113,6 +113,7 @@ pub fn landscape_png(
             y_label: "slider shift y (µm)".into(),
             value_label: "Δz = z − min z (nm)".into(),
             n: [stats.n, stats.n],
+            origin: [0.0, 0.0],
             da: [m_to_um(cell.a[0]) / d, m_to_um(cell.a[1]) / d],
             db: [m_to_um(cell.b[0]) / d, m_to_um(cell.b[1]) / d],
             values: dz_nm,

@@ -5,7 +5,7 @@ use anyhow::Result;
 use plotters::prelude::*;
 use std::path::Path;
 
-/// A scalar field on an Ni×Nj grid of points `i·da + j·db` (plot units), row-major
+/// A scalar field on an Ni×Nj grid of points `origin + i·da + j·db` (plot units), row-major
 /// `values[j·Ni + i]`, with optional closed outlines and point marks drawn on top.
 pub struct HeatMap<'a> {
     /// Title above the plot.
@@ -18,6 +18,8 @@ pub struct HeatMap<'a> {
     pub value_label: String,
     /// Points along i and along j (Ni, Nj).
     pub n: [usize; 2],
+    /// Position of the first point (plot units).
+    pub origin: [f64; 2],
     /// Step between neighbouring points along i (plot units).
     pub da: [f64; 2],
     /// Step between neighbouring points along j (plot units).
@@ -44,7 +46,12 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             (a.min(v), b.max(v))
         });
     let span = if hi > lo { hi - lo } else { 1.0 };
-    let pt = |i: f64, j: f64| (i * map.da[0] + j * map.db[0], i * map.da[1] + j * map.db[1]);
+    let pt = |i: f64, j: f64| {
+        (
+            map.origin[0] + i * map.da[0] + j * map.db[0],
+            map.origin[1] + i * map.da[1] + j * map.db[1],
+        )
+    };
     let mut xr = (f64::INFINITY, f64::NEG_INFINITY);
     let mut yr = (f64::INFINITY, f64::NEG_INFINITY);
     for (i, j) in [

@@ -37,12 +37,11 @@ pub fn tolerance_png(
         rows[rows.len() - 1].direction_deg,
         nj,
     );
-    // grid index → plot units: x = θ0 + i·dt, y = d0 + j·dd (the HeatMap has no origin, so
-    // plot units are offsets from the grid's first point)
-    let (t0, d0) = (rows[0].theta_deg, rows[0].direction_deg);
-    let values: Vec<f64> = rows.iter().map(|r| r.superlubric_to_mN).collect();
-    let rel = |t: f64, d: f64| (t - t0, d - d0);
+    // plot units: offsets (degrees) from the nominal
     let (nt, nd) = nominal;
+    let values: Vec<f64> = rows.iter().map(|r| r.superlubric_to_mN).collect();
+    let rel = |t: f64, d: f64| (t - nt, d - nd);
+    let first = rel(rows[0].theta_deg, rows[0].direction_deg);
     let outline = vec![
         rel(nt - tol.0, nd - tol.1),
         rel(nt + tol.0, nd - tol.1),
@@ -53,10 +52,14 @@ pub fn tolerance_png(
         path,
         &HeatMap {
             title: title.to_string(),
-            x_label: format!("θ − {}° (deg)", fmt(t0)),
-            y_label: format!("pulling direction − {}° (deg from x)", fmt(d0)),
+            x_label: format!("θ − {}° (deg)", fmt(nt)),
+            y_label: format!(
+                "pull direction − {}° (deg, from the substrate x axis)",
+                fmt(nd)
+            ),
             value_label: "superlubric up to (mN)".into(),
             n: [ni, nj],
+            origin: [first.0, first.1],
             da: [dt, 0.0],
             db: [0.0, dd],
             values: &values,
@@ -71,6 +74,7 @@ pub fn tolerance_png(
     )
 }
 
+/// A degree value with at most 4 decimals (`82.5292`, `7.3`).
 fn fmt(v: f64) -> String {
-    format!("{}", crate::study::rows::label(v))
+    format!("{}", (v * 1e4).round() / 1e4)
 }
