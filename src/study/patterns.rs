@@ -13,8 +13,9 @@
 //! **Directionally commensurate candidates.** For each substrate row direction u (lattice
 //! vectors of the first two shells, up to the substrate's rotations) with row period d_u and
 //! row spacing h_u = cell area / d_u: a rectangular slider with period a = (p/q)·d_u along u
-//! (coprime p, q ≤ `max_pq`) and b = r·h_u across it, r a badly approximable number (the golden
-//! ratio, √2, √5 − 1), so that the slider rows never settle onto the substrate rows. Kept when
+//! (coprime p, q ≤ `max_pq`) and b = (m + f)·h_u across it, f the fractional part of a badly
+//! approximable number (golden ratio, √2, √5 − 1) and m the smallest integer that makes
+//! b ≥ max(sphere diameter, a), so that the slider rows never settle onto the substrate rows. Kept when
 //! the spheres do not overlap, the classification is directional with u as the commensurate
 //! direction, and the moiré contact lines (as `corrugation` finds them) run along u.
 
@@ -289,7 +290,7 @@ pub fn classify(
 
 /// A degree or µm value without binary noise.
 pub fn tidy(v: f64) -> f64 {
-    (v * 1e9).round() / 1e9
+    (v * 1e9).round() / 1e9 + 0.0
 }
 
 /// Rotation order of a Bravais lattice (6, 4 or 2).
@@ -369,11 +370,12 @@ fn commensurate_of(l: &Lattice, substrate: &Lattice, max_pq: u32) -> Option<Comm
 /// A lattice, its basis, its kind and its commensurate direction, before the checks.
 type Raw = (Lattice, Vec<[f64; 2]>, String, Option<Commensurate>);
 
-/// Badly approximable ratios of the across spacing to the substrate row spacing.
+/// Fractional parts of badly approximable ratios (golden ratio, √2, √5 − 1) of the across
+/// spacing to the substrate row spacing.
 const NOBLE: [f64; 3] = [
-    1.618_033_988_749_895,
-    std::f64::consts::SQRT_2,
-    1.236_067_977_499_79,
+    0.618_033_988_749_895,
+    0.414_213_562_373_095,
+    0.236_067_977_499_79,
 ];
 
 /// The candidates of `p.family` over `scene`'s substrate, with spheres of the scene's slider
@@ -398,8 +400,12 @@ pub fn candidates(scene: &Scene, p: &PatternParams) -> Result<Vec<Candidate>> {
                             continue;
                         }
                         let a = du * pp as f64 / q as f64;
-                        for r in NOBLE {
-                            let b = h * r;
+                        for f in NOBLE {
+                            // b = (m + f)·h, m the smallest integer with b ≥ max(diameter, a):
+                            // rows across are farther apart than along (the slider's first
+                            // reciprocal shell lies across u) and the spheres do not overlap
+                            let m = ((d.max(a) / h) - f).ceil().max(1.0);
+                            let b = (m + f) * h;
                             let l = Lattice::oblique([a * e[0], a * e[1]], [b * n[0], b * n[1]]);
                             raw.push((
                                 l,

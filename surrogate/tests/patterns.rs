@@ -72,13 +72,7 @@ fn honeycomb_basis_equals_its_sites_as_a_file() {
         csv.display()
     ));
     assert_eq!(from_file.slider_sites_local().len(), sites.len());
-    // µm text → m is exact only to the last bit of each coordinate: the same contacts, and
-    // heights and pressures to round-off (the screen's printed rows are identical: CLI test)
-    for (a, b) in answers(&hc).iter().zip(answers(&from_file)) {
-        assert_eq!(a.0, b.0);
-        assert!((a.1 - b.1).abs() <= 1e-12 * a.1.abs(), "{a:?} {b:?}");
-        assert!((a.2 - b.2).abs() <= 1e-12 * a.2, "{a:?} {b:?}");
-    }
+    assert_eq!(answers(&hc), answers(&from_file));
 }
 
 #[test]

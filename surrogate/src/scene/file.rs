@@ -540,7 +540,22 @@ impl SceneFile {
                 ));
             }
             let l = read("slider.sites", p, &mut r_sl)?;
-            s.slider.radius = l.sites.iter().map(|q| q[0].hypot(q[1])).fold(0.0, f64::max);
+            // the slider's bounding radius: the farthest site, or `radius_um` when given
+            let far = l.sites.iter().map(|q| q[0].hypot(q[1])).fold(0.0, f64::max);
+            s.slider.radius = match self.slider.radius_um {
+                Some(v) if um_to_m(v) < far * (1.0 - 1e-9) => {
+                    return Err(SceneError::invalid(
+                        "slider.radius_um",
+                        v,
+                        &format!(
+                            "with slider.sites it bounds the slider: the farthest site of {p} is {} µm from the centre",
+                            far * 1e6
+                        ),
+                    ))
+                }
+                Some(v) => um_to_m(v),
+                None => far,
+            };
             s.geometry.slider_sites = Some(l);
         }
         if let Some(p) = &self.substrate.sites {

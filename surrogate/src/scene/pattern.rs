@@ -5,7 +5,7 @@
 
 use super::Lattice;
 use crate::error::SceneError;
-use crate::units::um_to_m;
+use crate::units::{m_to_um, um_to_m};
 use serde::{Deserialize, Serialize};
 
 /// The slider's outline in its own frame (m), centred on the slider centre (which sits on the
@@ -206,6 +206,8 @@ impl SiteList {
     /// order; `#` comments and blank lines skipped), then one sphere per line. Errors name the
     /// file, the line and the column (missing column, not a number, NaN/inf, non-positive
     /// diameter, overlapping spheres). `field` names the scene field (`slider.sites`).
+    /// Coordinates are read onto the 1e-9 µm grid (`round(x·10⁹)/10⁹` µm), as the sites of a
+    /// lattice with a basis: writing those sites to 9 or more decimals reproduces them exactly.
     /// Per-site diameters must all be equal (one sphere size per body). O(N log N).
     pub fn parse(text: &str, path: &str, field: &str) -> Result<SiteList, SceneError> {
         let err = |line: usize, why: String| {
@@ -289,7 +291,7 @@ impl SiteList {
                     format!("{} columns, the header names {}", f.len(), cols.len()),
                 ));
             }
-            sites.push([um_to_m(x), um_to_m(y)]);
+            sites.push([um_to_m(snap_um(x)), um_to_m(snap_um(y))]);
             lines_of.push(ln);
         }
         if sites.is_empty() {
@@ -402,6 +404,18 @@ impl Geometry {
     }
 }
 
+/// `x` (µm) on the 1e-9 µm grid: `round(x·10⁹)/10⁹`, the double nearest to its 9-decimal text.
+fn snap_um(x: f64) -> f64 {
+    (x * 1e9).round() / 1e9
+}
+
+/// A site coordinate (m) of a lattice with a basis, placed on the 1e-9 µm grid so that a site
+/// file with the coordinates written to 9 or more decimals (µm) gives exactly the same sites
+/// (site files are read onto the same grid).
+fn snap_m(v: f64) -> f64 {
+    um_to_m(snap_um(m_to_um(v)))
+}
+
 /// Lattice-with-basis sites inside `outline` (disc radius `disc_r`), deterministic order
 /// (rows of lattice cells, basis order inside a cell). With no basis and a disc it is exactly
 /// [`Lattice::sites_in_disc`]. O(cells in the bounding disc × basis).
@@ -423,7 +437,10 @@ pub fn sites_in_outline(
         for i in -imax..=imax {
             let t = l.point(i as f64, j as f64);
             for q in &b {
-                let p = [t[0] + q[0], t[1] + q[1]];
+                let mut p = [t[0] + q[0], t[1] + q[1]];
+                if b.len() > 1 {
+                    p = [snap_m(p[0]), snap_m(p[1])];
+                }
                 if outline.contains(p, disc_r) {
                     out.push(p);
                 }
@@ -449,7 +466,7 @@ pub fn sites_in_rect(l: &Lattice, basis: &[[f64; 2]], lx: f64, ly: f64) -> Vec<[
         for i in -imax..=imax {
             let t = l.point(i as f64, j as f64);
             for q in &b {
-                let p = [t[0] + q[0], t[1] + q[1]];
+                let p = [snap_m(t[0] + q[0]), snap_m(t[1] + q[1])];
                 if p[0].abs() <= hx && p[1].abs() <= hy {
                     out.push(p);
                 }
