@@ -617,6 +617,37 @@ pub fn candidate_scene(
     Ok((f, row))
 }
 
+/// The scene files of an `index.csv` written by `superlube patterns` (its `scene_file` column,
+/// relative to the index), in row order. Errors name `--patterns` and the line.
+pub fn index_scenes(index: &std::path::Path) -> Result<Vec<std::path::PathBuf>> {
+    let text = std::fs::read_to_string(index)
+        .map_err(|e| anyhow::anyhow!("`--patterns`: cannot read {}: {e}", index.display()))?;
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
+    let Some(col) = header.iter().position(|c| *c == "scene_file") else {
+        bail!(
+            "`--patterns`: {} line 1: no `scene_file` column (an index.csv of `superlube patterns`)",
+            index.display()
+        );
+    };
+    let dir = index.parent().unwrap_or(std::path::Path::new(""));
+    let mut out = Vec::new();
+    for (k, l) in lines.enumerate().filter(|(_, l)| !l.trim().is_empty()) {
+        match l.split(',').nth(col).filter(|f| !f.is_empty()) {
+            Some(f) => out.push(dir.join(f)),
+            None => bail!(
+                "`--patterns`: {} line {}: no scene_file",
+                index.display(),
+                k + 2
+            ),
+        }
+    }
+    if out.is_empty() {
+        bail!("`--patterns`: {} lists no pattern", index.display());
+    }
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
