@@ -109,4 +109,10 @@ fn bad_input_is_named() {
         &["screen", "--scene", f.to_str().unwrap()],
         "slider.outline",
     );
+    let idx = dir.join("index.csv");
+    std::fs::write(&idx, "pattern_id,lattice\np001,square\n").unwrap();
+    fails_naming(
+        &["design", "--no-dem", "--patterns", idx.to_str().unwrap()],
+        "--patterns",
+    );
 }
