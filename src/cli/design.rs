@@ -29,6 +29,10 @@ pub struct Args {
     /// apply to every pattern and scene.
     #[arg(long, value_name = "FILE.toml")]
     scene: Vec<PathBuf>,
+    /// An index.csv of `superlube patterns`: designs every candidate's scene file (named by its
+    /// pattern_id), as if each were given with --scene; the ranking spans all of them.
+    #[arg(long, value_name = "INDEX.csv")]
+    patterns: Option<PathBuf>,
     /// Slider disc radius in µm (study: 93.5 triangular, 100 square), for every pattern.
     #[arg(long, value_name = "UM", allow_hyphen_values = true)]
     slider_radius_um: Option<f64>,
@@ -289,7 +293,11 @@ fn scene_args(a: &Args, pattern: Option<String>, scene: Option<PathBuf>) -> Scen
 /// The pattern scenes of the command line (errors name `--pattern` / `--scene`).
 fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
     let mut out: Vec<DesignScene> = Vec::new();
-    let patterns: Vec<String> = match (&a.pattern, a.scene.is_empty()) {
+    let mut files = a.scene.clone();
+    if let Some(index) = &a.patterns {
+        files.extend(crate::study::patterns::index_scenes(index)?);
+    }
+    let patterns: Vec<String> = match (&a.pattern, files.is_empty()) {
         (Some(p), _) => p.split(',').map(|s| s.trim().to_string()).collect(),
         (None, true) => vec!["square-tri".into(), "tri-tri".into()],
         (None, false) => vec![],
@@ -312,7 +320,7 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             warnings: r.warnings,
         });
     }
-    for f in &a.scene {
+    for f in &files {
         let name = f
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())

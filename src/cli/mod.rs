@@ -16,6 +16,7 @@ mod friction_args;
 mod lammps_check;
 mod landscape;
 mod merge;
+mod patterns;
 mod protocol_args;
 
 mod scene_args;
@@ -74,6 +75,9 @@ enum Command {
     LammpsCheck(lammps_check::Args),
     /// Join the shard files of one sweep (`--shard i/n` outputs) into the unsharded output.
     Merge(merge::Args),
+    /// Slider pattern candidates of a lattice family over the substrate, classified (lubric,
+    /// directional, interlocked): one scene file each plus an index.
+    Patterns(patterns::Args),
     /// Write Slurm scripts that run a sweep as an array job (one shard per task) plus a merge.
     Slurm(slurm::Args),
 }
@@ -118,6 +122,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::ExportLammps(a) => export_lammps::run(a),
         Command::LammpsCheck(a) => lammps_check::run(a),
         Command::Merge(a) => merge::run(a),
+        Command::Patterns(a) => patterns::run(a),
         Command::Slurm(a) => slurm::run(a),
     }
 }

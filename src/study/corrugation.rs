@@ -183,6 +183,9 @@ pub fn corrugation(
             if scene.substrate.sigma_h > 0.0 {
                 bail!("the landscape method needs a flat substrate (σ_h = 0): the landscape of a perturbed substrate is not periodic; use the direct method");
             }
+            if scene.geometry.substrate_sites.is_some() {
+                bail!("the landscape method needs a substrate lattice (its repeat cell): a substrate from a site file (`substrate.sites`) has none; use the direct method");
+            }
             progress.stage("landscape", (p.grid * p.grid) as u64, "grid points");
             let l = compute_landscape(&solver, theta, p.load, &params, &|| progress.advance(1))?;
             progress.finish();

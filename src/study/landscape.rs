@@ -109,6 +109,12 @@ pub fn heights(
 ) -> Result<RepeatCell> {
     let n = p.grid;
     let theta = scene.slider.theta;
+    if let Some(l) = &scene.geometry.substrate_sites {
+        bail!(
+            "`substrate.sites`: the substrate from the site file `{}` has no lattice repeat cell, which a landscape maps; use a substrate lattice (with a basis if needed)",
+            l.path
+        );
+    }
     if n < 2 {
         return Err(SceneError::invalid(
             "grid",

@@ -27,7 +27,9 @@ use super::sweep::ShardInfo;
 use anyhow::{bail, Context, Result};
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
-use surrogate::scene::{CoatingFile, LatticeFile, MaterialFile, SliderFile, SubstrateFile};
+use surrogate::scene::{
+    CoatingFile, LatticeFile, MaterialFile, Outline, OutlineFile, SliderFile, SubstrateFile,
+};
 use surrogate::units::{
     gcm3_to_kgm3, gpa_to_pa, kgm3_to_gcm3, m_to_um, pa_to_gpa, rad_to_deg, um_to_m,
 };
@@ -325,6 +327,36 @@ fn um2(v: [f64; 2]) -> [f64; 2] {
     [um(v[0]), um(v[1])]
 }
 
+/// `l` with the basis `b` (m) recorded in µm (none when empty).
+fn with_basis(mut l: LatticeFile, b: &[[f64; 2]]) -> LatticeFile {
+    l.basis_um = (!b.is_empty()).then(|| b.iter().map(|p| um2(*p)).collect());
+    l
+}
+
+/// The outline in user units (`None` for the disc: `radius_um` records it).
+fn outline_file(o: &Outline) -> Option<OutlineFile> {
+    let f = OutlineFile::default();
+    match o {
+        Outline::Disc => None,
+        Outline::Rectangle { size } => Some(OutlineFile {
+            kind: "rectangle".into(),
+            size_um: Some(um2(*size)),
+            ..f
+        }),
+        Outline::RegularPolygon { sides, radius } => Some(OutlineFile {
+            kind: "polygon".into(),
+            sides: Some(*sides),
+            radius_um: Some(um(*radius)),
+            ..f
+        }),
+        Outline::Polygon { vertices } => Some(OutlineFile {
+            kind: "polygon".into(),
+            vertices_um: Some(vertices.iter().map(|p| um2(*p)).collect()),
+            ..f
+        }),
+    }
+}
+
 /// A lattice in user units: its named kind when it is exactly that kind's lattice, else oblique.
 fn lattice_file(l: &Lattice) -> LatticeFile {
     let s = um(l.a1[0]);
@@ -364,6 +396,7 @@ fn lattice_file(l: &Lattice) -> LatticeFile {
 pub fn scene_file(s: &Scene) -> SceneFile {
     let base = s.pattern.trim_end_matches('*');
     let custom_lattices = s.pattern.ends_with('*') || s.pattern == "custom";
+    let g = &s.geometry;
     let (tilt, k1) = match s.slider.mount {
         Mount::Springs { k1 } => ("springs", Some(k1)),
         m => (m.name(), None),
@@ -376,15 +409,24 @@ pub fn scene_file(s: &Scene) -> SceneFile {
             |d| um_to_m(d) / 2.0,
         )),
         slider: SliderFile {
-            lattice: custom_lattices.then(|| lattice_file(&s.slider.lattice)),
+            lattice: (custom_lattices && g.slider_sites.is_none())
+                .then(|| with_basis(lattice_file(&s.slider.lattice), &g.slider_basis)),
             radius_um: Some(um(s.slider.radius)),
+            outline: outline_file(&g.outline),
+            sites: g.slider_sites.as_ref().map(|l| l.path.clone()),
+            sphere_diameter_um: g
+                .slider_sphere_radius
+                .map(|r| exact_user(r, |r| m_to_um(2.0 * r), |d| um_to_m(d) / 2.0)),
             theta_deg: Some(exact_user(s.slider.theta, rad_to_deg, f64::to_radians)),
             offset_um: Some(um2(s.slider.offset)),
             tilt: Some(tilt.into()),
             tilt_k1_n_m: k1,
         },
         substrate: SubstrateFile {
-            lattice: custom_lattices.then(|| lattice_file(&s.substrate.lattice)),
+            lattice: (custom_lattices && g.substrate_sites.is_none())
+                .then(|| with_basis(lattice_file(&s.substrate.lattice), &g.substrate_basis)),
+            sites: g.substrate_sites.as_ref().map(|l| l.path.clone()),
+            sphere_diameter_um: None,
             size_um: Some(um2(s.substrate.size)),
             sigma_h_um: Some(um(s.substrate.sigma_h)),
             seed: Some(s.substrate.seed),

@@ -110,6 +110,7 @@ pub mod landscape;
 pub mod merge;
 pub mod meta;
 pub mod output;
+pub mod patterns;
 pub mod progress;
 pub mod range;
 pub mod record;

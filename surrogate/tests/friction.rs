@@ -73,6 +73,7 @@ fn rail_scene(mu: f64) -> Scene {
             mu1: mu,
             mu2: mu,
         },
+        geometry: Default::default(),
     }
 }
 

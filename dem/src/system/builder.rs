@@ -35,6 +35,19 @@ pub fn from_scene(
     params: &SimParams,
     start: Start,
 ) -> Result<(SystemSpec, StartInfo), DemError> {
+    if let Some(r) = scene.geometry.slider_sphere_radius {
+        return Err(surrogate::SceneError::invalid(
+            "slider.sphere_diameter_um",
+            2e6 * r,
+            &format!(
+                "the DEM models one sphere size for slider and substrate ({} µm here): the \
+                 screening tiers (screen, landscape, corrugation, friction, design --no-dem) take \
+                 two sizes",
+                2e6 * scene.sphere_radius
+            ),
+        )
+        .into());
+    }
     let solver = Solver::new(scene)?;
     let eq = solver.solve(
         Pose {
@@ -55,7 +68,7 @@ pub fn from_scene(
             c[0] + travel * params.alpha.cos(),
             c[1] + travel * params.alpha.sin(),
         ];
-        let reach = scene.slider.radius + 2.0 * scene.sphere_radius + params.prune_margin;
+        let reach = scene.slider.radius + scene.contact_distance() + params.prune_margin;
         sub.retain(|p| seg_dist2([p[0], p[1]], c, e) <= reach * reach);
     }
     let pruned = all - sub.len();

@@ -63,7 +63,7 @@ use symmetry::PairSymmetry;
 /// The θ values (degrees) of `ds` after the symmetry cut, and the pair's symmetry. Errors
 /// (naming `--theta`) when none is left.
 pub fn cut(ds: &DesignScene, p: &DesignParams) -> Result<(Vec<f64>, PairSymmetry)> {
-    let sym = PairSymmetry::of(&ds.scene.slider.lattice, &ds.scene.substrate.lattice);
+    let sym = PairSymmetry::of_scene(&ds.scene);
     if !p.symmetry_cut {
         return Ok((p.thetas_deg.clone(), sym));
     }

@@ -30,8 +30,15 @@
 //! placement; the finite substrate rectangle is far from the slider). A random height
 //! perturbation (σ_h > 0) keeps the symmetry only statistically, and an in-plane offset breaks
 //! it: the design says so in its log, and `--no-symmetry-cut` screens the range as given.
+//!
+//! **Pattern geometry** ([`PairSymmetry::of_scene`]). A basis, an outline or a site file can
+//! lower a lattice's symmetry (a honeycomb site has rotation order 3, a rectangular pad on a
+//! square lattice 2): the slider's rotations and mirrors are then tested on its actual finite
+//! set of sites, the substrate's on its lattice with its basis (every basis site must map onto
+//! a basis site modulo the lattice). A substrate from a site file has no derivable symmetry:
+//! the full θ range is screened (no cut) and [`PairSymmetry::describe`] says so.
 
-use surrogate::Lattice;
+use surrogate::{Lattice, Scene};
 
 /// Relative tolerance of "maps onto the lattice" (lattice coordinates within this of integers).
 const TOL: f64 = 1e-6;
@@ -127,13 +134,23 @@ pub struct PairSymmetry {
     pub mirror_deg: Option<f64>,
     /// Period P_α of the pulling angle (degrees): 360/gcd(n_s, n_b).
     pub alpha_period_deg: f64,
+    /// Why no symmetry could be derived (then no cut: every θ is kept); `None` when derived.
+    pub not_derived: Option<String>,
 }
 
 impl PairSymmetry {
     /// The symmetry of `slider` over `substrate`.
     pub fn of(slider: &Lattice, substrate: &Lattice) -> PairSymmetry {
-        let s = LatticeSymmetry::of(slider);
-        let b = LatticeSymmetry::of(substrate);
+        combine(
+            &LatticeSymmetry::of(slider),
+            &LatticeSymmetry::of(substrate),
+        )
+    }
+}
+
+/// The pair symmetry of a slider and a substrate symmetry (see the module docs).
+fn combine(s: &LatticeSymmetry, b: &LatticeSymmetry) -> PairSymmetry {
+    {
         let (ns, nb) = (s.rotation_order, b.rotation_order);
         let lcm = ns / gcd(ns, nb) * nb;
         let period_deg = 360.0 / lcm as f64;
@@ -156,7 +173,41 @@ impl PairSymmetry {
             period_deg,
             mirror_deg: mirror,
             alpha_period_deg: 360.0 / gcd(ns, nb) as f64,
+            not_derived: None,
         }
+    }
+}
+
+impl PairSymmetry {
+    /// The symmetry of `scene`'s actual geometry (see the module docs): [`PairSymmetry::of`]
+    /// for plain Bravais lattices cut to a disc; else the slider's finite site set and the
+    /// substrate's lattice with its basis. A substrate site file: not derived (full range).
+    /// Cost O(N_slider × candidate mirrors).
+    pub fn of_scene(scene: &Scene) -> PairSymmetry {
+        let g = &scene.geometry;
+        if g.is_plain()
+            || (g.slider_is_bravais()
+                && g.substrate_is_bravais()
+                && g.outline == Default::default())
+        {
+            return Self::of(&scene.slider.lattice, &scene.substrate.lattice);
+        }
+        if let Some(l) = &g.substrate_sites {
+            return PairSymmetry {
+                slider_order: 1,
+                substrate_order: 1,
+                period_deg: 360.0,
+                mirror_deg: None,
+                alpha_period_deg: 360.0,
+                not_derived: Some(format!(
+                    "the substrate comes from the site file `{}`",
+                    l.path
+                )),
+            };
+        }
+        let s = finite_symmetry(&scene.slider_sites_local());
+        let b = pattern_symmetry(&scene.substrate.lattice, &g.substrate_basis);
+        combine(&s, &b)
     }
 
     /// The fundamental domain of θ (degrees): `[lo, hi]`, closed with a mirror, `[lo, hi)`
@@ -168,8 +219,12 @@ impl PairSymmetry {
         }
     }
 
-    /// Whether θ (degrees) lies in the fundamental domain (within 1e-9°).
+    /// Whether θ (degrees) lies in the fundamental domain (within 1e-9°); always when the
+    /// symmetry was not derived.
     pub fn contains(&self, theta_deg: f64) -> bool {
+        if self.not_derived.is_some() {
+            return true;
+        }
         let (lo, hi, closed) = self.domain();
         theta_deg >= lo - 1e-9
             && if closed {
@@ -181,6 +236,9 @@ impl PairSymmetry {
 
     /// The orientation in the fundamental domain equivalent to θ (degrees).
     pub fn fold(&self, theta_deg: f64) -> f64 {
+        if self.not_derived.is_some() {
+            return theta_deg;
+        }
         let (lo, _, _) = self.domain();
         let p = self.period_deg;
         match self.mirror_deg {
@@ -195,6 +253,11 @@ impl PairSymmetry {
     /// One line describing the symmetry, e.g. `period 30°, mirror θ → −θ: domain [0°, 15°];
     /// α period 180°`.
     pub fn describe(&self) -> String {
+        if let Some(why) = &self.not_derived {
+            return format!(
+                "symmetry not derived ({why}): the full θ range is screened (no symmetry cut); α period 360°"
+            );
+        }
         let (lo, hi, closed) = self.domain();
         format!(
             "rotation orders {} (slider) and {} (substrate): θ period {}°, {}: domain [{}°, {}°{}; α period {}°",
@@ -211,6 +274,109 @@ impl PairSymmetry {
             if closed { "]" } else { ")" },
             fmt(self.alpha_period_deg)
         )
+    }
+}
+
+/// The rotations (order n ∈ {6, 4, 3, 2}, else 1) and mirror lines through the origin of a
+/// finite point set (m). Mirror candidates: the bisectors of the nearest site with every site
+/// at the same distance (a mirror maps it onto one of them). O(N × candidates).
+fn finite_symmetry(pts: &[[f64; 2]]) -> LatticeSymmetry {
+    let scale = pts
+        .iter()
+        .map(|p| p[0].hypot(p[1]))
+        .fold(0.0, f64::max)
+        .max(1e-12);
+    let q = 1e-7 * scale;
+    let key = |p: [f64; 2]| ((p[0] / q).round() as i64, (p[1] / q).round() as i64);
+    let set: std::collections::HashSet<(i64, i64)> = pts.iter().map(|&p| key(p)).collect();
+    let has = |p: [f64; 2]| {
+        let (x, y) = key(p);
+        (-1..=1).any(|dx| (-1..=1).any(|dy| set.contains(&(x + dx, y + dy))))
+    };
+    let maps = |m: [[f64; 2]; 2]| {
+        pts.iter().all(|v| {
+            has([
+                m[0][0] * v[0] + m[0][1] * v[1],
+                m[1][0] * v[0] + m[1][1] * v[1],
+            ])
+        })
+    };
+    let rotation_order = [6u32, 4, 3, 2]
+        .into_iter()
+        .find(|&n| maps(rotation(std::f64::consts::TAU / n as f64)))
+        .unwrap_or(1);
+    let r0 = pts
+        .iter()
+        .map(|p| p[0].hypot(p[1]))
+        .filter(|&r| r > q)
+        .fold(f64::INFINITY, f64::min);
+    let mut mirrors: Vec<f64> = Vec::new();
+    if let Some(p0) = pts
+        .iter()
+        .find(|p| (p[0].hypot(p[1]) - r0).abs() <= 1e-6 * r0)
+    {
+        let a0 = p0[1].atan2(p0[0]);
+        for p in pts
+            .iter()
+            .filter(|p| (p[0].hypot(p[1]) - r0).abs() <= 1e-6 * r0)
+        {
+            let phi = (0.5 * (a0 + p[1].atan2(p[0]))).rem_euclid(std::f64::consts::PI);
+            let phi = if std::f64::consts::PI - phi < 1e-12 {
+                0.0
+            } else {
+                phi
+            };
+            for c in [
+                phi,
+                (phi + 0.5 * std::f64::consts::PI).rem_euclid(std::f64::consts::PI),
+            ] {
+                if !mirrors.iter().any(|&m| (m - c).abs() < 1e-9) && maps(reflection(c)) {
+                    mirrors.push(c);
+                }
+            }
+        }
+    } else if pts.len() == 1 {
+        return LatticeSymmetry::of(&Lattice::square(1.0));
+    }
+    mirrors.sort_by(f64::total_cmp);
+    LatticeSymmetry {
+        rotation_order,
+        mirrors,
+    }
+}
+
+/// The symmetry about the origin of a lattice with a basis (rebased: first site at the origin):
+/// a rotation or mirror of the lattice that also maps every basis site onto a basis site modulo
+/// the lattice. The plain lattice's when the basis has at most one site.
+fn pattern_symmetry(l: &Lattice, basis: &[[f64; 2]]) -> LatticeSymmetry {
+    let ls = LatticeSymmetry::of(l);
+    if basis.len() <= 1 {
+        return ls;
+    }
+    let b = surrogate::scene::rebased(basis);
+    let keeps = |m: [[f64; 2]; 2]| {
+        maps_onto(l, m)
+            && b.iter().all(|v| {
+                let w = [
+                    m[0][0] * v[0] + m[0][1] * v[1],
+                    m[1][0] * v[0] + m[1][1] * v[1],
+                ];
+                b.iter().any(|u| {
+                    let c = l.to_lattice_coords([w[0] - u[0], w[1] - u[1]]);
+                    c.iter().all(|x| (x - x.round()).abs() < TOL)
+                })
+            })
+    };
+    LatticeSymmetry {
+        rotation_order: [6u32, 4, 3, 2]
+            .into_iter()
+            .find(|&n| keeps(rotation(std::f64::consts::TAU / n as f64)))
+            .unwrap_or(1),
+        mirrors: ls
+            .mirrors
+            .into_iter()
+            .filter(|&m| keeps(reflection(m)))
+            .collect(),
     }
 }
 
@@ -284,5 +450,52 @@ mod tests {
         let p = PairSymmetry::of(&sq, &t10);
         assert_eq!(p.period_deg, 30.0);
         assert!((p.mirror_deg.unwrap() - 10.0).abs() < 1e-9, "{p:?}");
+    }
+}
+
+#[cfg(test)]
+mod geometry_tests {
+    use super::*;
+
+    fn scene(toml: &str) -> Scene {
+        surrogate::SceneFile::from_toml(toml, "t.toml")
+            .unwrap()
+            .into_scene()
+            .unwrap()
+    }
+
+    #[test]
+    fn basis_outline_and_site_files_set_the_cut() {
+        // plain presets: unchanged
+        let p = Scene::preset("square-tri").unwrap();
+        assert_eq!(
+            PairSymmetry::of_scene(&p),
+            PairSymmetry::of(&p.slider.lattice, &p.substrate.lattice)
+        );
+        // a honeycomb site has rotation order 3 (its 6-fold axis is at the hexagon centre)
+        let h = scene("pattern = 'tri-tri'\n[slider]\nradius_um = 30\nsphere_diameter_um = 1.5\nlattice = { kind = 'honeycomb', spacing_um = 3.0 }\n");
+        let s = PairSymmetry::of_scene(&h);
+        assert_eq!((s.slider_order, s.substrate_order), (3, 6));
+        assert_eq!(s.period_deg, 60.0);
+        assert!(s.not_derived.is_none());
+        // a 30x21 µm pad of a square lattice: order 2 with mirrors along x and y; with the
+        // square substrate's 4-fold rotation the period is 90°, the domain [0°, 45°]
+        let r = scene("pattern = 'square-square'\n[slider]\noutline = { kind = 'rectangle', size_um = [30, 21] }\n");
+        let s = PairSymmetry::of_scene(&r);
+        assert_eq!(s.slider_order, 2);
+        assert_eq!((s.period_deg, s.mirror_deg), (90.0, Some(0.0)));
+        assert_eq!(s.domain(), (0.0, 45.0, true));
+        // a substrate from a site file: no cut, said so
+        let dir = std::env::temp_dir().join(format!("sym-sites-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let f = dir.join("sub.csv");
+        std::fs::write(&f, "x_um,y_um\n0,0\n3,0\n0,3\n3,3\n7,1\n").unwrap();
+        let t = scene(&format!(
+            "[slider]\nradius_um = 3\n[substrate]\nsize_um = [20, 20]\nsites = '{}'\n",
+            f.display()
+        ));
+        let s = PairSymmetry::of_scene(&t);
+        assert!(s.not_derived.is_some() && s.contains(-75.0) && s.contains(300.0));
+        assert!(s.describe().contains("full θ range"), "{}", s.describe());
     }
 }

@@ -30,6 +30,15 @@ impl Hertz {
         }
     }
 
+    /// Two spheres of radii `r1`, `r2` (m) and the same material: `1/R_eff = 1/r1 + 1/r2`,
+    /// `E* = E / (2(1 − ν²))`.
+    pub fn spheres(r1: f64, r2: f64, m: &Material) -> Self {
+        Hertz {
+            e_star: m.e_star(),
+            r_eff: r1 * r2 / (r1 + r2),
+        }
+    }
+
     /// `(4/3) E* √R_eff`, the prefactor `k` of `F = k δ^{3/2}` (N/m^{3/2}).
     #[inline]
     pub fn k(&self) -> f64 {

@@ -161,12 +161,17 @@ pub fn estimate_friction_loads(
     let e_perp = [-e[1], e[0]];
 
     // 1. The path: one lattice period along lattice directions, else a fixed length.
-    let period = lattice_period(
-        &scene.substrate.lattice,
-        e,
-        params.max_period,
-        params.direction_tol,
-    );
+    // (a substrate from a site file has no lattice period: the fixed length)
+    let period = if scene.geometry.substrate_sites.is_some() {
+        None
+    } else {
+        lattice_period(
+            &scene.substrate.lattice,
+            e,
+            params.max_period,
+            params.direction_tol,
+        )
+    };
     let length = period.unwrap_or(params.length);
     let n = (length / params.step - 1e-9).ceil().max(1.0) as usize;
     let h = length / n as f64;
@@ -345,7 +350,7 @@ impl Body {
     fn of(solver: &Solver, params: &FrictionParams) -> Body {
         let scene = solver.scene();
         let n = solver.slider_count() as f64;
-        let m_s = scene.material.sphere_mass(scene.sphere_radius);
+        let m_s = scene.material.sphere_mass(scene.slider_sphere_radius());
         let m_c = scene.material.sphere_mass(params.control_sphere_radius);
         Body {
             mass: n * (m_s + m_c),

@@ -44,7 +44,6 @@
 //! 0.95). Cost O(N).
 
 use super::FrictionParams;
-use crate::contact::Hertz;
 use crate::scene::{Mount, Scene};
 
 /// Measured band of `r = ω_t/ω_p` in which the DEM's friction on failed-coating contacts drops
@@ -59,11 +58,11 @@ pub const RESONANCE_BAND: [f64; 2] = [0.6, 1.15];
 /// "Roughness detunes the resonance").
 pub const DETUNING_SIGMA_H: f64 = 5e-9;
 
-/// Overlap δ_crit (m) of two of `scene`'s equal spheres whose Hertz pressure p0 is P_crit
-/// ([`Hertz::overlap_for_p0`]: `a = π P_crit R_eff / (2E*)`, `δ_crit = a² / R_eff`; 9.8 nm on the
+/// Overlap δ_crit (m) of a slider–substrate sphere pair of `scene` whose Hertz pressure p0 is P_crit
+/// ([`crate::contact::Hertz::overlap_for_p0`]: `a = π P_crit R_eff / (2E*)`, `δ_crit = a² / R_eff`; 9.8 nm on the
 /// study's scene). O(1).
 pub fn critical_overlap(scene: &Scene) -> f64 {
-    Hertz::equal_spheres(scene.sphere_radius, &scene.material).overlap_for_p0(scene.coating.p_crit)
+    scene.hertz().overlap_for_p0(scene.coating.p_crit)
 }
 
 /// Whether `scene`'s substrate is rough enough to detune the mount's resonance:
@@ -120,7 +119,7 @@ impl TiltResonance {
             sxx += (p[0] - c[0]).powi(2);
             syy += (p[1] - c[1]).powi(2);
         }
-        let m_s = scene.material.sphere_mass(scene.sphere_radius);
+        let m_s = scene.material.sphere_mass(scene.slider_sphere_radius());
         let unit = m_s + scene.material.sphere_mass(r_control);
         let w2 = [k[0] / (unit * syy), k[1] / (unit * sxx)];
         let tilt_omega = (0.5 * (w2[0] + w2[1])).sqrt();
@@ -163,6 +162,7 @@ impl std::fmt::Display for TiltResonance {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::Hertz;
     use crate::scene::{Scene, STUDY_K1};
 
     #[test]

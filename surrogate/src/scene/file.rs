@@ -17,6 +17,12 @@
 //! sigma_h_um = 0.0
 //! seed = 1
 //! lattice = { kind = "oblique", a1_um = [3.0, 0.0], a2_um = [1.0, 2.8] }
+//! # pattern geometry (see docs/scenes-patterns.md):
+//! # [slider] lattice = { kind = "triangular", spacing_um = 3.0, basis_um = [[0, 0], [1.5, 0.866]] }
+//! #          kind = "honeycomb" | "kagome" are lattices with their basis built in
+//! # [slider] outline = { kind = "rectangle", size_um = [120, 80] } (disc, rectangle, polygon)
+//! # [slider] sites = "slider.csv"   (x_um,y_um[,diameter_um] relative to the slider centre)
+//! # [slider] sphere_diameter_um = 2.0 (the slider's own sphere size; same for [substrate])
 //! [material]
 //! youngs_GPa = 100.0
 //! poisson = 0.3
@@ -27,7 +33,7 @@
 //! mu2 = 0.5
 //! ```
 
-use super::{Lattice, Mount, Scene};
+use super::{Lattice, Mount, Outline, Scene, SiteList};
 use crate::error::SceneError;
 use crate::units::{deg_to_rad, gcm3_to_kgm3, gpa_to_pa, um_to_m};
 use serde::{Deserialize, Serialize};
@@ -47,6 +53,86 @@ pub struct LatticeFile {
     pub a1_um: Option<[f64; 2]>,
     /// Second primitive vector (µm) of an oblique lattice.
     pub a2_um: Option<[f64; 2]>,
+    /// Basis sites (µm) in each lattice cell; the first sits at the slider (substrate) centre.
+    /// Not with `honeycomb`/`kagome` (their basis is built in).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub basis_um: Option<Vec<[f64; 2]>>,
+}
+
+/// A slider outline in user units: `kind = "disc"` (`radius_um`), `"rectangle"`
+/// (`size_um = [w, h]`) or `"polygon"` (`sides` and `radius_um` for a regular polygon with a
+/// vertex on +x, or `vertices_um = [[x, y], …]`), all in the slider's frame about its centre.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OutlineFile {
+    /// Outline kind.
+    pub kind: String,
+    /// Disc radius or regular-polygon circumradius (µm).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius_um: Option<f64>,
+    /// Rectangle sides `[w, h]` (µm).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size_um: Option<[f64; 2]>,
+    /// Number of sides of a regular polygon.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sides: Option<u32>,
+    /// Vertices (µm) of an arbitrary polygon, in order.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertices_um: Option<Vec<[f64; 2]>>,
+}
+
+impl OutlineFile {
+    /// Converts to an [`Outline`] (m) and, for a disc, its radius (m). `field` names it.
+    pub fn to_outline(&self, field: &str) -> Result<(Outline, Option<f64>), SceneError> {
+        let missing =
+            |name: &str, why: &str| SceneError::invalid(&format!("{field}.{name}"), "missing", why);
+        let o = match self.kind.as_str() {
+            "disc" => {
+                let r = self
+                    .radius_um
+                    .ok_or_else(|| missing("radius_um", "required for a disc"))?;
+                if !(r.is_finite() && r > 0.0) {
+                    return Err(SceneError::invalid(
+                        &format!("{field}.radius_um"),
+                        r,
+                        "must be a positive number",
+                    ));
+                }
+                return Ok((Outline::Disc, Some(um_to_m(r))));
+            }
+            "rectangle" => Outline::Rectangle {
+                size: self
+                    .size_um
+                    .ok_or_else(|| missing("size_um", "required for a rectangle"))?
+                    .map(um_to_m),
+            },
+            "polygon" => match (&self.vertices_um, self.sides, self.radius_um) {
+                (Some(v), None, None) => Outline::Polygon {
+                    vertices: v.iter().map(|p| p.map(um_to_m)).collect(),
+                },
+                (None, Some(sides), Some(r)) => Outline::RegularPolygon {
+                    sides,
+                    radius: um_to_m(r),
+                },
+                _ => {
+                    return Err(missing(
+                        "vertices_um",
+                        "a polygon needs either vertices_um, or sides and radius_um",
+                    ))
+                }
+            },
+            other => {
+                return Err(SceneError::Unknown {
+                    field: format!("{field}.kind"),
+                    what: "outline".into(),
+                    name: other.into(),
+                    expected: "disc, rectangle, polygon".into(),
+                })
+            }
+        };
+        o.validate(field)?;
+        Ok((o, None))
+    }
 }
 
 impl LatticeFile {
@@ -76,12 +162,13 @@ impl LatticeFile {
                 Lattice::rectangular(s, um_to_m(sy))
             }
             "oblique" => Lattice::oblique(need(self.a1_um, "a1_um")?, need(self.a2_um, "a2_um")?),
+            "honeycomb" | "kagome" => Lattice::triangular(s),
             other => {
                 return Err(SceneError::Unknown {
                     field: format!("{field}.kind"),
                     what: "lattice".into(),
                     name: other.into(),
-                    expected: "triangular, square, rectangular, oblique".into(),
+                    expected: "triangular, square, rectangular, oblique, honeycomb, kagome".into(),
                 })
             }
         };
@@ -96,6 +183,38 @@ impl LatticeFile {
         }
         l.validate(field)?;
         Ok(l)
+    }
+
+    /// The basis (m) of the lattice: `basis_um`, or the built-in one of `honeycomb`
+    /// (`[0, 0]`, `[s/2, s/(2√3)]`: nearest neighbours s/√3 apart) and `kagome` (`[0, 0]`,
+    /// `[s/2, 0]`, `[s/4, s√3/4]`: nearest neighbours s/2 apart), `s` = `spacing_um` (the
+    /// triangular lattice constant). Empty: a Bravais lattice.
+    pub fn to_basis(&self, field: &str) -> Result<Vec<[f64; 2]>, SceneError> {
+        let s = um_to_m(self.spacing_um.unwrap_or(3.0));
+        let preset = match self.kind.as_str() {
+            "honeycomb" => Some(vec![[0.0, 0.0], [0.5 * s, 0.5 * s / 3f64.sqrt()]]),
+            "kagome" => Some(vec![
+                [0.0, 0.0],
+                [0.5 * s, 0.0],
+                [0.25 * s, 0.25 * 3f64.sqrt() * s],
+            ]),
+            _ => None,
+        };
+        match (preset, &self.basis_um) {
+            (Some(_), Some(_)) => Err(SceneError::invalid(
+                &format!("{field}.basis_um"),
+                "given",
+                &format!("a {} lattice has its basis built in; use kind = \"triangular\" with basis_um for another basis", self.kind),
+            )),
+            (Some(b), None) => Ok(b),
+            (None, Some(b)) if b.is_empty() => Err(SceneError::invalid(
+                &format!("{field}.basis_um"),
+                "[]",
+                "needs at least one site (the first sits at the centre)",
+            )),
+            (None, Some(b)) => Ok(b.iter().map(|p| p.map(um_to_m)).collect()),
+            (None, None) => Ok(Vec::new()),
+        }
     }
 }
 
@@ -117,6 +236,15 @@ pub struct SliderFile {
     /// Anti-tilt spring stiffness K1 (N/m) of `tilt = "springs"` (study: 1e6).
     #[serde(rename = "tilt_k1_N_m")]
     pub tilt_k1_n_m: Option<f64>,
+    /// Slider outline (default: the disc of `radius_um`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub outline: Option<OutlineFile>,
+    /// A site file `x_um,y_um[,diameter_um]` (relative to the slider centre) instead of a lattice.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sites: Option<String>,
+    /// Diameter of the slider spheres (µm); default the scene's `sphere_diameter_um`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sphere_diameter_um: Option<f64>,
 }
 
 /// Substrate overrides (user units).
@@ -131,6 +259,13 @@ pub struct SubstrateFile {
     pub sigma_h_um: Option<f64>,
     /// Seed of the height perturbation.
     pub seed: Option<u64>,
+    /// A site file `x_um,y_um[,diameter_um]` (relative to the substrate centre) instead of a
+    /// lattice.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sites: Option<String>,
+    /// Diameter of the substrate spheres (µm); default the scene's `sphere_diameter_um`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sphere_diameter_um: Option<f64>,
 }
 
 /// Material overrides (user units).
@@ -215,7 +350,20 @@ impl SceneFile {
         }
         let text = String::from_utf8(bytes)
             .map_err(|_| err("is not UTF-8 text: not a TOML scene file".into()))?;
-        Self::from_toml(&text, &path.display().to_string())
+        let mut f = Self::from_toml(&text, &path.display().to_string())?;
+        // site files are named relative to the scene file
+        let dir = path.parent().unwrap_or(std::path::Path::new(""));
+        for s in [&mut f.slider.sites, &mut f.substrate.sites]
+            .into_iter()
+            .flatten()
+        {
+            let p = std::path::Path::new(s.as_str());
+            if p.is_relative() {
+                let j = dir.join(p);
+                *s = j.canonicalize().unwrap_or(j).display().to_string();
+            }
+        }
+        Ok(f)
     }
 
     /// Largest scene file accepted by [`SceneFile::read`] (bytes).
@@ -234,6 +382,11 @@ impl SceneFile {
         take!(slider.offset_um);
         take!(slider.tilt);
         take!(slider.tilt_k1_n_m);
+        take!(slider.outline);
+        take!(slider.sites);
+        take!(slider.sphere_diameter_um);
+        take!(substrate.sites);
+        take!(substrate.sphere_diameter_um);
         take!(substrate.lattice);
         take!(substrate.size_um);
         take!(substrate.sigma_h_um);
@@ -256,10 +409,12 @@ impl SceneFile {
         }
         if let Some(l) = &self.slider.lattice {
             s.slider.lattice = l.to_lattice("slider.lattice")?;
+            s.geometry.slider_basis = l.to_basis("slider.lattice")?;
         }
         if let Some(v) = self.slider.radius_um {
             s.slider.radius = um_to_m(v);
         }
+        self.apply_geometry(&mut s)?;
         if let Some(v) = self.slider.theta_deg {
             s.slider.theta = deg_to_rad(v);
         }
@@ -275,6 +430,7 @@ impl SceneFile {
         }
         if let Some(l) = &self.substrate.lattice {
             s.substrate.lattice = l.to_lattice("substrate.lattice")?;
+            s.geometry.substrate_basis = l.to_basis("substrate.lattice")?;
         }
         if let Some(v) = self.substrate.size_um {
             s.substrate.size = v.map(um_to_m);
@@ -303,7 +459,10 @@ impl SceneFile {
         if let Some(v) = self.coating.mu2 {
             s.coating.mu2 = v;
         }
-        if self.slider.lattice.is_some() || self.substrate.lattice.is_some() {
+        if self.slider.lattice.is_some()
+            || self.substrate.lattice.is_some()
+            || !s.geometry.is_plain()
+        {
             if self.pattern.is_none() {
                 s.pattern = "custom".into();
             } else {
@@ -312,6 +471,109 @@ impl SceneFile {
         }
         s.validate()?;
         Ok(s)
+    }
+
+    /// Applies the outline, site files and per-body sphere sizes to `s` (SI), after the
+    /// slider lattice and radius. Reads the site files; errors name the field and line.
+    fn apply_geometry(&self, s: &mut Scene) -> Result<(), SceneError> {
+        let pos = |field: &str, v: Option<f64>| -> Result<Option<f64>, SceneError> {
+            match v {
+                Some(d) if !(d.is_finite() && d > 0.0) => {
+                    Err(SceneError::invalid(field, d, "must be a positive number"))
+                }
+                _ => Ok(v.map(|d| um_to_m(d) / 2.0)),
+            }
+        };
+        let mut r_sl = pos("slider.sphere_diameter_um", self.slider.sphere_diameter_um)?;
+        let mut r_sb = pos(
+            "substrate.sphere_diameter_um",
+            self.substrate.sphere_diameter_um,
+        )?;
+        if let Some(o) = &self.slider.outline {
+            if self.slider.sites.is_some() {
+                return Err(SceneError::invalid(
+                    "slider.outline",
+                    &o.kind,
+                    "the slider site file (slider.sites) gives the slider's spheres; drop the outline",
+                ));
+            }
+            let (outline, disc_r) = o.to_outline("slider.outline")?;
+            match disc_r {
+                Some(r) => {
+                    if self.slider.radius_um.is_some_and(|v| um_to_m(v) != r) {
+                        return Err(SceneError::invalid(
+                            "slider.outline.radius_um",
+                            r * 1e6,
+                            "differs from slider.radius_um: give the disc radius once",
+                        ));
+                    }
+                    s.slider.radius = r;
+                }
+                None => s.slider.radius = outline.circumradius(s.slider.radius),
+            }
+            s.geometry.outline = outline;
+        }
+        let read = |field: &str, path: &str, r: &mut Option<f64>| {
+            let l = SiteList::read(std::path::Path::new(path), field)?;
+            if let Some(d) = l.diameter {
+                if r.is_some_and(|v| v != d / 2.0) {
+                    return Err(SceneError::invalid(
+                        field,
+                        path,
+                        &format!(
+                            "its diameter_um column ({} µm) differs from the body's sphere_diameter_um ({} µm); give one",
+                            d * 1e6,
+                            2e6 * r.unwrap_or_default()
+                        ),
+                    ));
+                }
+                *r = Some(d / 2.0);
+            }
+            Ok::<_, SceneError>(l)
+        };
+        if let Some(p) = &self.slider.sites {
+            if self.slider.lattice.is_some() {
+                return Err(SceneError::invalid(
+                    "slider.sites",
+                    p,
+                    "give either slider.lattice or slider.sites, not both",
+                ));
+            }
+            let l = read("slider.sites", p, &mut r_sl)?;
+            // the slider's bounding radius: the farthest site, or `radius_um` when given
+            let far = l.sites.iter().map(|q| q[0].hypot(q[1])).fold(0.0, f64::max);
+            s.slider.radius = match self.slider.radius_um {
+                Some(v) if um_to_m(v) < far * (1.0 - 1e-9) => {
+                    return Err(SceneError::invalid(
+                        "slider.radius_um",
+                        v,
+                        &format!(
+                            "with slider.sites it bounds the slider: the farthest site of {p} is {} µm from the centre",
+                            far * 1e6
+                        ),
+                    ))
+                }
+                Some(v) => um_to_m(v),
+                None => far,
+            };
+            s.geometry.slider_sites = Some(l);
+        }
+        if let Some(p) = &self.substrate.sites {
+            if self.substrate.lattice.is_some() {
+                return Err(SceneError::invalid(
+                    "substrate.sites",
+                    p,
+                    "give either substrate.lattice or substrate.sites, not both",
+                ));
+            }
+            s.geometry.substrate_sites = Some(read("substrate.sites", p, &mut r_sb)?);
+        }
+        let base = s.sphere_radius;
+        let sb = r_sb.unwrap_or(base);
+        let sl = r_sl.unwrap_or(base);
+        s.sphere_radius = sb;
+        s.geometry.slider_sphere_radius = (sl != sb).then_some(sl);
+        Ok(())
     }
 }
 

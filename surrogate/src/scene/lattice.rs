@@ -142,7 +142,7 @@ impl Lattice {
         out
     }
 
-    fn index_bounds(&self, rx: f64, ry: f64) -> (i64, i64) {
+    pub(crate) fn index_bounds(&self, rx: f64, ry: f64) -> (i64, i64) {
         // |u| ≤ r·|a2|/|det| and |v| ≤ r·|a1|/|det| bound the lattice indices of a disc of radius r.
         let det = self.cell_area().abs();
         let r = rx.max(ry);

@@ -5,11 +5,17 @@ mod file;
 mod lattice;
 mod material;
 mod mount;
+mod pattern;
 #[allow(clippy::module_inception)]
 mod scene;
 
-pub use file::{CoatingFile, LatticeFile, MaterialFile, SceneFile, SliderFile, SubstrateFile};
+pub use file::{
+    CoatingFile, LatticeFile, MaterialFile, OutlineFile, SceneFile, SliderFile, SubstrateFile,
+};
 pub use lattice::Lattice;
 pub use material::{Coating, Material};
 pub use mount::{rotate_tilt_stiffness, Mount, STUDY_K1};
-pub use scene::{Scene, SliderSpec, SubstrateSpec, PATTERNS};
+pub use pattern::{
+    check_basis, min_site_distance, rebased, sites_in_outline, Geometry, Outline, SiteList,
+};
+pub use scene::{lattice_name, Scene, SliderSpec, SubstrateSpec, PATTERNS};

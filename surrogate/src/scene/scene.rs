@@ -1,5 +1,6 @@
 //! [`Scene`]: the full description of one slider–substrate pair (SI units).
 
+use super::pattern::{self, Geometry};
 use super::{Coating, Lattice, Material, Mount};
 use crate::contact::Hertz;
 use crate::error::SceneError;
@@ -48,12 +49,17 @@ pub struct Scene {
     pub slider: SliderSpec,
     /// The substrate rectangle.
     pub substrate: SubstrateSpec,
-    /// Radius of every slider and substrate sphere (m). Study: 1.5 µm.
+    /// Radius of every substrate sphere, and of every slider sphere unless
+    /// `geometry.slider_sphere_radius` says otherwise (m). Study: 1.5 µm.
     pub sphere_radius: f64,
     /// Sphere material.
     pub material: Material,
     /// Coating strength and friction coefficients.
     pub coating: Coating,
+    /// Bases, slider outline, site files and the slider sphere size (default: the presets'
+    /// disc of a Bravais lattice, one sphere size). Not recorded when plain.
+    #[serde(default, skip_serializing_if = "Geometry::is_plain")]
+    pub geometry: Geometry,
 }
 
 impl Scene {
@@ -94,6 +100,7 @@ impl Scene {
             sphere_radius: 1.5e-6,
             material: Material::default(),
             coating: Coating::default(),
+            geometry: Geometry::default(),
         })
     }
 
@@ -114,8 +121,18 @@ impl Scene {
                 "must be a positive number",
             ));
         }
+        if let Some(r) = self.geometry.slider_sphere_radius {
+            if !(r.is_finite() && r > 0.0) {
+                return Err(SceneError::invalid(
+                    "slider.sphere_diameter_um",
+                    2.0 * r * um,
+                    "must be a positive number",
+                ));
+            }
+        }
         self.slider.lattice.validate("slider.lattice")?;
         self.substrate.lattice.validate("substrate.lattice")?;
+        self.validate_geometry()?;
         if !(self.slider.radius.is_finite() && self.slider.radius >= 0.0) {
             return Err(SceneError::invalid(
                 "slider.radius_um",
@@ -153,13 +170,13 @@ impl Scene {
                 "must be a non-negative number",
             ));
         }
-        if sh >= self.sphere_radius {
+        if sh >= self.sphere_radius.min(self.slider_sphere_radius()) {
             return Err(SceneError::invalid(
                 "substrate.sigma_h_um",
                 sh * um,
                 &format!(
                     "must be smaller than the sphere radius {} µm",
-                    self.sphere_radius * um
+                    self.sphere_radius.min(self.slider_sphere_radius()) * um
                 ),
             ));
         }
@@ -228,14 +245,96 @@ impl Scene {
             .tilt_stiffness(&self.slider_sites_local(), theta)
     }
 
-    /// Hertz law of one slider–substrate sphere pair.
+    /// Hertz law of one slider–substrate sphere pair: `1/R_eff = 1/R_slider + 1/R_substrate`
+    /// (`R/2` for equal spheres), `E*` of the one material.
     pub fn hertz(&self) -> Hertz {
-        Hertz::equal_spheres(self.sphere_radius, &self.material)
+        match self.geometry.slider_sphere_radius {
+            Some(r) if r != self.sphere_radius => {
+                Hertz::spheres(r, self.sphere_radius, &self.material)
+            }
+            _ => Hertz::equal_spheres(self.sphere_radius, &self.material),
+        }
     }
 
-    /// Slider sphere centres relative to the disc centre, unrotated (m), deterministic order.
+    /// Radius (m) of a slider sphere (`sphere_radius` unless the geometry gives its own).
+    pub fn slider_sphere_radius(&self) -> f64 {
+        self.geometry
+            .slider_sphere_radius
+            .unwrap_or(self.sphere_radius)
+    }
+
+    /// Centre distance (m) at which a slider and a substrate sphere touch: `R_slider + R_substrate`
+    /// (`2R` for equal spheres, bit for bit).
+    pub fn contact_distance(&self) -> f64 {
+        self.slider_sphere_radius() + self.sphere_radius
+    }
+
+    /// Slider sphere centres relative to the slider centre, unrotated (m), deterministic order:
+    /// the site file's sites, or the lattice (with its basis) cut to the outline.
     pub fn slider_sites_local(&self) -> Vec<[f64; 2]> {
-        self.slider.lattice.sites_in_disc(self.slider.radius)
+        match &self.geometry.slider_sites {
+            Some(list) => list.sites.clone(),
+            None => pattern::sites_in_outline(
+                &self.slider.lattice,
+                &self.geometry.slider_basis,
+                &self.geometry.outline,
+                self.slider.radius,
+            ),
+        }
+    }
+
+    /// Nominal area (m²) of the slider: its outline's area (disc π r² for a site file whose
+    /// outline is not given).
+    pub fn slider_area(&self) -> f64 {
+        self.geometry.outline.area(self.slider.radius)
+    }
+
+    /// One-word description of the slider pattern for tables: the lattice kind with its basis
+    /// size, or `sites:<file>`.
+    pub fn slider_lattice_name(&self) -> String {
+        match &self.geometry.slider_sites {
+            Some(l) => format!("sites:{}", l.path),
+            None => lattice_name(&self.slider.lattice),
+        }
+    }
+
+    /// Checks the added geometry: outline, bases (no overlapping spheres), site files (no
+    /// overlapping spheres, sizes consistent), a slider with at least one sphere. O(N_slider).
+    fn validate_geometry(&self) -> Result<(), SceneError> {
+        let g = &self.geometry;
+        g.outline.validate("slider.outline")?;
+        let d_sl = 2.0 * self.slider_sphere_radius();
+        let d_sb = 2.0 * self.sphere_radius;
+        if g.slider_basis.len() > 1 {
+            pattern::check_basis(
+                &self.slider.lattice,
+                &g.slider_basis,
+                d_sl,
+                "slider.lattice.basis_um",
+            )?;
+        }
+        if g.substrate_basis.len() > 1 {
+            pattern::check_basis(
+                &self.substrate.lattice,
+                &g.substrate_basis,
+                d_sb,
+                "substrate.lattice.basis_um",
+            )?;
+        }
+        if let Some(l) = &g.slider_sites {
+            l.check_overlap(d_sl, "slider.sites")?;
+        }
+        if let Some(l) = &g.substrate_sites {
+            l.check_overlap(d_sb, "substrate.sites")?;
+        }
+        if !g.is_plain() && self.slider_sites_local().is_empty() {
+            return Err(SceneError::invalid(
+                "slider.outline",
+                g.outline.describe(self.slider.radius),
+                "holds no slider site: make the outline larger than the lattice spacing",
+            ));
+        }
+        Ok(())
     }
 
     /// Slider sphere centres in the substrate frame (m) for the slider rotated by `theta` (rad)
@@ -259,10 +358,15 @@ impl Scene {
     /// `h` uniform in `[-σ_h, σ_h]` from a ChaCha8 stream seeded by `substrate.seed` (all zero
     /// when `σ_h = 0`).
     pub fn substrate_spheres(&self) -> Vec<[f64; 3]> {
-        let sites = self
-            .substrate
-            .lattice
-            .sites_in_rect(self.substrate.size[0], self.substrate.size[1]);
+        let sites = match &self.geometry.substrate_sites {
+            Some(l) => l.sites.clone(),
+            None => pattern::sites_in_rect(
+                &self.substrate.lattice,
+                &self.geometry.substrate_basis,
+                self.substrate.size[0],
+                self.substrate.size[1],
+            ),
+        };
         let sh = self.substrate.sigma_h;
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(self.substrate.seed);
         sites
@@ -276,6 +380,20 @@ impl Scene {
                 [p[0], p[1], h]
             })
             .collect()
+    }
+}
+
+/// `triangular`, `square`, `rectangular` or `oblique` for a Bravais lattice.
+pub fn lattice_name(l: &Lattice) -> String {
+    let s = l.a1[0].hypot(l.a1[1]);
+    if *l == Lattice::triangular(s) {
+        "triangular".into()
+    } else if *l == Lattice::square(s) {
+        "square".into()
+    } else if *l == Lattice::rectangular(l.a1[0], l.a2[1]) {
+        "rectangular".into()
+    } else {
+        "oblique".into()
     }
 }
 

@@ -54,14 +54,14 @@ impl Solver {
     pub fn new(scene: &Scene) -> Result<Solver, SceneError> {
         scene.validate()?;
         let spheres = scene.substrate_spheres();
-        let reach = 2.0 * scene.sphere_radius;
+        let reach = scene.contact_distance();
         let local = scene.slider_sites_local();
         Ok(Solver {
             mount_k: scene.slider.mount.principal_tilt_stiffness(&local),
             scene: scene.clone(),
             hertz: scene.hertz(),
             grid: GridSearch::new(&spheres, reach),
-            bvh: BvhSearch::new(&spheres, scene.sphere_radius),
+            bvh: BvhSearch::new(&spheres, 0.5 * reach),
             substrate: spheres,
             local,
             params: SolverParams::default(),
@@ -147,7 +147,7 @@ impl Solver {
         let mut pairs = Vec::with_capacity(slider_xy.len() * 3);
         self.candidate_search().pairs(
             &slider_xy,
-            2.0 * self.scene.sphere_radius + extra.max(0.0),
+            self.scene.contact_distance() + extra.max(0.0),
             &mut pairs,
         );
         PairSet {
@@ -164,7 +164,7 @@ impl Solver {
     /// O(pairs of `near`).
     pub fn pairs_from(&self, near: &PairSet, pose: Pose) -> PairSet {
         let (slider_xy, centre) = self.slider_xy_at(pose);
-        let reach = 2.0 * self.scene.sphere_radius;
+        let reach = self.scene.contact_distance();
         let r2max = reach * reach;
         let pairs = near
             .pairs
@@ -195,11 +195,15 @@ impl Solver {
     fn ctx(&self, theta: f64) -> Ctx<'_> {
         Ctx {
             hertz: &self.hertz,
-            two_r: 2.0 * self.scene.sphere_radius,
+            two_r: self.scene.contact_distance(),
             coating: &self.scene.coating,
             substrate: &self.substrate,
             params: &self.params,
-            scale: self.scene.slider.radius.max(self.scene.sphere_radius),
+            scale: self
+                .scene
+                .slider
+                .radius
+                .max(self.scene.slider_sphere_radius()),
             tilts: self.scene.slider.mount.tilts(),
             kt: self.tilt_stiffness_at(theta),
         }

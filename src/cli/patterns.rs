@@ -1,0 +1,108 @@
+//! `superlube patterns`: flags → [`crate::study::patterns`] → one scene file per candidate +
+//! `index.csv` (with sidecar).
+
+use super::{parse_list_or_range, SceneArgs};
+use crate::study::patterns::{candidate_scene, candidates, parse_family, PatternParams};
+use crate::study::{meta::scene_file, Inputs, Outputs, Progress, Reporter};
+use anyhow::{bail, Context, Result};
+use std::path::PathBuf;
+
+/// Options of `superlube patterns`: enumerate slider lattices of a family over the scene's
+/// substrate (spheres not overlapping), classify each (lubric / directional / interlocked, from
+/// the two lattices' reciprocal vectors), and write one scene file per candidate plus an index.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Family of slider lattices: `directional` (rectangular lattices commensurate with p/q
+    /// times a substrate row period along that row, incommensurate across it), `presets`
+    /// (triangular, square, honeycomb, kagome; `presets:s=3:6:0.5` sets the lattice constant in
+    /// µm), `rectangular:a=3,b=2.6:6:0.05` (a × b in µm, each a value or start:stop:step) or
+    /// `oblique:a=3,b=3.2,gamma_deg=60:90:5`.
+    #[arg(long, value_name = "SPEC")]
+    family: String,
+    /// Largest p and q (each ≥ 1) of the commensurate period ratios p/q (directional family and
+    /// the `p_q` column).
+    #[arg(long = "max-pq", value_name = "N", default_value_t = 3)]
+    max_pq: u32,
+    /// Classification cut-off: reciprocal vectors shared by slider and substrate count up to
+    /// this multiple of the substrate's shortest one (higher orders lock more weakly).
+    #[arg(long = "max-order", value_name = "X", default_value_t = 4.0)]
+    max_order: f64,
+    /// Output folder: DIR/<pattern_id>.toml per candidate (the base scene with the slider
+    /// lattice replaced, so equal slider outline and area) and DIR/index.csv
+    /// (`pattern_id,scene_file,lattice,basis,outline,spheres,commensurate_direction_deg,p_q,
+    /// contact_line_spacing_um,contact_type,lubric_direction_deg,a1_um,a2_um`) with a sidecar.
+    #[arg(long, value_name = "DIR")]
+    out: PathBuf,
+}
+
+pub fn run(a: Args) -> Result<()> {
+    let sc = a.scene.resolve(None)?;
+    if a.max_pq < 1 {
+        bail!("`--max-pq`: {} must be at least 1", a.max_pq);
+    }
+    if !(a.max_order.is_finite() && a.max_order >= 1.0) {
+        bail!("`--max-order`: {} must be a number ≥ 1", a.max_order);
+    }
+    let params = PatternParams {
+        family: parse_family(&a.family, parse_list_or_range)?,
+        family_text: a.family.clone(),
+        max_pq: a.max_pq,
+        max_order: a.max_order,
+    };
+    if a.out.exists() && !a.out.is_dir() {
+        bail!("`--out`: {} exists and is not a folder", a.out.display());
+    }
+    let cands = candidates(&sc.scene, &params)?;
+    let width = cands.len().to_string().len().max(3);
+    let mut files = Vec::new();
+    for (k, c) in cands.iter().enumerate() {
+        let id = format!("p{:0width$}", k + 1);
+        files.push(candidate_scene(&sc.scene, c, &id)?);
+    }
+    std::fs::create_dir_all(&a.out)
+        .with_context(|| format!("`--out`: cannot create {}", a.out.display()))?;
+    let rep = Reporter::stderr();
+    let mut outs = Outputs::new(
+        Inputs {
+            workflow: "patterns".into(),
+            scene: Some(scene_file(&sc.scene)),
+            params: serde_json::json!({
+                "family": a.family,
+                "max_pq": a.max_pq,
+                "max_order": a.max_order,
+            }),
+        },
+        sc.warnings.clone(),
+    );
+    let mut csv = csv::Writer::from_writer(Vec::new());
+    for (f, row) in &files {
+        let path = a.out.join(&row.scene_file);
+        let text = toml::to_string(f).map_err(anyhow::Error::from);
+        outs.write("scene", Some(&path), text.map(String::into_bytes), None);
+        csv.serialize(row)?;
+    }
+    let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"));
+    outs.write(
+        "--out index",
+        Some(&a.out.join("index.csv")),
+        bytes,
+        Some(files.len() as u64),
+    );
+    let mut kinds = std::collections::BTreeMap::new();
+    for (_, r) in &files {
+        *kinds.entry(r.contact_type.clone()).or_insert(0) += 1;
+    }
+    rep.note(&format!(
+        "patterns: {} candidates ({}) in {}",
+        files.len(),
+        kinds
+            .iter()
+            .map(|(k, n)| format!("{n} {k}"))
+            .collect::<Vec<_>>()
+            .join(", "),
+        a.out.display()
+    ));
+    outs.finish()
+}

@@ -1,0 +1,536 @@
+//! Pattern geometry beyond a Bravais lattice cut to a disc: lattices with a basis, slider
+//! outlines (disc, rectangle, polygon), site lists read from files, and a slider sphere size
+//! other than the substrate's. [`Geometry`] holds what a [`super::Scene`] adds to its lattices;
+//! its default is the plain disc-of-a-Bravais-lattice of the presets.
+
+use super::Lattice;
+use crate::error::SceneError;
+use crate::units::{m_to_um, um_to_m};
+use serde::{Deserialize, Serialize};
+
+/// The slider's outline in its own frame (m), centred on the slider centre (which sits on the
+/// first basis site). Rotates with the slider.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Outline {
+    /// A disc of radius `SliderSpec::radius` (the presets).
+    #[default]
+    Disc,
+    /// An axis-aligned rectangle `[w, h]` (m).
+    Rectangle {
+        /// Side lengths (m).
+        size: [f64; 2],
+    },
+    /// A regular polygon with `sides` vertices on a circle of `radius` (m), the first on +x.
+    RegularPolygon {
+        /// Number of vertices (≥ 3).
+        sides: u32,
+        /// Circumradius (m).
+        radius: f64,
+    },
+    /// A simple polygon given by its vertices (m), in order.
+    Polygon {
+        /// Vertices (m).
+        vertices: Vec<[f64; 2]>,
+    },
+}
+
+impl Outline {
+    /// The polygon's vertices (m); `None` for a disc.
+    pub fn vertices(&self) -> Option<Vec<[f64; 2]>> {
+        match self {
+            Outline::Disc => None,
+            Outline::Rectangle { size } => {
+                let (w, h) = (0.5 * size[0], 0.5 * size[1]);
+                Some(vec![[-w, -h], [w, -h], [w, h], [-w, h]])
+            }
+            Outline::RegularPolygon { sides, radius } => Some(
+                (0..*sides)
+                    .map(|k| {
+                        let a = std::f64::consts::TAU * k as f64 / *sides as f64;
+                        [radius * a.cos(), radius * a.sin()]
+                    })
+                    .collect(),
+            ),
+            Outline::Polygon { vertices } => Some(vertices.clone()),
+        }
+    }
+
+    /// Largest distance (m) of the outline from the slider centre (`disc_r` for a disc).
+    pub fn circumradius(&self, disc_r: f64) -> f64 {
+        match self.vertices() {
+            None => disc_r,
+            Some(v) => v.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max),
+        }
+    }
+
+    /// Area (m²) enclosed by the outline (shoelace formula for polygons).
+    pub fn area(&self, disc_r: f64) -> f64 {
+        match self.vertices() {
+            None => std::f64::consts::PI * disc_r * disc_r,
+            Some(v) => polygon_area(&v).abs(),
+        }
+    }
+
+    /// Whether the point `p` (m, slider frame) lies inside or on the outline (within a relative
+    /// 1e-9 of its size). O(vertices).
+    pub fn contains(&self, p: [f64; 2], disc_r: f64) -> bool {
+        match self {
+            Outline::Disc => p[0] * p[0] + p[1] * p[1] <= disc_r * disc_r * (1.0 + 1e-9),
+            Outline::Rectangle { size } => {
+                p[0].abs() <= 0.5 * size[0] * (1.0 + 1e-12)
+                    && p[1].abs() <= 0.5 * size[1] * (1.0 + 1e-12)
+            }
+            _ => {
+                let v = self.vertices().unwrap_or_default();
+                let tol = 1e-9 * self.circumradius(disc_r);
+                point_in_polygon(&v, p) || edge_distance(&v, p) <= tol
+            }
+        }
+    }
+
+    /// Short description in µm for tables and logs: `disc r=100`, `rectangle 120x80`,
+    /// `polygon 6 r=90`, `polygon 5 vertices`.
+    pub fn describe(&self, disc_r: f64) -> String {
+        let um = |v: f64| (v * 1e6 * 1e6).round() / 1e6;
+        match self {
+            Outline::Disc => format!("disc r={}", um(disc_r)),
+            Outline::Rectangle { size } => format!("rectangle {}x{}", um(size[0]), um(size[1])),
+            Outline::RegularPolygon { sides, radius } => {
+                format!("polygon {sides} r={}", um(*radius))
+            }
+            Outline::Polygon { vertices } => format!("polygon {} vertices", vertices.len()),
+        }
+    }
+
+    /// Checks the outline is finite with a positive area; `field` names it in errors.
+    pub fn validate(&self, field: &str) -> Result<(), SceneError> {
+        let bad = |why: &str| SceneError::invalid(field, format!("{self:?}"), why);
+        match self {
+            Outline::Disc => Ok(()),
+            Outline::Rectangle { size } => {
+                if size.iter().all(|v| v.is_finite() && *v > 0.0) {
+                    Ok(())
+                } else {
+                    Err(bad("size_um: both sides must be positive numbers"))
+                }
+            }
+            Outline::RegularPolygon { sides, radius } => {
+                if *sides < 3 {
+                    Err(bad("sides must be at least 3"))
+                } else if !(radius.is_finite() && *radius > 0.0) {
+                    Err(bad("radius_um must be a positive number"))
+                } else {
+                    Ok(())
+                }
+            }
+            Outline::Polygon { vertices } => {
+                if vertices.len() < 3 {
+                    Err(bad("vertices_um needs at least 3 vertices"))
+                } else if vertices.iter().flatten().any(|v| !v.is_finite()) {
+                    Err(bad("vertices_um must be finite"))
+                } else if polygon_area(vertices).abs() <= 0.0 {
+                    Err(bad("vertices_um enclose no area"))
+                } else {
+                    Ok(())
+                }
+            }
+        }
+    }
+}
+
+/// Signed area (m²) of a polygon (shoelace).
+fn polygon_area(v: &[[f64; 2]]) -> f64 {
+    let n = v.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (v[i], v[(i + 1) % n]);
+            a[0] * b[1] - a[1] * b[0]
+        })
+        .sum::<f64>()
+        * 0.5
+}
+
+/// Even–odd crossing test.
+fn point_in_polygon(v: &[[f64; 2]], p: [f64; 2]) -> bool {
+    let n = v.len();
+    let mut inside = false;
+    let mut j = n - 1;
+    for i in 0..n {
+        let (a, b) = (v[i], v[j]);
+        if (a[1] > p[1]) != (b[1] > p[1])
+            && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]
+        {
+            inside = !inside;
+        }
+        j = i;
+    }
+    inside
+}
+
+/// Smallest distance (m) from `p` to the polygon's edges.
+fn edge_distance(v: &[[f64; 2]], p: [f64; 2]) -> f64 {
+    let n = v.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (v[i], v[(i + 1) % n]);
+            let d = [b[0] - a[0], b[1] - a[1]];
+            let l2 = d[0] * d[0] + d[1] * d[1];
+            let t = if l2 > 0.0 {
+                (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (p[0] - a[0] - t * d[0]).hypot(p[1] - a[1] - t * d[1])
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Sphere sites read from a site file (m): slider sites relative to the slider centre,
+/// substrate sites relative to the substrate centre, in file order.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SiteList {
+    /// The file the sites came from (as given, for records and messages).
+    pub path: String,
+    /// Sphere centres (m).
+    pub sites: Vec<[f64; 2]>,
+    /// The sphere diameter (m) the file's `diameter_um` column gives, if it has one.
+    pub diameter: Option<f64>,
+    /// File line of each site (for messages; not recorded).
+    #[serde(skip)]
+    pub lines: Vec<usize>,
+}
+
+impl SiteList {
+    /// Parses a site file: a header line naming the columns `x_um,y_um[,diameter_um]` (any
+    /// order; `#` comments and blank lines skipped), then one sphere per line. Errors name the
+    /// file, the line and the column (missing column, not a number, NaN/inf, non-positive
+    /// diameter, overlapping spheres). `field` names the scene field (`slider.sites`).
+    /// Coordinates are read onto the 1e-9 µm grid (`round(x·10⁹)/10⁹` µm), as the sites of a
+    /// lattice with a basis: writing those sites to 9 or more decimals reproduces them exactly.
+    /// Per-site diameters must all be equal (one sphere size per body). O(N log N).
+    pub fn parse(text: &str, path: &str, field: &str) -> Result<SiteList, SceneError> {
+        let err = |line: usize, why: String| {
+            SceneError::invalid(field, format!("{path} line {line}"), &why)
+        };
+        let mut lines = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| (i + 1, l.trim()))
+            .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+        let (hl, header) = lines.next().ok_or_else(|| {
+            err(
+                1,
+                "empty site file: needs a header `x_um,y_um[,diameter_um]` and one line per sphere"
+                    .into(),
+            )
+        })?;
+        let cols: Vec<&str> = header.split(',').map(str::trim).collect();
+        let find = |name: &str| cols.iter().position(|c| *c == name);
+        let (ix, iy) = match (find("x_um"), find("y_um")) {
+            (Some(x), Some(y)) => (x, y),
+            _ => {
+                return Err(err(
+                    hl,
+                    format!(
+                    "header `{header}` must name the columns x_um and y_um (optional diameter_um)"
+                ),
+                ))
+            }
+        };
+        let id = find("diameter_um");
+        if let Some(c) = cols
+            .iter()
+            .find(|c| !["x_um", "y_um", "diameter_um"].contains(c))
+        {
+            return Err(err(
+                hl,
+                format!("unknown column `{c}` (expected x_um, y_um, diameter_um)"),
+            ));
+        }
+        let mut sites = Vec::new();
+        let mut lines_of = Vec::new();
+        let mut diameter: Option<(f64, usize)> = None;
+        for (ln, l) in lines {
+            let f: Vec<&str> = l.split(',').map(str::trim).collect();
+            let num = |i: usize, name: &str| -> Result<f64, SceneError> {
+                let s = f
+                    .get(i)
+                    .filter(|s| !s.is_empty())
+                    .ok_or_else(|| err(ln, format!("missing column {name}")))?;
+                let v: f64 = s
+                    .parse()
+                    .map_err(|_| err(ln, format!("{name} = `{s}` is not a number")))?;
+                if !v.is_finite() {
+                    return Err(err(ln, format!("{name} = {s} is not a finite number")));
+                }
+                Ok(v)
+            };
+            let (x, y) = (num(ix, "x_um")?, num(iy, "y_um")?);
+            if let Some(i) = id {
+                let d = num(i, "diameter_um")?;
+                if d <= 0.0 {
+                    return Err(err(ln, format!("diameter_um = {d} must be positive")));
+                }
+                match diameter {
+                    None => diameter = Some((d, ln)),
+                    Some((d0, l0)) if d0 != d => {
+                        return Err(err(
+                            ln,
+                            format!(
+                                "diameter_um = {d} differs from {d0} on line {l0}: one sphere size per body is supported (per-site sizes are not)"
+                            ),
+                        ))
+                    }
+                    _ => {}
+                }
+            }
+            if f.len() > cols.len() {
+                return Err(err(
+                    ln,
+                    format!("{} columns, the header names {}", f.len(), cols.len()),
+                ));
+            }
+            sites.push([um_to_m(snap_um(x)), um_to_m(snap_um(y))]);
+            lines_of.push(ln);
+        }
+        if sites.is_empty() {
+            return Err(err(hl, "no sphere: the site file has only a header".into()));
+        }
+        let list = SiteList {
+            path: path.to_string(),
+            sites,
+            diameter: diameter.map(|(d, _)| um_to_m(d)),
+            lines: lines_of,
+        };
+        if let Some(d) = list.diameter {
+            list.check_overlap(d, field)?;
+        }
+        Ok(list)
+    }
+
+    /// Reads and parses a site file (see [`SiteList::parse`]); refuses files over 50 MB.
+    pub fn read(path: &std::path::Path, field: &str) -> Result<SiteList, SceneError> {
+        use std::io::Read;
+        let shown = path.display().to_string();
+        let io = |e: String| SceneError::invalid(field, &shown, &format!("cannot read: {e}"));
+        let f = std::fs::File::open(path).map_err(|e| io(e.to_string()))?;
+        let mut bytes = Vec::new();
+        f.take(50_000_001)
+            .read_to_end(&mut bytes)
+            .map_err(|e| io(e.to_string()))?;
+        if bytes.len() > 50_000_000 {
+            return Err(io("larger than 50 MB: not a site file".into()));
+        }
+        let text = String::from_utf8(bytes).map_err(|_| io("not UTF-8 text".into()))?;
+        Self::parse(&text, &shown, field)
+    }
+
+    /// Checks no two spheres of diameter `d` (m) overlap (centre distance < d, relative 1e-9);
+    /// the error names both file lines. Sweep over x: O(N log N + close pairs).
+    pub fn check_overlap(&self, d: f64, field: &str) -> Result<(), SceneError> {
+        let line = |i: usize| self.lines.get(i).copied().unwrap_or(i + 1);
+        let mut order: Vec<usize> = (0..self.sites.len()).collect();
+        order.sort_by(|&a, &b| self.sites[a][0].total_cmp(&self.sites[b][0]));
+        let d2 = d * d * (1.0 - 1e-9);
+        for (k, &i) in order.iter().enumerate() {
+            let p = self.sites[i];
+            for &j in &order[k + 1..] {
+                let q = self.sites[j];
+                if q[0] - p[0] >= d {
+                    break;
+                }
+                let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+                if dx * dx + dy * dy < d2 {
+                    let (a, b) = (i.min(j), i.max(j));
+                    let um = |v: [f64; 2]| [v[0] * 1e6, v[1] * 1e6];
+                    return Err(SceneError::invalid(
+                        field,
+                        format!("{} lines {} and {}", self.path, line(a), line(b)),
+                        &format!(
+                            "spheres at {:?} and {:?} µm overlap: centre distance {:.6} µm < sphere diameter {} µm",
+                            um(self.sites[a]),
+                            um(self.sites[b]),
+                            dx.hypot(dy) * 1e6,
+                            d * 1e6
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What a scene adds to its two Bravais lattices. The default (empty bases, a disc outline, no
+/// site files, one sphere size) is the presets' geometry.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct Geometry {
+    /// Slider basis (m): sites `T + b − b₀` for lattice vectors T (b₀ the first basis site, so
+    /// it sits at the slider centre). Empty: one site per cell.
+    #[serde(default)]
+    pub slider_basis: Vec<[f64; 2]>,
+    /// Substrate basis (m), as the slider's (b₀ at the substrate centre).
+    #[serde(default)]
+    pub substrate_basis: Vec<[f64; 2]>,
+    /// Slider outline.
+    #[serde(default)]
+    pub outline: Outline,
+    /// Slider sites from a file (replace the slider lattice, basis and outline).
+    #[serde(default)]
+    pub slider_sites: Option<SiteList>,
+    /// Substrate sites from a file (replace the substrate lattice, basis and rectangle cut).
+    #[serde(default)]
+    pub substrate_sites: Option<SiteList>,
+    /// Slider sphere radius (m) when it differs from the substrate's `Scene::sphere_radius`.
+    #[serde(default)]
+    pub slider_sphere_radius: Option<f64>,
+}
+
+impl Geometry {
+    /// Whether this is the presets' geometry (nothing added).
+    pub fn is_plain(&self) -> bool {
+        *self == Geometry::default()
+    }
+
+    /// Whether the slider is a plain Bravais lattice (no basis, no site file).
+    pub fn slider_is_bravais(&self) -> bool {
+        self.slider_basis.len() <= 1 && self.slider_sites.is_none()
+    }
+
+    /// Whether the substrate is a plain Bravais lattice (no basis, no site file).
+    pub fn substrate_is_bravais(&self) -> bool {
+        self.substrate_basis.len() <= 1 && self.substrate_sites.is_none()
+    }
+}
+
+/// `x` (µm) on the 1e-9 µm grid: `round(x·10⁹)/10⁹`, the double nearest to its 9-decimal text.
+fn snap_um(x: f64) -> f64 {
+    (x * 1e9).round() / 1e9
+}
+
+/// A site coordinate (m) of a lattice with a basis, placed on the 1e-9 µm grid so that a site
+/// file with the coordinates written to 9 or more decimals (µm) gives exactly the same sites
+/// (site files are read onto the same grid).
+fn snap_m(v: f64) -> f64 {
+    um_to_m(snap_um(m_to_um(v)))
+}
+
+/// Lattice-with-basis sites inside `outline` (disc radius `disc_r`), deterministic order
+/// (rows of lattice cells, basis order inside a cell). With no basis and a disc it is exactly
+/// [`Lattice::sites_in_disc`]. O(cells in the bounding disc × basis).
+pub fn sites_in_outline(
+    l: &Lattice,
+    basis: &[[f64; 2]],
+    outline: &Outline,
+    disc_r: f64,
+) -> Vec<[f64; 2]> {
+    if basis.len() <= 1 && *outline == Outline::Disc {
+        return l.sites_in_disc(disc_r);
+    }
+    let b = rebased(basis);
+    let reach =
+        outline.circumradius(disc_r) + b.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
+    let (imax, jmax) = l.index_bounds(reach, reach);
+    let mut out = Vec::new();
+    for j in -jmax..=jmax {
+        for i in -imax..=imax {
+            let t = l.point(i as f64, j as f64);
+            for q in &b {
+                let mut p = [t[0] + q[0], t[1] + q[1]];
+                if b.len() > 1 {
+                    p = [snap_m(p[0]), snap_m(p[1])];
+                }
+                if outline.contains(p, disc_r) {
+                    out.push(p);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Lattice-with-basis sites in the rectangle `|x| ≤ lx/2, |y| ≤ ly/2` (m), deterministic order.
+/// With no basis it is exactly [`Lattice::sites_in_rect`].
+pub fn sites_in_rect(l: &Lattice, basis: &[[f64; 2]], lx: f64, ly: f64) -> Vec<[f64; 2]> {
+    if basis.len() <= 1 {
+        return l.sites_in_rect(lx, ly);
+    }
+    let b = rebased(basis);
+    let hx = 0.5 * lx * (1.0 + 1e-12);
+    let hy = 0.5 * ly * (1.0 + 1e-12);
+    let reach = hx.hypot(hy) + b.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
+    let (imax, jmax) = l.index_bounds(reach, reach);
+    let mut out = Vec::new();
+    for j in -jmax..=jmax {
+        for i in -imax..=imax {
+            let t = l.point(i as f64, j as f64);
+            for q in &b {
+                let p = [snap_m(t[0] + q[0]), snap_m(t[1] + q[1])];
+                if p[0].abs() <= hx && p[1].abs() <= hy {
+                    out.push(p);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The basis shifted so that its first site is the origin (`[[0, 0]]` when empty).
+pub fn rebased(basis: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    match basis.first() {
+        None => vec![[0.0, 0.0]],
+        Some(b0) => basis.iter().map(|b| [b[0] - b0[0], b[1] - b0[1]]).collect(),
+    }
+}
+
+/// Smallest distance (m) between two distinct sites of the lattice with `basis` (the nearest-
+/// neighbour spacing of the pattern). O(basis² × 49).
+pub fn min_site_distance(l: &Lattice, basis: &[[f64; 2]]) -> f64 {
+    let b = rebased(basis);
+    let mut best = f64::INFINITY;
+    for (k, p) in b.iter().enumerate() {
+        for (m, q) in b.iter().enumerate() {
+            for i in -3i32..=3 {
+                for j in -3i32..=3 {
+                    if k == m && i == 0 && j == 0 {
+                        continue;
+                    }
+                    let t = l.point(i as f64, j as f64);
+                    let d = (q[0] + t[0] - p[0]).hypot(q[1] + t[1] - p[1]);
+                    best = best.min(d);
+                }
+            }
+        }
+    }
+    best
+}
+
+/// Checks a lattice with a basis: finite basis sites, none repeated, and spheres of diameter
+/// `d` (m) on them do not overlap. `field` names the basis (`slider.lattice.basis_um`).
+pub fn check_basis(l: &Lattice, basis: &[[f64; 2]], d: f64, field: &str) -> Result<(), SceneError> {
+    let um = |v: f64| v * 1e6;
+    if basis.iter().flatten().any(|v| !v.is_finite()) {
+        return Err(SceneError::invalid(
+            field,
+            "NaN/inf",
+            "basis sites must be finite",
+        ));
+    }
+    let s = min_site_distance(l, basis);
+    if s < d * (1.0 - 1e-9) {
+        return Err(SceneError::invalid(
+            field,
+            format!(
+                "{:?}",
+                basis.iter().map(|b| [um(b[0]), um(b[1])]).collect::<Vec<_>>()
+            ),
+            &format!(
+                "two sites of the lattice with this basis are {:.6} µm apart: spheres of diameter {} µm overlap",
+                um(s),
+                um(d)
+            ),
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,118 @@
+//! `superlube patterns` and pattern geometry through the command line: a honeycomb as a basis
+//! and as a site file screen identically; generated candidates run on their own; bad input is
+//! named before any work.
+
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
+use surrogate::units::m_to_um;
+
+fn screen(scene: &std::path::Path) -> String {
+    let out = bin()
+        .args([
+            "screen",
+            "--theta",
+            "0,13,30",
+            "--load-mn",
+            "0.35,2.1",
+            "--scene",
+        ])
+        .arg(scene)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn honeycomb_basis_and_site_file_give_identical_screen_rows() {
+    let dir = tmpdir("patterns-honeycomb");
+    let basis = dir.join("basis.toml");
+    std::fs::write(
+        &basis,
+        "[substrate]\nsize_um = [120, 120]\n[slider]\nradius_um = 30\nsphere_diameter_um = 1.5\nlattice = { kind = 'honeycomb', spacing_um = 3.0 }\n",
+    )
+    .unwrap();
+    // the same sites, written as a site file (shortest decimals in µm)
+    let scene = surrogate::SceneFile::read(&basis)
+        .unwrap()
+        .into_scene()
+        .unwrap();
+    let mut csv = String::from("x_um,y_um\n");
+    for p in scene.slider_sites_local() {
+        csv += &format!("{},{}\n", m_to_um(p[0]), m_to_um(p[1]));
+    }
+    std::fs::write(dir.join("honeycomb.csv"), csv).unwrap();
+    let file = dir.join("file.toml");
+    std::fs::write(
+        &file,
+        "[substrate]\nsize_um = [120, 120]\n[slider]\nradius_um = 30\nsphere_diameter_um = 1.5\nsites = 'honeycomb.csv'\n",
+    )
+    .unwrap();
+    let (a, b) = (screen(&basis), screen(&file));
+    assert_eq!(a.lines().count(), 7);
+    assert_eq!(a, b);
+}
+
+#[test]
+fn directional_candidates_are_written_and_run_on_their_own() {
+    let dir = tmpdir("patterns-directional");
+    let out = bin()
+        .args([
+            "patterns",
+            "--family",
+            "directional",
+            "--max-pq",
+            "2",
+            "--out",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let index = std::fs::read_to_string(dir.join("index.csv")).unwrap();
+    let mut lines = index.lines();
+    assert!(lines.next().unwrap().starts_with(
+        "pattern_id,scene_file,lattice,basis,outline,spheres,commensurate_direction_deg,p_q,contact_line_spacing_um,contact_type"
+    ));
+    let first: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(first[0], "p001");
+    assert_eq!(first[9], "directional");
+    assert!(dir.join("index.csv.meta.json").exists());
+    let rows = screen(&dir.join(first[1]));
+    assert_eq!(rows.lines().count(), 7);
+}
+
+#[test]
+fn bad_input_is_named() {
+    fails_naming(
+        &[
+            "patterns",
+            "--family",
+            "rectangular:a=1,b=2",
+            "--out",
+            "/tmp/x",
+        ],
+        "--family",
+    );
+    fails_naming(
+        &["patterns", "--family", "hexagonal", "--out", "/tmp/x"],
+        "--family",
+    );
+    let dir = tmpdir("patterns-bad");
+    let f = dir.join("bad.toml");
+    std::fs::write(
+        &f,
+        "[slider]\noutline = { kind = 'rectangle', size_um = [0, 80] }\n",
+    )
+    .unwrap();
+    fails_naming(
+        &["screen", "--scene", f.to_str().unwrap()],
+        "slider.outline",
+    );
+    let idx = dir.join("index.csv");
+    std::fs::write(&idx, "pattern_id,lattice\np001,square\n").unwrap();
+    fails_naming(
+        &["design", "--no-dem", "--patterns", idx.to_str().unwrap()],
+        "--patterns",
+    );
+}
