@@ -3,6 +3,7 @@
 
 use super::dem_args::ModelArg;
 use super::friction_args::FrictionKnobArgs;
+use super::tolerance_args::ToleranceArgs;
 use super::{checks, parse_list_or_range, SceneArgs};
 use crate::study::dem_run::{DemParams, ModelSpec};
 use crate::study::design::store::Store;
@@ -137,26 +138,8 @@ pub struct Args {
     alphas_per_theta: usize,
     #[command(flatten)]
     friction: FrictionKnobArgs,
-    /// Fabrication tolerance of the slider orientation in degrees: a design's superlubric
-    /// limit is the lowest over every θ within ± this of its nominal θ (and every direction
-    /// within --direction-tol), sampled every ≤ --theta-tol-step. A misaligned slider keeps the
-    /// nominal pulling direction in the substrate frame (the tribometer's axis does not turn
-    /// with the slider). 0 and --direction-tol 0: the nominal answer.
-    #[arg(
-        long = "theta-tol",
-        value_name = "DEG",
-        default_value_t = 0.1,
-        allow_hyphen_values = true
-    )]
-    theta_tol: f64,
-    /// Tolerance of the pulling direction in the substrate frame, in degrees.
-    #[arg(
-        long = "direction-tol",
-        value_name = "DEG",
-        default_value_t = 0.5,
-        allow_hyphen_values = true
-    )]
-    direction_tol: f64,
+    #[command(flatten)]
+    tol: ToleranceArgs,
     /// Largest sampling step in degrees of the θ tolerance: the first sample off the nominal is
     /// at most this far, so a window narrower than the tolerance cannot pass.
     #[arg(
@@ -495,11 +478,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         }
         None => crate::study::Shard::ALL,
     };
-    let theta_tol_deg = checks::non_negative(a.theta_tol, "--theta-tol")?;
-    let direction_tol_deg = checks::non_negative(a.direction_tol, "--direction-tol")?;
-    if direction_tol_deg >= 90.0 {
-        bail!("`--direction-tol`: ±{direction_tol_deg}° is not a tolerance; give less than 90°");
-    }
+    let (theta_tol_deg, direction_tol_deg) = a.tol.checked()?;
     let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step")?;
     let direction_tol_step_deg = checks::positive(a.direction_tol_step, "--direction-tol-step")?;
     let seeds: Vec<u64> = match &a.seeds {

@@ -25,6 +25,7 @@ mod slide;
 mod slurm;
 mod sweep_args;
 mod tolerance;
+mod tolerance_args;
 
 pub use crate::study::range::parse_list_or_range;
 pub use scene_args::SceneArgs;

@@ -3,6 +3,7 @@
 
 use super::design::STUDY_LOADS;
 use super::friction_args::FrictionKnobArgs;
+use super::tolerance_args::ToleranceArgs;
 use super::{checks, SceneArgs};
 use crate::plot::tolerance::tolerance_png;
 use crate::study::rows::label;
@@ -61,22 +62,8 @@ pub struct Args {
     /// Points of the map along the direction.
     #[arg(long = "direction-points", value_name = "N", default_value_t = 21)]
     direction_points: usize,
-    /// Fabrication tolerance in θ (degrees), drawn as the box on the map (≤ --theta-range).
-    #[arg(
-        long = "theta-tol",
-        value_name = "DEG",
-        default_value_t = 0.1,
-        allow_hyphen_values = true
-    )]
-    theta_tol: f64,
-    /// Tolerance of the pulling direction (degrees), drawn as the box (≤ --direction-range).
-    #[arg(
-        long = "direction-tol",
-        value_name = "DEG",
-        default_value_t = 0.5,
-        allow_hyphen_values = true
-    )]
-    direction_tol: f64,
+    #[command(flatten)]
+    tol: ToleranceArgs,
     /// Normal loads W in mN, strictly increasing [default: the study's 0.35 … 3.86].
     #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS, allow_hyphen_values = true)]
     load_mn: String,
@@ -137,12 +124,11 @@ pub fn run(a: Args) -> Result<()> {
         "--direction-range",
         "--direction-points",
     )?;
-    checks::non_negative(a.theta_tol, "--theta-tol")?;
-    checks::non_negative(a.direction_tol, "--direction-tol")?;
-    if a.theta_tol > a.theta_range || a.direction_tol > a.direction_range {
+    let (theta_tol, direction_tol) = a.tol.checked()?;
+    if theta_tol > a.theta_range || direction_tol > a.direction_range {
         bail!(
             "the tolerance box (`--theta-tol` {}, `--direction-tol` {}) must lie on the map (`--theta-range` {}, `--direction-range` {})",
-            a.theta_tol, a.direction_tol, a.theta_range, a.direction_range
+            theta_tol, direction_tol, a.theta_range, a.direction_range
         );
     }
     checks::positive(a.mu_superlubric, "--mu-superlubric")?;
@@ -204,8 +190,8 @@ pub fn run(a: Args) -> Result<()> {
                 "direction_deg": direction_deg,
                 "theta_offsets_deg": record::axis(&params.theta_offsets_deg),
                 "direction_offsets_deg": record::axis(&params.direction_offsets_deg),
-                "theta_tol_deg": a.theta_tol,
-                "direction_tol_deg": a.direction_tol,
+                "theta_tol_deg": theta_tol,
+                "direction_tol_deg": direction_tol,
                 "load_mN": params.limit.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
                 "mu_superlubric": a.mu_superlubric,
                 "line_deg": line.map(rad_to_deg),
@@ -226,8 +212,8 @@ pub fn run(a: Args) -> Result<()> {
     let box_min = rows
         .iter()
         .filter(|r| {
-            r.theta_offset_deg.abs() <= a.theta_tol + 1e-9
-                && r.direction_offset_deg.abs() <= a.direction_tol + 1e-9
+            r.theta_offset_deg.abs() <= theta_tol + 1e-9
+                && r.direction_offset_deg.abs() <= direction_tol + 1e-9
         })
         .map(|r| r.superlubric_to_mN)
         .fold(f64::INFINITY, f64::min);
@@ -236,8 +222,8 @@ pub fn run(a: Args) -> Result<()> {
         sc.scene.pattern,
         theta_deg,
         direction_deg,
-        a.theta_tol,
-        a.direction_tol,
+        theta_tol,
+        direction_tol,
         if box_min.is_finite() {
             format!("{box_min}")
         } else {
@@ -251,13 +237,13 @@ pub fn run(a: Args) -> Result<()> {
             &rows,
             params.theta_offsets_deg.len(),
             (theta_deg, direction_deg),
-            (a.theta_tol, a.direction_tol),
+            (theta_tol, direction_tol),
         )
     });
     if let Some(r) = nominal {
         rep.note(&format!(
             "nominal θ = {theta_deg}°, direction {direction_deg}°: superlubric up to {} mN; over the box ±{}° × ±{}°: {} mN",
-            r.superlubric_to_mN, a.theta_tol, a.direction_tol, box_min
+            r.superlubric_to_mN, theta_tol, direction_tol, box_min
         ));
     }
     outs.finish()

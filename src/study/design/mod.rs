@@ -232,10 +232,7 @@ pub fn answer_map(
             "direction_deg": c.direction_deg,
             "theta_offsets_deg": mp.theta_offsets_deg,
             "direction_offsets_deg": mp.direction_offsets_deg,
-            "load_mN": p.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
-            "mu_superlubric": p.mu_superlubric,
-            "line_deg": p.line.map(rad_to_deg),
-            "friction": record::friction_knobs(&p.friction),
+            "limit": limit_record(p),
         }),
     };
     let rel = format!("stages/{}/tolerance_map.json", ds.name);
@@ -594,6 +591,16 @@ pub fn tolerance_box(p: &DesignParams) -> ToleranceBox {
     )
 }
 
+/// The recorded inputs of a superlubric limit (loads, threshold, contact line, estimate knobs).
+fn limit_record(p: &DesignParams) -> Value {
+    json!({
+        "load_mN": p.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
+        "mu_superlubric": p.mu_superlubric,
+        "line_deg": p.line.map(rad_to_deg),
+        "friction": record::friction_knobs(&p.friction),
+    })
+}
+
 /// One solver per substrate realisation: the scene's own (reusing `own` when built), then one
 /// per extra seed of `p.seeds`.
 fn seed_solvers(ds: &DesignScene, p: &DesignParams, own: Option<Solver>) -> Result<Vec<Solver>> {
@@ -691,10 +698,7 @@ fn robust_stage(
                 "direction_offsets_deg": bx.direction_offsets_deg,
                 "seeds": p.seeds,
                 "floor": floor,
-                "load_mN": p.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
-                "mu_superlubric": p.mu_superlubric,
-                "line_deg": p.line.map(rad_to_deg),
-                "friction": record::friction_knobs(&p.friction),
+                "limit": limit_record(p),
             }),
         };
         let rel = format!(
