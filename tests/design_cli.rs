@@ -25,10 +25,18 @@ const SMALL: [&str; 8] = [
     "0.01,0.03,0.06,0.09",
 ];
 
+/// `superlube design` on [`SMALL`] with `extra`; the nominal design (no fabrication tolerance)
+/// unless `extra` sets one (tolerance: tests/tolerance_cli.rs).
 fn design(extra: &[&str], out: &Path) -> std::process::Output {
+    let nominal: &[&str] = if extra.contains(&"--theta-tol") {
+        &[]
+    } else {
+        &["--theta-tol", "0", "--direction-tol", "0"]
+    };
     bin()
         .arg("design")
         .args(SMALL)
+        .args(nominal)
         .args(extra)
         .arg("--out")
         .arg(out)
@@ -225,6 +233,7 @@ fn no_dem_writes_the_report_and_a_second_run_recomputes_nothing() {
     let o = bin()
         .arg("design")
         .args(&SMALL[..6])
+        .args(["--theta-tol", "0", "--direction-tol", "0"])
         .args(["--load-mn", "0.01,0.03,0.06,0.08", "--no-dem", "--out"])
         .arg(&out)
         .output()

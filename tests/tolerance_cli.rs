@@ -232,3 +232,65 @@ fn design_tolerance_bad_input_names_the_flag() {
     assert!(!out.exists(), "nothing may be written");
     std::fs::remove_dir_all(&d).ok();
 }
+
+#[test]
+fn the_dem_runs_the_corners_of_the_answers_box() {
+    let d = tmpdir("tolerance-dem");
+    let out = d.join("run");
+    let o = bin()
+        .args(["design", "--pattern", "square-tri", "--theta", "0:30:1"])
+        .args(SMALL)
+        .args([
+            "--theta-tol",
+            "1",
+            "--theta-tol-step",
+            "0.5",
+            "--direction-tol",
+            "0.5",
+        ])
+        .args(["--confirm", "1", "--confirm-loads", "0.01,0.09"])
+        .args(["--dem-equilibrate-us", "0.1", "--dem-relax-us", "0.05"])
+        .args([
+            "--dem-slide-us",
+            "0.3",
+            "--no-protocol-check",
+            "--jobs",
+            "2",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let ranking = rows(&out.join("ranking.csv"));
+    let best = &ranking[0];
+    let limit = num(best, "superlubric_to_mN");
+    assert!(
+        limit > 0.0,
+        "the small scene's best design is superlubric somewhere"
+    );
+    let dem = rows(&out.join("dem.csv"));
+    let corners: Vec<_> = dem
+        .iter()
+        .filter(|r| num(r, "theta_offset_deg") != 0.0 || num(r, "direction_offset_deg") != 0.0)
+        .collect();
+    // four corners at the robust limit load (and four at the next load above, if any)
+    let at_limit = corners
+        .iter()
+        .filter(|r| num(r, "load_mN") == limit)
+        .count();
+    assert_eq!(at_limit, 4, "{dem:?}");
+    assert!(corners.len() == 4 || corners.len() == 8);
+    for r in &corners {
+        assert_eq!(num(r, "theta_offset_deg").abs(), 1.0);
+        assert_eq!(num(r, "direction_offset_deg").abs(), 0.5);
+        let t = num(best, "theta_deg") + num(r, "theta_offset_deg");
+        assert!((num(r, "theta_deg") - t).abs() < 1e-9);
+    }
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(
+        report.contains("DEM at the corners of the tolerance box"),
+        "{report}"
+    );
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -166,6 +166,10 @@ pub struct DemEntry {
     pub load: f64,
     /// The study's protocol (the protocol-check run) rather than the design's.
     pub study_protocol: bool,
+    /// θ offset (degrees) from the design for a tolerance-corner run (0: the design itself).
+    pub theta_offset_deg: f64,
+    /// Pull-direction offset (degrees, substrate frame) for a tolerance-corner run.
+    pub direction_offset_deg: f64,
     /// The run.
     pub outcome: SlideOutcome,
 }
@@ -1012,7 +1016,8 @@ pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64
 }
 
 /// One DEM run of the confirmation: pattern, rank, θ (°), α (°), W (N), study protocol.
-type ConfirmEntry = (String, usize, f64, f64, f64, bool);
+/// (pattern, rank, θ, α, W, study protocol, θ offset, direction offset) of a DEM run.
+type ConfirmEntry = (String, usize, f64, f64, f64, bool, f64, f64);
 
 /// The confirmation runs (top `confirm` designs × confirmation loads), in order, with what
 /// each one is.
@@ -1020,28 +1025,81 @@ fn confirm_jobs(
     patterns: &[PatternResult],
     p: &DesignParams,
 ) -> (Vec<SlideJob>, Vec<ConfirmEntry>) {
-    let mut jobs = Vec::new();
-    let mut entries: Vec<ConfirmEntry> = Vec::new();
+    // (borderline first, job, entry): DEM runs go first to borderline designs
+    let mut all: Vec<(bool, SlideJob, ConfirmEntry)> = Vec::new();
     for pr in patterns {
         for (k, c) in pr.ranking.iter().take(p.confirm).enumerate() {
+            let borderline = c.score.verdict == crate::study::verdict::Verdict::Borderline;
             for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
-                jobs.push(SlideJob {
-                    name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, false),
-                    scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
-                    params: dem_params(p, c.alpha_deg, w, false),
-                });
-                entries.push((
-                    pr.scene.name.clone(),
-                    k + 1,
-                    c.theta_deg,
-                    c.alpha_deg,
-                    w,
-                    false,
+                all.push((
+                    !borderline,
+                    SlideJob {
+                        name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, false),
+                        scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
+                        params: dem_params(p, c.alpha_deg, w, false),
+                    },
+                    (
+                        pr.scene.name.clone(),
+                        k + 1,
+                        c.theta_deg,
+                        c.alpha_deg,
+                        w,
+                        false,
+                        0.0,
+                        0.0,
+                    ),
                 ));
+            }
+            if k == 0 {
+                for (job, entry) in corner_jobs(pr, c, p) {
+                    all.push((!borderline, job, entry));
+                }
             }
         }
     }
-    (jobs, entries)
+    all.sort_by_key(|x| x.0); // stable: the order within each group is kept
+    all.into_iter().map(|(_, j, e)| (j, e)).unzip()
+}
+
+/// The DEM runs of the tolerance box's corners of the design `c` (the best of its pattern): θ ±
+/// tol × pull direction ± tol (fixed in the substrate frame: α' = direction' − line(θ')), at
+/// its robust limit load and the next load above. None without a tolerance or a limit.
+fn corner_jobs(
+    pr: &PatternResult,
+    c: &Candidate,
+    p: &DesignParams,
+) -> Vec<(SlideJob, ConfirmEntry)> {
+    let mut out = Vec::new();
+    if tolerance_box(p).is_point() || c.score.superlubric_to_mn <= 0.0 {
+        return out;
+    }
+    let Some(k) = p
+        .loads
+        .iter()
+        .position(|&w| label(n_to_mn(w)) == c.score.superlubric_to_mn)
+    else {
+        return out;
+    };
+    let loads = &p.loads[k..(k + 2).min(p.loads.len())];
+    for &w in loads {
+        for (st, sd) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)] {
+            let dt = label(st * p.theta_tol_deg);
+            let dd = label(sd * p.direction_tol_deg);
+            let theta = label(c.theta_deg + dt);
+            let scene = pr.scene.scene.with_theta(deg_to_rad(theta));
+            let line = crate::study::friction::line_at(&scene, deg_to_rad(theta), p.line);
+            let alpha = label(c.direction_deg + dd - rad_to_deg(line.angle));
+            out.push((
+                SlideJob {
+                    name: run_name(&pr.scene.name, theta, alpha, w, false),
+                    scene,
+                    params: dem_params(p, alpha, w, false),
+                },
+                (pr.scene.name.clone(), 1, theta, alpha, w, false, dt, dd),
+            ));
+        }
+    }
+    out
 }
 
 /// Stage 6: the DEM runs of the top designs (one batch, side by side), then — when the
@@ -1095,6 +1153,8 @@ fn confirm_stage(
                 c.alpha_deg,
                 w,
                 true,
+                0.0,
+                0.0,
             ));
             outcomes.extend(o);
             dem = to_entries(&entries, &outcomes);
@@ -1144,22 +1204,21 @@ pub fn protocol_check_design<'a>(
 }
 
 /// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study).
-fn to_entries(
-    entries: &[(String, usize, f64, f64, f64, bool)],
-    outcomes: &[SlideOutcome],
-) -> Vec<DemEntry> {
+fn to_entries(entries: &[ConfirmEntry], outcomes: &[SlideOutcome]) -> Vec<DemEntry> {
     entries
         .iter()
         .cloned()
         .zip(outcomes.iter().cloned())
         .map(
-            |((pattern, rank, theta_deg, alpha_deg, load, study), outcome)| DemEntry {
+            |((pattern, rank, theta_deg, alpha_deg, load, study, dt, dd), outcome)| DemEntry {
                 pattern,
                 rank,
                 theta_deg,
                 alpha_deg,
                 load,
                 study_protocol: study,
+                theta_offset_deg: dt,
+                direction_offset_deg: dd,
                 outcome,
             },
         )

@@ -59,6 +59,11 @@ pub struct DemRow {
     pub theta_deg: f64,
     /// α (degrees from the contact line).
     pub alpha_deg: f64,
+    /// θ offset (degrees) from the design of its rank for a tolerance-corner run (0: the
+    /// design itself).
+    pub theta_offset_deg: f64,
+    /// Pull-direction offset (degrees, substrate frame) for a tolerance-corner run.
+    pub direction_offset_deg: f64,
     /// Load (mN).
     pub load_mN: f64,
     /// `design` (the design's confirmation protocol) or `study` (10 + 10 + 300 µs).
@@ -144,6 +149,8 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
                 rank: e.rank,
                 theta_deg: e.theta_deg,
                 alpha_deg: e.alpha_deg,
+                theta_offset_deg: e.theta_offset_deg,
+                direction_offset_deg: e.direction_offset_deg,
                 load_mN: w,
                 protocol: if e.study_protocol { "study" } else { "design" }.into(),
                 status: match (r, &e.outcome.error) {
@@ -345,6 +352,28 @@ pub fn answer_line(
             );
         }
     }
+    let corners: Vec<&DemRow> = dem
+        .iter()
+        .filter(|d| {
+            d.pattern == *name
+                && a.index == Some(0)
+                && (d.theta_offset_deg != 0.0 || d.direction_offset_deg != 0.0)
+        })
+        .collect();
+    if !corners.is_empty() {
+        let at = |w: f64| {
+            let c: Vec<&&DemRow> = corners.iter().filter(|d| d.load_mN == w).collect();
+            let ok = c.iter().filter(|d| d.superlubric_dem == Some(true)).count();
+            format!("{ok} of {} superlubric at {w} mN", c.len())
+        };
+        let mut loads: Vec<f64> = corners.iter().map(|d| d.load_mN).collect();
+        loads.dedup();
+        let _ = write!(
+            m,
+            " DEM at the corners of the tolerance box: {}.",
+            loads.iter().map(|&w| at(w)).collect::<Vec<_>>().join("; ")
+        );
+    }
     for (rank, c) in &a.others {
         if let (Some(d), Check::Contradicted(why)) = (pr.ranking.get(rank - 1), c) {
             let _ = write!(
@@ -541,11 +570,11 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         }
         let _ = writeln!(
             m,
-            "| pattern | rank | θ (°) | α (°) | W (mN) | protocol | μ_est | μ_DEM | μ_est/μ_DEM | verdict est / DEM | max P_max DEM, any step (GPa) | contacts DEM | status | wall (s) |"
+            "| pattern | rank | θ (°) | α (°) | tolerance corner δθ, δdir (°) | W (mN) | protocol | μ_est | μ_DEM | μ_est/μ_DEM | verdict est / DEM | max P_max DEM, any step (GPa) | contacts DEM | status | wall (s) |"
         );
         let _ = writeln!(
             m,
-            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
         );
         let verdict = |v: Option<bool>| match v {
             Some(true) => "superlubric",
@@ -555,11 +584,16 @@ pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> String {
         for d in &dem {
             let _ = writeln!(
                 m,
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} / {} | {} | {} | {}{} | {} |",
+                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} / {} | {} | {} | {}{} | {} |",
                 d.pattern,
                 d.rank,
                 d.theta_deg,
                 d.alpha_deg,
+                if d.theta_offset_deg == 0.0 && d.direction_offset_deg == 0.0 {
+                    "–".to_string()
+                } else {
+                    format!("{:+}, {:+}", d.theta_offset_deg, d.direction_offset_deg)
+                },
                 d.load_mN,
                 d.protocol,
                 opt(d.mu_est, 3),
