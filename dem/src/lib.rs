@@ -1,4 +1,4 @@
-//! # dem — dynamic DEM tier of superlube (SPEC.md "Tier 2")
+//! # dem — dynamic DEM tier of superlube (Tier 3 confirm; model in docs/physics.md)
 //!
 //! A slider of spheres tied to a rigid control layer slides over a tethered substrate of
 //! spheres; Hertz + Mindlin contacts with a pressure-switched friction coefficient.

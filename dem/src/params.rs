@@ -17,7 +17,7 @@ pub enum DampingFrame {
 }
 
 /// Every numerical knob of a DEM run (SI: s, m, N/m, N, rad). Defaults = the reference study
-/// (SPEC.md Tier 2) except `dt`, which defaults to a fraction of the stable step.
+/// (docs/physics.md, Tier 3) except `dt`, which defaults to a fraction of the stable step.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SimParams {
     /// Time step (s). `None`: `dt_safety ×` the stable-step estimate of [`crate::stability`].

@@ -25,7 +25,7 @@ use surrogate::Scene;
 /// quasi-static path along the pulling direction over two substrate periods (`F_max` the
 /// largest pulling force, the static-friction barrier; `a` the substrate spacing; `K0` the
 /// pulling spring, much softer than the slider's own lateral stiffness). `η > 1`: stick-slip
-/// expected (SPEC, "Estimating friction"). Returns `(η, F_max)`, or `None` when the run does
+/// expected (docs/physics.md, "Estimating friction without dynamics"). Returns `(η, F_max)`, or `None` when the run does
 /// not slide or the path cannot be solved. Cost: ~40 surrogate solves (tens of ms).
 pub fn stick_slip_eta(scene: &Scene, params: &SimParams, solver: &Solver) -> Option<(f64, f64)> {
     if params.slide_time <= 0.0 || params.support_speed <= 0.0 || params.k0 <= 0.0 {

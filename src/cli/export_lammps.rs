@@ -1,4 +1,4 @@
-//! `superlube export-lammps`: the Tier-2 model of one (θ, α, W) as a LAMMPS data file and input
+//! `superlube export-lammps`: the Tier 3 (DEM) model of one (θ, α, W) as a LAMMPS data file and input
 //! deck (engine: `dem::export`), to run with MPI LAMMPS on a cluster.
 
 use super::checks::{alpha as check_alpha, line_deg as check_line_deg, non_negative, positive};

@@ -70,7 +70,7 @@ enum Command {
     Equilibrate(equilibrate::Args),
     /// Dynamic DEM sliding simulation: friction force and coefficient.
     Slide(slide::Args),
-    /// Write the Tier-2 model as a LAMMPS data file and input deck (run it with MPI LAMMPS).
+    /// Write the Tier 3 (DEM) model as a LAMMPS data file and input deck (run it with MPI LAMMPS).
     ExportLammps(export_lammps::Args),
     /// Contacts, P_max and the contacts above P_crit in the contact dump of an exported run.
     LammpsCheck(lammps_check::Args),

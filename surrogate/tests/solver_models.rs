@@ -161,7 +161,7 @@ fn grazing_and_extreme_loads_incommensurate_all_models() {
 
 #[test]
 fn theta_30_reference() {
-    // SPEC: tens of contacts at θ = 30°, and P_max passes 4 GPa between 1.4 and 2.1 mN.
+    // docs/physics.md: tens of contacts at θ = 30°, and P_max passes 4 GPa between 1.4 and 2.1 mN.
     let s = solver("tri-tri");
     let pose = Pose {
         theta: 30f64.to_radians(),

@@ -1,4 +1,4 @@
-//! [`Layout`]: the LAMMPS atoms and bonds of the Tier-2 model, laid out from the same
+//! [`Layout`]: the LAMMPS atoms and bonds of the Tier 3 (DEM) model, laid out from the same
 //! [`SystemSpec`] the Rust engine starts from (same sites, order, heights).
 
 use crate::system::SystemSpec;

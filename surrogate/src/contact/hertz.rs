@@ -141,7 +141,7 @@ mod tests {
 
     #[test]
     fn study_reference_pressure() {
-        // 3.86 mN shared by 3505 on-top contacts → p0 ≈ 1.05 GPa (SPEC.md).
+        // 3.86 mN shared by 3505 on-top contacts → p0 ≈ 1.05 GPa (docs/physics.md).
         let p = study().p0_for_force(3.86e-3 / 3505.0);
         assert!((p / 1e9 - 1.05).abs() < 0.02 * 1.05, "{p}");
     }

@@ -63,7 +63,7 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// A built-in pattern pair with the reference study's parameters (see SPEC.md):
+    /// A built-in pattern pair with the reference study's parameters (see docs/physics.md):
     /// spheres of 3 µm diameter, 3 µm spacing, substrate 364 × 270 µm, triangular slider radius
     /// 93.5 µm, square slider radius 100 µm (both 3505 spheres), θ = 0, E = 100 GPa.
     pub fn preset(name: &str) -> Result<Scene, SceneError> {
