@@ -1,5 +1,5 @@
 //! Cross-checks against the committed LAMMPS peer outputs in `dem/lammps/reference/` (no LAMMPS
-//! needed; see the README section "LAMMPS side-by-side peer").
+//! needed; see docs/commands/export-lammps.md).
 //!
 //! * the Hertz law of `surrogate` against the contact forces LAMMPS computed along an undamped
 //!   two-sphere collision (`collision_v0.2_undamped.csv`, 100+ contact samples);

@@ -12,7 +12,7 @@ pub enum DampingFrame {
     Relative,
     /// Every particle damped against its absolute velocity (a plain `fix viscous`/`fix langevin`
     /// at 0 K). A slider sliding at v then feels an extra drag `Σm·v/τ` that adds to the spring
-    /// force: 0.011 mN for the study scene at 0.1 m/s (see the README).
+    /// force: 0.011 mN for the study scene at 0.1 m/s.
     Absolute,
 }
 
@@ -65,7 +65,7 @@ pub struct SimParams {
     /// Active set (exact to round-off): integrate step by step only the particles in or near
     /// contact; the rest follow their rest state (substrate: tether site; slider: its site on
     /// the control layer plus the common relative motion of all free slider spheres) plus, while
-    /// they ring down after a contact, an exactly propagated deviation. See `dem/README.md`.
+    /// they ring down after a contact, an exactly propagated deviation. See `docs/validation/dem-engine.md`.
     pub active_set: bool,
     /// Activation margin (m): a slider–substrate pair is integrated while its gap
     /// (centre distance − 2R) is below this; the set is re-evaluated as soon as some particle

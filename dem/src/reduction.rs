@@ -13,7 +13,7 @@
 //!   where κ ≤ [`RIGID_Z_KAPPA_MAX`], the surrogate's P_max times the sliding overshoot
 //!   allowance [`SLIDING_P_MAX_FACTOR`] stays below P_crit, and no stick-slip is expected
 //!   (Prandtl–Tomlinson η ≤ [`STICK_SLIP_ETA`], [`stick_slip_eta`]); the full model elsewhere
-//!   (the measurements behind the limits are in `dem/README.md`, "Model choice").
+//!   (the measurements behind the limits are in `docs/validation/dem-engine.md`, "Model choice").
 
 use crate::{DemError, SimParams};
 use serde::Serialize;
@@ -54,7 +54,7 @@ pub fn stick_slip_eta(scene: &Scene, params: &SimParams, solver: &Solver) -> Opt
 
 /// Largest `κ = S_n(P_max)/k_z` for which `auto` uses rigid-z: the square-tri study scene up to
 /// 2.45 mN (κ = 0.0063), just above where rigid-z was measured against the full model
-/// (κ = 0.0053, dem/README.md "Model choice").
+/// (κ = 0.0053, docs/validation/dem-engine.md "Model choice").
 pub const RIGID_Z_KAPPA_MAX: f64 = 0.0065;
 
 /// Allowance for the rise of P_max while sliding over the surrogate's static P_max at the

@@ -62,7 +62,7 @@ pub struct CampaignArgs {
     )]
     pub shard: Option<String>,
     /// DEM model [default: reduced: rigid-z, measured within 1 % of the full model on
-    /// superlubric scenes and within the run-to-run noise elsewhere (dem/README.md "Model
+    /// superlubric scenes and within the run-to-run noise elsewhere (docs/validation/dem-engine.md "Model
     /// choice"); `auto` runs the full model near coating failure, 10–25 min per run].
     #[arg(long, value_enum, requires = "friction")]
     pub model: Option<ModelArg>,

@@ -63,7 +63,7 @@ pub struct Args {
     #[arg(long = "tilt-k1-n-m", value_name = "N_M", allow_hyphen_values = true)]
     tilt_k1_n_m: Option<f64>,
     /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
-    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: README "superlube design").
+    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md).
     #[arg(
         long,
         value_name = "DEG",
@@ -89,7 +89,7 @@ pub struct Args {
     mu_superlubric: f64,
     /// Orientations kept per lower load level of the shortlist (those with the lowest P_max).
     /// Default 6: on the default the smallest value whose answer equals evaluating every
-    /// orientation (`--per-level 400`; 3 and 5 missed tri-tri's best; README "The shortlist rule").
+    /// orientation (`--per-level 400`; 3 and 5 missed tri-tri's best; docs/commands/design.md "The shortlist rule").
     #[arg(long = "per-level", value_name = "N", default_value_t = 6)]
     per_level: usize,
     /// Most orientations kept from the top level (those surviving the highest load).

@@ -10,7 +10,7 @@ use anyhow::{bail, Result};
 pub const MAX_SOLVES: u64 = 2_000_000;
 
 /// Cost of one rigid-z solve per slider sphere (s): 0.54–0.76 ms for the 3505-sphere study
-/// slider (README, Tier 1 speed, release build) → 2.2·10⁻⁷ s; rounded up. Richer models
+/// slider (docs/validation/screen.md, "Speed", release build) → 2.2·10⁻⁷ s; rounded up. Richer models
 /// (rigid-tilt, compliant) cost more.
 pub const SOLVE_SECONDS_PER_SPHERE: f64 = 2.5e-7;
 

@@ -148,7 +148,7 @@ pub fn run_dem(
     {
         progress.note(&format!(
             "note: {t}: where contacts fail, this run's friction depends strongly on K1 (tri-tri \
-             30°, 2.45 mN: μ = 0.039 at the study's 10⁶ N/m, 0.107 at 10⁷; surrogate/README.md, \
+             30°, 2.45 mN: μ = 0.039 at the study's 10⁶ N/m, 0.107 at 10⁷; docs/validation/friction.md, \
              \"The mount's resonance\")"
         ));
     }

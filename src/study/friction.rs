@@ -95,7 +95,7 @@ pub fn resonance_note(scene: &Scene, knobs: &FrictionParams) -> Option<String> {
     Some(format!(
         "{t}: where contacts fail (column mount_resonance) the DEM's friction can be up to 2.8× \
          below mu_est (measured on the 3 such runs of the 17-run DEM comparison; substrate \
-         roughness σ_h ≥ 5 nm detunes it; surrogate/README.md, \"The mount's resonance\")"
+         roughness σ_h ≥ 5 nm detunes it; docs/validation/friction.md, \"The mount's resonance\")"
     ))
 }
 

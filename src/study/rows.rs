@@ -494,7 +494,7 @@ pub struct RunInfo {
     pub model: &'static str,
     /// `--model` as given: `auto`, `full` or `reduced`.
     pub model_requested: &'static str,
-    /// Why this model (κ = S_n/k_z, P_max, Prandtl–Tomlinson η; dem/README.md "Model choice").
+    /// Why this model (κ = S_n/k_z, P_max, Prandtl–Tomlinson η; docs/validation/dem-engine.md "Model choice").
     pub model_reason: String,
     /// ω_t/ω_p of the `springs` mount (`surrogate::friction::TiltResonance`): in 0.6–1.15 the
     /// friction where contacts fail depends strongly on K1; `null` without springs.

@@ -208,7 +208,7 @@ fn square_tri_design_point_alpha_0_vs_90() {
         assert!(e.mu_est < 0.02 && e.failed_fraction == 0.0, "{e:?}");
         assert!(e.mu_coating >= 0.01 - 1e-12);
     }
-    // the DEM measures μ = 0.115 here (surrogate/README.md): inertia lets each slip run past
+    // the DEM measures μ = 0.115 here (docs/validation/friction.md): inertia lets each slip run past
     // the next well, so the estimate falls well below the overdamped (quasi-static) one
     assert!(a0.mu_est > 0.05, "{a0:?}");
     assert!(a0.mu_est < 0.7 * a0.mu_quasi_static, "{a0:?}");

@@ -3,7 +3,7 @@
 //!
 //! Particles: substrate spheres (x, y free and tethered to their sites, z fixed at their
 //! height), slider spheres (x, y, z; or x, y only with `rigid_z`), one rigid control layer
-//! (translation x, y, z only — see README "No tilt DOF") and a kinematic support.
+//! (translation x, y, z only — the `locked` mount; see docs/validation/dem-engine.md "The slider mount (tilt)") and a kinematic support.
 
 pub mod builder;
 pub mod spec;

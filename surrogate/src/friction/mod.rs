@@ -118,7 +118,7 @@
 //! → 4 within a slip, the slider 0.5 nm higher) and its mean friction is 0.36–0.47 of μ_est
 //! (reduced model; 0.43 with the full model at 2.45 mN). Off the resonance (K1 ≤ 4·10⁵ or ≥ 2·10⁶
 //! N/m, or a locked or free mount) μ_est is within 0.96–1.46 of the DEM on the same runs (measured,
-//! `surrogate/README.md`, "The mount's resonance"). Substrate roughness detunes it (σ_h ≥ 5 nm:
+//! `docs/validation/friction.md`, "The mount's resonance"). Substrate roughness detunes it (σ_h ≥ 5 nm:
 //! 0.85–0.92 of the off-resonance friction, [`roughness_detunes`]). `FrictionEstimate::mount_resonance`
 //! flags the rows where μ_est may be such an upper bound. Also
 //! thermal activation, the slider's wandering across the pull along the path (only the drift off

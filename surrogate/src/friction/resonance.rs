@@ -20,14 +20,14 @@
 //! forth (with a constant μ there is no such drop), they unload during slips, and the mean friction
 //! falls up to 2.8× below μ_est (2.1–2.8× at r = 0.69–0.89; P_max spikes higher); the 1-D estimate
 //! has no tilt dynamics and stays at the off-resonance value, within 0.96–1.46 of the DEM there.
-//! Measured on tri-tri 30°, α = 0°, 2.45 mN (`surrogate/README.md`, "The mount's resonance"): K1
+//! Measured on tri-tri 30°, α = 0°, 2.45 mN (`docs/validation/friction.md`, "The mount's resonance"): K1
 //! swept 10⁴–10⁸ N/m and the ties k_xy, k_tether halved and doubled; the drop tracks r, not K1 or
 //! the ties alone. The study's mount sits at r = 0.89 (K1 = 10⁶ N/m, 3 µm spheres, ties of
 //! 10³ N/m).
 //!
 //! ## Roughness detunes it
 //! Random substrate heights take the drop away: on tri-tri 30°, α = 0° (study mount against
-//! K1 = 10⁷ N/m, reduced model, `surrogate/README.md`, "Roughness detunes the resonance") the
+//! K1 = 10⁷ N/m, reduced model, `docs/validation/friction.md`, "Roughness detunes the resonance") the
 //! DEM's friction at the study's K1 is 0.36–0.62 of the off-resonance value on the flat
 //! substrate (2.45–3.86 mN), 0.38–0.68 at σ_h = 1–3 nm, and 0.85–0.92 at σ_h = 5–10 nm,
 //! where μ_est/μ_DEM is 1.06–1.41 (2 seeds, 3 loads, the runs that did not lock in). So the
@@ -49,12 +49,12 @@ use crate::scene::{Mount, Scene};
 /// Measured band of `r = ω_t/ω_p` in which the DEM's friction on failed-coating contacts drops
 /// below μ_est: in all 10 runs at r = 0.69–0.89, part way at r = 0.63 (μ_est/μ_DEM 1.54) and in
 /// 2 of 4 runs at r = 1.03, not at r ≤ 0.56 (6 runs) or r ≥ 1.26 (5 runs); the edges lie
-/// between those (`surrogate/README.md`, "The mount's resonance").
+/// between those (`docs/validation/friction.md`, "The mount's resonance").
 pub const RESONANCE_BAND: [f64; 2] = [0.6, 1.15];
 
 /// Substrate roughness σ_h (m) from which the resonance's drop was measured to fade: at
 /// σ_h = 5 nm the DEM's friction on the study mount is 0.85 of the off-resonance value,
-/// against 0.36–0.62 on the flat substrate ([`roughness_detunes`], `surrogate/README.md`,
+/// against 0.36–0.62 on the flat substrate ([`roughness_detunes`], `docs/validation/friction.md`,
 /// "Roughness detunes the resonance").
 pub const DETUNING_SIGMA_H: f64 = 5e-9;
 

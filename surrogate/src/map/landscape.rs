@@ -66,7 +66,7 @@ impl Landscape {
     /// Height z (m) at an arbitrary shift `p` (m), by periodic bicubic (Catmull–Rom)
     /// interpolation of the N−1 distinct samples per side in cell coordinates. Exact at grid
     /// points; the error elsewhere is O(h⁴·z'''') for grid spacing h (measured against direct
-    /// solves in the corrugation tests and the README). Cost O(16).
+    /// solves in the corrugation tests and docs/validation/maps.md). Cost O(16).
     pub fn interpolate(&self, p: [f64; 2]) -> f64 {
         let m = (self.n - 1) as i64;
         let [u, v] = self.cell.coords(p);
