@@ -26,6 +26,7 @@ mod slurm;
 mod sweep_args;
 mod tolerance;
 mod tolerance_args;
+mod value_enums;
 
 pub use crate::study::range::parse_list_or_range;
 pub use scene_args::SceneArgs;

@@ -27,16 +27,13 @@ pub const STUDY_LOADS_MN: [f64; 11] = [
 ];
 
 /// One figure of the campaign.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Fig {
     /// Fig 2b: tri-tri θ = 0°, 21.8°, 30°.
-    #[value(name = "2b")]
     F2b,
     /// Fig 6: square-tri θ = 0°, 10.2° at α = 0°, 90°, with the tri-tri series.
-    #[value(name = "6")]
     F6,
     /// Fig 7: imperfect substrates (σ_h = 0.002, 0.01 µm; E = 100, 50 GPa).
-    #[value(name = "7")]
     F7,
 }
 

@@ -16,7 +16,7 @@ use surrogate::solver::Solver;
 use surrogate::Scene;
 
 /// How the heights along a path are obtained.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Method {
     /// A solver call at every sample along the path (exact up to the sampling step).

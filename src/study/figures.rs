@@ -37,7 +37,7 @@ pub const LANDSCAPE_THETAS: [f64; 2] = [0.0, 10.2];
 pub const CORRUGATION_CASES: ([f64; 3], [f64; 2]) = ([0.0, 10.2, 12.4], [0.35, 1.4]);
 
 /// Which figure groups to make.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Group {
     /// Contacts and P_max versus θ (tri-tri, square-tri).
