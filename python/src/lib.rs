@@ -1,8 +1,8 @@
 //! `superlube._native`: the Python module's bridge to the `superlube` commands.
 //!
-//! Three functions, no physics: [`scene`] resolves and validates a scene exactly as every
-//! command does (preset ← scene file ← keyword fields; errors name the field), [`flags`] lists
-//! a command's options (the Python layer maps snake-case keywords onto them), and [`run`] runs
+//! Three functions, no physics: `scene` resolves and validates a scene exactly as every
+//! command does (preset ← scene file ← keyword fields; errors name the field), `flags` lists
+//! a command's options (the Python layer maps snake-case keywords onto them), and `run` runs
 //! one command line in process — the same flag checks, the same study workflow, the same files
 //! and sidecars as the `superlube` binary — on a worker thread with the GIL released, forwarding
 //! its progress to a Python callback on the calling thread and stopping it on Ctrl-C or when the

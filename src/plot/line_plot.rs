@@ -34,7 +34,7 @@ pub struct LinePlot {
     pub x_label: String,
     /// y-axis label with unit.
     pub y_label: String,
-    /// The curves (coloured from [`PALETTE`] in order).
+    /// The curves (coloured from `PALETTE` in order).
     pub series: Vec<Series>,
     /// Horizontal reference lines `(y, legend entry)`, drawn dashed black.
     pub hlines: Vec<(f64, String)>,

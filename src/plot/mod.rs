@@ -43,7 +43,7 @@ pub fn register_fonts() {
 /// atomically ([`surrogate::atomic_file::write_atomic`]: temporary sibling, then rename), encoded with the
 /// best zlib compression and adaptive filtering (plotters' own encoder compresses fast and
 /// poorly: a 1150×960 contact map took ~1.4 MB); if that is still above 250 kB the image is
-/// re-encoded with a 256-colour palette ([`quantize`]), which keeps every figure ≤ 300 kB.
+/// re-encoded with a 256-colour palette (`quantize`), which keeps every figure ≤ 300 kB.
 pub fn png_atomic<F>(path: &Path, size: (u32, u32), draw: F) -> Result<()>
 where
     F: FnOnce(

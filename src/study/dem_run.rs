@@ -1,5 +1,5 @@
 //! The DEM run shared by the equilibrate and slide workflows: scene → [`dem::prepare`] →
-//! (resume from a checkpoint) → [`dem::protocol::run`] with progress (phase, simulated time) →
+//! (resume from a checkpoint) → [`dem::protocol::run()`] with progress (phase, simulated time) →
 //! the time series and the run facts. The summaries are made by [`super::equilibrate`] and
 //! [`super::slide`].
 

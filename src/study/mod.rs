@@ -2,7 +2,7 @@
 //!
 //! A workflow is one function that takes a validated [`surrogate::Scene`] and a parameters
 //! struct (SI units), reports progress through a [`Progress`] callback object, and streams its
-//! rows into a [`RowSink`] (or returns its SI result). It does no flag parsing and opens no
+//! rows into a [`RowSink`](sink::RowSink) (or returns its SI result). It does no flag parsing and opens no
 //! output files: the commands in `src/cli/` parse flags into a scene and parameters, check the
 //! output paths, call one workflow function, and write the files through [`Outputs`].
 //!

@@ -7,7 +7,7 @@
 //! layout comes from [`crate::prepare`] (the Rust engine's own start state, including the
 //! surrogate's start height and its time step), and every number in the deck is computed here.
 //!
-//! Pipeline ([`export_lammps`]): validate → prepare (Rust start state, dt) → [`layout`] (atoms,
+//! Pipeline ([`export_lammps`]): validate → prepare (Rust start state, dt) → [`layout()`] (atoms,
 //! bonds, halves) → [`data_file`] + [`deck`] + README + [`meta`] → [`LammpsExport::write`].
 //! The reverse direction, reading the deck's contact dump back ([`dump`]) and checking it
 //! against the coating strength ([`check`]), is `superlube lammps-check`.

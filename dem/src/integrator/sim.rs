@@ -4,18 +4,18 @@
 //! 1. control layer (translation + tilts) and the common mode of the free slider spheres:
 //!    first half kick and drift (O(1));
 //! 2. the active particles: first half kick and drift, with their displacement since the last
-//!    active-set evaluation (one parallel pass, [`Sim::kick_drift`]);
+//!    active-set evaluation (one parallel pass, `Sim::kick_drift`);
 //! 3. if some particle may have moved `margin/2`: re-evaluate the active set (and rebuild the
-//!    candidate pair list when needed) ([`super::active`]);
+//!    candidate pair list when needed) (`integrator::active`);
 //! 4. forces: pair forces fused with the slider-sphere forces and their second half kick (one
 //!    parallel pass over slider chunks, which also returns each chunk's reaction on the control
 //!    layer), then the substrate spheres (one parallel pass), then the control layer and the
-//!    common mode (O(1)) ([`super::forces`]).
+//!    common mode (O(1)) (`integrator::forces`).
 //!
 //! Work is split into chunks whose size depends only on the work, and partial sums are added
 //! in chunk order, so results are bit-identical for any thread count. [`Sim::run_steps`] runs
 //! the passes of its steps on a team of threads that stays hot between passes
-//! ([`super::team`]).
+//! (`integrator::team`).
 
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
@@ -389,8 +389,8 @@ impl Sim {
     ///
     /// When the work is large enough (`parallel_min_work`) and the call long enough, the
     /// passes run on a team of `rayon::current_num_threads()` threads (the caller and scoped
-    /// workers, [`super::team`]) kept for the whole call. Whether they actually do is decided
-    /// by timing both modes now and then ([`super::chunks::Tuner`]): never slower with more
+    /// workers, `integrator::team`) kept for the whole call. Whether they actually do is decided
+    /// by timing both modes now and then (`integrator::chunks::Tuner`): never slower with more
     /// threads, and the results do not depend on it.
     pub fn run_steps(&mut self, n: u64) -> Result<(), DemError> {
         let threads = rayon::current_num_threads();
