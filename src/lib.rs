@@ -7,4 +7,5 @@
 
 pub mod cli;
 pub mod plot;
+pub mod runs;
 pub mod study;

@@ -96,8 +96,11 @@
 //! rows from which they follow, under its own schema name, and adds that schema's merge in
 //! [`merge::merge`] — used by its unsharded run too, so both give the same bytes.
 
+// The run machinery lives in `crate::runs`; these re-exports keep the `crate::study::…` and
+// `super::…` paths of the workflows compiling.
+pub use crate::runs::{budget, meta, output, progress, resume, shard, sink, slurm, sweep};
+
 pub mod batch;
-pub mod budget;
 pub mod campaign;
 pub mod contacts;
 pub mod corrugation;
@@ -108,20 +111,12 @@ pub mod figures;
 pub mod friction;
 pub mod landscape;
 pub mod merge;
-pub mod meta;
-pub mod output;
 pub mod patterns;
-pub mod progress;
 pub mod range;
 pub mod record;
-pub mod resume;
 pub mod rows;
 pub mod screen;
-pub mod shard;
-pub mod sink;
 pub mod slide;
-pub mod slurm;
-pub mod sweep;
 pub mod tolerance;
 pub mod verdict;
 

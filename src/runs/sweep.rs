@@ -8,7 +8,7 @@
 //!   sidecar records a [`ShardInfo`] (next to the sweep's unchanged `input_hash`);
 //! - a resumed run keeps the complete items of its partial file (rows / r, a torn last line and
 //!   the rows of an unfinished item cut off) and computes the rest ([`super::resume`]);
-//! - `superlube merge` checks the shards' sidecars and joins them ([`super::merge`]): by
+//! - `superlube merge` checks the shards' sidecars and joins them ([`crate::study::merge`]): by
 //!   concatenation for row schemas that are final per item, or by the schema's own merge (the
 //!   landscape's z rows become Δz rows, which need the global min z).
 
@@ -17,8 +17,8 @@ use anyhow::{bail, Result};
 use serde::{Deserialize, Serialize};
 use std::ops::Range;
 
-/// Schema name of the landscape's shard rows ([`super::rows::LandscapeZRow`]), whose merge
-/// writes the final [`super::rows::LandscapeRow`]s.
+/// Schema name of the landscape's shard rows ([`crate::study::rows::LandscapeZRow`]), whose merge
+/// writes the final [`crate::study::rows::LandscapeRow`]s.
 pub const LANDSCAPE_Z: &str = "landscape-z";
 
 /// A sweep's work items (see the module docs).
