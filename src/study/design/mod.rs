@@ -32,6 +32,7 @@ pub mod confirm;
 pub mod params;
 pub mod rank;
 pub mod report;
+pub mod robust;
 pub mod scan;
 pub mod shortlist;
 pub mod store;
@@ -45,7 +46,7 @@ use super::record;
 use super::rows::{label, ScreenRow};
 use super::screen::{screen, ScreenParams};
 use super::sink::csv_bytes;
-use super::tolerance::{robust, LimitParams, Robust, ToleranceBox};
+use super::tolerance::{LimitParams, ToleranceBox};
 use anyhow::{bail, Result};
 use confirm::{run_batch, SlideJob, SlideOutcome};
 use rank::Candidate;
@@ -467,8 +468,18 @@ fn pattern(
     let mut stop = "every level evaluated".to_string();
     let mut solver: Option<Solver> = None;
     let bx = tolerance_box(p);
-    let mut solvers: Vec<Solver> = Vec::new();
-    let mut exact_best: Vec<usize> = Vec::new();
+    let limit = LimitParams {
+        loads: p.loads.clone(),
+        mu_superlubric: p.mu_superlubric,
+        line: p.line,
+        friction: p.friction,
+    };
+    let solvers: Vec<Solver> = if bx.is_point() {
+        Vec::new()
+    } else {
+        seed_solvers(ds, p, None)?
+    };
+    let mut searches = robust::Searches::new(ds, p, &solvers, &limit, store)?;
     for level in &levels {
         let from = ranking.len();
         let w_mn = label(n_to_mn(level.load));
@@ -533,24 +544,8 @@ fn pattern(
         progress.finish();
         // the robust limits of this level's candidates (the stop rule above then compares
         // each level's bound with the best robust limit: a robust design may sit lower)
-        if !bx.is_point() {
-            let fresh = &mut ranking[from..];
-            fresh.sort_by(rank::compare);
-            if fresh.iter().any(|c| c.score.nominal_to_mn > 0.0) {
-                if solvers.is_empty() {
-                    solvers = seed_solvers(ds, p, None)?;
-                }
-                robust_stage(
-                    ds,
-                    fresh,
-                    &bx,
-                    &solvers,
-                    p,
-                    store,
-                    &mut exact_best,
-                    progress,
-                )?;
-            }
+        if !bx.is_point() && ranking[from..].iter().any(|c| c.score.nominal_to_mn > 0.0) {
+            robust::robust_stage(ds, &mut ranking, &mut searches, p, store, progress)?;
         }
         best = ranking
             .iter()
@@ -622,140 +617,6 @@ fn seed_solvers(ds: &DesignScene, p: &DesignParams, own: Option<Solver>) -> Resu
         }
     }
     Ok(v)
-}
-
-/// The robust limit of one candidate as stored (`stages/<pattern>/robust_<θ>_<α>.json`).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct RobustStage {
-    /// The robust limit and windows.
-    pub robust: Robust,
-    /// Wall time when computed (s).
-    pub wall_s: f64,
-}
-
-/// Stage 4b: the robust limit and windows of the candidates `ranking` (one level's, in nominal
-/// order) superlubric at their nominal (θ, α) ([`crate::study::tolerance::robust`]), written
-/// into their scores; reused when stored. Exact for the best `max(confirm, 3)` designs found so
-/// far (`best`, updated); below them an upper bound (`exact: false`).
-#[allow(clippy::too_many_arguments)]
-fn robust_stage(
-    ds: &DesignScene,
-    ranking: &mut [Candidate],
-    bx: &ToleranceBox,
-    solvers: &[Solver],
-    p: &DesignParams,
-    store: &Store,
-    best: &mut Vec<usize>,
-    progress: &dyn Progress,
-) -> Result<()> {
-    let limit = LimitParams {
-        loads: p.loads.clone(),
-        mu_superlubric: p.mu_superlubric,
-        line: p.line,
-        friction: p.friction,
-    };
-    let todo = ranking
-        .iter()
-        .filter(|c| c.score.nominal_to_mn > 0.0)
-        .count();
-    progress.stage(
-        &format!(
-            "{}: robust limit over θ ±{}° × direction ±{}°{}",
-            ds.name,
-            p.theta_tol_deg,
-            p.direction_tol_deg,
-            if solvers.len() > 1 {
-                format!(" × {} substrates", solvers.len())
-            } else {
-                String::new()
-            }
-        ),
-        todo as u64,
-        "designs",
-    );
-    let t0 = Instant::now();
-    let mut paths = 0usize;
-    // exact robust limits for the best `keep` designs; below them an upper bound suffices
-    let keep = p.confirm.max(3);
-    // `best`: exact robust limits found so far (load counts), descending
-    let count = |mn: f64| p.loads.iter().filter(|&&w| label(n_to_mn(w)) <= mn).count();
-    for c in ranking.iter_mut().filter(|c| c.score.nominal_to_mn > 0.0) {
-        let floor = if best.len() >= keep {
-            best[keep - 1]
-        } else {
-            0
-        };
-        if count(c.score.nominal_to_mn) < floor {
-            // cannot reach the top `keep`: its nominal limit is its bound
-            c.score.exact = false;
-            progress.advance(1);
-            continue;
-        }
-        let inputs = Inputs {
-            workflow: "design/robust".into(),
-            scene: Some(scene_file(&ds.scene.with_theta(deg_to_rad(c.theta_deg)))),
-            params: json!({
-                "theta_deg": c.theta_deg,
-                "direction_deg": c.direction_deg,
-                "nominal": c.friction,
-                "theta_offsets_deg": bx.theta_offsets_deg,
-                "direction_offsets_deg": bx.direction_offsets_deg,
-                "seeds": p.seeds,
-                "floor": floor,
-                "limit": limit_record(p),
-            }),
-        };
-        let rel = format!(
-            "stages/{}/robust_{}_{}.json",
-            ds.name,
-            tag(c.theta_deg),
-            tag(c.alpha_deg)
-        );
-        let r = match store.load_json::<RobustStage>(&rel, &inputs)? {
-            Some(st) => st.robust,
-            None => {
-                let t = Instant::now();
-                let r = robust(
-                    solvers,
-                    c.theta_deg,
-                    c.direction_deg,
-                    &c.friction,
-                    bx,
-                    &limit,
-                    floor,
-                )?;
-                let st = RobustStage {
-                    robust: r,
-                    wall_s: t.elapsed().as_secs_f64(),
-                };
-                store.save_json(&rel, &inputs, &st)?;
-                paths += st.robust.paths;
-                st.robust
-            }
-        };
-        let at = |w: &[f64]| w.last().copied().unwrap_or(0.0);
-        c.score.superlubric_to_mn = if r.superlubric_to == 0 {
-            0.0
-        } else {
-            label(n_to_mn(p.loads[r.superlubric_to - 1]))
-        };
-        c.score.theta_window_deg = at(&r.theta_window_deg);
-        c.score.direction_window_deg = at(&r.direction_window_deg);
-        c.score.verdict = r.verdict;
-        c.score.exact = r.exact;
-        if r.exact {
-            best.push(r.superlubric_to);
-            best.sort_unstable_by(|a, b| b.cmp(a));
-        }
-        progress.advance(1);
-    }
-    progress.finish();
-    progress.note(&format!(
-        "{}: robust limits of {todo} designs in {:.1} s ({paths} friction paths)",
-        ds.name,
-        t0.elapsed().as_secs_f64()
-    ));
-    Ok(())
 }
 
 /// The screen's parameters for θ (degrees).
@@ -1249,8 +1110,8 @@ mod tests {
                 score: Score {
                     superlubric_to_mn: 3.86,
                     nominal_to_mn: 3.86,
-                    theta_window_deg: 0.0,
-                    direction_window_deg: 0.0,
+                    theta_window_deg: None,
+                    direction_window_deg: None,
                     verdict: crate::study::verdict::Verdict::Superlubric,
                     exact: true,
                     intact_to_mn: 3.86,

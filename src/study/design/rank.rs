@@ -62,10 +62,11 @@ pub struct Score {
     pub superlubric_to_mn: f64,
     /// The same at the nominal (θ, α) alone (mN).
     pub nominal_to_mn: f64,
-    /// θ half-width (degrees) inside which it stays superlubric at the nominal limit load.
-    pub theta_window_deg: f64,
+    /// θ half-width (degrees) inside which it stays superlubric at the nominal limit load
+    /// (`None`: no tolerance, or not computed for a design outside the top of the ranking).
+    pub theta_window_deg: Option<f64>,
     /// Direction half-width (degrees) inside which it stays superlubric at that load.
-    pub direction_window_deg: f64,
+    pub direction_window_deg: Option<f64>,
     /// The worst verdict at `superlubric_to_mn` (over the box's samples with a tolerance).
     pub verdict: Verdict,
     /// Whether `superlubric_to_mn` is exact (else an upper bound: the robust evaluation stopped
@@ -99,8 +100,10 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
     Score {
         superlubric_to_mn: load(n_sl),
         nominal_to_mn: load(n_sl),
-        theta_window_deg: 0.0,
-        direction_window_deg: 0.0,
+        // the nominal point alone (no tolerance): its window is 0 by definition; the robust
+        // stage replaces these where the box is wider
+        theta_window_deg: Some(0.0),
+        direction_window_deg: Some(0.0),
         verdict: match n_sl {
             0 => Verdict::Not,
             n => Verdict::of_row(&rows[n - 1], mu_sl, p_crit),
@@ -157,6 +160,11 @@ pub fn candidates(
 
 /// Ranking group: exact robust limits above zero first, then upper bounds (designs whose
 /// evaluation stopped below the top), then those superlubric nowhere.
+/// A window for the ordering (not computed: 0).
+fn window(w: Option<f64>) -> f64 {
+    w.unwrap_or(0.0)
+}
+
 fn group(s: &Score) -> u8 {
     match (s.exact, s.superlubric_to_mn > 0.0) {
         (true, true) => 0,
@@ -174,16 +182,8 @@ pub fn compare(a: &Candidate, b: &Candidate) -> Ordering {
                 .superlubric_to_mn
                 .total_cmp(&a.score.superlubric_to_mn),
         )
-        .then(
-            b.score
-                .theta_window_deg
-                .total_cmp(&a.score.theta_window_deg),
-        )
-        .then(
-            b.score
-                .direction_window_deg
-                .total_cmp(&a.score.direction_window_deg),
-        )
+        .then(window(b.score.theta_window_deg).total_cmp(&window(a.score.theta_window_deg)))
+        .then(window(b.score.direction_window_deg).total_cmp(&window(a.score.direction_window_deg)))
         .then(a.score.mu_worst.total_cmp(&b.score.mu_worst))
         .then(b.score.contacts.total_cmp(&a.score.contacts))
         .then(a.theta_deg.total_cmp(&b.theta_deg))
@@ -218,10 +218,11 @@ pub struct RankingRow {
     pub superlubric_to_nominal_mN: f64,
     /// θ half-width (degrees) around the nominal inside which every sample stays superlubric
     /// at `superlubric_to_nominal_mN` (sampled out to `theta_tol_deg`: equal to it means "at
-    /// least").
-    pub theta_window_deg: f64,
+    /// least"). Empty without a tolerance, and for designs below the exact top of the ranking
+    /// other than the nominal optimum (not computed).
+    pub theta_window_deg: Option<f64>,
     /// The same along the pulling direction (degrees; at most `direction_tol_deg`).
-    pub direction_window_deg: f64,
+    pub direction_window_deg: Option<f64>,
     /// The worst verdict at `superlubric_to_mN` over the box: superlubric, borderline (within
     /// the estimate's measured uncertainty of the μ or P_crit threshold) or not.
     pub verdict: String,

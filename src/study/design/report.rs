@@ -389,6 +389,11 @@ pub fn answer_line(
 /// The tolerance sentences of the answer `b`: the robust limit over the box and the window at
 /// the nominal limit, the verdict where borderline, and the nominal optimum where it differs.
 fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> String {
+    let within = |w: Option<f64>, step: f64| match w {
+        Some(w) if w > 0.0 => format!("±{w}°"),
+        Some(_) => format!("less than ±{step}° (the first sample)"),
+        None => "(window not computed)".to_string(),
+    };
     let mut m = String::new();
     let sc = &b.score;
     if p.theta_tol_deg > 0.0 || p.direction_tol_deg > 0.0 {
@@ -400,8 +405,16 @@ fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> Strin
         if sc.nominal_to_mn > sc.superlubric_to_mn {
             let _ = write!(
                 m,
-                "; its nominal {} mN holds only within θ ±{}°, direction ±{}°.",
-                sc.nominal_to_mn, sc.theta_window_deg, sc.direction_window_deg
+                "; its nominal {} mN holds only within θ {}, direction {}.",
+                sc.nominal_to_mn,
+                within(
+                    sc.theta_window_deg,
+                    p.theta_tol_step_deg.min(p.theta_tol_deg)
+                ),
+                within(
+                    sc.direction_window_deg,
+                    p.direction_tol_step_deg.min(p.direction_tol_deg)
+                )
             );
         } else {
             m.push('.');
@@ -419,15 +432,11 @@ fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> Strin
         .ranking
         .iter()
         .filter(|c| c.score.nominal_to_mn > sc.superlubric_to_mn)
-        .max_by(|a, c| a.score.nominal_to_mn.total_cmp(&c.score.nominal_to_mn))
+        .fold(None::<&Candidate>, |best, c| match best {
+            Some(b) if b.score.nominal_to_mn >= c.score.nominal_to_mn => Some(b),
+            _ => Some(c),
+        })
     {
-        let within = |w: f64, step: f64| {
-            if w > 0.0 {
-                format!("±{w}°")
-            } else {
-                format!("less than ±{step}° (the first sample)")
-            }
-        };
         let _ = write!(
             m,
             " The nominal optimum differs: θ = {}°, α = {}° reaches {} mN only within θ {} (direction {}), {}{} mN over the tolerance.",

@@ -1,0 +1,304 @@
+//! Stage 4b of a design: the robust limits over the tolerance box, best first.
+//!
+//! Every candidate superlubric at its nominal (θ, α) starts with an upper bound, its nominal
+//! limit. The stage repeatedly refines the candidate with the highest bound
+//! ([`RobustSearch::step`]: the bound falls, or becomes exact) until the best
+//! `max(confirm, 3)` robust limits are exact and no other candidate's bound exceeds the last of
+//! them. The others keep an upper bound (`exact: false`): they cannot enter that top. Windows
+//! are computed for the exact designs and for the nominal optimum (the report names it).
+//! Cost: about one single-load path per sample to disprove a bound, and one path per sample to
+//! verify a limit; docs/validation/tolerance-cost.md.
+
+use super::rank::{self, Candidate};
+use super::store::Store;
+use super::{DesignParams, DesignScene};
+use crate::study::meta::Inputs;
+use crate::study::progress::Progress;
+use crate::study::rows::{label, FrictionRow};
+use crate::study::tolerance::{LimitParams, RobustSearch, RobustState, ToleranceBox};
+use anyhow::Result;
+use serde::{Deserialize, Serialize};
+use serde_json::json;
+use std::time::Instant;
+use surrogate::solver::Solver;
+use surrogate::units::n_to_mn;
+
+/// One candidate's search as stored.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StoredSearch {
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// α (degrees).
+    pub alpha_deg: f64,
+    /// Its nominal rows (the search is reused only for the same).
+    pub nominal: Vec<FrictionRow>,
+    /// The search's state.
+    pub state: RobustState,
+}
+
+/// The stored robust searches of one pattern (`stages/<pattern>/robust.json`, written after
+/// each shortlist level).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct RobustStage {
+    /// Every search started so far.
+    pub designs: Vec<StoredSearch>,
+}
+
+/// The robust searches of one pattern's candidates, kept across the shortlist levels.
+pub struct Searches<'a> {
+    solvers: &'a [Solver],
+    limit: &'a LimitParams,
+    bx: ToleranceBox,
+    stored: RobustStage,
+    rel: String,
+    inputs: Inputs,
+    live: Vec<((f64, f64), RobustSearch<'a>)>,
+}
+
+impl<'a> Searches<'a> {
+    /// The searches of `ds` (reloading those stored under `store`).
+    pub fn new(
+        ds: &DesignScene,
+        p: &DesignParams,
+        solvers: &'a [Solver],
+        limit: &'a LimitParams,
+        store: &Store,
+    ) -> Result<Self> {
+        let bx = super::tolerance_box(p);
+        let inputs = Inputs {
+            workflow: "design/robust".into(),
+            scene: Some(crate::study::meta::scene_file(&ds.scene)),
+            params: json!({
+                "theta_offsets_deg": bx.theta_offsets_deg,
+                "direction_offsets_deg": bx.direction_offsets_deg,
+                "seeds": p.seeds,
+                "limit": super::limit_record(p),
+                "search": "best-first/v2",
+            }),
+        };
+        let rel = format!("stages/{}/robust.json", ds.name);
+        let stored = store
+            .load_json::<RobustStage>(&rel, &inputs)?
+            .unwrap_or_default();
+        Ok(Searches {
+            solvers,
+            limit,
+            bx,
+            stored,
+            rel,
+            inputs,
+            live: Vec::new(),
+        })
+    }
+
+    fn index(&mut self, c: &Candidate) -> usize {
+        let key = (c.theta_deg, c.alpha_deg);
+        if let Some(i) = self.live.iter().position(|(k, _)| *k == key) {
+            return i;
+        }
+        let old = self.stored.designs.iter().find(|s| {
+            (s.theta_deg, s.alpha_deg) == key
+                && s.nominal == c.friction
+                && s.state.samples.len() == self.expected_samples()
+        });
+        let s = match old {
+            Some(s) => RobustSearch::resume(
+                self.solvers,
+                c.theta_deg,
+                c.direction_deg,
+                self.limit,
+                s.state.clone(),
+            ),
+            None => RobustSearch::new(
+                self.solvers,
+                c.theta_deg,
+                c.direction_deg,
+                &c.friction,
+                &self.bx,
+                self.limit,
+            ),
+        };
+        self.live.push((key, s));
+        self.live.len() - 1
+    }
+
+    fn expected_samples(&self) -> usize {
+        self.bx.theta_offsets_deg.len() * self.bx.direction_offsets_deg.len() * self.solvers.len()
+    }
+
+    fn save(&mut self, store: &Store, ranking: &[Candidate]) -> Result<()> {
+        for (key, s) in &self.live {
+            let Some(c) = ranking.iter().find(|c| (c.theta_deg, c.alpha_deg) == *key) else {
+                continue;
+            };
+            let entry = StoredSearch {
+                theta_deg: key.0,
+                alpha_deg: key.1,
+                nominal: c.friction.clone(),
+                state: s.state.clone(),
+            };
+            match self
+                .stored
+                .designs
+                .iter_mut()
+                .find(|d| (d.theta_deg, d.alpha_deg) == *key)
+            {
+                Some(d) => *d = entry,
+                None => self.stored.designs.push(entry),
+            }
+        }
+        store.save_json(&self.rel, &self.inputs, &self.stored)
+    }
+}
+
+/// The loads (count) up to `mn`.
+fn count(p: &DesignParams, mn: f64) -> usize {
+    p.loads.iter().filter(|&&w| label(n_to_mn(w)) <= mn).count()
+}
+
+/// Stage 4b on every candidate so far (`ranking`, all levels): refines best first (module
+/// docs), writes the robust limits, windows and verdicts into the scores, and stores the
+/// searches.
+pub fn robust_stage(
+    ds: &DesignScene,
+    ranking: &mut [Candidate],
+    searches: &mut Searches,
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<()> {
+    let keep = p.confirm.max(3);
+    ranking.sort_by(rank::compare);
+    let todo: Vec<usize> = (0..ranking.len())
+        .filter(|&i| ranking[i].score.nominal_to_mn > 0.0)
+        .collect();
+    progress.stage(
+        &format!(
+            "{}: robust limits over θ ±{}° × direction ±{}°{}",
+            ds.name,
+            p.theta_tol_deg,
+            p.direction_tol_deg,
+            if searches.solvers.len() > 1 {
+                format!(" × {} substrates", searches.solvers.len())
+            } else {
+                String::new()
+            }
+        ),
+        keep.min(todo.len()) as u64,
+        "designs",
+    );
+    let t0 = Instant::now();
+    let mut paths = 0usize;
+    // what is known of candidate c: (bound, exact, θ window, direction window)
+    let known = |s: &Searches, c: &Candidate| -> (usize, bool, Option<f64>, Option<f64>) {
+        match s
+            .live
+            .iter()
+            .find(|(k, _)| *k == (c.theta_deg, c.alpha_deg))
+        {
+            Some((_, r)) => (
+                r.state.bound,
+                r.settled(),
+                r.state.theta_window_deg,
+                r.state.direction_window_deg,
+            ),
+            None => (count(p, c.score.nominal_to_mn), false, None, None),
+        }
+    };
+    let mut done = 0u64;
+    loop {
+        // every candidate's best possible score: its bound, its window or the whole tolerance
+        // where not computed, then μ and contacts (known); ordered as the ranking orders
+        let mut order: Vec<(usize, usize, bool, f64, f64)> = todo
+            .iter()
+            .map(|&i| {
+                let (b, exact, wt, wd) = known(searches, &ranking[i]);
+                let settled = exact && (b == 0 || wt.is_some());
+                let wt = wt.unwrap_or(p.theta_tol_deg);
+                let wd = wd.unwrap_or(p.direction_tol_deg);
+                (i, b, settled, wt, wd)
+            })
+            .collect();
+        order.sort_by(|x, y| {
+            let (a, b) = (&ranking[x.0], &ranking[y.0]);
+            (x.1 == 0)
+                .cmp(&(y.1 == 0))
+                .then(y.1.cmp(&x.1))
+                .then(y.3.total_cmp(&x.3))
+                .then(y.4.total_cmp(&x.4))
+                .then(a.score.mu_worst.total_cmp(&b.score.mu_worst))
+                .then(b.score.contacts.total_cmp(&a.score.contacts))
+                .then(a.theta_deg.total_cmp(&b.theta_deg))
+                .then(a.alpha_deg.total_cmp(&b.alpha_deg))
+        });
+        // done when the best `keep` by that order are settled: every other candidate's best
+        // possible score is below theirs
+        let exact_top = order.iter().take_while(|x| x.2).count().min(keep) as u64;
+        if exact_top > done {
+            progress.advance(exact_top - done);
+            done = exact_top;
+        }
+        let Some(&(i, _, _, _, _)) = order.iter().take(keep).find(|x| !x.2) else {
+            break;
+        };
+        let k = searches.index(&ranking[i]);
+        let before = searches.live[k].1.state.paths;
+        let s = &mut searches.live[k].1;
+        if s.settled() {
+            s.windows()?;
+        } else {
+            s.step()?;
+        }
+        paths += searches.live[k].1.state.paths - before;
+    }
+    // windows: the exact designs and the nominal optimum (highest nominal limit)
+    let top = todo
+        .iter()
+        .map(|&i| ranking[i].score.nominal_to_mn)
+        .fold(0.0f64, f64::max);
+    for &i in &todo {
+        let c = &ranking[i];
+        let (b, settled, _, _) = known(searches, c);
+        if (settled && b > 0) || c.score.nominal_to_mn == top {
+            let k = searches.index(c);
+            let before = searches.live[k].1.state.paths;
+            searches.live[k].1.windows()?;
+            paths += searches.live[k].1.state.paths - before;
+        }
+    }
+    // the scores
+    for &i in &todo {
+        let key = (ranking[i].theta_deg, ranking[i].alpha_deg);
+        let c = &mut ranking[i];
+        match searches.live.iter().find(|(k, _)| *k == key) {
+            Some((_, s)) => {
+                let r = s.result();
+                c.score.superlubric_to_mn = if r.superlubric_to == 0 {
+                    0.0
+                } else {
+                    label(n_to_mn(p.loads[r.superlubric_to - 1]))
+                };
+                c.score.theta_window_deg = r.theta_window_deg;
+                c.score.direction_window_deg = r.direction_window_deg;
+                c.score.verdict = r.verdict;
+                c.score.exact = r.exact;
+            }
+            None => {
+                // never refined: its nominal limit is its bound, its windows unknown
+                c.score.exact = false;
+                c.score.theta_window_deg = None;
+                c.score.direction_window_deg = None;
+            }
+        }
+    }
+    progress.finish();
+    searches.save(store, ranking)?;
+    let exact = todo.iter().filter(|&&i| ranking[i].score.exact).count();
+    progress.note(&format!(
+        "{}: robust limits: {exact} of {} designs exact, the others bounded, in {:.1} s ({paths} friction paths)",
+        ds.name,
+        todo.len(),
+        t0.elapsed().as_secs_f64()
+    ));
+    Ok(())
+}
