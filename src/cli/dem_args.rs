@@ -55,6 +55,27 @@ impl ModelArg {
     }
 }
 
+/// The tangential history of the contacts' Mindlin spring (`--tangential`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TangentialArg {
+    /// History = elastic displacement: a stuck contact's force follows its contact radius when
+    /// the load changes (LAMMPS `mindlin`).
+    Mindlin,
+    /// History = elastic force (incremental stiffness): a stuck contact keeps its force when its
+    /// load changes (LAMMPS `mindlin_force`).
+    MindlinForce,
+}
+
+impl TangentialArg {
+    /// The engine's sub-model.
+    pub fn engine(self) -> dem::Tangential {
+        match self {
+            TangentialArg::Mindlin => dem::Tangential::Mindlin,
+            TangentialArg::MindlinForce => dem::Tangential::MindlinForce,
+        }
+    }
+}
+
 /// `--theta` (`None`: the scene's), `--alpha` (degrees) and `--load-mn` (mN) values.
 pub type Lists = (Vec<Option<f64>>, Vec<f64>, Vec<f64>);
 
@@ -134,6 +155,13 @@ pub struct DemArgs {
     /// exact to round-off; this is for comparisons and timing).
     #[arg(long = "no-active-set")]
     pub no_active_set: bool,
+    /// Tangential history of the contacts' Mindlin spring: `mindlin` stores the elastic
+    /// displacement (its force jumps with the contact radius when a stuck contact's load
+    /// changes), `mindlin-force` stores the elastic force (incremental stiffness, kept until
+    /// the contact slips); LAMMPS `pair granular` conventions. Measured in
+    /// docs/validation/dem-integrator.md.
+    #[arg(long, value_enum, default_value_t = TangentialArg::Mindlin)]
+    pub tangential: TangentialArg,
     /// Constant friction coefficient (≥ 0) for every contact instead of the coating's
     /// pressure-switched μ1/μ2 (reference runs).
     #[arg(long, value_name = "MU", allow_hyphen_values = true)]
@@ -268,6 +296,7 @@ impl DemArgs {
             load,
             equilibrate_time: equilibrate,
             sample_interval: sample,
+            tangential: self.tangential.engine(),
             ..SimParams::default()
         };
         protocol.apply(&mut sim);
