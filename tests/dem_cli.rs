@@ -218,7 +218,8 @@ fn bad_input_names_the_field() {
     fails_naming(&["slide", "--speed-m-s", "0"], "--speed-m-s");
     fails_naming(&["slide", "--relax-us", "-1"], "--relax-us");
     // A time step far beyond the stable one is caught and reported with the stable step
-    // (the full model: 150× its z-spring limit; `auto` would pick rigid-z here).
+    // (the full model: beyond its contact limit, refused at the start; `auto` would pick
+    // rigid-z here).
     let mut a = vec!["equilibrate"];
     a.extend(TINY);
     a.extend([

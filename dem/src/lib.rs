@@ -36,7 +36,7 @@ pub mod system;
 pub use error::DemError;
 pub use integrator::observe::Snapshot;
 pub use integrator::{Observables, Sim};
-pub use params::{DampingFrame, SimParams};
+pub use params::{DampingFrame, SimParams, Tangential};
 pub use path::check_path;
 pub use reduction::{choose_model, ModelChoice, ModelRequest};
 pub use stability::{stable_step, StabilityInput, StableStep};
@@ -72,6 +72,7 @@ pub fn contact_model(
             scene.material.poisson,
             params.gamma_t,
         ),
+        history: params.tangential,
         friction: friction.unwrap_or(Friction::PressureSwitched(PressureSwitched::from(
             &scene.coating,
         ))),

@@ -16,6 +16,34 @@ pub enum DampingFrame {
     Absolute,
 }
 
+/// The tangential history of the Mindlin spring (LAMMPS `pair granular` `tangential` names).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum Tangential {
+    /// History = elastic displacement ξ, force `−k_t(a)·ξ` at the current contact radius: a
+    /// stuck contact's force follows a when its load changes (LAMMPS `mindlin`; default).
+    #[default]
+    Mindlin,
+    /// History = elastic force, incremented by `−k_t(a)·v_t·dt`: a stuck contact keeps its force
+    /// when its load changes (LAMMPS `mindlin_force`, `crate::model::MindlinForce`).
+    MindlinForce,
+}
+
+impl Tangential {
+    /// Whether this is the default ([`Tangential::Mindlin`]).
+    pub fn is_default(&self) -> bool {
+        *self == Tangential::Mindlin
+    }
+
+    /// The kebab-case name (`mindlin`, `mindlin-force`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Tangential::Mindlin => "mindlin",
+            Tangential::MindlinForce => "mindlin-force",
+        }
+    }
+}
+
 /// Every numerical knob of a DEM run (SI: s, m, N/m, N, rad). Defaults = the reference study
 /// (docs/physics.md, Tier 3) except `dt`, which defaults to a fraction of the stable step.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -36,6 +64,10 @@ pub struct SimParams {
     pub gamma_n: f64,
     /// Dimensionless tangential damping γ_t: `F_td = −γ_t √(m_eff k_t) v_t`.
     pub gamma_t: f64,
+    /// Tangential history of the Mindlin spring. (Left out of the serialized form at its
+    /// default, so checkpoints and stored runs made before it existed still match.)
+    #[serde(default, skip_serializing_if = "Tangential::is_default")]
+    pub tangential: Tangential,
     /// Lateral (x, y) stiffness of each slider-sphere–control-layer spring (N/m). Study: 1e3.
     pub k_slider_xy: f64,
     /// Vertical stiffness of each slider-sphere–control-layer spring (N/m). Study: 1e6.
@@ -57,6 +89,17 @@ pub struct SimParams {
     /// Reduction (b): slider spheres move rigidly with the control layer in z (no 1e6 N/m
     /// z-springs, no z-DOF per slider sphere).
     pub rigid_z: bool,
+    /// Full model only (ignored with `rigid_z`): integrate the linear z network of the mount —
+    /// the slider spheres' k_z springs and their damping, the control layer's Z and tilts with
+    /// the mount springs, the load — with the trapezoidal (implicit-midpoint) rule, solved in
+    /// O(N) through the star structure (`integrator::mount`), and the contact forces explicit
+    /// (Strang split). The step is then limited by the contacts, not by the stiff k_z springs
+    /// (×28 larger on the study scene). `false`: velocity-Verlet on everything
+    /// (`--model full-explicit`).
+    /// (Left out of the serialized form when `false`, so checkpoints and stored runs of the
+    /// explicit engine made before it existed still match.)
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub implicit_mount: bool,
     /// Reduction (a): leave out substrate spheres farther than `slider radius + 2R + prune_margin`
     /// from the slider centre's path (start → start + travel along α).
     pub prune_substrate: bool,
@@ -108,6 +151,7 @@ impl Default for SimParams {
             damping_frame: DampingFrame::Relative,
             gamma_n: 0.1,
             gamma_t: 0.1,
+            tangential: Tangential::Mindlin,
             k_slider_xy: 1e3,
             k_slider_z: 1e6,
             k_substrate_xy: 1e3,
@@ -118,6 +162,7 @@ impl Default for SimParams {
             load: 0.35e-3,
             control_sphere_radius: 0.5e-6,
             rigid_z: false,
+            implicit_mount: false,
             prune_substrate: false,
             prune_margin: 3e-6,
             active_set: false,

@@ -74,23 +74,29 @@ pub const STICK_SLIP_ETA: f64 = 1.0;
 pub enum ModelRequest {
     /// The cheapest model within its measured error for this scene (default).
     Auto,
-    /// The full model (slider spheres on k_z springs), with the exact reductions.
+    /// The full model (slider spheres on k_z springs), with the exact reductions, its linear
+    /// mount network integrated implicitly ([`crate::SimParams::implicit_mount`]): the step is
+    /// set by the contacts.
     Full,
+    /// The full model integrated by velocity-Verlet throughout (the step set by the stiff k_z
+    /// springs, ~28× smaller): the reference for [`ModelRequest::Full`].
+    FullExplicit,
     /// The reduced model: rigid-z, with the exact reductions.
     Reduced,
 }
 
 impl ModelRequest {
-    /// Parses `auto | full | reduced`; errors name the flag `--model`.
+    /// Parses `auto | full | full-explicit | reduced`; errors name the flag `--model`.
     pub fn parse(s: &str) -> Result<ModelRequest, DemError> {
         match s {
             "auto" => Ok(ModelRequest::Auto),
             "full" => Ok(ModelRequest::Full),
+            "full-explicit" => Ok(ModelRequest::FullExplicit),
             "reduced" => Ok(ModelRequest::Reduced),
             _ => Err(DemError::invalid(
                 "--model",
                 s,
-                "expected one of auto, full, reduced",
+                "expected one of auto, full, full-explicit, reduced",
             )),
         }
     }
@@ -99,6 +105,7 @@ impl ModelRequest {
         match self {
             ModelRequest::Auto => "auto",
             ModelRequest::Full => "full",
+            ModelRequest::FullExplicit => "full-explicit",
             ModelRequest::Reduced => "reduced",
         }
     }
@@ -107,12 +114,14 @@ impl ModelRequest {
 /// The reductions a run uses, with the reason (for the log and the JSON summary).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ModelChoice {
-    /// What was asked for: `auto`, `full` or `reduced`.
+    /// What was asked for: `auto`, `full`, `full-explicit` or `reduced`.
     pub requested: &'static str,
-    /// What runs: `full` or `reduced` (= rigid-z).
+    /// What runs: `full`, `full-explicit` or `reduced` (= rigid-z).
     pub model: &'static str,
     /// Slider spheres rigid in z.
     pub rigid_z: bool,
+    /// Full model with the implicit mount step (`full`; `false` for `full-explicit`).
+    pub implicit_mount: bool,
     /// Unreachable substrate spheres left out (exact).
     pub prune: bool,
     /// Active set (exact to its tolerance).
@@ -136,6 +145,7 @@ impl ModelChoice {
     /// Sets the reductions in `p`.
     pub fn apply(&self, p: &mut SimParams) {
         p.rigid_z = self.rigid_z;
+        p.implicit_mount = self.implicit_mount && !self.rigid_z;
         p.prune_substrate = self.prune;
         p.active_set = self.active_set;
     }
@@ -169,7 +179,14 @@ pub fn choose_model(
     let eta = stick_slip_eta(scene, params, &solver);
     let coating_may_fail = p_ref * SLIDING_P_MAX_FACTOR >= scene.coating.p_crit;
     let (rigid_z, reason) = match request {
-        ModelRequest::Full => (false, format!("full model as requested; {exact}")),
+        ModelRequest::Full => (
+            false,
+            format!("full model as requested (mount springs implicit, step set by the contacts); {exact}"),
+        ),
+        ModelRequest::FullExplicit => (
+            false,
+            format!("full model, velocity-Verlet throughout, as requested (step set by the k_z springs); {exact}"),
+        ),
         ModelRequest::Reduced => (
             true,
             format!(
@@ -224,10 +241,18 @@ pub fn choose_model(
             }
         }
     };
+    let implicit_mount = !rigid_z && request != ModelRequest::FullExplicit;
     Ok(ModelChoice {
         requested: request.name(),
-        model: if rigid_z { "reduced" } else { "full" },
+        model: if rigid_z {
+            "reduced"
+        } else if implicit_mount {
+            "full"
+        } else {
+            "full-explicit"
+        },
         rigid_z,
+        implicit_mount,
         prune: true,
         active_set: true,
         stiffness_ratio: kappa,

@@ -15,6 +15,7 @@ fn model(gamma_n: f64, gamma_t: f64, friction: Friction) -> ContactModel {
             gamma_n,
         },
         tangential: Mindlin::equal_spheres(mat.youngs, mat.poisson, gamma_t),
+        history: dem::Tangential::Mindlin,
         friction,
         radius_sum: 2.0 * R,
     }

@@ -32,8 +32,13 @@ pub enum StartKind {
 pub enum ModelArg {
     /// The cheapest model within its measured error for this scene (reason printed).
     Auto,
-    /// Slider spheres on their k_z springs.
+    /// Slider spheres on their k_z springs; the linear mount network (k_z springs, control
+    /// layer Z and tilts, mount springs) integrated implicitly, the contacts explicitly: the
+    /// step is set by the contacts (~28× the explicit one on the study scene).
     Full,
+    /// The full model with velocity-Verlet on everything (step set by the k_z springs): the
+    /// reference for `full`.
+    FullExplicit,
     /// Rigid-z: slider spheres rigid in z on the control layer.
     Reduced,
 }
@@ -44,7 +49,29 @@ impl ModelArg {
         match self {
             ModelArg::Auto => dem::ModelRequest::Auto,
             ModelArg::Full => dem::ModelRequest::Full,
+            ModelArg::FullExplicit => dem::ModelRequest::FullExplicit,
             ModelArg::Reduced => dem::ModelRequest::Reduced,
+        }
+    }
+}
+
+/// The tangential history of the contacts' Mindlin spring (`--tangential`).
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TangentialArg {
+    /// History = elastic displacement: a stuck contact's force follows its contact radius when
+    /// the load changes (LAMMPS `mindlin`).
+    Mindlin,
+    /// History = elastic force (incremental stiffness): a stuck contact keeps its force when its
+    /// load changes (LAMMPS `mindlin_force`).
+    MindlinForce,
+}
+
+impl TangentialArg {
+    /// The engine's sub-model.
+    pub fn engine(self) -> dem::Tangential {
+        match self {
+            TangentialArg::Mindlin => dem::Tangential::Mindlin,
+            TangentialArg::MindlinForce => dem::Tangential::MindlinForce,
         }
     }
 }
@@ -110,7 +137,9 @@ pub struct DemArgs {
     pub gap_nm: f64,
     /// Model: `auto` picks rigid-z where its measured error is small for this scene and keeps
     /// the full model near coating failure, where stick-slip is expected and beyond the measured
-    /// stiffness ratio (the choice and its reason are printed and in the JSON); pruning and the
+    /// stiffness ratio (the choice and its reason are printed and in the JSON); `full` integrates
+    /// the stiff mount springs implicitly (step set by the contacts), `full-explicit` is the same
+    /// model by velocity-Verlet throughout (~28× more steps), for reference; pruning and the
     /// active set are exact and on in every model.
     #[arg(long, value_enum, default_value_t = ModelArg::Auto)]
     pub model: ModelArg,
@@ -126,6 +155,13 @@ pub struct DemArgs {
     /// exact to round-off; this is for comparisons and timing).
     #[arg(long = "no-active-set")]
     pub no_active_set: bool,
+    /// Tangential history of the contacts' Mindlin spring: `mindlin` stores the elastic
+    /// displacement (its force jumps with the contact radius when a stuck contact's load
+    /// changes), `mindlin-force` stores the elastic force (incremental stiffness, kept until
+    /// the contact slips); LAMMPS `pair granular` conventions. Measured in
+    /// docs/validation/dem-integrator.md.
+    #[arg(long, value_enum, default_value_t = TangentialArg::Mindlin)]
+    pub tangential: TangentialArg,
     /// Constant friction coefficient (≥ 0) for every contact instead of the coating's
     /// pressure-switched μ1/μ2 (reference runs).
     #[arg(long, value_name = "MU", allow_hyphen_values = true)]
@@ -260,6 +296,7 @@ impl DemArgs {
             load,
             equilibrate_time: equilibrate,
             sample_interval: sample,
+            tangential: self.tangential.engine(),
             ..SimParams::default()
         };
         protocol.apply(&mut sim);

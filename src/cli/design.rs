@@ -526,6 +526,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         dem_words: match a.dem_model {
             ModelArg::Reduced => "reduced model `--model reduced` (slider spheres rigid in z; unreachable substrate spheres left out and only the active set integrated, both exact)".into(),
             ModelArg::Full => "full model `--model full` (slider spheres on their z springs; pruning and the active set, both exact)".into(),
+            ModelArg::FullExplicit => "full model by velocity-Verlet throughout `--model full-explicit` (slider spheres on their z springs; pruning and the active set, both exact)".into(),
             ModelArg::Auto => "`--model auto` (per run: the full model near coating failure, where stick-slip is expected or beyond the measured stiffness ratio, else rigid-z; the choice is in each run's JSON)".into(),
         },
         protocol_check: !a.no_protocol_check,

@@ -124,7 +124,7 @@ pub fn dem(scene: &surrogate::Scene, p: &DemParams) -> Value {
     let mut engine = p.sim.clone();
     engine.alpha = super::dem_run::direction(scene, p).1;
     let s = &engine;
-    json!({
+    let mut v = json!({
         "load_mN": label(n_to_mn(s.load)),
         "alpha_deg": label(rad_to_deg(p.alpha)),
         "line_deg": p.line.map(rad_to_deg),
@@ -150,5 +150,18 @@ pub fn dem(scene: &surrogate::Scene, p: &DemParams) -> Value {
             Some(f) => json!(format!("{f:?}")),
         },
         "engine_si": s,
-    })
+    });
+    // runs that may use the full model integrate it with the implicit mount since this key
+    // (`--model full-explicit`: velocity-Verlet, as every full run before it); absent
+    // otherwise, so stored runs of the other models still match
+    let may_be_full = !matches!(
+        p.model.request,
+        dem::ModelRequest::FullExplicit | dem::ModelRequest::Reduced
+    ) && !p.model.force_rigid_z;
+    if may_be_full {
+        if let Some(o) = v.as_object_mut() {
+            o.insert("full_model_integrator".into(), json!("implicit-mount"));
+        }
+    }
+    v
 }

@@ -31,7 +31,7 @@
 
 use super::body::{dot3, g_of};
 use super::chunks::Chunking;
-use super::ring::{amplitude, bound_factor, StepMap};
+use super::ring::{amplitude, bound_factor, StepMap, IMPLICIT_BOUND_FACTOR};
 use super::sim::Sim;
 use crate::model::PairOut;
 use crate::neighbor::build_pairs;
@@ -48,11 +48,21 @@ impl Sim {
         [p.k_slider_xy / m, p.k_slider_z / m, p.k_substrate_xy / m]
     }
 
-    /// The step maps of `n` steps of the three free deviation modes.
+    /// The step maps of `n` steps of the three free deviation modes (slider z: the implicit
+    /// mount's map when it is on).
     pub(crate) fn ring_maps(&self, n: u64) -> [StepMap; 3] {
         let it = self.inv_tau();
-        self.free_omega2()
-            .map(|w2| StepMap::new(w2, it, self.dt).pow(n))
+        let w = self.free_omega2();
+        let z = if self.mount.is_some() {
+            StepMap::implicit(w[1], it, self.dt)
+        } else {
+            StepMap::new(w[1], it, self.dt)
+        };
+        [
+            StepMap::new(w[0], it, self.dt).pow(n),
+            z.pow(n),
+            StepMap::new(w[2], it, self.dt).pow(n),
+        ]
     }
 
     /// Slider deviation advanced by `maps`.
@@ -150,7 +160,11 @@ impl Sim {
         let [w_xy, w_z, w_b] = self.free_omega2();
         let (f_xy, f_z, f_b) = (
             bound_factor(w_xy, self.dt),
-            bound_factor(w_z, self.dt),
+            if self.mount.is_some() {
+                IMPLICIT_BOUND_FACTOR
+            } else {
+                bound_factor(w_z, self.dt)
+            },
             bound_factor(w_b, self.dt),
         );
         let r = &self.state.ringing;
@@ -475,8 +489,19 @@ impl Sim {
         a.sl_x.extend(sl.iter().map(|&i| s.sl_x[i as usize]));
         a.sl_v.clear();
         a.sl_v.extend(sl.iter().map(|&i| s.sl_v[i as usize]));
-        a.sl_f.clear();
-        a.sl_f.resize(sl.len(), [0.0; 3]);
+        // forces of the spheres that stay active carry over (the implicit mount's contact
+        // velocity prediction reads them; velocity-Verlet recomputes them before any use)
+        let mut f = vec![[0.0; 3]; sl.len()];
+        let mut o = 0usize;
+        for (k, &i) in sl.iter().enumerate() {
+            while o < a.sl.len() && a.sl[o] < i {
+                o += 1;
+            }
+            if o < a.sl.len() && a.sl[o] == i {
+                f[k] = a.sl_f[o];
+            }
+        }
+        a.sl_f = f;
         a.sl_x0.clone_from(&a.sl_x);
         a.sl = sl;
         a.sub_x.clear();

@@ -34,6 +34,8 @@ struct SliderPass<'a> {
     rel: bool,
     tilting: bool,
     rigid: bool,
+    /// z springs and damping in the implicit mount step: z gets the contact force only.
+    implicit: bool,
     kxy: f64,
     kz: f64,
     m_s: f64,
@@ -63,6 +65,14 @@ impl SliderPass<'_> {
             let a = a0 + l;
             let o = self.off[self.ids[a] as usize];
             let x = self.x[a];
+            // Implicit mount: v[2] still lacks this step's second contact half kick; the
+            // contact law sees it predicted with the last contact force (at rest: 0, as
+            // velocity-Verlet's half-step velocity).
+            let vz = if self.implicit {
+                v[2] + self.hm * f[2]
+            } else {
+                v[2]
+            };
             let mut acc = [0.0; 3];
             for p in self.pstart[a] as usize..self.pstart[a + 1] as usize {
                 let b = self.pair_b[p] as usize;
@@ -73,7 +83,7 @@ impl SliderPass<'_> {
                     x[1] - xb[1],
                     x[2] - self.sub_h[self.sub_ids[b] as usize],
                 ];
-                let vr = [v[0] - vb[0], v[1] - vb[1], v[2]];
+                let vr = [v[0] - vb[0], v[1] - vb[1], vz];
                 let hp = &mut hist[p - pbase];
                 let r = self.model.pair(d, vr, &mut hp.xi, self.m_eff, self.dt);
                 hp.ever_failed |= r.failed;
@@ -100,7 +110,9 @@ impl SliderPass<'_> {
             part[1] -= sy;
             kick_hm(&mut v[0], acc[0], self.hm);
             kick_hm(&mut v[1], acc[1], self.hm);
-            if !self.rigid {
+            if self.implicit {
+                kick_hm(&mut v[2], acc[2], self.hm);
+            } else if !self.rigid {
                 let (az, vaz) = if self.tilting {
                     (dot3(g, self.q), dot3(g, self.qd))
                 } else {
@@ -273,6 +285,7 @@ impl Sim {
                 rel,
                 tilting: self.body.tilt.is_some(),
                 rigid: p.rigid_z,
+                implicit: self.mount.is_some(),
                 kxy: p.k_slider_xy,
                 kz: p.k_slider_z,
                 m_s: self.body.m_s,
@@ -304,6 +317,7 @@ impl Sim {
         s.p0_peak = s.p0_peak.max(peak);
         // 3. common mode of the inactive slider spheres
         let m = self.body.m_s;
+        let implicit = self.mount.is_some();
         {
             let c = &mut s.common;
             let vref = if rel {
@@ -317,7 +331,11 @@ impl Sim {
                 c.fd[k] = -p.k_slider_xy * c.d[k] - m * c.dv[k] * inv_tau;
                 kick(&mut c.dv[k], c.fd[k], h, m);
             }
-            if !p.rigid_z {
+            if implicit {
+                // the z mode is advanced by the implicit mount step
+                c.fw = [0.0; 3];
+                c.fdz = [0.0; 3];
+            } else if !p.rigid_z {
                 let sref = if rel { qd } else { [0.0; 3] };
                 for k in 0..3 {
                     c.fw[k] = -p.k_slider_z * c.w[k] - m * (c.s[k] - sref[k]) * inv_tau;
@@ -337,7 +355,7 @@ impl Sim {
             let c = &s.common;
             f[0] += n_in * p.k_slider_xy * c.u[0] + p.k_slider_xy * c.d[0];
             f[1] += n_in * p.k_slider_xy * c.u[1] + p.k_slider_xy * c.d[1];
-            if !p.rigid_z {
+            if !p.rigid_z && !implicit {
                 let gw = mat_vec(&self.idx.g_in, c.w);
                 f[2] += p.k_slider_z * (gw[0] + c.dz[0]);
                 qt[0] += p.k_slider_z * (gw[1] + c.dz[1]);
@@ -346,6 +364,11 @@ impl Sim {
         }
         f[2] -= p.load;
         match &self.body.tilt {
+            _ if implicit => {
+                // Z and the tilts are advanced by the implicit mount step
+                f[2] = 0.0;
+                qt = [0.0; 2];
+            }
             None => f[2] -= self.body.mz * s.cl_v[2] * inv_tau,
             Some(t) => {
                 let mq = mat_vec(&t.m, qd);

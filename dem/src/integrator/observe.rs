@@ -177,7 +177,10 @@ impl Sim {
                     let mut d = self.advance_sl(&maps, *d);
                     d[3] = kick(d[0], d[3], w_xy);
                     d[4] = kick(d[1], d[4], w_xy);
-                    d[5] = kick(d[2], d[5], w_z);
+                    // (implicit mount: the z velocity is already the full step's)
+                    if self.mount.is_none() {
+                        d[5] = kick(d[2], d[5], w_z);
+                    }
                     (i, d)
                 })
                 .collect();

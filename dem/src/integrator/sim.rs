@@ -121,6 +121,8 @@ pub struct Sim {
     pub(crate) tuner: super::chunks::Tuner,
     /// Per chunk of the kick-drift pass: its largest squared displacement (m²).
     pub(crate) d2: Vec<f64>,
+    /// The implicit mount step (`params.implicit_mount`, full model); `None`: velocity-Verlet.
+    pub(crate) mount: Option<super::mount::Mount>,
 }
 
 #[inline]
@@ -195,6 +197,22 @@ impl Sim {
             }
         }
         let body = Body::new(&spec, &params);
+        let mount = (params.implicit_mount && !params.rigid_z)
+            .then(|| super::mount::Mount::new(&body, &params, dt));
+        // The implicit mount cannot blow up, so a step beyond the contacts' limit would not end
+        // in a non-finite state but in contacts that gain energy (the slider is thrown off):
+        // refuse it up front, with the message of an unstable run.
+        if mount.is_some() && dt > dt_crit {
+            return Err(DemError::Unstable {
+                t_us: 0.0,
+                what: "the step is beyond the stable step of the contacts (with the implicit \
+                       mount nothing else limits it, and a contact integrated past its limit \
+                       gains energy instead of going non-finite)"
+                    .into(),
+                dt_us: dt * 1e6,
+                dt_crit_us: dt_crit * 1e6,
+            });
+        }
         let n = spec.slider_sites.len();
         let nb = spec.substrate.len();
         let sl_x: Vec<[f64; 3]> = spec
@@ -254,6 +272,7 @@ impl Sim {
             overhang0,
             tuner: Default::default(),
             d2: Vec::new(),
+            mount,
         };
         sim.evaluate(true);
         sim.forces(Exec::Alone, 0.0, false);
@@ -352,6 +371,7 @@ impl Sim {
         self.kick_control(h);
         self.kick_common(h);
         self.drift_frame();
+        self.mount_step();
         let d2 = self.kick_drift(exec, h, fused);
         if !d2.is_finite() {
             return Err(self.unstable("non-finite particle position".into()));
@@ -469,14 +489,17 @@ impl Sim {
     }
 
     /// Drift of the control layer, the support and the common mode (relative to the layer).
+    /// With the implicit mount the z parts (Z, tilts, common z mode) are left to
+    /// [`Sim::mount_step`].
     fn drift_frame(&mut self) {
         let dt = self.dt;
-        let rigid = self.params.rigid_z;
+        let implicit = self.mount.is_some();
+        let rigid = self.params.rigid_z || implicit;
         let s = &mut self.state;
-        for k in 0..3 {
+        for k in 0..if implicit { 2 } else { 3 } {
             s.cl_x[k] += dt * s.cl_v[k];
         }
-        if self.body.tilt.is_some() {
+        if self.body.tilt.is_some() && !implicit {
             s.tilt[0] += dt * s.tilt_v[0];
             s.tilt[1] += dt * s.tilt_v[1];
         }
@@ -514,6 +537,8 @@ impl Sim {
         let dt = self.dt;
         let hm = h / self.body.m_s;
         let rigid = self.params.rigid_z;
+        // z already advanced by the implicit mount step
+        let implicit = self.mount.is_some();
         let q = self.q();
         let qd = self.qdot();
         let tilting = self.body.tilt.is_some();
@@ -566,7 +591,7 @@ impl Sim {
                         x[2] = q[0];
                         v[2] = qd[0];
                     }
-                } else {
+                } else if !implicit {
                     kick_hm(&mut v[2], f[2], hm);
                     x[2] += dt * v[2];
                 }

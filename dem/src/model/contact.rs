@@ -1,6 +1,9 @@
 //! [`ContactModel`]: normal + tangential + friction law of a slider–substrate sphere pair.
 
-use super::{Friction, FrictionLaw, HertzNormal, Mindlin, NormalModel, TangentialModel};
+use super::{
+    Friction, FrictionLaw, HertzNormal, Mindlin, MindlinForce, NormalModel, TangentialModel,
+};
+use crate::params::Tangential;
 
 /// Result of evaluating one pair (SI).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -21,8 +24,10 @@ pub struct PairOut {
 pub struct ContactModel {
     /// Normal sub-model.
     pub normal: HertzNormal,
-    /// Tangential sub-model.
+    /// Tangential sub-model (its stiffness law and damping).
     pub tangential: Mindlin,
+    /// Its history: displacement ([`Mindlin`]) or force ([`MindlinForce`]).
+    pub history: Tangential,
     /// Friction law μ(p0).
     pub friction: Friction,
     /// Sum of the two radii (m).
@@ -61,9 +66,16 @@ impl ContactModel {
         let (fnorm, p0) = (nf.force, nf.p0);
         let mu = self.friction.mu(p0);
         let vt = [v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]];
-        let ft = self
-            .tangential
-            .force(xi, n, vt, nf.radius, mu * fnorm, m_eff, dt);
+        let ft = match self.history {
+            Tangential::Mindlin => {
+                self.tangential
+                    .force(xi, n, vt, nf.radius, mu * fnorm, m_eff, dt)
+            }
+            Tangential::MindlinForce => MindlinForce {
+                spring: self.tangential,
+            }
+            .force(xi, n, vt, nf.radius, mu * fnorm, m_eff, dt),
+        };
         PairOut {
             force: [
                 fnorm * n[0] + ft[0],
@@ -74,5 +86,61 @@ impl ContactModel {
             p0,
             failed: self.friction.failed(p0),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Constant, Mindlin};
+    use surrogate::contact::Hertz;
+    use surrogate::Material;
+
+    /// The `history` switch reaches the pair: a contact sheared while stuck, then unloaded
+    /// (overlap halved) without sliding, keeps its tangential force with `MindlinForce` and
+    /// loses part of it with `Mindlin` (whose force follows the contact radius).
+    #[test]
+    fn the_history_switch_selects_the_tangential_sub_model() {
+        let r = 1.5e-6;
+        let mat = Material::default();
+        let model = |history| ContactModel {
+            normal: HertzNormal {
+                hertz: Hertz::equal_spheres(r, &mat),
+                gamma_n: 0.0,
+            },
+            tangential: Mindlin::equal_spheres(mat.youngs, mat.poisson, 0.0),
+            history,
+            friction: Friction::Constant(Constant { mu: 10.0 }),
+            radius_sum: 2.0 * r,
+        };
+        let shear = |history| {
+            let m = model(history);
+            let mut xi = [0.0; 3];
+            let (dt, m_eff) = (1e-10, 1e-14);
+            let d0 = 2.0 * r - 20e-9;
+            let mut f = [0.0; 3];
+            for _ in 0..100 {
+                f = m
+                    .pair([0.0, 0.0, d0], [1e-2, 0.0, 0.0], &mut xi, m_eff, dt)
+                    .force;
+            }
+            let loaded = f[0];
+            let unloaded = m
+                .pair([0.0, 0.0, 2.0 * r - 10e-9], [0.0; 3], &mut xi, m_eff, dt)
+                .force[0];
+            (loaded, unloaded)
+        };
+        let (a0, a1) = shear(Tangential::Mindlin);
+        let (b0, b1) = shear(Tangential::MindlinForce);
+        assert!(a0 < 0.0 && (a0 / b0 - 1.0).abs() < 1e-9, "{a0} vs {b0}");
+        assert!(
+            (b1 / b0 - 1.0).abs() < 1e-9,
+            "mindlin-force kept {b1} of {b0}"
+        );
+        // a ∝ √δ: the displacement form keeps 1/√2 of its force
+        assert!(
+            (a1 / a0 - 0.5f64.sqrt()).abs() < 1e-6,
+            "mindlin kept {a1} of {a0}"
+        );
     }
 }
