@@ -1,6 +1,7 @@
-//! The design's DEM confirmation: independent `slide` runs side by side, one thread each,
-//! through the study layer's batch runner [`crate::study::batch`] (which this module held
-//! before; its names are re-exported here so the design's code and files are unchanged).
+//! Stage 6 of a design, the DEM confirmation: which runs (the top designs at the confirmation
+//! loads, the answer's tolerance corners, borderline designs first), the friction estimates
+//! they are compared with, and the batch of independent `slide` runs side by side, one thread
+//! each, through the study layer's batch runner [`crate::study::batch`].
 //!
 //! Each run writes into `dir/<name>/`: `slide.csv`, `slide.json` (or `failed.json`), each with
 //! its sidecar; a finished run is reused by its input hash, an interrupted one resumes from its
@@ -10,3 +11,355 @@
 pub use crate::study::batch::{
     job_inputs, run_batch, Failure, SlideJob, SlideOutcome, SlideResult,
 };
+
+use super::rank::{self, Candidate};
+use super::store::Store;
+use super::{answer, tag, tolerance_box, DemEntry, DesignParams, PatternResult};
+use crate::study::meta::{scene_file, Inputs};
+use crate::study::progress::Progress;
+use crate::study::record;
+use crate::study::rows::label;
+use anyhow::{bail, Result};
+use serde_json::json;
+use surrogate::solver::Solver;
+use surrogate::units::{deg_to_rad, n_to_mn, rad_to_deg};
+
+/// The DEM parameters of one confirmation run.
+pub fn dem_params(
+    p: &DesignParams,
+    alpha_deg: f64,
+    load: f64,
+    study: bool,
+) -> crate::study::dem_run::DemParams {
+    let mut d = p.dem.clone();
+    d.sim.load = load;
+    d.alpha = deg_to_rad(alpha_deg);
+    d.line = p.line;
+    if study {
+        let s = dem::SimParams::default();
+        d.sim.equilibrate_time = s.equilibrate_time;
+        d.sim.relax_time = s.relax_time;
+        d.sim.slide_time = s.slide_time;
+        d.sim.support_speed = s.support_speed;
+    }
+    d
+}
+
+/// The run directory name of a confirmation run.
+pub fn run_name(pattern: &str, theta_deg: f64, alpha_deg: f64, load: f64, study: bool) -> String {
+    format!(
+        "{pattern}_theta{}_alpha{}_W{}{}",
+        tag(theta_deg),
+        tag(alpha_deg),
+        tag(n_to_mn(load)),
+        if study { "_study-protocol" } else { "" }
+    )
+}
+
+/// The friction estimate of the designs to confirm at the confirmation loads that the
+/// evaluation did not estimate (above the screen's coating-intact load, or above the lowest
+/// load of a candidate not superlubric there): one stage file per (θ, α, W), added to the
+/// candidate's rows for the comparison with the DEM (the score is not changed).
+pub(super) fn confirm_estimates(
+    patterns: &mut [PatternResult],
+    p: &DesignParams,
+    store: &Store,
+) -> Result<()> {
+    for pr in patterns.iter_mut() {
+        let mut solver: Option<Solver> = None;
+        let ds = &pr.scene;
+        for c in pr.ranking.iter_mut().take(p.confirm) {
+            for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
+                let wm = label(n_to_mn(w));
+                if c.friction.iter().any(|r| r.load_mN == wm) {
+                    continue;
+                }
+                let theta = deg_to_rad(c.theta_deg);
+                let inputs = Inputs {
+                    workflow: "design/estimate".into(),
+                    scene: Some(scene_file(&ds.scene.with_theta(theta))),
+                    params: json!({
+                        "theta_deg": c.theta_deg,
+                        "alpha_deg": c.alpha_deg,
+                        "load_mN": wm,
+                        "line_deg": p.line.map(rad_to_deg),
+                        "friction": record::friction_knobs(&p.friction),
+                    }),
+                };
+                let rel = format!(
+                    "stages/{}/estimate_theta{}_alpha{}_W{}.json",
+                    ds.name,
+                    tag(c.theta_deg),
+                    tag(c.alpha_deg),
+                    tag(wm)
+                );
+                let row = match store.load_json::<crate::study::rows::FrictionRow>(&rel, &inputs)? {
+                    Some(r) => r,
+                    None => {
+                        if solver.is_none() {
+                            let mut sc = ds.scene.clone();
+                            sc.slider.theta = 0.0;
+                            solver = Some(Solver::new(&sc)?);
+                        }
+                        let Some(s) = solver.as_ref() else {
+                            bail!("no solver")
+                        };
+                        let line = crate::study::corrugation::contact_line(
+                            &ds.scene.with_theta(theta),
+                            p.line,
+                        );
+                        let alpha = deg_to_rad(c.alpha_deg);
+                        let est = surrogate::friction::estimate_friction_loads(
+                            s,
+                            theta,
+                            line.angle + alpha,
+                            &[w],
+                            &p.friction,
+                        )?;
+                        let mut r = crate::study::rows::FrictionRow::new(
+                            &ds.scene.pattern,
+                            theta,
+                            alpha,
+                            line.angle,
+                            w,
+                            &est[0],
+                        );
+                        r.alpha_deg = c.alpha_deg;
+                        store.save_json(&rel, &inputs, &r)?;
+                        r
+                    }
+                };
+                c.friction.push(row);
+                c.friction.sort_by(|a, b| a.load_mN.total_cmp(&b.load_mN));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The DEM loads (N, ascending) of a design to confirm: the confirmation loads plus its own
+/// superlubric load (`superlubric_to`, the load its answer would name), so the claimed limit
+/// itself is run, not only the confirmation loads around it. `confirm_loads` and `loads` (the
+/// design's loads, one of which the superlubric load is) in N.
+pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64]) -> Vec<f64> {
+    let mut w = confirm_loads.to_vec();
+    if let Some(&own) = loads.iter().find(|&&l| {
+        c.score.superlubric_to_mn > 0.0 && label(n_to_mn(l)) == c.score.superlubric_to_mn
+    }) {
+        if !w.iter().any(|&x| label(n_to_mn(x)) == label(n_to_mn(own))) {
+            w.push(own);
+        }
+    }
+    w.sort_by(f64::total_cmp);
+    w
+}
+
+/// One DEM run of the confirmation: pattern, rank, θ (°), α (°), W (N), study protocol.
+/// (pattern, rank, θ, α, W, study protocol, θ offset, direction offset) of a DEM run.
+pub(super) type ConfirmEntry = (String, usize, f64, f64, f64, bool, f64, f64);
+
+/// The confirmation runs (top `confirm` designs × confirmation loads), in order, with what
+/// each one is.
+pub(super) fn confirm_jobs(
+    patterns: &[PatternResult],
+    p: &DesignParams,
+) -> (Vec<SlideJob>, Vec<ConfirmEntry>) {
+    // (borderline first, job, entry): DEM runs go first to borderline designs
+    let mut all: Vec<(bool, SlideJob, ConfirmEntry)> = Vec::new();
+    for pr in patterns {
+        for (k, c) in pr.ranking.iter().take(p.confirm).enumerate() {
+            let borderline = c.score.verdict == crate::study::verdict::Verdict::Borderline;
+            for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
+                all.push((
+                    !borderline,
+                    SlideJob {
+                        name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, false),
+                        scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
+                        params: dem_params(p, c.alpha_deg, w, false),
+                    },
+                    (
+                        pr.scene.name.clone(),
+                        k + 1,
+                        c.theta_deg,
+                        c.alpha_deg,
+                        w,
+                        false,
+                        0.0,
+                        0.0,
+                    ),
+                ));
+            }
+            if k == 0 {
+                for (job, entry) in corner_jobs(pr, c, p) {
+                    all.push((!borderline, job, entry));
+                }
+            }
+        }
+    }
+    all.sort_by_key(|x| x.0); // stable: the order within each group is kept
+    all.into_iter().map(|(_, j, e)| (j, e)).unzip()
+}
+
+/// The DEM runs of the tolerance box's corners of the design `c` (the best of its pattern): θ ±
+/// tol × pull direction ± tol (fixed in the substrate frame: α' = direction' − line(θ')), at
+/// its robust limit load and the next load above. None without a tolerance or a limit.
+pub(super) fn corner_jobs(
+    pr: &PatternResult,
+    c: &Candidate,
+    p: &DesignParams,
+) -> Vec<(SlideJob, ConfirmEntry)> {
+    let mut out = Vec::new();
+    if tolerance_box(p).is_point() || c.score.superlubric_to_mn <= 0.0 {
+        return out;
+    }
+    let Some(k) = p
+        .loads
+        .iter()
+        .position(|&w| label(n_to_mn(w)) == c.score.superlubric_to_mn)
+    else {
+        return out;
+    };
+    let loads = &p.loads[k..(k + 2).min(p.loads.len())];
+    for &w in loads {
+        for (st, sd) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)] {
+            let dt = label(st * p.theta_tol_deg);
+            let dd = label(sd * p.direction_tol_deg);
+            let theta = label(c.theta_deg + dt);
+            let scene = pr.scene.scene.with_theta(deg_to_rad(theta));
+            let line = crate::study::friction::line_at(&scene, deg_to_rad(theta), p.line);
+            let alpha = label(c.direction_deg + dd - rad_to_deg(line.angle));
+            out.push((
+                SlideJob {
+                    name: run_name(&pr.scene.name, theta, alpha, w, false),
+                    scene,
+                    params: dem_params(p, alpha, w, false),
+                },
+                (pr.scene.name.clone(), 1, theta, alpha, w, false, dt, dd),
+            ));
+        }
+    }
+    out
+}
+
+/// Stage 6: the DEM runs of the top designs (one batch, side by side), then — when the
+/// confirmation protocol is shorter than the study's — the study's protocol once on the design
+/// the report recommends ([`protocol_check_design`]; alone, on every thread), to measure the
+/// shorter protocol's difference there.
+pub(super) fn confirm_stage(
+    patterns: &[PatternResult],
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<Vec<DemEntry>> {
+    let (jobs, mut entries) = confirm_jobs(patterns, p);
+    if jobs.is_empty() {
+        progress.note("DEM: nothing to confirm (no ranked design)");
+        return Ok(Vec::new());
+    }
+    progress.note(&format!(
+        "DEM: {} runs, {} side by side (one thread each), into {}",
+        jobs.len(),
+        p.jobs.min(jobs.len()),
+        store.path("dem").display()
+    ));
+    let mut outcomes = run_batch(&jobs, p.jobs, &store.path("dem"), progress)?;
+    let mut dem = to_entries(&entries, &outcomes);
+    // the protocol check, on the design the report recommends
+    if p.protocol_check && !p.dem_is_study_protocol {
+        let answers: Vec<answer::Answer> = patterns
+            .iter()
+            .map(|pr| answer::answer(pr, &dem, true, p))
+            .collect();
+        if let Some((pr, i, w)) = protocol_check_design(patterns, &answers, &p.confirm_loads) {
+            let c = &pr.ranking[i];
+            let job = SlideJob {
+                name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
+                scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
+                params: dem_params(p, c.alpha_deg, w, true),
+            };
+            progress.note(&format!(
+                "DEM: the study's protocol (10 + 10 + 300 µs) on the recommended design, {} θ = {}°, α = {}° at {} mN, to measure the shorter protocol's difference",
+                pr.scene.name,
+                c.theta_deg,
+                c.alpha_deg,
+                label(n_to_mn(w))
+            ));
+            let o = run_batch(std::slice::from_ref(&job), 1, &store.path("dem"), progress)?;
+            entries.push((
+                pr.scene.name.clone(),
+                i + 1,
+                c.theta_deg,
+                c.alpha_deg,
+                w,
+                true,
+                0.0,
+                0.0,
+            ));
+            outcomes.extend(o);
+            dem = to_entries(&entries, &outcomes);
+        }
+    }
+    let reused = outcomes.iter().filter(|o| o.reused).count();
+    if reused > 0 {
+        progress.note(&format!(
+            "DEM: {reused} of {} runs reused (input hash matches)",
+            outcomes.len()
+        ));
+    }
+    Ok(dem)
+}
+
+/// The design and load of the study-protocol check: the answer of the first pattern whose
+/// answer the DEM confirmed (else the first pattern's answer: the report says it is not
+/// confirmed), at the middle of its design-protocol runs up to its superlubric load (the
+/// confirmed loads), else at the middle confirmation load. So the measured difference is that
+/// of the design the report recommends, at a load where the shorter protocol ran on it.
+/// `confirm_loads` in N. Returns (pattern, index into its ranking, load in N).
+pub fn protocol_check_design<'a>(
+    patterns: &'a [PatternResult],
+    answers: &[answer::Answer],
+    confirm_loads: &[f64],
+) -> Option<(&'a PatternResult, usize, f64)> {
+    let with_index = || {
+        patterns
+            .iter()
+            .zip(answers)
+            .filter_map(|(pr, a)| a.index.map(|i| (pr, i, a)))
+    };
+    let (pr, i, a) = with_index()
+        .find(|(_, _, a)| matches!(a.check, answer::Check::Confirmed(_)))
+        .or_else(|| with_index().next())?;
+    let w = match &a.check {
+        answer::Check::Confirmed(loads) if !loads.is_empty() => {
+            let mn = loads[loads.len() / 2];
+            confirm_loads
+                .iter()
+                .copied()
+                .find(|&w| label(n_to_mn(w)) == mn)?
+        }
+        _ => *confirm_loads.get(confirm_loads.len() / 2)?,
+    };
+    Some((pr, i, w))
+}
+
+/// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study).
+pub(super) fn to_entries(entries: &[ConfirmEntry], outcomes: &[SlideOutcome]) -> Vec<DemEntry> {
+    entries
+        .iter()
+        .cloned()
+        .zip(outcomes.iter().cloned())
+        .map(
+            |((pattern, rank, theta_deg, alpha_deg, load, study, dt, dd), outcome)| DemEntry {
+                pattern,
+                rank,
+                theta_deg,
+                alpha_deg,
+                load,
+                study_protocol: study,
+                theta_offset_deg: dt,
+                direction_offset_deg: dd,
+                outcome,
+            },
+        )
+        .collect()
+}
