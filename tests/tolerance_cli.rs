@@ -302,3 +302,41 @@ fn the_dem_runs_the_corners_of_the_answers_box() {
     );
     std::fs::remove_dir_all(&d).ok();
 }
+
+#[test]
+fn a_rerun_replays_the_robust_searches_without_new_estimates() {
+    let d = tmpdir("tolerance-rerun");
+    let out = d.join("r");
+    let args = [
+        "--theta-tol",
+        "1",
+        "--theta-tol-step",
+        "0.5",
+        "--direction-tol",
+        "0.5",
+    ];
+    design(&args, &out);
+    let first = std::fs::read(out.join("ranking.csv")).unwrap();
+    std::fs::remove_file(out.join("ranking.csv")).unwrap();
+    let o = bin()
+        .args(["design", "--theta", "0:30:1", "--no-dem"])
+        .args(SMALL)
+        .args(args)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let err = String::from_utf8_lossy(&o.stderr);
+    // every level replays its stored searches: no friction path is estimated again
+    let notes: Vec<&str> = err
+        .lines()
+        .filter(|l| l.contains("robust limits:"))
+        .collect();
+    assert!(!notes.is_empty(), "{err}");
+    for n in notes {
+        assert!(n.ends_with("(0 friction paths)"), "{n}");
+    }
+    assert_eq!(std::fs::read(out.join("ranking.csv")).unwrap(), first);
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -15,7 +15,7 @@ use super::{DesignParams, DesignScene};
 use crate::study::meta::Inputs;
 use crate::study::progress::Progress;
 use crate::study::rows::{label, FrictionRow};
-use crate::study::tolerance::{LimitParams, RobustSearch, RobustState, ToleranceBox};
+use crate::study::tolerance::{LimitParams, RobustSearch, RobustState, Snapshot, ToleranceBox};
 use anyhow::Result;
 use serde::{Deserialize, Serialize};
 use serde_json::json;
@@ -32,8 +32,10 @@ pub struct StoredSearch {
     pub alpha_deg: f64,
     /// Its nominal rows (the search is reused only for the same).
     pub nominal: Vec<FrictionRow>,
-    /// The search's state.
+    /// The search's latest state (every estimate made).
     pub state: RobustState,
+    /// The state after each shortlist level's robust stage: (level index, snapshot).
+    pub levels: Vec<(usize, Snapshot)>,
 }
 
 /// The stored robust searches of one pattern (`stages/<pattern>/robust.json`, written after
@@ -53,6 +55,8 @@ pub struct Searches<'a> {
     rel: String,
     inputs: Inputs,
     live: Vec<((f64, f64), RobustSearch<'a>)>,
+    /// Shortlist levels done so far in this run.
+    level: usize,
 }
 
 impl<'a> Searches<'a> {
@@ -73,7 +77,7 @@ impl<'a> Searches<'a> {
                 "direction_offsets_deg": bx.direction_offsets_deg,
                 "seeds": p.seeds,
                 "limit": super::limit_record(p),
-                "search": "best-first/v2",
+                "search": "best-first/v3",
             }),
         };
         let rel = format!("stages/{}/robust.json", ds.name);
@@ -88,6 +92,7 @@ impl<'a> Searches<'a> {
             rel,
             inputs,
             live: Vec::new(),
+            level: 0,
         })
     }
 
@@ -100,6 +105,9 @@ impl<'a> Searches<'a> {
             (s.theta_deg, s.alpha_deg) == key
                 && s.nominal == c.friction
                 && s.state.samples.len() == self.expected_samples()
+                // a state from a later level than this one would use estimates this level did
+                // not have (those levels are replayed from their snapshots instead)
+                && s.levels.iter().all(|(l, _)| *l < self.level)
         });
         let s = match old {
             Some(s) => RobustSearch::resume(
@@ -126,27 +134,68 @@ impl<'a> Searches<'a> {
         self.bx.theta_offsets_deg.len() * self.bx.direction_offsets_deg.len() * self.solvers.len()
     }
 
+    /// Restores the searches as a stored run left them after this level (so a resumed design
+    /// replays the level exactly, with no new estimate), where that run got this far.
+    fn begin_level(&mut self, ranking: &[Candidate]) {
+        let level = self.level;
+        for d in &self.stored.designs {
+            let key = (d.theta_deg, d.alpha_deg);
+            let same = ranking
+                .iter()
+                .any(|c| (c.theta_deg, c.alpha_deg) == key && c.friction == d.nominal);
+            let Some((_, snap)) = d.levels.iter().find(|(l, _)| *l == level) else {
+                continue;
+            };
+            let Some(state) = d.state.at(snap).filter(|_| same) else {
+                continue;
+            };
+            let Some(c) = ranking.iter().find(|c| (c.theta_deg, c.alpha_deg) == key) else {
+                continue;
+            };
+            let s = RobustSearch::resume(
+                self.solvers,
+                c.theta_deg,
+                c.direction_deg,
+                self.limit,
+                state,
+            );
+            match self.live.iter_mut().find(|(k, _)| *k == key) {
+                Some(x) => x.1 = s,
+                None => self.live.push((key, s)),
+            }
+        }
+    }
+
     fn save(&mut self, store: &Store, ranking: &[Candidate]) -> Result<()> {
         for (key, s) in &self.live {
             let Some(c) = ranking.iter().find(|c| (c.theta_deg, c.alpha_deg) == *key) else {
                 continue;
             };
-            let entry = StoredSearch {
-                theta_deg: key.0,
-                alpha_deg: key.1,
-                nominal: c.friction.clone(),
-                state: s.state.clone(),
-            };
+            let snap = (self.level, s.state.snapshot());
             match self
                 .stored
                 .designs
                 .iter_mut()
-                .find(|d| (d.theta_deg, d.alpha_deg) == *key)
+                .find(|d| (d.theta_deg, d.alpha_deg) == *key && d.nominal == c.friction)
             {
-                Some(d) => *d = entry,
-                None => self.stored.designs.push(entry),
+                Some(d) => {
+                    // the latest state holds every estimate (a replayed level's is a subset)
+                    if s.state.paths >= d.state.paths {
+                        d.state = s.state.clone();
+                    }
+                    d.levels.retain(|(l, _)| *l != self.level);
+                    d.levels.push(snap);
+                }
+                None => self.stored.designs.push(StoredSearch {
+                    theta_deg: key.0,
+                    alpha_deg: key.1,
+                    nominal: c.friction.clone(),
+                    state: s.state.clone(),
+                    levels: vec![snap],
+                }),
             }
         }
+        self.level += 1;
         store.save_json(&self.rel, &self.inputs, &self.stored)
     }
 }
@@ -169,6 +218,7 @@ pub fn robust_stage(
 ) -> Result<()> {
     let keep = p.confirm.max(3);
     ranking.sort_by(rank::compare);
+    searches.begin_level(ranking);
     let todo: Vec<usize> = (0..ranking.len())
         .filter(|&i| ranking[i].score.nominal_to_mn > 0.0)
         .collect();

@@ -22,9 +22,11 @@
 
 mod map;
 mod robust;
+mod snapshot;
 
 pub use map::{map, MapParams, ToleranceRow};
 pub use robust::{Offset, Robust, RobustSearch, RobustState, ToleranceBox};
+pub use snapshot::Snapshot;
 
 use super::corrugation::contact_line;
 use super::rows::{label, FrictionRow};
