@@ -15,7 +15,8 @@ use dem::{SimParams, Start};
 use std::path::PathBuf;
 use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 
-/// The study's load list (mN): 0.35 to 3.5 in steps of 0.35, and 3.86.
+/// The study's load list (mN): 0.35 to 3.5 in steps of 0.35, and 3.86, as clap's default
+/// string; [`crate::study::campaign::STUDY_LOADS_MN`] is the definition (a test checks both agree).
 pub const STUDY_LOADS: &str = "0.35,0.7,1.05,1.4,1.75,2.1,2.45,2.8,3.15,3.5,3.86";
 
 /// Options of `superlube design`.

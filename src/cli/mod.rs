@@ -134,6 +134,16 @@ mod tests {
     use super::*;
     use clap::CommandFactory;
 
+    /// The CLI's default load list (a clap default string) is the study's one definition.
+    #[test]
+    fn the_default_loads_are_the_study_loads() {
+        let v: Vec<f64> = design::STUDY_LOADS
+            .split(',')
+            .map(|x| x.parse().unwrap())
+            .collect();
+        assert_eq!(v, crate::study::campaign::STUDY_LOADS_MN.to_vec());
+    }
+
     /// `--help` explains every option: each has a help text, and each physical quantity names
     /// its unit.
     #[test]
