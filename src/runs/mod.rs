@@ -15,6 +15,7 @@ pub mod resume;
 pub mod shard;
 pub mod sink;
 pub mod slurm;
+pub mod stored;
 pub mod sweep;
 
 pub use budget::Estimate;

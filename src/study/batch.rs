@@ -23,7 +23,7 @@
 //! running` as status, and one log line per finished run.
 
 use super::dem_run::DemParams;
-use super::meta::{input_differences, scene_file, sidecar_path, Inputs, Sidecar};
+use super::meta::{scene_file, Inputs};
 use super::progress::Progress;
 use super::record;
 use super::sink::csv_bytes;
@@ -143,45 +143,9 @@ pub fn job_inputs(job: &SlideJob) -> Inputs {
     }
 }
 
-/// The finished file `path` for `inputs`: `None` when absent, only partial, or without its
-/// sidecar (interrupted between the two renames: redone); an error when its sidecar names
-/// other inputs (never mixed).
-fn finished(path: &Path, inputs: &Inputs) -> Result<Option<PathBuf>> {
-    if !path.exists() {
-        return Ok(None);
-    }
-    let s = match Sidecar::of(path) {
-        Ok(s) => s,
-        Err(_) if !sidecar_path(path).exists() => return Ok(None),
-        Err(e) => return Err(e),
-    };
-    if s.input_hash != inputs.hash() {
-        let diff = input_differences(&s.inputs(), inputs, 8);
-        bail!(
-            "{} was made with other inputs than this batch's run ({}): never mixed",
-            path.display(),
-            if diff.is_empty() {
-                format!("written by superlube {}", s.version)
-            } else {
-                diff.join("; ")
-            }
-        );
-    }
-    Ok(s.complete.then(|| path.to_path_buf()))
-}
-
-/// Reads the finished JSON file `path` (see [`finished`]).
+/// Reads the finished JSON file `path` ([`crate::runs::stored::load_json`]).
 fn load_json<T: DeserializeOwned>(path: &Path, inputs: &Inputs) -> Result<Option<T>> {
-    match finished(path, inputs)? {
-        None => Ok(None),
-        Some(p) => {
-            let text =
-                std::fs::read_to_string(&p).with_context(|| format!("reading {}", p.display()))?;
-            Ok(Some(serde_json::from_str(&text).with_context(|| {
-                format!("{} is not a run summary of this version", p.display())
-            })?))
-        }
-    }
+    crate::runs::stored::load_json(path, inputs, "this batch's run", "", "run summary")
 }
 
 /// The model facts in the `slide.json` of a finished run (`None` for a failed or missing one).

@@ -20,6 +20,9 @@ use serde::de::DeserializeOwned;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
+/// What the error of a stage made with other inputs suggests.
+const HINT: &str = "; remove it or use another --out";
+
 /// The output directory of a design.
 pub struct Store {
     dir: PathBuf,
@@ -81,45 +84,14 @@ impl Store {
     }
 
     /// The finished stage file `rel` for `inputs`: `None` when absent (or only partial); an
-    /// error when its sidecar names other inputs.
+    /// error when its sidecar names other inputs ([`crate::runs::stored::finished`]).
     pub fn finished(&self, rel: &str, inputs: &Inputs) -> Result<Option<PathBuf>> {
-        let path = self.path(rel);
-        if !path.exists() {
-            return Ok(None);
-        }
-        let s = match Sidecar::of(&path) {
-            Ok(s) => s,
-            // a stage file without its sidecar (interrupted between the two renames): redo it
-            Err(_) if !sidecar_path(&path).exists() => return Ok(None),
-            Err(e) => return Err(e),
-        };
-        if s.input_hash != inputs.hash() {
-            let diff = input_differences(&s.inputs(), inputs, 8);
-            bail!(
-                "{} was made with other inputs than this design's ({}): never mixed; remove it or use another --out",
-                path.display(),
-                if diff.is_empty() {
-                    format!("written by superlube {}", s.version)
-                } else {
-                    diff.join("; ")
-                }
-            );
-        }
-        Ok(s.complete.then_some(path))
+        crate::runs::stored::finished(&self.path(rel), inputs, "this design's", HINT)
     }
 
     /// Reads the finished JSON stage `rel` (see [`Store::finished`]).
     pub fn load_json<T: DeserializeOwned>(&self, rel: &str, inputs: &Inputs) -> Result<Option<T>> {
-        match self.finished(rel, inputs)? {
-            None => Ok(None),
-            Some(p) => {
-                let text = std::fs::read_to_string(&p)
-                    .with_context(|| format!("reading {}", p.display()))?;
-                Ok(Some(serde_json::from_str(&text).with_context(|| {
-                    format!("{} is not a stage file of this version", p.display())
-                })?))
-            }
-        }
+        crate::runs::stored::load_json(&self.path(rel), inputs, "this design's", HINT, "stage file")
     }
 
     /// Reads the finished CSV stage `rel` (see [`Store::finished`]).
