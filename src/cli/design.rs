@@ -4,7 +4,7 @@
 use super::dem_args::ModelArg;
 use super::friction_args::FrictionKnobArgs;
 use super::tolerance_args::ToleranceArgs;
-use super::{checks, parse_list_or_range, SceneArgs};
+use super::{checks, parse_list_or_range, SceneArgs, SceneOverrides};
 use crate::study::dem_run::{DemParams, ModelSpec};
 use crate::study::design::store::Store;
 use crate::study::design::{cut, design, DesignParams, DesignScene};
@@ -35,34 +35,9 @@ pub struct Args {
     /// pattern_id), as if each were given with --scene; the ranking spans all of them.
     #[arg(long, value_name = "INDEX.csv")]
     patterns: Option<PathBuf>,
-    /// Slider disc radius in µm (study: 93.5 triangular, 100 square), for every pattern.
-    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
-    slider_radius_um: Option<f64>,
-    /// Substrate rectangle size in µm, `LXxLY` (study: 364x270).
-    #[arg(long, value_name = "LXxLY", allow_hyphen_values = true)]
-    substrate_um: Option<String>,
-    /// Amplitude σ_h in µm of random substrate sphere heights (study: 0.002, 0.01).
-    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
-    sigma_h_um: Option<f64>,
-    /// Seed (a non-negative integer) of the substrate height perturbation.
-    #[arg(long, value_name = "SEED", allow_negative_numbers = true)]
-    seed: Option<u64>,
-    /// Young's modulus E in GPa (study: 100, also 50).
-    #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
-    youngs_gpa: Option<f64>,
-    /// Critical coating pressure P_crit in GPa (study: 4).
-    #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
-    p_crit_gpa: Option<f64>,
-    /// In-plane offset in µm of the slider centre from the central substrate sphere, `X,Y`
-    /// (breaks the symmetry the θ cut relies on: see --no-symmetry-cut).
-    #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
-    offset_um: Option<String>,
-    /// Slider mount: locked, free or springs (the study's anti-tilt springs) [default: springs].
-    #[arg(long, value_name = "MOUNT")]
-    tilt: Option<String>,
-    /// Anti-tilt spring stiffness K1 in N/m of `--tilt springs` (study: 1e6).
-    #[arg(long = "tilt-k1-n-m", value_name = "N_M", allow_hyphen_values = true)]
-    tilt_k1_n_m: Option<f64>,
+    /// Scene override flags, applied to every pattern and scene.
+    #[command(flatten)]
+    overrides: SceneOverrides,
     /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
     /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md).
     #[arg(
@@ -235,42 +210,11 @@ pub struct Args {
 }
 
 /// The scene flags shared by every pattern, as given (for the reproduction commands).
-fn override_flags(a: &Args) -> Vec<String> {
-    let mut v = Vec::new();
-    let mut push = |f: &str, x: Option<String>| {
-        if let Some(x) = x {
-            v.push(f.to_string());
-            v.push(x);
-        }
-    };
-    push(
-        "--slider-radius-um",
-        a.slider_radius_um.map(|x| x.to_string()),
-    );
-    push("--substrate-um", a.substrate_um.clone());
-    push("--sigma-h-um", a.sigma_h_um.map(|x| x.to_string()));
-    push("--seed", a.seed.map(|x| x.to_string()));
-    push("--youngs-gpa", a.youngs_gpa.map(|x| x.to_string()));
-    push("--p-crit-gpa", a.p_crit_gpa.map(|x| x.to_string()));
-    push("--offset-um", a.offset_um.clone());
-    push("--tilt", a.tilt.clone());
-    push("--tilt-k1-n-m", a.tilt_k1_n_m.map(|x| x.to_string()));
-    v
-}
-
 fn scene_args(a: &Args, pattern: Option<String>, scene: Option<PathBuf>) -> SceneArgs {
     SceneArgs {
         pattern,
         scene,
-        slider_radius_um: a.slider_radius_um,
-        substrate_um: a.substrate_um.clone(),
-        sigma_h_um: a.sigma_h_um,
-        seed: a.seed,
-        youngs_gpa: a.youngs_gpa,
-        p_crit_gpa: a.p_crit_gpa,
-        offset_um: a.offset_um.clone(),
-        tilt: a.tilt.clone(),
-        tilt_k1_n_m: a.tilt_k1_n_m,
+        overrides: a.overrides.clone(),
     }
 }
 
@@ -286,7 +230,7 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
         (None, true) => vec!["square-tri".into(), "tri-tri".into()],
         (None, false) => vec![],
     };
-    let extra = override_flags(a);
+    let extra = a.overrides.flags();
     for p in patterns {
         if !surrogate::scene::PATTERNS.contains(&p.as_str()) {
             bail!(

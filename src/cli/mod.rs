@@ -29,7 +29,7 @@ mod tolerance_args;
 mod value_enums;
 
 pub use crate::study::range::parse_list_or_range;
-pub use scene_args::SceneArgs;
+pub use scene_args::{SceneArgs, SceneOverrides};
 
 use crate::study::{Estimate, Sweep};
 use anyhow::Result;

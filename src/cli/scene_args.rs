@@ -18,6 +18,15 @@ pub struct SceneArgs {
     /// override it.
     #[arg(long, value_name = "FILE.toml")]
     pub scene: Option<PathBuf>,
+    /// The override flags.
+    #[command(flatten)]
+    pub overrides: SceneOverrides,
+}
+
+/// The scene override flags (every subcommand, `design` included: they apply to every pattern
+/// and scene file it designs).
+#[derive(Args, Debug, Clone, Default)]
+pub struct SceneOverrides {
     /// Slider disc radius in µm (study: 93.5 triangular, 100 square).
     #[arg(long, value_name = "UM", allow_hyphen_values = true)]
     pub slider_radius_um: Option<f64>,
@@ -38,7 +47,8 @@ pub struct SceneArgs {
     /// Critical coating pressure P_crit in GPa (study: 4).
     #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
     pub p_crit_gpa: Option<f64>,
-    /// In-plane offset in µm of the slider centre from the central substrate sphere, `X,Y`.
+    /// In-plane offset in µm of the slider centre from the central substrate sphere, `X,Y`
+    /// (breaks the symmetry `design`'s θ cut relies on: see its --no-symmetry-cut).
     #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
     pub offset_um: Option<String>,
     /// Slider mount (tilt of the control layer), obeyed by every tier: `locked` (no tilt),
@@ -49,6 +59,33 @@ pub struct SceneArgs {
     /// Anti-tilt spring stiffness K1 in N/m of `--tilt springs` (study: 1e6).
     #[arg(long = "tilt-k1-n-m", value_name = "N_M", allow_hyphen_values = true)]
     pub tilt_k1_n_m: Option<f64>,
+}
+
+impl SceneOverrides {
+    /// The flags as given on the command line (for the commands a report prints to reproduce
+    /// a result), in declaration order.
+    pub fn flags(&self) -> Vec<String> {
+        let mut v = Vec::new();
+        let mut push = |f: &str, x: Option<String>| {
+            if let Some(x) = x {
+                v.push(f.to_string());
+                v.push(x);
+            }
+        };
+        push(
+            "--slider-radius-um",
+            self.slider_radius_um.map(|x| x.to_string()),
+        );
+        push("--substrate-um", self.substrate_um.clone());
+        push("--sigma-h-um", self.sigma_h_um.map(|x| x.to_string()));
+        push("--seed", self.seed.map(|x| x.to_string()));
+        push("--youngs-gpa", self.youngs_gpa.map(|x| x.to_string()));
+        push("--p-crit-gpa", self.p_crit_gpa.map(|x| x.to_string()));
+        push("--offset-um", self.offset_um.clone());
+        push("--tilt", self.tilt.clone());
+        push("--tilt-k1-n-m", self.tilt_k1_n_m.map(|x| x.to_string()));
+        v
+    }
 }
 
 /// A validated scene and what every command must report about it.
@@ -80,14 +117,14 @@ impl SceneArgs {
             pattern: self.pattern.clone(),
             ..Default::default()
         };
-        o.slider.radius_um = self.slider_radius_um;
-        o.slider.tilt = self.tilt.clone();
-        o.slider.tilt_k1_n_m = self.tilt_k1_n_m;
-        o.substrate.sigma_h_um = self.sigma_h_um;
-        o.substrate.seed = self.seed;
-        o.material.youngs_gpa = self.youngs_gpa;
-        o.coating.p_crit_gpa = self.p_crit_gpa;
-        if let Some(s) = &self.substrate_um {
+        o.slider.radius_um = self.overrides.slider_radius_um;
+        o.slider.tilt = self.overrides.tilt.clone();
+        o.slider.tilt_k1_n_m = self.overrides.tilt_k1_n_m;
+        o.substrate.sigma_h_um = self.overrides.sigma_h_um;
+        o.substrate.seed = self.overrides.seed;
+        o.material.youngs_gpa = self.overrides.youngs_gpa;
+        o.coating.p_crit_gpa = self.overrides.p_crit_gpa;
+        if let Some(s) = &self.overrides.substrate_um {
             let parts: Vec<&str> = s.split(['x', 'X']).collect();
             if parts.len() != 2 {
                 bail!("`--substrate-um`: `{s}` must be LXxLY, e.g. 364x270");
@@ -99,7 +136,7 @@ impl SceneArgs {
             };
             o.substrate.size_um = Some([num(parts[0])?, num(parts[1])?]);
         }
-        if let Some(s) = &self.offset_um {
+        if let Some(s) = &self.overrides.offset_um {
             let v = super::parse_list_or_range(s, "--offset-um")?;
             if v.len() != 2 {
                 bail!("`--offset-um`: `{s}` must be X,Y");

@@ -81,10 +81,10 @@ pub fn run(a: Args) -> Result<()> {
         }
         let mut a = a;
         if let Some(s) = seed_list {
-            if a.dem.scene.seed.is_some() {
+            if a.dem.scene.overrides.seed.is_some() {
                 bail!("`--seeds` replaces `--seed`: give one of them");
             }
-            a.dem.scene.seed = s.first().copied();
+            a.dem.scene.overrides.seed = s.first().copied();
         }
         let (sc, params) = a.dem.setup(&a.protocol)?;
         let rep = Reporter::stderr();
@@ -119,7 +119,7 @@ fn run_batch_command(
             bail!("`{flag}` is for a single run; a batch writes each run's files under `--out-dir DIR`/runs/<name>/ and resumes by rerunning the same command");
         }
     }
-    if seed_list.is_some() && a.dem.scene.seed.is_some() {
+    if seed_list.is_some() && a.dem.scene.overrides.seed.is_some() {
         bail!("`--seeds` replaces `--seed`: give one of them");
     }
     let shard = a
@@ -142,7 +142,7 @@ fn run_batch_command(
                 for &seed in &seeds {
                     let mut sa = a.dem.scene.clone();
                     if seed.is_some() {
-                        sa.seed = seed;
+                        sa.overrides.seed = seed;
                     }
                     let sc = sa.resolve(t)?;
                     if seeds.len() > 1 && sc.scene.substrate.sigma_h == 0.0 {
