@@ -8,7 +8,7 @@
 //! 1. `superlubric_to` — the highest load W_k of the list such that the candidate is
 //!    superlubric at every load W_1 … W_k (0: not even at the lowest load) — with a fabrication
 //!    tolerance, the **robust** limit: the lowest such load over every sample of the tolerance
-//!    box ([`crate::study::tolerance::robust`]): higher is better;
+//!    box ([`crate::study::tolerance::RobustSearch`]): higher is better;
 //! 2. the window — the θ half-width, then the direction half-width, inside which the candidate
 //!    stays superlubric at its nominal limit load: wider is better (0 without tolerance);
 //! 3. `mu_worst` — the largest μ_est over those loads (over the lowest load alone when
