@@ -27,6 +27,10 @@ pub enum Tangential {
     /// History = elastic force, incremented by `−k_t(a)·v_t·dt`: a stuck contact keeps its force
     /// when its load changes (LAMMPS `mindlin_force`, `crate::model::MindlinForce`).
     MindlinForce,
+    /// History = elastic displacement, scaled by a/a_prev when the contact radius falls: a
+    /// stuck contact sheds force ∝ a² on unloading (LAMMPS `mindlin_rescale`,
+    /// `crate::model::MindlinRescale`).
+    MindlinRescale,
 }
 
 impl Tangential {
@@ -35,11 +39,12 @@ impl Tangential {
         *self == Tangential::Mindlin
     }
 
-    /// The kebab-case name (`mindlin`, `mindlin-force`).
+    /// The kebab-case name (`mindlin`, `mindlin-force`, `mindlin-rescale`).
     pub fn name(self) -> &'static str {
         match self {
             Tangential::Mindlin => "mindlin",
             Tangential::MindlinForce => "mindlin-force",
+            Tangential::MindlinRescale => "mindlin-rescale",
         }
     }
 }

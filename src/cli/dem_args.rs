@@ -64,6 +64,9 @@ pub enum TangentialArg {
     /// History = elastic force (incremental stiffness): a stuck contact keeps its force when its
     /// load changes (LAMMPS `mindlin_force`).
     MindlinForce,
+    /// History = elastic displacement, scaled down with the contact radius on unloading: a
+    /// stuck contact sheds force as a² (LAMMPS `mindlin_rescale`).
+    MindlinRescale,
 }
 
 impl TangentialArg {
@@ -72,6 +75,7 @@ impl TangentialArg {
         match self {
             TangentialArg::Mindlin => dem::Tangential::Mindlin,
             TangentialArg::MindlinForce => dem::Tangential::MindlinForce,
+            TangentialArg::MindlinRescale => dem::Tangential::MindlinRescale,
         }
     }
 }
@@ -158,7 +162,8 @@ pub struct DemArgs {
     /// Tangential history of the contacts' Mindlin spring: `mindlin` stores the elastic
     /// displacement (its force jumps with the contact radius when a stuck contact's load
     /// changes), `mindlin-force` stores the elastic force (incremental stiffness, kept until
-    /// the contact slips); LAMMPS `pair granular` conventions. Measured in
+    /// the contact slips), `mindlin-rescale` scales the displacement down with the contact
+    /// radius on unloading; LAMMPS `pair granular` conventions. Measured in
     /// docs/validation/dem-integrator.md.
     #[arg(long, value_enum, default_value_t = TangentialArg::Mindlin)]
     pub tangential: TangentialArg,

@@ -1,7 +1,8 @@
 //! [`ContactModel`]: normal + tangential + friction law of a slider–substrate sphere pair.
 
 use super::{
-    Friction, FrictionLaw, HertzNormal, Mindlin, MindlinForce, NormalModel, TangentialModel,
+    Friction, FrictionLaw, HertzNormal, Mindlin, MindlinForce, MindlinRescale, NormalModel,
+    TangentialModel,
 };
 use crate::params::Tangential;
 
@@ -75,6 +76,20 @@ impl ContactModel {
                 spring: self.tangential,
             }
             .force(xi, n, vt, nf.radius, mu * fnorm, m_eff, dt),
+            Tangential::MindlinRescale => {
+                // the previous step's separation d − v·dt gives the previous contact radius
+                let dp = [d[0] - v[0] * dt, d[1] - v[1] * dt, d[2] - v[2] * dt];
+                let delta_prev = rs - (dp[0] * dp[0] + dp[1] * dp[1] + dp[2] * dp[2]).sqrt();
+                let a_prev = if delta_prev > 0.0 {
+                    self.normal.contact_radius(delta_prev)
+                } else {
+                    0.0
+                };
+                MindlinRescale {
+                    spring: self.tangential,
+                }
+                .force(xi, n, vt, nf.radius, a_prev, mu * fnorm, m_eff, dt)
+            }
         };
         PairOut {
             force: [
@@ -98,7 +113,8 @@ mod tests {
 
     /// The `history` switch reaches the pair: a contact sheared while stuck, then unloaded
     /// (overlap halved) without sliding, keeps its tangential force with `MindlinForce` and
-    /// loses part of it with `Mindlin` (whose force follows the contact radius).
+    /// loses part of it with `Mindlin` (whose force follows the contact radius) and more with
+    /// `MindlinRescale` (whose displacement follows it too).
     #[test]
     fn the_history_switch_selects_the_tangential_sub_model() {
         let r = 1.5e-6;
@@ -113,7 +129,9 @@ mod tests {
             friction: Friction::Constant(Constant { mu: 10.0 }),
             radius_sum: 2.0 * r,
         };
-        let shear = |history| {
+        // `moving`: the unloading step comes with the normal velocity that makes it (the
+        // rescale reads the previous radius from d − v·dt)
+        let shear_with = |history, moving: bool| {
             let m = model(history);
             let mut xi = [0.0; 3];
             let (dt, m_eff) = (1e-10, 1e-14);
@@ -125,11 +143,12 @@ mod tests {
                     .force;
             }
             let loaded = f[0];
-            let unloaded = m
-                .pair([0.0, 0.0, 2.0 * r - 10e-9], [0.0; 3], &mut xi, m_eff, dt)
-                .force[0];
+            let d1 = 2.0 * r - 10e-9;
+            let v = [0.0, 0.0, if moving { (d1 - d0) / dt } else { 0.0 }];
+            let unloaded = m.pair([0.0, 0.0, d1], v, &mut xi, m_eff, dt).force[0];
             (loaded, unloaded)
         };
+        let shear = |history| shear_with(history, false);
         let (a0, a1) = shear(Tangential::Mindlin);
         let (b0, b1) = shear(Tangential::MindlinForce);
         assert!(a0 < 0.0 && (a0 / b0 - 1.0).abs() < 1e-9, "{a0} vs {b0}");
@@ -142,5 +161,14 @@ mod tests {
             (a1 / a0 - 0.5f64.sqrt()).abs() < 1e-6,
             "mindlin kept {a1} of {a0}"
         );
+        // the rescale also scales ξ by a/a_prev = 1/√2 on unloading: half the force is left
+        let (c0, c1) = shear_with(Tangential::MindlinRescale, true);
+        let (d0, d1) = shear_with(Tangential::Mindlin, true);
+        assert!((c0 / a0 - 1.0).abs() < 1e-9, "{c0} vs {a0}");
+        assert!(
+            (c1 / c0 - 0.5).abs() < 1e-6,
+            "mindlin-rescale kept {c1} of {c0}"
+        );
+        assert!((d1 / d0 - 0.5f64.sqrt()).abs() < 1e-6, "{d1} of {d0}");
     }
 }
