@@ -340,3 +340,81 @@ fn a_rerun_replays_the_robust_searches_without_new_estimates() {
     assert_eq!(std::fs::read(out.join("ranking.csv")).unwrap(), first);
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// The robust limit and the windows of `design` against the independent tolerance map of the
+/// same design sampled on the same grid: the robust limit is the map's lowest limit over the
+/// box, and each window is the largest sampled offset up to which every axis point of the map
+/// reaches the nominal limit.
+#[test]
+fn design_limit_and_windows_match_the_tolerance_map() {
+    let d = tmpdir("tolerance-window");
+    let out = d.join("r");
+    design(
+        &[
+            "--pattern",
+            "tri-tri",
+            "--theta-tol",
+            "1",
+            "--theta-tol-step",
+            "0.5",
+            "--direction-tol",
+            "0.5",
+            "--direction-tol-step",
+            "0.25",
+        ],
+        &out,
+    );
+    let r = rows(&out.join("ranking.csv"));
+    // the first exact design that its box lowers (on this scene: θ = 13°, window 0 in θ)
+    let best = r
+        .iter()
+        .find(|x| {
+            x["robust_exact"] == "true"
+                && num(x, "superlubric_to_mN") < num(x, "superlubric_to_nominal_mN")
+        })
+        .expect("a design whose tolerance box lowers its limit");
+    let map = d.join("map");
+    let o = bin()
+        .args(["tolerance", "--pattern", "tri-tri"])
+        .args(["--theta", &best["theta_deg"], "--alpha", &best["alpha_deg"]])
+        .args(SMALL)
+        .args(["--theta-range", "1", "--theta-points", "5"])
+        .args(["--direction-range", "0.5", "--direction-points", "5"])
+        .args(["--theta-tol", "1", "--direction-tol", "0.5", "--out"])
+        .arg(&map)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let m = rows(&map.join("map.csv"));
+    assert_eq!(m.len(), 25);
+    let at = |dt: f64, dd: f64| {
+        let p = m
+            .iter()
+            .find(|x| num(x, "theta_offset_deg") == dt && num(x, "direction_offset_deg") == dd)
+            .unwrap_or_else(|| panic!("no map point at {dt}, {dd}"));
+        num(p, "superlubric_to_mN")
+    };
+    let nominal = at(0.0, 0.0);
+    assert_eq!(nominal, num(best, "superlubric_to_nominal_mN"));
+    let lowest = m
+        .iter()
+        .map(|x| num(x, "superlubric_to_mN"))
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(lowest, num(best, "superlubric_to_mN"));
+    let window = |offsets: &[f64], point: &dyn Fn(f64) -> f64| {
+        let mut w = 0.0;
+        for &h in offsets {
+            if point(h) >= nominal && point(-h) >= nominal {
+                w = h;
+            } else {
+                break;
+            }
+        }
+        w
+    };
+    let wt = window(&[0.5, 1.0], &|h| at(h, 0.0));
+    let wd = window(&[0.25, 0.5], &|h| at(0.0, h));
+    assert_eq!(num(best, "theta_window_deg"), wt, "{best:?}");
+    assert_eq!(num(best, "direction_window_deg"), wd, "{best:?}");
+    std::fs::remove_dir_all(&d).ok();
+}
