@@ -116,3 +116,56 @@ fn bad_input_is_named() {
         "--patterns",
     );
 }
+
+/// `--normalize spheres`: every candidate's outline holds about the base slider's sphere count
+/// (within the step one lattice row makes), while `area` keeps the outline and lets it vary.
+#[test]
+fn normalize_spheres_gives_every_candidate_the_base_sphere_count() {
+    let count = |normalize: &str| -> Vec<(String, usize)> {
+        let dir = tmpdir(&format!("patterns-normalize-{normalize}"));
+        let out = bin()
+            .args([
+                "patterns",
+                "--family",
+                "presets:s=3:6:3",
+                "--slider-radius-um",
+                "20",
+            ])
+            .args(["--normalize", normalize, "--out"])
+            .arg(&dir)
+            .output()
+            .unwrap();
+        assert_ok(&out);
+        let index = std::fs::read_to_string(dir.join("index.csv")).unwrap();
+        let v = index
+            .lines()
+            .skip(1)
+            .map(|l| {
+                let f: Vec<&str> = l.split(',').collect();
+                (f[2].to_string(), f[5].parse().unwrap())
+            })
+            .collect();
+        std::fs::remove_dir_all(&dir).ok();
+        v
+    };
+    let area = count("area");
+    let spheres = count("spheres");
+    assert!(area.len() >= 4, "{area:?}");
+    // the base is square-tri's 3 µm square lattice: its first candidate (s = 3) keeps its count
+    let base = area
+        .iter()
+        .find(|(l, _)| l == "square")
+        .expect("a square preset")
+        .1;
+    for (l, n) in &spheres {
+        assert!(
+            (*n as f64 - base as f64).abs() <= 0.05 * base as f64,
+            "{l}: {n} spheres against the base's {base} ({spheres:?})"
+        );
+    }
+    let (lo, hi) = (
+        area.iter().map(|x| x.1).min().unwrap(),
+        area.iter().map(|x| x.1).max().unwrap(),
+    );
+    assert!(hi as f64 > 1.3 * lo as f64, "area: {area:?}");
+}

@@ -2,7 +2,7 @@
 //! `index.csv` (with sidecar).
 
 use super::{parse_list_or_range, SceneArgs};
-use crate::study::patterns::{candidate_scene, candidates, parse_family, PatternParams};
+use crate::study::patterns::{candidate_scene, candidates, parse_family, Normalize, PatternParams};
 use crate::study::{meta::scene_file, Inputs, Outputs, Progress, Reporter};
 use anyhow::{bail, Context, Result};
 use std::path::PathBuf;
@@ -29,6 +29,11 @@ pub struct Args {
     /// this multiple of the substrate's shortest one (higher orders lock more weakly).
     #[arg(long = "max-order", value_name = "X", default_value_t = 4.0)]
     max_order: f64,
+    /// What the candidates share, so that `design --patterns` compares them fairly: `area` (the
+    /// base scene's slider outline, default) or `spheres` (each outline scaled to hold the base
+    /// slider's sphere count; the index's `spheres` column gives each count).
+    #[arg(long, value_enum, default_value_t = Normalize::Area)]
+    normalize: Normalize,
     /// Output folder: DIR/<pattern_id>.toml per candidate (the base scene with the slider
     /// lattice replaced, so equal slider outline and area) and DIR/index.csv
     /// (`pattern_id,scene_file,lattice,basis,outline,spheres,commensurate_direction_deg,p_q,
@@ -59,7 +64,7 @@ pub fn run(a: Args) -> Result<()> {
     let mut files = Vec::new();
     for (k, c) in cands.iter().enumerate() {
         let id = format!("p{:0width$}", k + 1);
-        files.push(candidate_scene(&sc.scene, c, &id)?);
+        files.push(candidate_scene(&sc.scene, c, &id, a.normalize)?);
     }
     std::fs::create_dir_all(&a.out)
         .with_context(|| format!("`--out`: cannot create {}", a.out.display()))?;
@@ -72,6 +77,7 @@ pub fn run(a: Args) -> Result<()> {
                 "family": a.family,
                 "max_pq": a.max_pq,
                 "max_order": a.max_order,
+                "normalize": a.normalize.name(),
             }),
         },
         sc.warnings.clone(),

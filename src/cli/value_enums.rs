@@ -8,6 +8,7 @@ use clap::ValueEnum;
 use crate::study::campaign::Fig;
 use crate::study::corrugation::Method;
 use crate::study::figures::Group;
+use crate::study::patterns::Normalize;
 
 impl ValueEnum for Method {
     fn value_variants<'a>() -> &'a [Self] {
@@ -64,6 +65,22 @@ impl ValueEnum for Fig {
                 .help("Fig 6: square-tri θ = 0°, 10.2° at α = 0°, 90°, with the tri-tri series"),
             Fig::F7 => PossibleValue::new("7")
                 .help("Fig 7: imperfect substrates (σ_h = 0.002, 0.01 µm; E = 100, 50 GPa)"),
+        })
+    }
+}
+
+impl ValueEnum for Normalize {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[Normalize::Area, Normalize::Spheres]
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(match self {
+            Normalize::Area => {
+                PossibleValue::new("area").help("Every candidate keeps the base slider outline")
+            }
+            Normalize::Spheres => PossibleValue::new("spheres")
+                .help("Each outline scaled to hold the base slider's sphere count"),
         })
     }
 }

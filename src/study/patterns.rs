@@ -106,6 +106,27 @@ pub struct Candidate {
     pub contact: ContactType,
 }
 
+/// How the candidates of a family are made comparable (`--normalize`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Normalize {
+    /// Every candidate keeps the base scene's slider outline: the same slider area.
+    #[default]
+    Area,
+    /// Every candidate's outline is scaled so that it holds the base slider's sphere count
+    /// (the closest count its lattice allows).
+    Spheres,
+}
+
+impl Normalize {
+    /// `area` or `spheres`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Normalize::Area => "area",
+            Normalize::Spheres => "spheres",
+        }
+    }
+}
+
 /// Parses a family: `directional`, `presets[:s=3:6:0.5]`, `rectangular:a=3,b=2.6:6:0.05`,
 /// `oblique:a=3,b=3.2,gamma_deg=60:90:5`; every value a number or `start:stop:step` (µm,
 /// degrees). Errors name `--family`.
@@ -562,13 +583,15 @@ fn pair_um(v: [f64; 2]) -> String {
 }
 
 /// The scene file of candidate `c` on the base scene `base` (user units): the base with the
-/// slider lattice (and basis) replaced; outline, θ, substrate, material and coating kept, so
-/// every candidate has the base's slider area. Also its index row (`spheres` counted from the
+/// slider lattice (and basis) replaced; θ, substrate, material and coating kept; the outline
+/// kept (`Normalize::Area`: the base's slider area) or scaled to hold the base's sphere count
+/// (`Normalize::Spheres`, [`scale_to_count`]). Also its index row (`spheres` counted from the
 /// built scene). Errors name the candidate.
 pub fn candidate_scene(
     base: &Scene,
     c: &Candidate,
     id: &str,
+    normalize: Normalize,
 ) -> Result<(surrogate::SceneFile, IndexRow)> {
     let um2 = |v: [f64; 2]| {
         [
@@ -585,7 +608,12 @@ pub fn candidate_scene(
         basis_um: (!c.basis.is_empty()).then(|| c.basis.iter().map(|b| um2(*b)).collect()),
         ..Default::default()
     });
+    if normalize == Normalize::Spheres {
+        f = scale_to_count(&f, base.slider_sites_local().len())
+            .map_err(|e| anyhow::anyhow!("candidate {id}: {e}"))?;
+    }
     let scene = f
+        .clone()
         .into_scene()
         .map_err(|e| anyhow::anyhow!("candidate {id}: {e}"))?;
     let row = IndexRow {
@@ -615,6 +643,52 @@ pub fn candidate_scene(
         a2_um: pair_um(c.lattice.a2),
     };
     Ok((f, row))
+}
+
+/// The slider of `f` scaled about its centre by `k` (disc radius, outline radius, sides and
+/// vertices; the lattice is kept).
+fn scaled(f: &surrogate::SceneFile, k: f64) -> surrogate::SceneFile {
+    let mut g = f.clone();
+    g.slider.radius_um = g.slider.radius_um.map(|r| r * k);
+    if let Some(o) = &mut g.slider.outline {
+        o.radius_um = o.radius_um.map(|r| r * k);
+        o.size_um = o.size_um.map(|[w, h]| [w * k, h * k]);
+        if let Some(v) = &mut o.vertices_um {
+            for p in v.iter_mut() {
+                *p = [p[0] * k, p[1] * k];
+            }
+        }
+    }
+    g
+}
+
+/// `f` with its slider outline scaled so that it holds the sphere count closest to `target`
+/// (ties: the smaller slider). Bisection on the scale: about 40 scene builds.
+pub fn scale_to_count(f: &surrogate::SceneFile, target: usize) -> Result<surrogate::SceneFile> {
+    let count =
+        |k: f64| -> Result<usize> { Ok(scaled(f, k).into_scene()?.slider_sites_local().len()) };
+    let n1 = count(1.0)?.max(1);
+    let guess = (target as f64 / n1 as f64).sqrt();
+    // the smallest scale with at least `target` spheres, between lo (fewer) and hi (enough)
+    let (mut lo, mut hi) = (guess * 0.5, guess * 2.0);
+    if count(hi)? < target {
+        anyhow::bail!("its outline cannot hold {target} spheres at twice the estimated scale");
+    }
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if count(mid)? >= target {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let (n_lo, n_hi) = (count(lo)?, count(hi)?);
+    let k = if target - n_lo.min(target) <= n_hi - target {
+        lo
+    } else {
+        hi
+    };
+    Ok(scaled(f, k))
 }
 
 /// The scene files of an `index.csv` written by `superlube patterns` (its `scene_file` column,
