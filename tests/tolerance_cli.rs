@@ -35,28 +35,34 @@ fn num(r: &std::collections::HashMap<String, String>, k: &str) -> f64 {
     r[k].parse().unwrap_or_else(|_| panic!("{k} = {:?}", r[k]))
 }
 
-#[test]
-fn map_files_nominal_point_and_the_screen_bound() {
-    let d = tmpdir("tolerance-map");
-    let out = d.join("map");
+/// `superlube tolerance` of tri-tri at (θ, α) on the small scene into `out`: θ and direction
+/// axes as (range, points, tolerance), in degrees.
+fn tolerance_map(at: (&str, &str), theta: (&str, &str, &str), dir: (&str, &str, &str), out: &Path) {
     let o = bin()
         .args([
             "tolerance",
             "--pattern",
             "tri-tri",
             "--theta",
-            "30",
+            at.0,
             "--alpha",
-            "0",
+            at.1,
         ])
         .args(SMALL)
-        .args(["--theta-range", "0.4", "--theta-points", "5"])
-        .args(["--direction-range", "1", "--direction-points", "3"])
-        .args(["--theta-tol", "0.2", "--direction-tol", "0.5", "--out"])
-        .arg(&out)
+        .args(["--theta-range", theta.0, "--theta-points", theta.1])
+        .args(["--direction-range", dir.0, "--direction-points", dir.1])
+        .args(["--theta-tol", theta.2, "--direction-tol", dir.2, "--out"])
+        .arg(out)
         .output()
         .unwrap();
     assert_ok(&o);
+}
+
+#[test]
+fn map_files_nominal_point_and_the_screen_bound() {
+    let d = tmpdir("tolerance-map");
+    let out = d.join("map");
+    tolerance_map(("30", "0"), ("0.4", "5", "0.2"), ("1", "3", "0.5"), &out);
     for f in [
         "map.csv",
         "map.png",
@@ -374,17 +380,12 @@ fn design_limit_and_windows_match_the_tolerance_map() {
         })
         .expect("a design whose tolerance box lowers its limit");
     let map = d.join("map");
-    let o = bin()
-        .args(["tolerance", "--pattern", "tri-tri"])
-        .args(["--theta", &best["theta_deg"], "--alpha", &best["alpha_deg"]])
-        .args(SMALL)
-        .args(["--theta-range", "1", "--theta-points", "5"])
-        .args(["--direction-range", "0.5", "--direction-points", "5"])
-        .args(["--theta-tol", "1", "--direction-tol", "0.5", "--out"])
-        .arg(&map)
-        .output()
-        .unwrap();
-    assert_ok(&o);
+    tolerance_map(
+        (&best["theta_deg"], &best["alpha_deg"]),
+        ("1", "5", "1"),
+        ("0.5", "5", "0.5"),
+        &map,
+    );
     let m = rows(&map.join("map.csv"));
     assert_eq!(m.len(), 25);
     let at = |dt: f64, dd: f64| {

@@ -19,7 +19,7 @@ use crate::study::meta::{scene_file, Inputs};
 use crate::study::progress::Progress;
 use crate::study::record;
 use crate::study::rows::label;
-use anyhow::{bail, Result};
+use anyhow::Result;
 use serde_json::json;
 use surrogate::solver::Solver;
 use surrogate::units::{deg_to_rad, n_to_mn, rad_to_deg};
@@ -96,14 +96,7 @@ pub(super) fn confirm_estimates(
                 let row = match store.load_json::<crate::study::rows::FrictionRow>(&rel, &inputs)? {
                     Some(r) => r,
                     None => {
-                        if solver.is_none() {
-                            let mut sc = ds.scene.clone();
-                            sc.slider.theta = 0.0;
-                            solver = Some(Solver::new(&sc)?);
-                        }
-                        let Some(s) = solver.as_ref() else {
-                            bail!("no solver")
-                        };
+                        let s = super::solver_of(&mut solver, ds)?;
                         let line = crate::study::corrugation::contact_line(
                             &ds.scene.with_theta(theta),
                             p.line,

@@ -510,14 +510,7 @@ fn pattern(
             (level.picks.len() * per) as u64,
             "paths",
         );
-        if solver.is_none() {
-            let mut sc = ds.scene.clone();
-            sc.slider.theta = 0.0;
-            solver = Some(Solver::new(&sc)?);
-        }
-        let Some(s) = solver.as_ref() else {
-            bail!("no solver")
-        };
+        let s = solver_of(&mut solver, ds)?;
         // the level's orientations in parallel (each also parallel inside), results in order
         let done: Vec<Result<(ThetaEval, f64, bool)>> = level
             .picks
@@ -579,6 +572,17 @@ fn pattern(
         evaluated,
         ranking,
     })
+}
+
+/// The pattern's solver (slider at θ = 0, each query rotates it), built on first use in `slot`.
+/// Cost: one scene build and pair-search setup, once.
+pub(super) fn solver_of<'a>(slot: &'a mut Option<Solver>, ds: &DesignScene) -> Result<&'a Solver> {
+    if slot.is_none() {
+        let mut sc = ds.scene.clone();
+        sc.slider.theta = 0.0;
+        *slot = Some(Solver::new(&sc)?);
+    }
+    slot.as_ref().ok_or_else(|| anyhow::anyhow!("no solver"))
 }
 
 /// The tolerance box of the design's `--theta-tol` × `--direction-tol`.
