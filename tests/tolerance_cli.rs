@@ -419,3 +419,45 @@ fn design_limit_and_windows_match_the_tolerance_map() {
     assert_eq!(num(best, "direction_window_deg"), wd, "{best:?}");
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `--seeds`: the exact designs list each seed's own limit at the nominal orientation, none
+/// below the robust limit (the worst over the box and every seed).
+#[test]
+fn seeds_give_each_realisations_limit_behind_the_worst_case() {
+    let d = tmpdir("tolerance-seeds");
+    let out = d.join("s");
+    design(
+        &[
+            "--pattern",
+            "tri-tri",
+            "--theta-tol",
+            "1",
+            "--theta-tol-step",
+            "0.5",
+            "--direction-tol",
+            "0.5",
+            "--sigma-h-um",
+            "0.02",
+            "--seeds",
+            "1,2,3",
+        ],
+        &out,
+    );
+    let r = rows(&out.join("ranking.csv"));
+    let mut listed = 0;
+    for x in &r {
+        let v = &x["superlubric_to_seeds_mN"];
+        if x["robust_exact"] == "true" && num(x, "superlubric_to_mN") > 0.0 {
+            let seeds: Vec<f64> = v.split(';').map(|s| s.parse().unwrap()).collect();
+            assert_eq!(seeds.len(), 3, "{x:?}");
+            for s in seeds {
+                assert!(s >= num(x, "superlubric_to_mN"), "{x:?}");
+            }
+            listed += 1;
+        } else {
+            assert!(v.is_empty(), "{x:?}");
+        }
+    }
+    assert!(listed >= 3, "{r:?}");
+    std::fs::remove_dir_all(&d).ok();
+}

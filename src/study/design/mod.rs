@@ -782,6 +782,7 @@ mod tests {
                     intact_to_mn: 3.86,
                     mu_worst: 0.01,
                     contacts: 100.0,
+                    seed_limits_mn: None,
                 },
             })
             .collect();

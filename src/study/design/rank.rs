@@ -55,7 +55,7 @@ pub struct Candidate {
 }
 
 /// The score of a candidate (see the module docs; loads in mN).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Score {
     /// Highest load up to which the candidate is superlubric (mN; 0: none): over the whole
     /// tolerance box once [`Score::nominal_to_mn`] is set apart from it.
@@ -78,6 +78,9 @@ pub struct Score {
     pub mu_worst: f64,
     /// Path-averaged contacts at `superlubric_to` (at the lowest load when 0).
     pub contacts: f64,
+    /// With several substrate seeds, each seed's own limit at the nominal (θ, α) (mN, seed
+    /// order): the spread behind the worst case. `None`: one substrate, or not computed.
+    pub seed_limits_mn: Option<Vec<f64>>,
 }
 
 /// Whether a friction row is superlubric (see the module docs).
@@ -115,6 +118,7 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
             .map(|r| r.mu_est.unwrap_or(f64::INFINITY))
             .fold(f64::NEG_INFINITY, f64::max),
         contacts: upto.last().and_then(|r| r.contacts_mean).unwrap_or(0.0),
+        seed_limits_mn: None,
     }
 }
 
@@ -229,6 +233,10 @@ pub struct RankingRow {
     /// Whether `superlubric_to_mN` is exact; `false`: an upper bound (the robust evaluation
     /// stops once a design cannot reach the designs ranked above it, which are exact).
     pub robust_exact: bool,
+    /// With `--seeds`, each seed's own limit at the nominal (θ, α), `;`-separated in seed
+    /// order (mN): the spread behind `superlubric_to_mN`, the worst case. Empty with one
+    /// substrate, and where not computed (as the windows).
+    pub superlubric_to_seeds_mN: String,
     /// Largest μ_est up to `superlubric_to_mN` (at the lowest load when that is 0).
     pub mu_worst: f64,
     /// Path-averaged contacts at `superlubric_to_mN`.
@@ -265,6 +273,12 @@ impl RankingRow {
             direction_window_deg: c.score.direction_window_deg,
             verdict: c.score.verdict.to_string(),
             robust_exact: c.score.exact,
+            superlubric_to_seeds_mN: c.score.seed_limits_mn.as_ref().map_or(String::new(), |v| {
+                v.iter()
+                    .map(|x| x.to_string())
+                    .collect::<Vec<_>>()
+                    .join(";")
+            }),
             mu_worst: c.score.mu_worst,
             contacts_mean: c.score.contacts,
             coating_intact_to_mN: c.score.intact_to_mn,

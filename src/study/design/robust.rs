@@ -316,6 +316,28 @@ pub fn robust_stage(
             paths += searches.live[k].1.state.paths - before;
         }
     }
+    // the spread over substrate seeds, for the exact designs
+    let mut seed_limits: Vec<((f64, f64), Vec<f64>)> = Vec::new();
+    if searches.solvers.len() > 1 {
+        for &i in &todo {
+            let c = &ranking[i];
+            let (b, settled, _, _) = known(searches, c);
+            if settled && b > 0 {
+                let k = searches.index(c);
+                let before = searches.live[k].1.state.paths;
+                let v = searches.live[k].1.seed_limits()?;
+                paths += searches.live[k].1.state.paths - before;
+                let mn = |n: usize| {
+                    if n == 0 {
+                        0.0
+                    } else {
+                        label(n_to_mn(p.loads[n - 1]))
+                    }
+                };
+                seed_limits.push(((c.theta_deg, c.alpha_deg), v.into_iter().map(mn).collect()));
+            }
+        }
+    }
     // the scores
     for &i in &todo {
         let key = (ranking[i].theta_deg, ranking[i].alpha_deg);
@@ -332,6 +354,10 @@ pub fn robust_stage(
                 c.score.direction_window_deg = r.direction_window_deg;
                 c.score.verdict = r.verdict;
                 c.score.exact = r.exact;
+                c.score.seed_limits_mn = seed_limits
+                    .iter()
+                    .find(|(k, _)| *k == key)
+                    .map(|(_, v)| v.clone());
             }
             None => {
                 // never refined: its nominal limit is its bound, its windows unknown

@@ -15,6 +15,8 @@
 //! only on the estimates and the fixed sample order, so the result is the same for any thread
 //! count. Why this order: docs/validation/tolerance-cost.md.
 
+mod seeds;
+
 use super::{placement_intact, rows_at, superlubric, LimitParams};
 use crate::study::rows::{label, FrictionRow};
 use crate::study::verdict::Verdict;
