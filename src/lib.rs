@@ -7,5 +7,6 @@
 
 pub mod cli;
 pub mod plot;
+pub mod present;
 pub mod runs;
 pub mod study;

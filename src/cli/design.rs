@@ -523,6 +523,13 @@ pub fn run(a: Args) -> Result<()> {
         );
         return Ok(());
     }
+    crate::present::design_report::publish(
+        &store,
+        &crate::study::design::inputs(&scenes, &params, true),
+        &params,
+        &o,
+        &rep,
+    )?;
     let failed = o.dem.iter().filter(|d| d.outcome.error.is_some()).count();
     crate::study::Progress::note(
         &rep,

@@ -16,6 +16,7 @@
 //! μ_est ≥ 0.022 or P_max > 4.16 GPa. The measurement: docs/validation/verdict-band.md.
 //! Cost: a few comparisons.
 
+use super::batch::SlideResult;
 use super::rows::FrictionRow;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -80,6 +81,36 @@ impl fmt::Display for Verdict {
     }
 }
 
+/// The DEM's verdict on one slide run at `load_mn` (mN; for the words): `Ok` when it completed
+/// (`result`), did not lock in, kept every contact at or below P_crit (`p_crit`, Pa) at every
+/// step and measured μ_DEM < `mu_sl`; else why not (`error`: why the run failed). No band: the
+/// DEM is the reference. The one rule behind the design's answer and `dem.csv`'s
+/// `superlubric_dem`. Cost: a few comparisons.
+pub fn dem_superlubric(
+    result: Option<&SlideResult>,
+    error: Option<&str>,
+    load_mn: f64,
+    p_crit: f64,
+    mu_sl: f64,
+) -> Result<(), String> {
+    let w = load_mn;
+    match (result, error) {
+        (Some(r), _) if r.locked_in => Err(format!("locked in at {w} mN")),
+        (Some(r), _) if r.max_p_max_GPa.is_nan() || r.max_p_max_GPa > pa_to_gpa(p_crit) => {
+            Err(format!(
+                "P_max {:.3} GPa > P_crit at {w} mN (coating failed)",
+                r.max_p_max_GPa
+            ))
+        }
+        (Some(r), _) if r.mu.is_nan() || r.mu >= mu_sl => {
+            Err(format!("μ_DEM = {:.4} at {w} mN", r.mu))
+        }
+        (Some(_), _) => Ok(()),
+        (None, Some(err)) => Err(format!("the DEM run at {w} mN failed: {err}")),
+        (None, None) => Err(format!("no DEM result at {w} mN")),
+    }
+}
+
 /// The band in words, for reports and `--help`: the μ_est and P_max ranges that are borderline.
 pub fn band_words(mu_sl: f64, p_crit: f64) -> String {
     format!(
@@ -114,5 +145,29 @@ mod tests {
         assert_eq!(v(0.010, 4.2), Verdict::Not);
         assert_eq!(Verdict::of(None, Some(1e9), 0.02, 4e9), Verdict::Not);
         assert_eq!(Verdict::Borderline.to_string(), "borderline");
+    }
+
+    #[test]
+    fn a_dem_run_is_superlubric_only_below_every_threshold() {
+        let run = |mu: f64, p_gpa: f64, locked_in: bool| SlideResult {
+            friction_mN: 0.0,
+            friction_std_mN: 0.0,
+            mu,
+            mean_contacts: 3.0,
+            max_p_max_GPa: p_gpa,
+            mean_failed_contacts: 0.0,
+            locked_in,
+            advance_ratio: None,
+            steps: 1,
+            wall_s: 0.0,
+        };
+        let v = |r: &SlideResult| dem_superlubric(Some(r), None, 0.09, 4e9, 0.02);
+        assert_eq!(v(&run(0.0199, 4.0, false)), Ok(()));
+        assert!(v(&run(0.0200, 3.0, false)).unwrap_err().contains("μ_DEM"));
+        assert!(v(&run(0.01, 4.01, false)).unwrap_err().contains("P_crit"));
+        assert!(v(&run(0.01, 3.0, true)).unwrap_err().contains("locked in"));
+        assert!(v(&run(f64::NAN, 3.0, false)).is_err());
+        let failed = dem_superlubric(None, Some("blew up"), 0.09, 4e9, 0.02);
+        assert!(failed.unwrap_err().contains("failed: blew up"));
     }
 }

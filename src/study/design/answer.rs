@@ -18,7 +18,7 @@
 //! checks it at the confirmation loads up to that load and at that load itself, not in between).
 
 use super::{DemEntry, DesignParams, PatternResult};
-use surrogate::units::{n_to_mn, pa_to_gpa};
+use surrogate::units::n_to_mn;
 
 /// What the DEM says about one design.
 #[derive(Debug, Clone, PartialEq)]
@@ -44,20 +44,16 @@ pub struct Answer {
     pub others: Vec<(usize, Check)>,
 }
 
-/// `Ok` if DEM run `e` confirms superlubricity, else why not.
+/// `Ok` if DEM run `e` confirms superlubricity, else why not
+/// ([`crate::study::verdict::dem_superlubric`]).
 pub fn dem_superlubric(e: &DemEntry, p_crit: f64, mu_sl: f64) -> Result<(), String> {
-    let w = crate::study::rows::label(n_to_mn(e.load));
-    match (&e.outcome.result, &e.outcome.error) {
-        (Some(r), _) if r.locked_in => Err(format!("locked in at {w} mN")),
-        (Some(r), _) if r.max_p_max_GPa > pa_to_gpa(p_crit) => Err(format!(
-            "P_max {:.3} GPa > P_crit at {w} mN (coating failed)",
-            r.max_p_max_GPa
-        )),
-        (Some(r), _) if r.mu >= mu_sl => Err(format!("μ_DEM = {:.4} at {w} mN", r.mu)),
-        (Some(_), _) => Ok(()),
-        (None, Some(err)) => Err(format!("the DEM run at {w} mN failed: {err}")),
-        (None, None) => Err(format!("no DEM result at {w} mN")),
-    }
+    crate::study::verdict::dem_superlubric(
+        e.outcome.result.as_ref(),
+        e.outcome.error.as_deref(),
+        crate::study::rows::label(n_to_mn(e.load)),
+        p_crit,
+        mu_sl,
+    )
 }
 
 /// What the DEM runs `dem` (the design's protocol) say about the design at `rank` (1-based) of

@@ -20,8 +20,9 @@
 //!    confirmation loads, independent `slide` runs side by side, one thread each (plus, with a
 //!    protocol shorter than the study's, the design the report recommends once with the study's
 //!    protocol to measure the difference there: [`protocol_check_design`]).
-//! 7. **Outputs** ([`report`]): `report.md` (the answer first), the CSVs behind it with
-//!    sidecars, the PNGs.
+//! 7. **Outputs**: [`design`] returns the [`DesignOutcome`]; the command writes `report.md`
+//!    (the answer first), the CSVs behind it with sidecars and the PNGs from it
+//!    (`crate::present::design_report`, a layer above this one).
 //!
 //! Every stage is stored under the output directory with the inputs that made it
 //! ([`store`]): a re-run with the same `--out` reuses every finished stage and DEM run, and one
@@ -31,7 +32,6 @@ pub mod answer;
 pub mod confirm;
 pub mod params;
 pub mod rank;
-pub mod report;
 pub mod robust;
 pub mod scan;
 pub mod shortlist;
@@ -399,25 +399,13 @@ pub fn design(
             _ => None,
         });
     }
-    let outcome = DesignOutcome {
+    Ok(DesignOutcome {
         patterns,
         dem,
         dem_ran: !p.no_dem,
         answers,
         maps,
-    };
-    let rows = report::dem_rows(&outcome, p);
-    let top = label(n_to_mn(*p.loads.last().unwrap_or(&0.0)));
-    for (pr, a) in outcome.patterns.iter().zip(&outcome.answers) {
-        progress.note(
-            &report::answer_line(pr, a, &rows, p, top)
-                .replace("**", "")
-                .replacen("- ", "answer: ", 1),
-        );
-    }
-    // 7. report, CSVs, PNGs
-    report::write(store, &inputs(scenes, p, true), p, &outcome, progress)?;
-    Ok(outcome)
+    })
 }
 
 /// Stages 1–5 for one pattern.

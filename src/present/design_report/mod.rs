@@ -1,0 +1,383 @@
+//! The design's final outputs: `report.md` (the answer first), the CSVs behind it, the PNGs —
+//! each with its sidecar, each rewritten only when its bytes change. The design workflow
+//! (`crate::study::design::design`) returns its [`DesignOutcome`]; the command calls [`publish`].
+//!
+//! | file | content |
+//! |---|---|
+//! | `report.md` | the answer per pattern, how sure (DEM vs estimate), ranking, shortlist, wall times, reproduction commands: `report.md.j2` over [`ReportData`] |
+//! | `ranking.csv` | [`RankingRow`] per candidate, best first within each pattern |
+//! | `shortlist_<p>.csv` | [`ShortlistRow`] per screened θ: coating-intact load, P_max and contacts there, level, kept, evaluated |
+//! | `screen_<p>.csv` | the screen (the `screen` schema; a stage file) |
+//! | `corrugation_<p>.csv` | the α scans of the evaluated θ (the `corrugation` schema) |
+//! | `friction_<p>.csv` | the friction estimates of every candidate (the `friction` schema) |
+//! | `dem.csv` | [`DemRow`] per DEM run: μ_DEM next to μ_est |
+//! | `pmax_<p>.png`, `corrugation_<p>.png`, `mu_<p>.png` | P_max vs θ per load with P_crit; corrugation vs α of the finalists; μ vs load, surrogate lines and DEM markers ([`charts`]) |
+//!
+//! One job per file: [`rows`] (the CSV rows), [`data`] (the template's data), [`words`] (the
+//! answer sentences), [`commands`] (the reproduction commands), [`charts`], and here the writing.
+
+pub mod charts;
+pub mod commands;
+pub mod data;
+pub mod rows;
+pub mod words;
+
+pub use data::ReportData;
+pub use rows::{dem_rows, DemRow, ShortlistRow};
+
+use crate::plot::design::chart_png;
+use crate::study::design::rank::RankingRow;
+use crate::study::design::store::Store;
+use crate::study::design::{DesignOutcome, DesignParams};
+use crate::study::meta::Inputs;
+use crate::study::progress::Progress;
+use crate::study::rows::{label, CorrugationRow, FrictionRow};
+use crate::study::sink::csv_bytes;
+use crate::study::Outputs;
+use anyhow::{Context, Result};
+use charts::{corrugation_chart, mu_chart, pmax_chart};
+use minijinja::{AutoEscape, Environment, UndefinedBehavior};
+use surrogate::units::{n_to_mn, pa_to_gpa};
+use words::{answer_line, fmt_g};
+
+/// The report's template: the prose and the layout; loops and ifs over [`ReportData`] only.
+pub const TEMPLATE: &str = include_str!("report.md.j2");
+
+/// `report.md` of the outcome `o`: [`TEMPLATE`] rendered over [`ReportData::new`].
+/// Cost: one pass over the outcome, then the rendering (microseconds per line).
+pub fn markdown(o: &DesignOutcome, p: &DesignParams) -> Result<String> {
+    render(&ReportData::new(o, p))
+}
+
+/// [`TEMPLATE`] rendered over `data` (strict: a name the data lacks is an error).
+pub fn render(data: &ReportData) -> Result<String> {
+    let mut env = Environment::new();
+    env.set_trim_blocks(true);
+    env.set_lstrip_blocks(true);
+    env.set_keep_trailing_newline(true);
+    env.set_undefined_behavior(UndefinedBehavior::Strict);
+    env.set_auto_escape_callback(|_| AutoEscape::None);
+    env.add_template("report.md", TEMPLATE)
+        .context("the report template does not parse")?;
+    env.get_template("report.md")
+        .and_then(|t| t.render(data))
+        .context("rendering report.md")
+}
+
+/// The answer of each pattern as a log line (the report's answer without its Markdown).
+pub fn answer_notes(o: &DesignOutcome, p: &DesignParams) -> Vec<String> {
+    let rows = dem_rows(o, p);
+    let top = label(n_to_mn(*p.loads.last().unwrap_or(&0.0)));
+    o.patterns
+        .iter()
+        .zip(&o.answers)
+        .map(|(pr, a)| {
+            answer_line(pr, a, &rows, p, top)
+                .replace("**", "")
+                .replacen("- ", "answer: ", 1)
+        })
+        .collect()
+}
+
+/// Logs the answers through `progress`, then writes every final output ([`write()`]).
+pub fn publish(
+    store: &Store,
+    record: &Inputs,
+    p: &DesignParams,
+    o: &DesignOutcome,
+    progress: &dyn Progress,
+) -> Result<()> {
+    for line in answer_notes(o, p) {
+        progress.note(&line);
+    }
+    write(store, record, p, o, progress)
+}
+
+/// Writes every final output of the design (see the module docs).
+pub fn write(
+    store: &Store,
+    record: &Inputs,
+    p: &DesignParams,
+    o: &DesignOutcome,
+    progress: &dyn Progress,
+) -> Result<()> {
+    let mut outs = Outputs::new(record.clone(), vec![]);
+    let mut wrote = Vec::new();
+    // ranking
+    let ranking: Vec<RankingRow> = o
+        .patterns
+        .iter()
+        .flat_map(|pr| {
+            pr.ranking
+                .iter()
+                .enumerate()
+                .map(|(k, c)| RankingRow::new(k + 1, c, (p.theta_tol_deg, p.direction_tol_deg)))
+        })
+        .collect();
+    if store.write_if_changed(
+        &mut outs,
+        "ranking.csv",
+        csv_bytes(&ranking),
+        Some(ranking.len() as u64),
+    ) {
+        wrote.push("ranking.csv".to_string());
+    }
+    for pr in &o.patterns {
+        let name = &pr.scene.name;
+        // shortlist
+        let evaluated: Vec<f64> = pr.evaluated.iter().map(|e| e.eval.theta_deg).collect();
+        let kept: Vec<f64> = pr
+            .levels
+            .iter()
+            .flat_map(|l| l.picks.iter().map(|o| o.theta_deg))
+            .collect();
+        let sl: Vec<ShortlistRow> = pr
+            .orientations
+            .iter()
+            .map(|or| ShortlistRow {
+                theta_deg: or.theta_deg,
+                coating_intact_to_mN: label(n_to_mn(or.w_intact)),
+                p_max_GPa: pa_to_gpa(or.p_max),
+                contacts: or.contacts,
+                shortlisted: kept.contains(&or.theta_deg),
+                evaluated: evaluated.contains(&or.theta_deg),
+            })
+            .collect();
+        let rel = format!("shortlist_{name}.csv");
+        if store.write_if_changed(&mut outs, &rel, csv_bytes(&sl), Some(sl.len() as u64)) {
+            wrote.push(rel);
+        }
+        // corrugation scans
+        let scans: Vec<CorrugationRow> = pr
+            .evaluated
+            .iter()
+            .flat_map(|e| e.eval.scan.iter().cloned())
+            .collect();
+        let rel = format!("corrugation_{name}.csv");
+        let scans_changed =
+            store.write_if_changed(&mut outs, &rel, csv_bytes(&scans), Some(scans.len() as u64));
+        if scans_changed {
+            wrote.push(rel);
+        }
+        // friction
+        let fr: Vec<FrictionRow> = pr
+            .ranking
+            .iter()
+            .flat_map(|c| c.friction.iter().cloned())
+            .collect();
+        let rel = format!("friction_{name}.csv");
+        if store.write_if_changed(&mut outs, &rel, csv_bytes(&fr), Some(fr.len() as u64)) {
+            wrote.push(rel);
+        }
+        // PNGs (redrawn when missing or their data changed)
+        let png = |rel: &str| store.path(rel);
+        let pmax = format!("pmax_{name}.png");
+        if !png(&pmax).exists() || wrote.iter().any(|w| w == &format!("shortlist_{name}.csv")) {
+            outs.attempt(&pmax, &png(&pmax), || {
+                chart_png(&png(&pmax), &pmax_chart(pr, p))
+            });
+            wrote.push(pmax);
+        }
+        let corr = format!("corrugation_{name}.png");
+        if !png(&corr).exists() || scans_changed {
+            outs.attempt(&corr, &png(&corr), || {
+                chart_png(&png(&corr), &corrugation_chart(pr))
+            });
+            wrote.push(corr);
+        }
+    }
+    // DEM
+    let dem = dem_rows(o, p);
+    let dem_changed = o.dem_ran
+        && store.write_if_changed(
+            &mut outs,
+            "dem.csv",
+            csv_bytes(&dem),
+            Some(dem.len() as u64),
+        );
+    if dem_changed {
+        wrote.push("dem.csv".into());
+    }
+    for pr in &o.patterns {
+        let rel = format!("mu_{}.png", pr.scene.name);
+        let fr_changed = wrote
+            .iter()
+            .any(|w| w == &format!("friction_{}.csv", pr.scene.name));
+        if !store.path(&rel).exists() || fr_changed || dem_changed {
+            outs.attempt(&rel, &store.path(&rel), || {
+                chart_png(&store.path(&rel), &mu_chart(pr, &dem, p))
+            });
+            wrote.push(rel);
+        }
+    }
+    // tolerance maps around the answers
+    for (pr, m) in o.patterns.iter().zip(&o.maps) {
+        let Some(m) = m else { continue };
+        let name = &pr.scene.name;
+        let rel = format!("tolerance_{name}.csv");
+        let changed = store.write_if_changed(
+            &mut outs,
+            &rel,
+            csv_bytes(&m.rows),
+            Some(m.rows.len() as u64),
+        );
+        if changed {
+            wrote.push(rel);
+        }
+        let rel = format!("tolerance_{name}.png");
+        if !store.path(&rel).exists() || changed {
+            let title = format!(
+                "{name}: superlubric limit around the answer θ = {}°, direction {}° (box ±{}° × ±{}°)",
+                m.nominal.0,
+                fmt_g(m.nominal.1, 4),
+                p.theta_tol_deg,
+                p.direction_tol_deg
+            );
+            outs.attempt(&rel, &store.path(&rel), || {
+                crate::plot::tolerance::tolerance_png(
+                    &store.path(&rel),
+                    &title,
+                    &m.rows,
+                    m.theta_points,
+                    m.nominal,
+                    (p.theta_tol_deg, p.direction_tol_deg),
+                )
+            });
+            wrote.push(rel);
+        }
+    }
+    let md = markdown(o, p)?;
+    if store.write_if_changed(&mut outs, "report.md", Ok(md.into_bytes()), None) {
+        wrote.push("report.md".into());
+    }
+    outs.finish()?;
+    progress.note(&if wrote.is_empty() {
+        format!(
+            "{}: every output already up to date (nothing rewritten)",
+            store.dir().display()
+        )
+    } else {
+        format!("{}: wrote {}", store.dir().display(), wrote.join(", "))
+    });
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::data::*;
+    use super::render;
+
+    /// A one-pattern report's data: `dem` runs with the DEM section, `levels` shortlist levels.
+    fn small(dem: bool, levels: usize) -> ReportData {
+        let s = |v: &str| v.to_string();
+        ReportData {
+            patterns: s("square-tri, tri-tri"),
+            loads_mn: s("0.01,0.09"),
+            mu_superlubric: s("0.02"),
+            answers: vec![
+                s("- **square-tri**: θ = **10°**"),
+                s("- **tri-tri**: no design"),
+            ],
+            maps: vec![s("square-tri")],
+            dem_ran: dem,
+            dem: dem.then(|| DemSection {
+                protocol: s("equilibrate 0.1 + relax 0.05 + slide 0.3 µs at 0.1 m/s"),
+                study_protocol: false,
+                model: s("reduced"),
+                checks: vec![StudyCheck {
+                    what: s("the recommended design"),
+                    pattern: s("square-tri"),
+                    theta_deg: s("10"),
+                    alpha_deg: s("146"),
+                    load_mn: s("0.09"),
+                    measured: true,
+                    mu_short: s("0.0105"),
+                    mu_study: s("0.0100"),
+                    difference_pct: s("+5.0"),
+                    same: false,
+                    short_verdict: s("not superlubric"),
+                    study_verdict: s("superlubric"),
+                    error: String::new(),
+                }],
+                unmeasured: false,
+                rows: vec![DemLine {
+                    pattern: s("square-tri"),
+                    rank: 1,
+                    theta_deg: s("10"),
+                    alpha_deg: s("146"),
+                    corner: s("–"),
+                    load_mn: s("0.09"),
+                    protocol: s("design"),
+                    mu_est: s("0.0100"),
+                    mu_dem: s("0.0105"),
+                    ratio: s("0.949"),
+                    verdict_est: s("superlubric"),
+                    verdict_dem: s("not"),
+                    max_p_max_gpa: s("3.19"),
+                    contacts: s("3.00"),
+                    status: s("locked-in"),
+                    wall_s: s("1.00"),
+                }],
+                agree: 0,
+                judged: 1,
+                path_um: s("12"),
+                slid_um: s("30"),
+            }),
+            ranking: vec![],
+            resonance: vec![],
+            screens: vec![ScreenLine {
+                pattern: s("square-tri"),
+                symmetry: s("rotation orders 4 and 6"),
+                thetas: 16,
+                theta_first: s("0"),
+                theta_last: s("15"),
+                loads: 2,
+                levels: (0..levels)
+                    .map(|k| LevelLine {
+                        load_mn: format!("0.0{}", 9 - k),
+                        size: 9 - k,
+                        kept: 5,
+                        evaluated: k == 0,
+                    })
+                    .collect(),
+                stop: s("every level evaluated"),
+            }],
+            walls: vec![],
+            dem_wall: None,
+            reproduce: vec![],
+            slides: vec![s("superlube slide --pattern square-tri --theta 10")],
+        }
+    }
+
+    #[test]
+    fn the_template_renders_the_answer_first_and_each_branch() {
+        let md = render(&small(false, 2)).unwrap();
+        assert!(md.starts_with("# superlube design: square-tri, tri-tri\n\nLoads 0.01,0.09 mN;"));
+        assert!(md.contains(
+            "## Answer\n\n- **square-tri**: θ = **10°**\n- **tri-tri**: no design\n\n![square-tri:"
+        ));
+        assert!(
+            md.contains("\n\nNot confirmed with the DEM (`--no-dem`)."),
+            "{md}"
+        );
+        assert!(!md.contains("Confirmation protocol"));
+        assert!(md.contains(
+            "Screened 16 θ (0° … 15°) × 2 loads. Shortlist levels (coating intact up to W_c at the screened placement): 0.09 mN: 9 θ (5 kept, evaluated); 0.08 mN: 8 θ (5 kept). every level evaluated.\n\n## Wall time per tier"
+        ), "{md}");
+        assert!(md.contains("```sh\nsuperlube slide --pattern square-tri --theta 10\n```\n"));
+        assert!(md.ends_with("\"Files … and columns\".\n"), "{md}");
+        assert!(!md.contains("README"));
+        assert!(!md.contains("{{") && !md.contains("{%"));
+    }
+
+    #[test]
+    fn the_dem_section_has_the_check_and_one_row_per_run() {
+        let md = render(&small(true, 0)).unwrap();
+        assert!(md.contains("— **shorter than the study's** (model and reductions: reduced)."));
+        assert!(md.contains(": μ = 0.0105 (short) vs 0.0100 (study protocol): +5.0 %; **the DEM verdicts differ**: not superlubric (short) vs superlubric (study protocol).\n\n"), "{md}");
+        assert!(md.contains("\n| square-tri | 1 | 10 | 146 | – | 0.09 | design | 0.0100 | 0.0105 | 0.949 | superlubric / not | 3.19 | 3.00 | locked-in | 1.00 |\n\nVerdicts agree on 0 of 1 runs"), "{md}");
+        assert!(md.contains("covers 12 µm where the study's DEM slides 30 µm"));
+        assert!(md.contains("placement): none. every level"), "{md}");
+        assert!(!md.contains("Not confirmed with the DEM"));
+    }
+}

@@ -1,0 +1,271 @@
+//! The sentences of the report that depend on the outcome in more ways than a template should
+//! hold: the answer per pattern (also the final log line), its tolerance words, the protocol in
+//! words, which design a study-protocol run is on; and the number formats ([`fmt_g`]).
+
+use super::rows::{row_at, DemRow};
+use crate::study::design::answer::{Answer, Check};
+use crate::study::design::rank::Candidate;
+use crate::study::design::{DesignOutcome, DesignParams, PatternResult};
+use crate::study::rows::label;
+use std::fmt::Write as _;
+use surrogate::units::{pa_to_gpa, s_to_us};
+
+/// `v` with `digits` significant digits (plain notation from 1e-3 to 1e4).
+pub fn fmt_g(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let a = v.abs();
+    if (1e-3..1e4).contains(&a) {
+        let mag = a.log10().floor() as i32;
+        let d = (digits as i32 - 1 - mag).max(0) as usize;
+        format!("{v:.d$}")
+    } else {
+        format!("{v:.2e}")
+    }
+}
+
+pub fn opt(v: Option<f64>, digits: usize) -> String {
+    v.map_or("–".into(), |x| fmt_g(x, digits))
+}
+
+/// The protocol in words (`equilibrate 2 + relax 2 + slide 60 µs at 0.1 m/s`).
+pub fn protocol_words(p: &DesignParams) -> String {
+    let s = &p.dem.sim;
+    format!(
+        "equilibrate {} + relax {} + slide {} µs at {} m/s, friction over the last two thirds of the slide",
+        label(s_to_us(s.equilibrate_time)),
+        label(s_to_us(s.relax_time)),
+        label(s_to_us(s.slide_time)),
+        s.support_speed
+    )
+}
+
+/// The answer of one pattern as a Markdown list item (also the final log line).
+pub fn answer_line(
+    pr: &PatternResult,
+    a: &Answer,
+    dem: &[DemRow],
+    p: &DesignParams,
+    w_top: f64,
+) -> String {
+    let name = &pr.scene.name;
+    let pc = pa_to_gpa(pr.scene.scene.coating.p_crit);
+    let mut m = String::new();
+    let Some(b) = a.index.and_then(|i| pr.ranking.get(i)) else {
+        return format!(
+            "- **{name}**: no design — no orientation keeps the coating intact (P_max ≤ {pc} GPa) even at the lowest load."
+        );
+    };
+    if b.score.superlubric_to_mn == 0.0 {
+        let _ = write!(
+            m,
+            "- **{name}**: no design is superlubric even at the lowest load; the best candidate, θ = {}°, α = {}°, has μ_est = {} there (coating intact on its path up to {} mN).",
+            b.theta_deg,
+            b.alpha_deg,
+            fmt_g(b.score.mu_worst, 3),
+            b.score.intact_to_mn
+        );
+    } else {
+        let fr = row_at(b, b.score.superlubric_to_mn);
+        let _ = write!(
+            m,
+            "- **{name}**: θ = **{}°**, α = **{}°** from the contact line (pull at {}° from the substrate x axis; contact line at {}°) stays superlubric up to **{} mN**{}: μ_est ≤ {}, P_max ≤ {} GPa on the path at {} mN (P_crit = {pc} GPa), {} contacts on average; rank {} of the estimate.",
+            b.theta_deg,
+            b.alpha_deg,
+            fmt_g(b.direction_deg, 4),
+            fmt_g(b.line_deg, 4),
+            b.score.superlubric_to_mn,
+            if b.score.superlubric_to_mn == w_top {
+                " (the highest load asked)"
+            } else {
+                ""
+            },
+            fmt_g(b.score.mu_worst, 3),
+            opt(fr.and_then(|f| f.p_max_GPa), 3),
+            b.score.superlubric_to_mn,
+            fmt_g(b.score.contacts, 3),
+            a.index.unwrap_or(0) + 1
+        );
+    }
+    m.push_str(&tolerance_words(pr, b, p));
+    let runs: Vec<String> = dem
+        .iter()
+        .filter(|d| {
+            d.pattern == *name
+                && d.theta_deg == b.theta_deg
+                && d.alpha_deg == b.alpha_deg
+                && d.protocol == "design"
+        })
+        .map(|d| match d.mu_dem {
+            Some(mu) => format!(
+                "{} mN: μ_DEM = {}{}",
+                d.load_mN,
+                fmt_g(mu, 3),
+                match d.superlubric_dem {
+                    Some(true) => " (superlubric)",
+                    _ => " (not superlubric)",
+                }
+            ),
+            None => format!("{} mN: failed", d.load_mN),
+        })
+        .collect();
+    match &a.check {
+        Check::NoDem => {
+            let _ = write!(m, " Not checked with the DEM (`--no-dem`).");
+        }
+        Check::Confirmed(loads) => {
+            let _ = write!(
+                m,
+                " **Confirmed by the DEM** at {} mN ({}).",
+                loads
+                    .iter()
+                    .map(|w| format!("{w}"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                runs.join("; ")
+            );
+        }
+        Check::Contradicted(why) => {
+            let _ = write!(
+                m,
+                " **Not confirmed**: no DEM-checked design of the top {} is; this one's DEM run says {why} ({}).",
+                p.confirm,
+                runs.join("; ")
+            );
+        }
+        Check::Unchecked => {
+            let _ = write!(
+                m,
+                " Not checkable with the DEM at the confirmation loads ({}).",
+                if runs.is_empty() {
+                    "none up to its superlubric load".to_string()
+                } else {
+                    runs.join("; ")
+                }
+            );
+        }
+    }
+    let corners: Vec<&DemRow> = dem
+        .iter()
+        .filter(|d| {
+            d.pattern == *name
+                && a.index == Some(0)
+                && (d.theta_offset_deg != 0.0 || d.direction_offset_deg != 0.0)
+        })
+        .collect();
+    if !corners.is_empty() {
+        let at = |w: f64| {
+            let c: Vec<&&DemRow> = corners.iter().filter(|d| d.load_mN == w).collect();
+            let ok = c.iter().filter(|d| d.superlubric_dem == Some(true)).count();
+            format!("{ok} of {} superlubric at {w} mN", c.len())
+        };
+        let mut loads: Vec<f64> = corners.iter().map(|d| d.load_mN).collect();
+        loads.dedup();
+        let _ = write!(
+            m,
+            " DEM at the corners of the tolerance box: {}.",
+            loads.iter().map(|&w| at(w)).collect::<Vec<_>>().join("; ")
+        );
+    }
+    for (rank, c) in &a.others {
+        if let (Some(d), Check::Contradicted(why)) = (pr.ranking.get(rank - 1), c) {
+            let _ = write!(
+                m,
+                " The estimate's rank {rank} (θ = {}°, α = {}°, superlubric to {} mN by the estimate) is contradicted by the DEM: {why}.",
+                d.theta_deg, d.alpha_deg, d.score.superlubric_to_mn
+            );
+        }
+    }
+    m
+}
+
+/// The tolerance sentences of the answer `b`: the robust limit over the box and the window at
+/// the nominal limit, the verdict where borderline, and the nominal optimum where it differs.
+pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> String {
+    let within = |w: Option<f64>, step: f64| match w {
+        Some(w) if w > 0.0 => format!("±{w}°"),
+        Some(_) => format!("less than ±{step}° (the first sample)"),
+        None => "(window not computed)".to_string(),
+    };
+    let mut m = String::new();
+    let sc = &b.score;
+    if p.theta_tol_deg > 0.0 || p.direction_tol_deg > 0.0 {
+        let _ = write!(
+            m,
+            " Over the fabrication tolerance θ ±{}° × pull direction ±{}° (the pull direction stays fixed in the substrate frame when the slider is misaligned) it holds to **{} mN**",
+            p.theta_tol_deg, p.direction_tol_deg, sc.superlubric_to_mn
+        );
+        if sc.nominal_to_mn > sc.superlubric_to_mn {
+            let _ = write!(
+                m,
+                "; its nominal {} mN holds only within θ {}, direction {}.",
+                sc.nominal_to_mn,
+                within(
+                    sc.theta_window_deg,
+                    p.theta_tol_step_deg.min(p.theta_tol_deg)
+                ),
+                within(
+                    sc.direction_window_deg,
+                    p.direction_tol_step_deg.min(p.direction_tol_deg)
+                )
+            );
+        } else {
+            m.push('.');
+        }
+    }
+    if sc.superlubric_to_mn > 0.0 && sc.verdict != crate::study::verdict::Verdict::Superlubric {
+        let _ = write!(
+            m,
+            " **Borderline** at {} mN: within the estimate's measured uncertainty of a threshold ({}).",
+            sc.superlubric_to_mn,
+            crate::study::verdict::band_words(p.mu_superlubric, pr.scene.scene.coating.p_crit)
+        );
+    }
+    if let Some(n) = pr
+        .ranking
+        .iter()
+        .filter(|c| c.score.nominal_to_mn > sc.superlubric_to_mn)
+        .fold(None::<&Candidate>, |best, c| match best {
+            Some(b) if b.score.nominal_to_mn >= c.score.nominal_to_mn => Some(b),
+            _ => Some(c),
+        })
+    {
+        let _ = write!(
+            m,
+            " The nominal optimum differs: θ = {}°, α = {}° reaches {} mN only within θ {} (direction {}), {}{} mN over the tolerance.",
+            n.theta_deg,
+            n.alpha_deg,
+            n.score.nominal_to_mn,
+            within(n.score.theta_window_deg, p.theta_tol_step_deg.min(p.theta_tol_deg)),
+            within(
+                n.score.direction_window_deg,
+                p.direction_tol_step_deg.min(p.direction_tol_deg)
+            ),
+            if n.score.exact { "" } else { "≤ " },
+            n.score.superlubric_to_mn
+        );
+    }
+    m
+}
+
+/// What the study-protocol run `s` is run on, in words: the recommended design (a pattern's
+/// answer, confirmed by the DEM or not) or another design.
+pub fn which_design(o: &DesignOutcome, s: &DemRow) -> String {
+    let found = o.patterns.iter().zip(&o.answers).find_map(|(pr, a)| {
+        let c = pr.ranking.get(a.index?)?;
+        (pr.scene.name == s.pattern && c.theta_deg == s.theta_deg && c.alpha_deg == s.alpha_deg)
+            .then_some(a)
+    });
+    match found.map(|a| &a.check) {
+        Some(Check::Confirmed(_)) => format!(
+            "the recommended design ({}'s answer, confirmed by the DEM)",
+            s.pattern
+        ),
+        Some(_) => format!(
+            "the recommended design ({}'s answer; not confirmed by the DEM)",
+            s.pattern
+        ),
+        None => "a design that is not the report's answer".to_string(),
+    }
+}
