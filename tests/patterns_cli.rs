@@ -169,3 +169,47 @@ fn normalize_spheres_gives_every_candidate_the_base_sphere_count() {
     );
     assert!(hi as f64 > 1.3 * lo as f64, "area: {area:?}");
 }
+
+/// `design --patterns`: `patterns.csv` puts each candidate's geometry and the index's facts
+/// beside its best design.
+#[test]
+fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
+    let dir = tmpdir("patterns-design");
+    let small = ["--slider-radius-um", "15", "--substrate-um", "60x60"];
+    let o = bin()
+        .args(["patterns", "--family", "directional", "--max-pq", "2"])
+        .args(small)
+        .arg("--out")
+        .arg(dir.join("c"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let o = bin()
+        .args(["design", "--no-dem", "--theta", "0:30:2", "--patterns"])
+        .arg(dir.join("c/index.csv"))
+        .args(["--theta-tol", "0", "--direction-tol", "0"])
+        .args(small)
+        .args(["--load-mn", "0.01,0.03,0.06", "--out"])
+        .arg(dir.join("d"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let index = std::fs::read_to_string(dir.join("c/index.csv")).unwrap();
+    let mut r = csv::Reader::from_path(dir.join("d/patterns.csv")).unwrap();
+    let h = r.headers().unwrap().clone();
+    let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
+    assert_eq!(rows.len(), index.lines().count() - 1);
+    let col = |name: &str| h.iter().position(|c| c == name).unwrap();
+    for row in &rows {
+        assert_eq!(&row[col("contact_type")], "directional");
+        assert!(!row[col("p_q")].is_empty());
+        let spheres: f64 = row[col("spheres")].parse().unwrap();
+        let w: f64 = row[col("superlubric_to_mN")].parse().unwrap();
+        let per: f64 = row[col("load_per_sphere_uN")].parse().unwrap();
+        assert!(
+            (per - w * 1e3 / spheres).abs() <= 1e-6 * per.max(1e-9),
+            "{row:?}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -222,8 +222,10 @@ fn scene_args(a: &Args, pattern: Option<String>, scene: Option<PathBuf>) -> Scen
 fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
     let mut out: Vec<DesignScene> = Vec::new();
     let mut files = a.scene.clone();
+    let mut facts = Vec::new();
     if let Some(index) = &a.patterns {
         files.extend(crate::study::patterns::index_scenes(index)?);
+        facts = crate::study::patterns::index_facts(index)?;
     }
     let patterns: Vec<String> = match (&a.pattern, files.is_empty()) {
         (Some(p), _) => p.split(',').map(|s| s.trim().to_string()).collect(),
@@ -246,6 +248,7 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             scene: r.scene,
             flags,
             warnings: r.warnings,
+            facts: None,
         });
     }
     for f in &files {
@@ -266,11 +269,16 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
         let r = scene_args(a, None, Some(f.clone())).resolve(Some(0.0))?;
         let mut flags = vec!["--scene".to_string(), f.display().to_string()];
         flags.extend(extra.iter().cloned());
+        let facts = facts
+            .iter()
+            .find(|(id, _)| *id == name)
+            .map(|(_, f)| f.clone());
         out.push(DesignScene {
             name,
             scene: r.scene,
             flags,
             warnings: r.warnings,
+            facts,
         });
     }
     for (k, s) in out.iter().enumerate() {

@@ -691,6 +691,49 @@ pub fn scale_to_count(f: &surrogate::SceneFile, target: usize) -> Result<surroga
     Ok(scaled(f, k))
 }
 
+/// What `superlube patterns` recorded of one candidate that the scene itself does not say (the
+/// index's columns a design carries into its `patterns.csv`).
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct CandidateFacts {
+    /// `lubric`, `directional` or `interlocked`.
+    pub contact_type: String,
+    /// Period ratio `p/q` along the commensurate direction (empty when none).
+    pub p_q: String,
+    /// Commensurate direction (degrees from the substrate x axis), when there is one.
+    pub commensurate_direction_deg: Option<f64>,
+}
+
+/// The facts of every candidate of an `index.csv`, by `pattern_id`. Errors name `--patterns`.
+pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFacts)>> {
+    #[derive(serde::Deserialize)]
+    struct Row {
+        pattern_id: String,
+        #[serde(default)]
+        contact_type: String,
+        #[serde(default)]
+        p_q: String,
+        #[serde(default)]
+        commensurate_direction_deg: Option<f64>,
+    }
+    let mut r = csv::Reader::from_path(index)
+        .map_err(|e| anyhow::anyhow!("`--patterns`: cannot read {}: {e}", index.display()))?;
+    let mut out = Vec::new();
+    for (k, row) in r.deserialize::<Row>().enumerate() {
+        let row = row.map_err(|e| {
+            anyhow::anyhow!("`--patterns`: {} line {}: {e}", index.display(), k + 2)
+        })?;
+        out.push((
+            row.pattern_id,
+            CandidateFacts {
+                contact_type: row.contact_type,
+                p_q: row.p_q,
+                commensurate_direction_deg: row.commensurate_direction_deg,
+            },
+        ));
+    }
+    Ok(out)
+}
+
 /// The scene files of an `index.csv` written by `superlube patterns` (its `scene_file` column,
 /// relative to the index), in row order. Errors name `--patterns` and the line.
 pub fn index_scenes(index: &std::path::Path) -> Result<Vec<std::path::PathBuf>> {

@@ -40,6 +40,18 @@ pub fn n_to_mn(v: f64) -> f64 {
 pub fn gpa_to_pa(v: f64) -> f64 {
     v * GPA
 }
+/// Pa → kPa.
+pub fn pa_to_kpa(v: f64) -> f64 {
+    v * 1e-3
+}
+/// m² → µm².
+pub fn m2_to_um2(v: f64) -> f64 {
+    v / (UM * UM)
+}
+/// N → µN.
+pub fn n_to_un(v: f64) -> f64 {
+    v * 1e6
+}
 /// Pa → GPa.
 pub fn pa_to_gpa(v: f64) -> f64 {
     v / GPA

@@ -19,6 +19,7 @@
 pub mod charts;
 pub mod commands;
 pub mod data;
+pub mod patterns;
 pub mod rows;
 pub mod words;
 
@@ -121,6 +122,16 @@ pub fn write(
         Some(ranking.len() as u64),
     ) {
         wrote.push("ranking.csv".to_string());
+    }
+    // the patterns side by side
+    let pats = patterns::pattern_rows(o);
+    if store.write_if_changed(
+        &mut outs,
+        "patterns.csv",
+        csv_bytes(&pats),
+        Some(pats.len() as u64),
+    ) {
+        wrote.push("patterns.csv".to_string());
     }
     for pr in &o.patterns {
         let name = &pr.scene.name;

@@ -780,6 +780,7 @@ mod tests {
                 scene,
                 flags: vec![],
                 warnings: vec![],
+                facts: None,
             },
             sym,
             thetas_deg: vec![],

@@ -16,6 +16,8 @@ pub struct DesignScene {
     pub flags: Vec<String>,
     /// Warnings about the scene (edge overhang…).
     pub warnings: Vec<String>,
+    /// What `superlube patterns` recorded of it, when it comes from an `index.csv`.
+    pub facts: Option<crate::study::patterns::CandidateFacts>,
 }
 
 /// Every knob of a design (SI inside; angles as the degree decimals the user meant, so that
