@@ -211,5 +211,23 @@ fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
             "{row:?}"
         );
     }
+    // The report compares the patterns in one table: a row per pattern, its spheres beside it.
+    let report = std::fs::read_to_string(dir.join("d/report.md")).unwrap();
+    let table = report
+        .split("## Patterns compared")
+        .nth(1)
+        .expect("a 'Patterns compared' section")
+        .split("\n## ")
+        .next()
+        .unwrap();
+    for row in &rows {
+        let line = format!(
+            "| {} | {} | {} |",
+            &row[col("pattern")],
+            &row[col("outline")],
+            &row[col("spheres")]
+        );
+        assert!(table.contains(&line), "{line} not in\n{table}");
+    }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -25,6 +25,8 @@ pub struct ReportData {
     pub answers: Vec<String>,
     /// The patterns with a tolerance map around their answer (`tolerance_<p>.png`).
     pub maps: Vec<String>,
+    /// The patterns side by side (`patterns.csv`), when more than one was designed.
+    pub compared: Vec<super::patterns::PatternLine>,
     /// Whether the DEM stage ran.
     pub dem_ran: bool,
     /// The DEM comparison (when the DEM ran and had runs).
@@ -459,6 +461,14 @@ impl ReportData {
                 .filter(|(_, m)| m.is_some())
                 .map(|(pr, _)| pr.scene.name.clone())
                 .collect(),
+            compared: if o.patterns.len() > 1 {
+                super::patterns::pattern_rows(o)
+                    .iter()
+                    .map(Into::into)
+                    .collect()
+            } else {
+                Vec::new()
+            },
             dem_ran: o.dem_ran,
             dem: has_dem.then(|| dem_section(o, p, &dem)),
             ranking,

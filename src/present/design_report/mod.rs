@@ -290,6 +290,7 @@ mod tests {
                 s("- **tri-tri**: no design"),
             ],
             maps: vec![s("square-tri")],
+            compared: vec![],
             dem_ran: dem,
             dem: dem.then(|| DemSection {
                 protocol: s("equilibrate 0.1 + relax 0.05 + slide 0.3 µs at 0.1 m/s"),
@@ -379,6 +380,32 @@ mod tests {
         assert!(md.ends_with("\"Files … and columns\".\n"), "{md}");
         assert!(!md.contains("README"));
         assert!(!md.contains("{{") && !md.contains("{%"));
+        assert!(
+            !md.contains("Patterns compared") && !md.contains("\n\n\n"),
+            "{md}"
+        );
+    }
+
+    #[test]
+    fn patterns_are_compared_in_one_table_when_there_are_several() {
+        let s = |v: &str| v.to_string();
+        let mut d = small(false, 0);
+        d.compared = vec![super::patterns::PatternLine {
+            pattern: s("p001"),
+            outline: s("disc r=100"),
+            spheres: 3505,
+            slider_area_um2: s("31416"),
+            theta_deg: s("0"),
+            alpha_deg: s("90"),
+            superlubric_to_mn: s("3.86"),
+            nominal_mn: s("3.86"),
+            mean_pressure_kpa: s("123"),
+            load_per_sphere_un: s("1.10"),
+            contact_type: s("directional"),
+        }];
+        let md = render(&d).unwrap();
+        assert!(md.contains("|---|\n| p001 | disc r=100 | 3505 | 31416 | 0 | 90 | 3.86 | 3.86 | 123 | 1.10 | directional |\n\n## How sure"), "{md}");
+        assert!(!md.contains("\n\n\n"), "{md}");
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! `patterns.csv`: one row per designed pattern, its geometry beside its best design, so that
 //! patterns can be compared (and plotted against a family's parameter) at a glance.
 
+use super::words::fmt_g;
 use crate::study::design::DesignOutcome;
 use crate::study::rows::label;
 use serde::Serialize;
@@ -80,4 +81,42 @@ pub fn pattern_rows(o: &DesignOutcome) -> Vec<PatternRow> {
             }
         })
         .collect()
+}
+
+/// One row of the report's "Patterns compared" table (cells as printed).
+#[derive(Debug, Clone, Serialize)]
+pub struct PatternLine {
+    pub pattern: String,
+    pub outline: String,
+    pub spheres: usize,
+    pub slider_area_um2: String,
+    pub theta_deg: String,
+    pub alpha_deg: String,
+    pub superlubric_to_mn: String,
+    pub nominal_mn: String,
+    pub mean_pressure_kpa: String,
+    pub load_per_sphere_un: String,
+    pub contact_type: String,
+}
+
+impl From<&PatternRow> for PatternLine {
+    fn from(r: &PatternRow) -> Self {
+        PatternLine {
+            pattern: r.pattern.clone(),
+            outline: r.outline.clone(),
+            spheres: r.spheres,
+            slider_area_um2: format!("{:.0}", r.slider_area_um2),
+            theta_deg: r.theta_deg.map_or("–".into(), |v| format!("{v}")),
+            alpha_deg: r.alpha_deg.map_or("–".into(), |v| format!("{v}")),
+            superlubric_to_mn: fmt_g(r.superlubric_to_mN, 3),
+            nominal_mn: fmt_g(r.superlubric_to_nominal_mN, 3),
+            mean_pressure_kpa: fmt_g(r.mean_pressure_kPa, 3),
+            load_per_sphere_un: fmt_g(r.load_per_sphere_uN, 3),
+            contact_type: if r.contact_type.is_empty() {
+                "–".into()
+            } else {
+                r.contact_type.clone()
+            },
+        }
+    }
 }
