@@ -229,5 +229,27 @@ fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
         );
         assert!(table.contains(&line), "{line} not in\n{table}");
     }
+    // The limit against the family's parameter, and the contact maps of the best (at most 3)
+    // patterns: the ones with the highest robust limit in patterns.csv.
+    assert!(dir.join("d/patterns.png").exists());
+    assert!(table.contains("](patterns.png)"));
+    let best = rows
+        .iter()
+        .map(|r| r[col("superlubric_to_mN")].parse::<f64>().unwrap())
+        .fold(0.0, f64::max);
+    let maps: Vec<&str> = table
+        .split("](contacts_")
+        .skip(1)
+        .map(|t| t.split(".png)").next().unwrap())
+        .collect();
+    assert!(!maps.is_empty() && maps.len() <= 3, "{maps:?}");
+    let first = rows.iter().find(|r| &r[col("pattern")] == maps[0]).unwrap();
+    assert_eq!(
+        first[col("superlubric_to_mN")].parse::<f64>().unwrap(),
+        best
+    );
+    for m in &maps {
+        assert!(dir.join(format!("d/contacts_{m}.png")).exists(), "{m}");
+    }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -27,6 +27,8 @@ pub struct ReportData {
     pub maps: Vec<String>,
     /// The patterns side by side (`patterns.csv`), when more than one was designed.
     pub compared: Vec<super::patterns::PatternLine>,
+    /// The best patterns with a contact map (`contacts_<p>.png`), best first.
+    pub contact_maps: Vec<String>,
     /// Whether the DEM stage ran.
     pub dem_ran: bool,
     /// The DEM comparison (when the DEM ran and had runs).
@@ -461,6 +463,14 @@ impl ReportData {
                 .filter(|(_, m)| m.is_some())
                 .map(|(pr, _)| pr.scene.name.clone())
                 .collect(),
+            contact_maps: if o.patterns.len() > 1 {
+                crate::study::design::best::best_order(o, super::patterns::CONTACT_MAPS)
+                    .into_iter()
+                    .map(|i| o.patterns[i].scene.name.clone())
+                    .collect()
+            } else {
+                Vec::new()
+            },
             compared: if o.patterns.len() > 1 {
                 super::patterns::pattern_rows(o)
                     .iter()

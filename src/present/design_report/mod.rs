@@ -11,6 +11,7 @@
 //! | `corrugation_<p>.csv` | the α scans of the evaluated θ (the `corrugation` schema) |
 //! | `friction_<p>.csv` | the friction estimates of every candidate (the `friction` schema) |
 //! | `dem.csv` | [`DemRow`] per DEM run: μ_DEM next to μ_est |
+//! | `patterns.csv`, `patterns.png`, `contacts_<p>.png` | per pattern its geometry beside its best design; the limit against the family's parameter; the contact maps of the best three ([`patterns`]) |
 //! | `pmax_<p>.png`, `corrugation_<p>.png`, `mu_<p>.png` | P_max vs θ per load with P_crit; corrugation vs α of the finalists; μ vs load, surrogate lines and DEM markers ([`charts`]) |
 //!
 //! One job per file: [`rows`] (the CSV rows), [`data`] (the template's data), [`words`] (the
@@ -132,6 +133,9 @@ pub fn write(
         Some(pats.len() as u64),
     ) {
         wrote.push("patterns.csv".to_string());
+    }
+    if o.patterns.len() > 1 {
+        patterns::write_figures(store, &mut outs, &mut wrote, o, &pats)?;
     }
     for pr in &o.patterns {
         let name = &pr.scene.name;
@@ -291,6 +295,7 @@ mod tests {
             ],
             maps: vec![s("square-tri")],
             compared: vec![],
+            contact_maps: vec![],
             dem_ran: dem,
             dem: dem.then(|| DemSection {
                 protocol: s("equilibrate 0.1 + relax 0.05 + slide 0.3 µs at 0.1 m/s"),
@@ -403,8 +408,11 @@ mod tests {
             load_per_sphere_un: s("1.10"),
             contact_type: s("directional"),
         }];
+        d.contact_maps = vec![s("p001")];
         let md = render(&d).unwrap();
-        assert!(md.contains("|---|\n| p001 | disc r=100 | 3505 | 31416 | 0 | 90 | 3.86 | 3.86 | 123 | 1.10 | directional |\n\n## How sure"), "{md}");
+        assert!(md.contains("](patterns.png)"), "{md}");
+        assert!(md.contains("](contacts_p001.png)"), "{md}");
+        assert!(md.contains("|---|\n| p001 | disc r=100 | 3505 | 31416 | 0 | 90 | 3.86 | 3.86 | 123 | 1.10 | directional |\n\n!["), "{md}");
         assert!(!md.contains("\n\n\n"), "{md}");
     }
 

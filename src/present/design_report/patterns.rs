@@ -2,8 +2,14 @@
 //! patterns can be compared (and plotted against a family's parameter) at a glance.
 
 use super::words::fmt_g;
+use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
+use crate::plot::figures::contact_map_png;
+use crate::study::design::best::{best_contacts, best_order};
+use crate::study::design::store::Store;
 use crate::study::design::DesignOutcome;
 use crate::study::rows::label;
+use crate::study::Outputs;
+use anyhow::Result;
 use serde::Serialize;
 use surrogate::units::{m2_to_um2, m_to_um, mn_to_n, n_to_un, pa_to_kpa};
 
@@ -118,5 +124,256 @@ impl From<&PatternRow> for PatternLine {
                 r.contact_type.clone()
             },
         }
+    }
+}
+
+/// A lattice parameter of the patterns (for the chart's x axis and its series).
+struct Param {
+    label: &'static str,
+    short: &'static str,
+    unit: &'static str,
+    values: Vec<f64>,
+}
+
+impl Param {
+    /// The distinct values (rounded to 1e-6), ascending.
+    fn distinct(&self) -> Vec<f64> {
+        let mut v: Vec<f64> = self.values.iter().map(|&x| round6(x)).collect();
+        v.sort_by(f64::total_cmp);
+        v.dedup();
+        v
+    }
+}
+
+fn round6(x: f64) -> f64 {
+    (x * 1e6).round() / 1e6
+}
+
+/// Most series drawn as separate curves; beyond, every pattern is one marker.
+const MAX_SERIES: usize = 12;
+
+/// The superlubric limit of each pattern's best design against the family's parameter
+/// (`patterns.png`): x is the first slider lattice parameter that varies across the patterns —
+/// a = |a1|, b = |a2| (µm) or the angle γ between them (°) — else the sphere count. With one
+/// varying parameter, the robust and the nominal limit as two curves; with a second one, one
+/// robust curve per value of it (up to 12, else markers). Cost: one pass over the rows.
+pub fn limit_chart(o: &DesignOutcome, rows: &[PatternRow]) -> Chart {
+    let lat: Vec<([f64; 2], [f64; 2])> = o
+        .patterns
+        .iter()
+        .map(|pr| {
+            (
+                pr.scene.scene.slider.lattice.a1,
+                pr.scene.scene.slider.lattice.a2,
+            )
+        })
+        .collect();
+    chart_over(&lat, rows)
+}
+
+/// [`limit_chart`] over the slider lattice vectors (a1, a2; m) of each row.
+fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
+    let norm = |v: [f64; 2]| v[0].hypot(v[1]);
+    let params = [
+        Param {
+            label: "slider lattice a = |a1| (µm)",
+            short: "a",
+            unit: " µm",
+            values: lat.iter().map(|l| m_to_um(norm(l.0))).collect(),
+        },
+        Param {
+            label: "slider lattice b = |a2| (µm)",
+            short: "b",
+            unit: " µm",
+            values: lat.iter().map(|l| m_to_um(norm(l.1))).collect(),
+        },
+        Param {
+            label: "angle γ between a1 and a2 (°)",
+            short: "γ",
+            unit: "°",
+            values: lat
+                .iter()
+                .map(|(a, b)| {
+                    (a[0] * b[1] - a[1] * b[0])
+                        .atan2(a[0] * b[0] + a[1] * b[1])
+                        .abs()
+                        .to_degrees()
+                })
+                .collect(),
+        },
+    ];
+    let varying: Vec<&Param> = params.iter().filter(|p| p.distinct().len() > 1).collect();
+    let spheres = Param {
+        label: "slider spheres",
+        short: "spheres",
+        unit: "",
+        values: rows.iter().map(|r| r.spheres as f64).collect(),
+    };
+    let x = varying.first().copied().unwrap_or(&spheres);
+    let robust = |keep: &dyn Fn(usize) -> bool| -> Vec<(f64, f64)> {
+        let mut v: Vec<(f64, f64)> = rows
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| keep(*i))
+            .map(|(i, r)| (x.values[i], r.superlubric_to_mN))
+            .collect();
+        v.sort_by(|a, b| a.0.total_cmp(&b.0));
+        v
+    };
+    let curves = match varying.get(1) {
+        None => vec![
+            Curve {
+                name: "robust limit (over the tolerance box)".into(),
+                points: robust(&|_| true),
+                colour: Colour::Palette(0),
+                style: if varying.is_empty() {
+                    Style::Markers
+                } else {
+                    Style::LinePoints
+                },
+            },
+            Curve {
+                name: "nominal limit (θ, α exact)".into(),
+                points: {
+                    let mut v: Vec<(f64, f64)> = rows
+                        .iter()
+                        .enumerate()
+                        .map(|(i, r)| (x.values[i], r.superlubric_to_nominal_mN))
+                        .collect();
+                    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    v
+                },
+                colour: Colour::Palette(1),
+                style: if varying.is_empty() {
+                    Style::Markers
+                } else {
+                    Style::Line
+                },
+            },
+        ],
+        Some(s) if s.distinct().len() <= MAX_SERIES => {
+            let d = s.distinct();
+            let n = d.len();
+            d.iter()
+                .enumerate()
+                .map(|(k, &v)| Curve {
+                    name: format!("{} = {}{}", s.short, fmt_g(v, 4), s.unit),
+                    points: robust(&|i| round6(s.values[i]) == v),
+                    colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
+                    style: Style::LinePoints,
+                })
+                .collect()
+        }
+        Some(_) => vec![Curve {
+            name: "robust limit, one marker per pattern".into(),
+            points: robust(&|_| true),
+            colour: Colour::Palette(0),
+            style: Style::Markers,
+        }],
+    };
+    Chart {
+        title: "superlubric limit of each pattern's best design".into(),
+        x_label: x.label.into(),
+        y_label: "superlubric to (mN)".into(),
+        curves,
+        hlines: vec![],
+        log_y: false,
+    }
+}
+
+/// How many of the best patterns get a contact map (`contacts_<p>.png`).
+pub const CONTACT_MAPS: usize = 3;
+
+/// Writes `patterns.png` ([`limit_chart`]) and the contact maps of the best
+/// [`CONTACT_MAPS`] patterns ([`best_order`]) at their design's limit load, each redrawn when
+/// missing or when `patterns.csv` changed. Cost: one equilibrium per redrawn map.
+pub fn write_figures(
+    store: &Store,
+    outs: &mut Outputs,
+    wrote: &mut Vec<String>,
+    o: &DesignOutcome,
+    rows: &[PatternRow],
+) -> Result<()> {
+    let changed = wrote.iter().any(|w| w == "patterns.csv");
+    let rel = "patterns.png";
+    if changed || !store.path(rel).exists() {
+        outs.attempt(rel, &store.path(rel), || {
+            chart_png(&store.path(rel), &limit_chart(o, rows))
+        });
+        wrote.push(rel.into());
+    }
+    for i in best_order(o, CONTACT_MAPS) {
+        let rel = format!("contacts_{}.png", o.patterns[i].scene.name);
+        if changed || !store.path(&rel).exists() {
+            if let Some(b) = best_contacts(o, i)? {
+                outs.attempt(&rel, &store.path(&rel), || {
+                    contact_map_png(&store.path(&rel), &b.scene, mn_to_n(b.load_mn), &b.eq)
+                });
+                wrote.push(rel);
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(spheres: usize, w: f64) -> PatternRow {
+        PatternRow {
+            pattern: String::new(),
+            lattice_um: String::new(),
+            basis_um: String::new(),
+            outline: String::new(),
+            spheres,
+            slider_area_um2: 1.0,
+            theta_deg: None,
+            alpha_deg: None,
+            superlubric_to_mN: w,
+            superlubric_to_nominal_mN: 2.0 * w,
+            mean_pressure_kPa: 0.0,
+            load_per_sphere_uN: 0.0,
+            contact_type: String::new(),
+            p_q: String::new(),
+            commensurate_direction_deg: None,
+        }
+    }
+
+    fn rect(a_um: f64, b_um: f64) -> ([f64; 2], [f64; 2]) {
+        ([a_um * 1e-6, 0.0], [0.0, b_um * 1e-6])
+    }
+
+    #[test]
+    fn the_x_axis_is_the_varying_parameter_and_a_second_one_gives_the_series() {
+        // a varies alone: robust and nominal limits against a, sorted by a.
+        let c = chart_over(
+            &[rect(3.5, 3.0), rect(3.0, 3.0)],
+            &[row(9, 1.0), row(8, 2.0)],
+        );
+        assert!(c.x_label.contains("a = |a1|"), "{}", c.x_label);
+        assert_eq!(c.curves.len(), 2);
+        assert_eq!(c.curves[0].points, vec![(3.0, 2.0), (3.5, 1.0)]);
+        assert_eq!(c.curves[1].points, vec![(3.0, 4.0), (3.5, 2.0)]);
+        // a and b vary: one robust curve per b.
+        let lat = [
+            rect(3.0, 3.0),
+            rect(3.5, 3.0),
+            rect(3.0, 4.0),
+            rect(3.5, 4.0),
+        ];
+        let rows = [row(4, 1.0), row(3, 2.0), row(2, 3.0), row(1, 4.0)];
+        let c = chart_over(&lat, &rows);
+        assert_eq!(c.curves.len(), 2);
+        assert_eq!(c.curves[1].name, "b = 4.000 µm");
+        assert_eq!(c.curves[1].points, vec![(3.0, 3.0), (3.5, 4.0)]);
+        // only b varies: x is b.
+        let c = chart_over(&[rect(3.0, 3.0), rect(3.0, 4.0)], &rows[..2]);
+        assert!(c.x_label.contains("b = |a2|"), "{}", c.x_label);
+        // nothing varies (same vectors): markers against the sphere count.
+        let c = chart_over(&[rect(3.0, 3.0), rect(3.0, 3.0)], &rows[..2]);
+        assert_eq!(c.x_label, "slider spheres");
+        assert_eq!(c.curves[0].style, Style::Markers);
+        assert_eq!(c.curves[0].points, vec![(3.0, 2.0), (4.0, 1.0)]);
     }
 }

@@ -29,6 +29,7 @@
 //! with other inputs is refused with the differences named.
 
 pub mod answer;
+pub mod best;
 pub mod confirm;
 pub mod params;
 pub mod rank;
