@@ -46,11 +46,9 @@ pub struct Args {
     /// p_max_GPa,failed_fraction,…` (units in the names; docs/commands/friction.md), streamed
     /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent. Rows with
     /// mount_resonance = true (contacts fail and the `--tilt springs` mount's tilt mode is tuned
-    /// to the stuck contact pairs' lateral mode, tilt_pair_ratio in 0.6–1.15 (the study's mount
-    /// is at 0.89), on a substrate smoother than σ_h = 5 nm) may have mu_est as an upper bound: on
-    /// flat tri-tri 30° at 2.45–3.86 mN the DEM's friction measured 2.1–2.8× lower; roughness of
-    /// 5–10 nm takes the drop away (mu_est/mu_DEM 1.06–1.41), and so does a mount off the
-    /// resonance (0.96–1.46); docs/validation/friction.md, "The mount's resonance").
+    /// to the stuck contact pairs' lateral mode, on a smooth substrate; the run prints the band
+    /// and the measured drop when it applies) may have mu_est as an upper bound;
+    /// docs/validation/friction.md, "The mount's resonance".
     #[arg(long, value_name = "FILE.csv")]
     out: Option<PathBuf>,
     /// Run a sweep above the size limit (2·10⁶ solves) anyway; without it such a sweep is

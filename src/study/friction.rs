@@ -16,9 +16,13 @@ use super::rows::FrictionRow;
 use super::sink::RowSink;
 use anyhow::{bail, Result};
 use std::ops::Range;
-use surrogate::friction::{estimate_friction_loads, lattice_period, FrictionParams, TiltResonance};
+use surrogate::friction::{
+    estimate_friction_loads, lattice_period, FrictionParams, TiltResonance, DETUNING_SIGMA_H,
+    RESONANCE_DROP_MAX,
+};
 use surrogate::map::check_slider_stays_on_substrate;
 use surrogate::solver::Solver;
+use surrogate::units::m_to_nm;
 use surrogate::Scene;
 
 /// Parameters of a friction sweep (SI).
@@ -93,9 +97,11 @@ pub fn line_at(scene: &Scene, theta: f64, line: Option<f64>) -> LineChoice {
 pub fn resonance_note(scene: &Scene, knobs: &FrictionParams) -> Option<String> {
     let t = TiltResonance::of(scene, knobs).filter(|t| t.expected())?;
     Some(format!(
-        "{t}: where contacts fail (column mount_resonance) the DEM's friction can be up to 2.8× \
+        "{t}: where contacts fail (column mount_resonance) the DEM's friction can be up to {}× \
          below mu_est (measured on the 3 such runs of the 17-run DEM comparison; substrate \
-         roughness σ_h ≥ 5 nm detunes it; docs/validation/friction.md, \"The mount's resonance\")"
+         roughness σ_h ≥ {} nm detunes it; docs/validation/friction.md, \"The mount's resonance\")",
+        RESONANCE_DROP_MAX,
+        m_to_nm(DETUNING_SIGMA_H)
     ))
 }
 

@@ -72,6 +72,9 @@ pub struct DemSection {
     pub path_um: String,
     /// The study DEM's slide length (µm).
     pub slid_um: String,
+    /// Largest measured μ_est/μ_DEM of a mount in resonance
+    /// ([`surrogate::friction::RESONANCE_DROP_MAX`]).
+    pub resonance_drop: String,
 }
 
 /// One study-protocol run against the same run with the design's shorter protocol.
@@ -310,6 +313,7 @@ fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> DemSectio
             "{}",
             label(m_to_um(p.friction.speed * p.friction.slide_time))
         ),
+        resonance_drop: format!("{}", surrogate::friction::RESONANCE_DROP_MAX),
     }
 }
 

@@ -339,6 +339,7 @@ mod tests {
                 judged: 1,
                 path_um: s("12"),
                 slid_um: s("30"),
+                resonance_drop: s("2.8"),
             }),
             ranking: vec![],
             resonance: vec![],
@@ -423,6 +424,7 @@ mod tests {
         assert!(md.contains(": μ = 0.0105 (short) vs 0.0100 (study protocol): +5.0 %; **the DEM verdicts differ**: not superlubric (short) vs superlubric (study protocol).\n\n"), "{md}");
         assert!(md.contains("\n| square-tri | 1 | 10 | 146 | – | 0.09 | design | 0.0100 | 0.0105 | 0.949 | superlubric / not | 3.19 | 3.00 | locked-in | 1.00 |\n\nVerdicts agree on 0 of 1 runs"), "{md}");
         assert!(md.contains("covers 12 µm where the study's DEM slides 30 µm"));
+        assert!(md.contains("up to 2.8× μ_DEM measured"));
         assert!(md.contains("placement): none. every level"), "{md}");
         assert!(!md.contains("Not confirmed with the DEM"));
     }

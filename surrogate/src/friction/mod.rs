@@ -142,4 +142,5 @@ pub use params::FrictionParams;
 pub use path::lattice_period;
 pub use resonance::{
     critical_overlap, roughness_detunes, TiltResonance, DETUNING_SIGMA_H, RESONANCE_BAND,
+    RESONANCE_DROP_MAX,
 };

@@ -58,6 +58,12 @@ pub const RESONANCE_BAND: [f64; 2] = [0.6, 1.15];
 /// "Roughness detunes the resonance").
 pub const DETUNING_SIGMA_H: f64 = 5e-9;
 
+/// Largest measured ratio μ_est/μ_DEM on failed-coating rows of a mount in the band on a flat
+/// substrate: the DEM's friction 2.1–2.8× below μ_est on tri-tri 30° at 2.45–3.86 mN (the 3
+/// such runs of the 17-run DEM comparison; `docs/validation/friction.md`, "The mount's
+/// resonance"). User-facing warnings quote this constant.
+pub const RESONANCE_DROP_MAX: f64 = 2.8;
+
 /// Overlap δ_crit (m) of a slider–substrate sphere pair of `scene` whose Hertz pressure p0 is P_crit
 /// ([`crate::contact::Hertz::overlap_for_p0`]: `a = π P_crit R_eff / (2E*)`, `δ_crit = a² / R_eff`; 9.8 nm on the
 /// study's scene). O(1).
