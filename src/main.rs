@@ -17,6 +17,10 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
 
 fn main() {
     let cli = cli::Cli::parse();
+    let args: Vec<String> = std::env::args().collect();
+    for note in cli::renamed::notes(&args) {
+        eprintln!("{note}");
+    }
     if let Err(e) = cli::run(cli) {
         if is_broken_pipe(&e) {
             // The reader went away (`| head`): stop quietly, like other Unix tools.

@@ -61,7 +61,7 @@ fn scripts_say_what_slurm_needs() {
         &[
             "--shards",
             "3",
-            "--out",
+            "--out-dir",
             job.to_str().unwrap(),
             "--threads",
             "2",
@@ -122,7 +122,7 @@ fn scripts_say_what_slurm_needs() {
     let job2 = d.join("job2");
     assert_ok(&slurm(
         &s,
-        &["--shards", "7", "--out", job2.to_str().unwrap()],
+        &["--shards", "7", "--out-dir", job2.to_str().unwrap()],
     ));
     let array = read(&job2.join("array.sbatch"));
     assert!(array.contains("#SBATCH --array=0-6\n"), "{array}");
@@ -137,17 +137,17 @@ fn scripts_say_what_slurm_needs() {
     // The size guard holds per task: 3·10⁶ solves are refused in one run, but not in 4 shards.
     let big = sweep("screen", &["--theta", "0:30:0.00002", "--load-mn", "1,2"]);
     let job4 = d.join("job4");
-    let o = slurm(&big, &["--shards", "1", "--out", job4.to_str().unwrap()]);
+    let o = slurm(&big, &["--shards", "1", "--out-dir", job4.to_str().unwrap()]);
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--force"));
     assert_ok(&slurm(
         &big,
-        &["--shards", "4", "--out", job4.to_str().unwrap()],
+        &["--shards", "4", "--out-dir", job4.to_str().unwrap()],
     ));
     // slurm's options may come before the command too
     let job3 = d.join("job3");
     let o = bin()
-        .args(["slurm", "--shards", "2", "--out", job3.to_str().unwrap()])
+        .args(["slurm", "--shards", "2", "--out-dir", job3.to_str().unwrap()])
         .args(&s)
         .output()
         .unwrap();
@@ -165,7 +165,7 @@ fn submit_makes_the_merge_depend_on_the_array() {
     let s = sweep("screen", &["--theta", "0:30:1", "--load-mn", "0.01"]);
     assert_ok(&slurm(
         &s,
-        &["--shards", "2", "--out", job.to_str().unwrap()],
+        &["--shards", "2", "--out-dir", job.to_str().unwrap()],
     ));
     let fake = d.join("bin");
     std::fs::create_dir_all(&fake).unwrap();
@@ -240,7 +240,7 @@ fn tasks_run_locally_then_merge_give_the_unsharded_bytes() {
             &[
                 "--shards",
                 &n.to_string(),
-                "--out",
+                "--out-dir",
                 job.to_str().unwrap(),
                 "--threads",
                 "1",
@@ -284,7 +284,7 @@ fn bad_flags_are_refused_before_writing() {
     };
     // the sweep's own checks, with the same message as running it
     let err = refused(
-        &["screen", "--load-mn", "0", "--shards", "2", "--out", j],
+        &["screen", "--load-mn", "0", "--shards", "2", "--out-dir", j],
         &["--load-mn"],
     );
     let direct = bin().args(["screen", "--load-mn", "0"]).output().unwrap();
@@ -296,57 +296,57 @@ fn bad_flags_are_refused_before_writing() {
             "-5",
             "--shards",
             "2",
-            "--out",
+            "--out-dir",
             j,
         ],
         &["slider.radius_um"],
     );
     refused(
-        &["screen", "--bogus", "--shards", "2", "--out", j],
+        &["screen", "--bogus", "--shards", "2", "--out-dir", j],
         &["--bogus"],
     );
     refused(
-        &["landscape", "--grid", "1", "--shards", "2", "--out", j],
+        &["landscape", "--grid", "1", "--shards", "2", "--out-dir", j],
         &["--grid"],
     );
     // slurm's own flags
     let s = ["screen", "--theta", "0:30:1", "--load-mn", "0.01"];
     refused(
-        &[&s[..], &["--shards", "0", "--out", j]].concat(),
+        &[&s[..], &["--shards", "0", "--out-dir", j]].concat(),
         &["--shards"],
     );
     refused(
-        &[&s[..], &["--shards", "-1", "--out", j]].concat(),
+        &[&s[..], &["--shards", "-1", "--out-dir", j]].concat(),
         &["--shards"],
     );
     refused(
-        &[&s[..], &["--shards", "32", "--out", j]].concat(),
+        &[&s[..], &["--shards", "32", "--out-dir", j]].concat(),
         &["--shards", "31 θ"],
     );
-    refused(&[&s[..], &["--out", j]].concat(), &["--shards"]);
-    refused(&[&s[..], &["--shards", "2"]].concat(), &["--out"]);
+    refused(&[&s[..], &["--out-dir", j]].concat(), &["--shards"]);
+    refused(&[&s[..], &["--shards", "2"]].concat(), &["--out-dir"]);
     refused(
-        &[&s[..], &["--shards", "2", "--out", j, "--threads", "0"]].concat(),
+        &[&s[..], &["--shards", "2", "--out-dir", j, "--threads", "0"]].concat(),
         &["--threads"],
     );
     refused(
-        &[&s[..], &["--shards", "2", "--out", j, "--time", "1h"]].concat(),
+        &[&s[..], &["--shards", "2", "--out-dir", j, "--time", "1h"]].concat(),
         &["--time"],
     );
     refused(
-        &[&s[..], &["--shards", "2", "--out", j, "--partition", "a b"]].concat(),
+        &[&s[..], &["--shards", "2", "--out-dir", j, "--partition", "a b"]].concat(),
         &["--partition"],
     );
     refused(
-        &[&s[..], &["--shards", "2", "--shards", "3", "--out", j]].concat(),
+        &[&s[..], &["--shards", "2", "--shards", "3", "--out-dir", j]].concat(),
         &["--shards", "multiple times"],
     );
     refused(
-        &[&s[..], &["--shard", "0/2", "--shards", "2", "--out", j]].concat(),
+        &[&s[..], &["--shard", "0/2", "--shards", "2", "--out-dir", j]].concat(),
         &["--shard", "--shards N"],
     );
     refused(
-        &["slide", "--shards", "2", "--out", j],
+        &["slide", "--shards", "2", "--out-dir", j],
         &["runs sweeps: screen", "(got `slide`)"],
     );
     std::fs::remove_dir_all(&d).ok();

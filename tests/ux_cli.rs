@@ -159,3 +159,45 @@ fn help_texts() {
         }
     }
 }
+
+/// Renamed flags (one name per concept): the old names still work for a release and say so;
+/// the new names give the same output without the note.
+#[test]
+fn old_flag_names_still_work_with_a_note() {
+    let old = bin()
+        .args(["screen", "--theta", "0", "--model", "rigid-z"])
+        .args(TINY)
+        .output()
+        .unwrap();
+    assert_ok(&old);
+    let new = bin()
+        .args(["screen", "--theta", "0", "--solver", "rigid-z"])
+        .args(TINY)
+        .output()
+        .unwrap();
+    assert_ok(&new);
+    assert_eq!(old.stdout, new.stdout);
+    let note = String::from_utf8_lossy(&old.stderr);
+    assert!(
+        note.contains("`superlube screen --model` is now `--solver`"),
+        "{note}"
+    );
+    assert!(!String::from_utf8_lossy(&new.stderr).contains("note:"));
+    let dir = std::env::temp_dir().join(format!("superlube-renamed-{}", std::process::id()));
+    let o = bin()
+        .args(["patterns", "--family", "presets:s=3"])
+        .args([
+            "--slider-radius-um",
+            "9",
+            "--substrate-um",
+            "60x40",
+            "--out",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    assert!(dir.join("index.csv").exists());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("is now `--out-dir`"));
+    std::fs::remove_dir_all(&dir).ok();
+}

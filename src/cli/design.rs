@@ -1,5 +1,5 @@
 //! `superlube design`: flags → pattern scenes + [`DesignParams`] → [`crate::study::design::design`]
-//! (which writes everything under `--out`).
+//! (which writes everything under `--out-dir`).
 
 use super::dem_args::ModelArg;
 use super::friction_args::FrictionKnobArgs;
@@ -94,7 +94,8 @@ pub struct Args {
     line_deg: Option<f64>,
     /// Length in µm of each α-scan path.
     #[arg(
-        long = "scan-um",
+        long = "scan-distance-um",
+        alias = "scan-um",
         value_name = "UM",
         default_value_t = 6.0,
         allow_hyphen_values = true
@@ -152,8 +153,8 @@ pub struct Args {
     #[arg(long, value_name = "N")]
     jobs: Option<usize>,
     /// Compute only shard I of N (zero-based) of the DEM confirmation runs, e.g. on N machines
-    /// or Slurm tasks, into `--out/dem/`, and stop before the report; then run the same
-    /// command without `--shard` on one `--out` holding every shard's `dem/` runs: it reuses
+    /// or Slurm tasks, into `--out-dir`/dem/, and stop before the report; then run the same
+    /// command without `--shard` on one `--out-dir` holding every shard's `dem/` runs: it reuses
     /// them and writes the report.
     #[arg(long, value_name = "I/N")]
     shard: Option<String>,
@@ -205,7 +206,12 @@ pub struct Args {
     no_protocol_check: bool,
     /// Output directory: report.md, ranking.csv, the CSVs and PNGs behind them, dem/ (the DEM
     /// runs) and stages/ (finished stages, reused by a re-run with the same inputs).
-    #[arg(long, value_name = "DIR", default_value = "design")]
+    #[arg(
+        long = "out-dir",
+        alias = "out",
+        value_name = "DIR",
+        default_value = "design"
+    )]
     out: PathBuf,
 }
 
@@ -335,11 +341,11 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         prev = r;
     }
     let line = checks::line_deg(a.line_deg)?;
-    let scan_length = checks::positive(a.scan_um, "--scan-um").map(um_to_m)?;
+    let scan_length = checks::positive(a.scan_um, "--scan-distance-um").map(um_to_m)?;
     let scan_step = checks::positive(a.scan_step_um, "--scan-step-um").map(um_to_m)?;
     if scan_step > scan_length {
         bail!(
-            "`--scan-step-um`: {} must not exceed --scan-um {}",
+            "`--scan-step-um`: {} must not exceed --scan-distance-um {}",
             a.scan_step_um,
             a.scan_um
         );
@@ -503,7 +509,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             );
         }
     }
-    check_outputs(&[("--out", Some(&a.out.join("report.md")))])?;
+    check_outputs(&[("--out-dir", Some(&a.out.join("report.md")))])?;
     Ok((scenes, params))
 }
 

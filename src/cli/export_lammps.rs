@@ -75,14 +75,17 @@ pub struct Args {
     #[arg(long)]
     prune: bool,
     /// Output directory (created if missing): scene.data, in.superlube.lmp, README.md, export.json.
-    #[arg(long, value_name = "DIR")]
+    #[arg(long = "out-dir", alias = "out", value_name = "DIR")]
     out: PathBuf,
 }
 
 /// Runs `superlube export-lammps`.
 pub fn run(a: Args) -> Result<()> {
     if a.out.exists() && !a.out.is_dir() {
-        bail!("`--out`: {} exists and is not a directory", a.out.display());
+        bail!(
+            "`--out-dir`: {} exists and is not a directory",
+            a.out.display()
+        );
     }
     positive(a.load_mn, "--load-mn")?;
     positive(a.equilibrate_us, "--equilibrate-us")?;
@@ -132,8 +135,12 @@ pub fn run(a: Args) -> Result<()> {
     // Make sure the output directory can be made before the work; remove it again (if this run
     // made it and it is still empty) when the export fails.
     let created = !a.out.exists();
-    std::fs::create_dir_all(&a.out)
-        .with_context(|| format!("`--out`: cannot create the directory {}", a.out.display()))?;
+    std::fs::create_dir_all(&a.out).with_context(|| {
+        format!(
+            "`--out-dir`: cannot create the directory {}",
+            a.out.display()
+        )
+    })?;
     let ex = match export_lammps(&scene, &params, &opts) {
         Ok(ex) => ex,
         Err(e) => {
@@ -144,7 +151,7 @@ pub fn run(a: Args) -> Result<()> {
         }
     };
     ex.write(&a.out)
-        .with_context(|| format!("`--out`: writing into {}", a.out.display()))?;
+        .with_context(|| format!("`--out-dir`: writing into {}", a.out.display()))?;
     let m = &ex.meta;
     eprintln!(
         "export-lammps: {} LAMMPS atoms, dt = {:.4e} µs, {} steps (equilibrate {}, relax {}, slide {}), constant μ = {} → {}",

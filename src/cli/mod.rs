@@ -18,7 +18,7 @@ mod landscape;
 mod merge;
 mod patterns;
 mod protocol_args;
-
+pub mod renamed;
 mod scene_args;
 mod screen;
 mod slide;

@@ -38,7 +38,7 @@ pub struct Args {
     /// lattice replaced, so equal slider outline and area) and DIR/index.csv
     /// (`pattern_id,scene_file,lattice,basis,outline,spheres,commensurate_direction_deg,p_q,
     /// contact_line_spacing_um,contact_type,lubric_direction_deg,a1_um,a2_um`) with a sidecar.
-    #[arg(long, value_name = "DIR")]
+    #[arg(long = "out-dir", alias = "out", value_name = "DIR")]
     out: PathBuf,
 }
 
@@ -57,7 +57,10 @@ pub fn run(a: Args) -> Result<()> {
         max_order: a.max_order,
     };
     if a.out.exists() && !a.out.is_dir() {
-        bail!("`--out`: {} exists and is not a folder", a.out.display());
+        bail!(
+            "`--out-dir`: {} exists and is not a folder",
+            a.out.display()
+        );
     }
     let cands = candidates(&sc.scene, &params)?;
     let width = cands.len().to_string().len().max(3);
@@ -67,7 +70,7 @@ pub fn run(a: Args) -> Result<()> {
         files.push(candidate_scene(&sc.scene, c, &id, a.normalize)?);
     }
     std::fs::create_dir_all(&a.out)
-        .with_context(|| format!("`--out`: cannot create {}", a.out.display()))?;
+        .with_context(|| format!("`--out-dir`: cannot create {}", a.out.display()))?;
     let rep = Reporter::stderr();
     let mut outs = Outputs::new(
         Inputs {
@@ -91,7 +94,7 @@ pub fn run(a: Args) -> Result<()> {
     }
     let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"));
     outs.write(
-        "--out index",
+        "--out-dir index",
         Some(&a.out.join("index.csv")),
         bytes,
         Some(files.len() as u64),

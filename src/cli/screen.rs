@@ -43,7 +43,12 @@ pub struct Args {
     /// otherwise — σ_h > 0, an in-plane offset, the substrate edge; the `model` column says
     /// which), rigid-z (no tilt), rigid-tilt (tilts against the mount; refused for a locked
     /// mount) or compliant (also per-sphere vertical springs k_z = 1e6 N/m).
-    #[arg(long, value_name = "MODEL", default_value = "auto")]
+    #[arg(
+        long = "solver",
+        alias = "model",
+        value_name = "SOLVER",
+        default_value = "auto"
+    )]
     model: String,
     /// Candidate pair search: grid (uniform bucket grid, fastest) or bvh (parry3d
     /// bounding-volume hierarchy). Both give identical pairs.

@@ -1,4 +1,4 @@
-//! `superlube slurm <command> [its flags] --shards N --out DIR`: checks the sweep command line
+//! `superlube slurm <command> [its flags] --shards N --out-dir DIR`: checks the sweep command line
 //! exactly as running it would, then writes the Slurm scripts of [`crate::study::slurm`].
 
 use super::{prepare_sweep, Cli, SweepPlan, SWEEP_COMMANDS};
@@ -17,7 +17,7 @@ pub struct Opts {
     shards: Option<String>,
     /// Job directory: the scripts (array.sbatch, merge.sbatch, submit.sh), shards/ (the shard
     /// outputs), logs/ (Slurm's output files) and the merged CSV DIR/<command>.csv.
-    #[arg(long, value_name = "DIR")]
+    #[arg(long = "out-dir", alias = "out", value_name = "DIR")]
     out: Option<PathBuf>,
     /// CPUs per array task (`#SBATCH --cpus-per-task`), also RAYON_NUM_THREADS of the task
     /// [default: 4].
@@ -76,7 +76,13 @@ struct OptsOnly {
 fn split(words: &[String]) -> (Vec<String>, Vec<String>) {
     let longs: Vec<String> = OptsOnly::command()
         .get_arguments()
-        .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
+        .flat_map(|a| {
+            a.get_long()
+                .into_iter()
+                .chain(a.get_all_aliases().unwrap_or_default())
+                .map(|l| format!("--{l}"))
+                .collect::<Vec<_>>()
+        })
         .collect();
     let (mut own, mut rest) = (Vec::new(), Vec::new());
     let mut it = words.iter();
@@ -107,7 +113,7 @@ fn combine(a: Opts, b: Opts) -> Result<Opts> {
     }
     Ok(Opts {
         shards: one(a.shards, b.shards, "--shards")?,
-        out: one(a.out, b.out, "--out")?,
+        out: one(a.out, b.out, "--out-dir")?,
         threads: one(a.threads, b.threads, "--threads")?,
         time: one(a.time, b.time, "--time")?,
         merge_time: one(a.merge_time, b.merge_time, "--merge-time")?,
@@ -197,7 +203,7 @@ pub fn run(a: Args) -> Result<()> {
     })?;
     let o = combine(a.opts, after.opts)?;
     let Some(out) = o.out.clone() else {
-        bail!("`--out DIR` is required: the job directory for the scripts, shards, logs and the merged CSV");
+        bail!("`--out-dir DIR` is required: the job directory for the scripts, shards, logs and the merged CSV");
     };
     let Some(shards_text) = o.shards.as_deref() else {
         bail!("`--shards N` is required: the number of array tasks (shards)");
@@ -225,7 +231,10 @@ pub fn run(a: Args) -> Result<()> {
     }
     let dir = absolute(&out)?;
     if dir.exists() && !dir.is_dir() {
-        bail!("`--out`: {} exists and is not a directory", dir.display());
+        bail!(
+            "`--out-dir`: {} exists and is not a directory",
+            dir.display()
+        );
     }
     if dir
         .to_string_lossy()
@@ -233,7 +242,7 @@ pub fn run(a: Args) -> Result<()> {
         .any(|c| c.is_whitespace() || c.is_control() || c == '%')
     {
         bail!(
-            "`--out`: {} has blanks or `%`, which Slurm's #SBATCH --output lines cannot take; choose another directory",
+            "`--out-dir`: {} has blanks or `%`, which Slurm's #SBATCH --output lines cannot take; choose another directory",
             dir.display()
         );
     }
@@ -277,9 +286,9 @@ pub fn run(a: Args) -> Result<()> {
     let (_, part) = check_sweep(&task0)?;
     let files = ["array.sbatch", "merge.sbatch", "submit.sh"].map(|f| dir.join(f));
     check_outputs(&[
-        ("--out", Some(&files[0])),
-        ("--out (merge.sbatch)", Some(&files[1])),
-        ("--out (submit.sh)", Some(&files[2])),
+        ("--out-dir", Some(&files[0])),
+        ("--out-dir (merge.sbatch)", Some(&files[1])),
+        ("--out-dir (submit.sh)", Some(&files[2])),
     ])?;
     let est = part.estimate.seconds_on(threads);
     let time = o
@@ -327,7 +336,7 @@ pub fn run(a: Args) -> Result<()> {
         vec![],
     );
     for (path, text) in files.iter().zip([&j.array, &j.merge, &j.submit]) {
-        outs.write("--out", Some(path), Ok(text.clone().into_bytes()), None);
+        outs.write("--out-dir", Some(path), Ok(text.clone().into_bytes()), None);
         #[cfg(unix)]
         {
             use std::os::unix::fs::PermissionsExt;

@@ -85,7 +85,7 @@ pub struct Args {
     /// direction_deg, offsets, superlubric_to_mN, confident_to_mN, limited_by, …) and map.png
     /// (heat map of superlubric_to_mN with the nominal point and the tolerance box), each with a
     /// .meta.json sidecar.
-    #[arg(long, value_name = "DIR")]
+    #[arg(long = "out-dir", alias = "out", value_name = "DIR")]
     out: PathBuf,
 }
 
@@ -150,8 +150,8 @@ pub fn run(a: Args) -> Result<()> {
     let csv = a.out.join("map.csv");
     let png = a.out.join("map.png");
     std::fs::create_dir_all(&a.out)
-        .map_err(|e| anyhow::anyhow!("`--out`: cannot create {}: {e}", a.out.display()))?;
-    check_outputs(&[("--out", Some(&csv)), ("--out", Some(&png))])?;
+        .map_err(|e| anyhow::anyhow!("`--out-dir`: cannot create {}: {e}", a.out.display()))?;
+    check_outputs(&[("--out-dir", Some(&csv)), ("--out-dir", Some(&png))])?;
     let mut scene0 = sc.scene.clone();
     scene0.slider.theta = 0.0;
     let solver = Solver::new(&scene0)?;
@@ -201,7 +201,7 @@ pub fn run(a: Args) -> Result<()> {
         sc.warnings.clone(),
     );
     outs.write(
-        "--out",
+        "--out-dir",
         Some(&csv),
         csv_bytes(&rows),
         Some(rows.len() as u64),
@@ -230,7 +230,7 @@ pub fn run(a: Args) -> Result<()> {
             "–".into()
         }
     );
-    outs.attempt("--out", &png, || {
+    outs.attempt("--out-dir", &png, || {
         tolerance_png(
             &png,
             &title,

@@ -13,7 +13,7 @@
 //! | landscape | [`landscape::landscape`] | [`landscape::LandscapeParams`] | [`rows::LandscapeRow`] stream + [`landscape::LandscapeStats`] |
 //! | corrugation | [`corrugation::corrugation`] | [`corrugation::CorrugationParams`] | [`rows::CorrugationRow`] stream + contact line |
 //! | friction | [`friction::friction`] | [`friction::FrictionSweepParams`] | [`rows::FrictionRow`] stream |
-//! | design | [`design::design`] | [`design::DesignParams`] | [`design::DesignOutcome`]; `report.md`, CSVs, PNGs under `--out` written from it by `crate::present::design_report` |
+//! | design | [`design::design`] | [`design::DesignParams`] | [`design::DesignOutcome`]; `report.md`, CSVs, PNGs under `--out-dir` written from it by `crate::present::design_report` |
 //! | figures | [`figures::figures`] | [`figures::FiguresParams`] | one [`figures::Figure`] at a time |
 //! | equilibrate | [`equilibrate::equilibrate`] | [`dem_run::DemParams`] | time series + [`rows::EquilibrateReport`] |
 //! | slide | [`slide::slide`] | [`dem_run::DemParams`] | time series + [`rows::SlideReport`] |

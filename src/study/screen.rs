@@ -69,7 +69,7 @@ pub fn screen(
     let mut solver = Solver::new(scene)?;
     solver
         .check_model(p.model)
-        .map_err(|e| anyhow::anyhow!("`--model`: {e}"))?;
+        .map_err(|e| anyhow::anyhow!("`--solver`: {e}"))?;
     solver.search = p.search;
     let mut stats = ScreenStats::default();
     progress.stage("screen", p.thetas.len() as u64, "θ");

@@ -25,7 +25,7 @@
 //!    (`crate::present::design_report`, a layer above this one).
 //!
 //! Every stage is stored under the output directory with the inputs that made it
-//! ([`store`]): a re-run with the same `--out` reuses every finished stage and DEM run, and one
+//! ([`store`]): a re-run with the same `--out-dir` reuses every finished stage and DEM run, and one
 //! with other inputs is refused with the differences named.
 
 pub mod answer;
@@ -336,7 +336,7 @@ pub fn design(
     store: &Store,
     progress: &dyn Progress,
 ) -> Result<DesignOutcome> {
-    if store.claim(&inputs(scenes, p, false), "--out")? {
+    if store.claim(&inputs(scenes, p, false), "--out-dir")? {
         progress.note(&format!(
             "{}: a design of the same inputs is there: finished stages are reused",
             store.dir().display()

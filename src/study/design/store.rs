@@ -6,7 +6,7 @@
 //! inputs the stage would run with now; a stage file whose sidecar names other inputs is never
 //! used nor overwritten silently: the run stops with an error naming the file and the inputs
 //! that differ. The whole design's inputs are recorded first in `design.json`
-//! ([`Store::claim`]), so a re-run with other inputs and the same `--out` is refused before
+//! ([`Store::claim`]), so a re-run with other inputs and the same `--out-dir` is refused before
 //! any work.
 //!
 //! Final outputs (report, ranking, CSVs behind the plots, PNGs) are rewritten only when their
