@@ -137,7 +137,10 @@ fn scripts_say_what_slurm_needs() {
     // The size guard holds per task: 3·10⁶ solves are refused in one run, but not in 4 shards.
     let big = sweep("screen", &["--theta", "0:30:0.00002", "--load-mn", "1,2"]);
     let job4 = d.join("job4");
-    let o = slurm(&big, &["--shards", "1", "--out-dir", job4.to_str().unwrap()]);
+    let o = slurm(
+        &big,
+        &["--shards", "1", "--out-dir", job4.to_str().unwrap()],
+    );
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("--force"));
     assert_ok(&slurm(
@@ -147,7 +150,13 @@ fn scripts_say_what_slurm_needs() {
     // slurm's options may come before the command too
     let job3 = d.join("job3");
     let o = bin()
-        .args(["slurm", "--shards", "2", "--out-dir", job3.to_str().unwrap()])
+        .args([
+            "slurm",
+            "--shards",
+            "2",
+            "--out-dir",
+            job3.to_str().unwrap(),
+        ])
         .args(&s)
         .output()
         .unwrap();
@@ -334,7 +343,11 @@ fn bad_flags_are_refused_before_writing() {
         &["--time"],
     );
     refused(
-        &[&s[..], &["--shards", "2", "--out-dir", j, "--partition", "a b"]].concat(),
+        &[
+            &s[..],
+            &["--shards", "2", "--out-dir", j, "--partition", "a b"],
+        ]
+        .concat(),
         &["--partition"],
     );
     refused(

@@ -8,6 +8,7 @@ mod mount;
 mod pattern;
 #[allow(clippy::module_inception)]
 mod scene;
+mod to_file;
 
 pub use file::{
     CoatingFile, LatticeFile, MaterialFile, OutlineFile, SceneFile, SliderFile, SubstrateFile,
@@ -19,3 +20,4 @@ pub use pattern::{
     check_basis, min_site_distance, rebased, sites_in_outline, Geometry, Outline, SiteList,
 };
 pub use scene::{lattice_name, Scene, SliderSpec, SubstrateSpec, PATTERNS};
+pub use to_file::scene_file;
