@@ -524,7 +524,9 @@ pub fn run(a: Args) -> Result<()> {
     }
     let t0 = std::time::Instant::now();
     let store = Store::new(&a.out);
-    let o = design(&scenes, &params, &store, &rep)?;
+    let record = crate::study::design::inputs(&scenes, &params, true);
+    let files = crate::present::design_report::Writer::new(&store, &record, &params);
+    let o = design(&scenes, &params, &store, &rep, &|pr| files.pattern(pr))?;
     if !params.dem_shard.is_all() {
         crate::study::Progress::note(
             &rep,
@@ -537,13 +539,7 @@ pub fn run(a: Args) -> Result<()> {
         );
         return Ok(());
     }
-    crate::present::design_report::publish(
-        &store,
-        &crate::study::design::inputs(&scenes, &params, true),
-        &params,
-        &o,
-        &rep,
-    )?;
+    crate::present::design_report::publish(files, &o, &rep)?;
     let failed = o.dem.iter().filter(|d| d.outcome.error.is_some()).count();
     crate::study::Progress::note(
         &rep,
@@ -560,3 +556,7 @@ pub fn run(a: Args) -> Result<()> {
     );
     Ok(())
 }
+
+#[cfg(test)]
+#[path = "design_tests.rs"]
+mod tests;

@@ -4,11 +4,13 @@
 
 use super::rows::DemRow;
 use crate::plot::design::{Chart, Colour, Curve, Style};
+use crate::study::design::trim::CHART_DESIGNS;
 use crate::study::design::{DesignParams, PatternResult};
 use crate::study::rows::label;
 use surrogate::units::{n_to_mn, pa_to_gpa};
 
-/// P_max versus θ, one curve per load (viridis), P_crit dashed.
+/// P_max versus θ, one curve per load (viridis), P_crit dashed. Needs the screen rows: drawn
+/// before the pattern is trimmed.
 pub fn pmax_chart(pr: &PatternResult, p: &DesignParams) -> Chart {
     let n = p.loads.len();
     let curves = p
@@ -50,7 +52,8 @@ pub fn pmax_chart(pr: &PatternResult, p: &DesignParams) -> Chart {
     }
 }
 
-/// Corrugation versus α of the finalists (the top 5 distinct θ of the ranking).
+/// Corrugation versus α of the finalists (the top 5 distinct θ of the ranking). Needs the α
+/// scans: drawn before the pattern is trimmed.
 pub fn corrugation_chart(pr: &PatternResult) -> Chart {
     let mut thetas: Vec<f64> = Vec::new();
     for c in &pr.ranking {
@@ -94,11 +97,12 @@ pub fn corrugation_chart(pr: &PatternResult) -> Chart {
     }
 }
 
-/// μ versus load: the surrogate estimate of the top 5 designs (lines) and the DEM runs
-/// (markers), the superlubric limit dashed.
+/// μ versus load: the surrogate estimate of the top 5 designs ([`CHART_DESIGNS`]: they keep
+/// their friction rows in a trimmed pattern) as lines and the DEM runs as markers, the
+/// superlubric limit dashed.
 pub fn mu_chart(pr: &PatternResult, dem: &[DemRow], p: &DesignParams) -> Chart {
     let mut curves = Vec::new();
-    for (k, c) in pr.ranking.iter().take(5).enumerate() {
+    for (k, c) in pr.ranking.iter().take(CHART_DESIGNS).enumerate() {
         curves.push(Curve {
             name: format!(
                 "#{} θ = {}°, α = {}°: μ_est",

@@ -78,12 +78,7 @@ pub fn screen_command(pr: &PatternResult, p: &DesignParams) -> String {
 
 /// `superlube corrugation …` reproducing the α scan of the evaluated θ `e`.
 pub fn corrugation_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) -> String {
-    let alphas: Vec<String> = e
-        .eval
-        .scan
-        .iter()
-        .map(|r| format!("{}", r.alpha_deg))
-        .collect();
+    let alphas: Vec<String> = e.scan_alphas_deg.iter().map(|a| format!("{a}")).collect();
     format!(
         "superlube corrugation {} --theta {} --load-mn {} --alpha {} --distance-um {} --step-um {}{}",
         flags(pr),

@@ -352,11 +352,7 @@ impl ReportData {
             .patterns
             .iter()
             .filter_map(|pr| {
-                let flagged = pr
-                    .ranking
-                    .iter()
-                    .filter(|c| c.friction.iter().any(|r| r.mount_resonance == Some(true)))
-                    .count();
+                let flagged = pr.resonance_flagged;
                 let note = resonance_note(&pr.scene.scene, &p.friction)?;
                 (flagged > 0).then(|| ResonanceLine {
                     pattern: pr.scene.name.clone(),
@@ -405,9 +401,9 @@ impl ReportData {
                 loads: p.loads.len(),
                 screen_s: opt(pr.screen_wall_s, 3),
                 evaluated: pr.evaluated.len(),
-                scan_paths: pr.evaluated.iter().map(|e| e.eval.scan.len()).sum(),
+                scan_paths: pr.evaluated.iter().map(|e| e.scan_alphas_deg.len()).sum(),
                 friction_paths: pr.evaluated.iter().map(|e| e.eval.alphas_deg.len()).sum(),
-                estimates: pr.evaluated.iter().map(|e| e.eval.friction.len()).sum(),
+                estimates: pr.evaluated.iter().map(|e| e.estimates).sum(),
                 evaluation_s: fmt_g(pr.evaluated.iter().map(|e| e.wall_s).sum(), 3),
             })
             .collect();

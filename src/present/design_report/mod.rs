@@ -14,17 +14,25 @@
 //! | `patterns.csv`, `patterns.png`, `contacts_<p>.png` | per pattern its geometry beside its best design; the limit against the family's parameter; the contact maps of the best three ([`patterns`]) |
 //! | `pmax_<p>.png`, `corrugation_<p>.png`, `mu_<p>.png` | P_max vs θ per load with P_crit; corrugation vs α of the finalists; μ vs load, surrogate lines and DEM markers ([`charts`]) |
 //!
+//! Each pattern's own files (`shortlist_`, `corrugation_`, `friction_<p>.csv`, `pmax_`,
+//! `corrugation_<p>.png`) are written as the design completes the pattern ([`Writer`], the
+//! design's hook), before its rows are dropped; the rest at the end ([`finish`]), from the
+//! trimmed outcome.
+//!
 //! One job per file: [`rows`] (the CSV rows), [`data`] (the template's data), [`words`] (the
-//! answer sentences), [`commands`] (the reproduction commands), [`charts`], and here the writing.
+//! answer sentences), [`commands`] (the reproduction commands), [`charts`], [`pattern_files`]
+//! (each pattern's files), and here the global files.
 
 pub mod charts;
 pub mod commands;
 pub mod data;
+pub mod pattern_files;
 pub mod patterns;
 pub mod rows;
 pub mod words;
 
 pub use data::ReportData;
+pub use pattern_files::Writer;
 pub use rows::{dem_rows, DemRow, ShortlistRow};
 
 use crate::plot::design::chart_png;
@@ -33,13 +41,12 @@ use crate::study::design::store::Store;
 use crate::study::design::{DesignOutcome, DesignParams};
 use crate::study::meta::Inputs;
 use crate::study::progress::Progress;
-use crate::study::rows::{label, CorrugationRow, FrictionRow};
+use crate::study::rows::label;
 use crate::study::sink::csv_bytes;
-use crate::study::Outputs;
 use anyhow::{Context, Result};
-use charts::{corrugation_chart, mu_chart, pmax_chart};
+use charts::mu_chart;
 use minijinja::{AutoEscape, Environment, UndefinedBehavior};
-use surrogate::units::{n_to_mn, pa_to_gpa};
+use surrogate::units::n_to_mn;
 use words::{answer_line, fmt_g};
 
 /// The report's template: the prose and the layout; loops and ifs over [`ReportData`] only.
@@ -81,21 +88,19 @@ pub fn answer_notes(o: &DesignOutcome, p: &DesignParams) -> Vec<String> {
         .collect()
 }
 
-/// Logs the answers through `progress`, then writes every final output ([`write()`]).
-pub fn publish(
-    store: &Store,
-    record: &Inputs,
-    p: &DesignParams,
-    o: &DesignOutcome,
-    progress: &dyn Progress,
-) -> Result<()> {
-    for line in answer_notes(o, p) {
+/// Logs the answers through `progress`, then writes the design's global outputs
+/// ([`finish`]) after the per-pattern files that `files` wrote while the design ran.
+pub fn publish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Result<()> {
+    for line in answer_notes(o, files.p) {
         progress.note(&line);
     }
-    write(store, record, p, o, progress)
+    finish(files, o, progress)
 }
 
-/// Writes every final output of the design (see the module docs).
+/// Writes every final output of the design at once (see the module docs): each pattern's own
+/// files, then the global ones. The patterns of `o` must not be trimmed (the design's hook
+/// writes their files before trimming: [`Writer::pattern`]). Cost: as [`Writer::pattern`] per
+/// pattern, then [`finish`].
 pub fn write(
     store: &Store,
     record: &Inputs,
@@ -103,8 +108,22 @@ pub fn write(
     o: &DesignOutcome,
     progress: &dyn Progress,
 ) -> Result<()> {
-    let mut outs = Outputs::new(record.clone(), vec![]);
-    let mut wrote = Vec::new();
+    let files = Writer::new(store, record, p);
+    for pr in &o.patterns {
+        files.pattern(pr)?;
+    }
+    finish(files, o, progress)
+}
+
+/// Writes the design's global outputs — `ranking.csv`, `patterns.csv`, `dem.csv`, the
+/// `mu_<p>.png` charts (they carry the DEM), the tolerance maps, `report.md` — each only when
+/// its bytes change, and logs every file written, the per-pattern ones `files` wrote included
+/// (or that every output was already up to date). `o` may be trimmed. Errors when an output
+/// could not be written (the others are).
+pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Result<()> {
+    let (store, p) = (files.store, files.p);
+    let (mut outs, mut wrote) = files.into_parts();
+    let mut global = Vec::new();
     // ranking
     let ranking: Vec<RankingRow> = o
         .patterns
@@ -122,7 +141,7 @@ pub fn write(
         csv_bytes(&ranking),
         Some(ranking.len() as u64),
     ) {
-        wrote.push("ranking.csv".to_string());
+        global.push("ranking.csv".to_string());
     }
     // the patterns side by side
     let pats = patterns::pattern_rows(o);
@@ -132,75 +151,13 @@ pub fn write(
         csv_bytes(&pats),
         Some(pats.len() as u64),
     ) {
-        wrote.push("patterns.csv".to_string());
+        global.push("patterns.csv".to_string());
     }
     if o.patterns.len() > 1 {
-        patterns::write_figures(store, &mut outs, &mut wrote, o, &pats)?;
+        patterns::write_figures(store, &mut outs, &mut global, o, &pats)?;
     }
-    for pr in &o.patterns {
-        let name = &pr.scene.name;
-        // shortlist
-        let evaluated: Vec<f64> = pr.evaluated.iter().map(|e| e.eval.theta_deg).collect();
-        let kept: Vec<f64> = pr
-            .levels
-            .iter()
-            .flat_map(|l| l.picks.iter().map(|o| o.theta_deg))
-            .collect();
-        let sl: Vec<ShortlistRow> = pr
-            .orientations
-            .iter()
-            .map(|or| ShortlistRow {
-                theta_deg: or.theta_deg,
-                coating_intact_to_mN: label(n_to_mn(or.w_intact)),
-                p_max_GPa: pa_to_gpa(or.p_max),
-                contacts: or.contacts,
-                shortlisted: kept.contains(&or.theta_deg),
-                evaluated: evaluated.contains(&or.theta_deg),
-            })
-            .collect();
-        let rel = format!("shortlist_{name}.csv");
-        if store.write_if_changed(&mut outs, &rel, csv_bytes(&sl), Some(sl.len() as u64)) {
-            wrote.push(rel);
-        }
-        // corrugation scans
-        let scans: Vec<CorrugationRow> = pr
-            .evaluated
-            .iter()
-            .flat_map(|e| e.eval.scan.iter().cloned())
-            .collect();
-        let rel = format!("corrugation_{name}.csv");
-        let scans_changed =
-            store.write_if_changed(&mut outs, &rel, csv_bytes(&scans), Some(scans.len() as u64));
-        if scans_changed {
-            wrote.push(rel);
-        }
-        // friction
-        let fr: Vec<FrictionRow> = pr
-            .ranking
-            .iter()
-            .flat_map(|c| c.friction.iter().cloned())
-            .collect();
-        let rel = format!("friction_{name}.csv");
-        if store.write_if_changed(&mut outs, &rel, csv_bytes(&fr), Some(fr.len() as u64)) {
-            wrote.push(rel);
-        }
-        // PNGs (redrawn when missing or their data changed)
-        let png = |rel: &str| store.path(rel);
-        let pmax = format!("pmax_{name}.png");
-        if !png(&pmax).exists() || wrote.iter().any(|w| w == &format!("shortlist_{name}.csv")) {
-            outs.attempt(&pmax, &png(&pmax), || {
-                chart_png(&png(&pmax), &pmax_chart(pr, p))
-            });
-            wrote.push(pmax);
-        }
-        let corr = format!("corrugation_{name}.png");
-        if !png(&corr).exists() || scans_changed {
-            outs.attempt(&corr, &png(&corr), || {
-                chart_png(&png(&corr), &corrugation_chart(pr))
-            });
-            wrote.push(corr);
-        }
-    }
+    global.append(&mut wrote);
+    let mut wrote = global;
     // DEM
     let dem = dem_rows(o, p);
     let dem_changed = o.dem_ran

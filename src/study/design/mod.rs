@@ -20,9 +20,12 @@
 //!    confirmation loads, independent `slide` runs side by side, one thread each (plus, with a
 //!    protocol shorter than the study's, the design the report recommends once with the study's
 //!    protocol to measure the difference there: [`protocol_check_design`]).
-//! 7. **Outputs**: [`design`] returns the [`DesignOutcome`]; the command writes `report.md`
-//!    (the answer first), the CSVs behind it with sidecars and the PNGs from it
-//!    (`crate::present::design_report`, a layer above this one).
+//! 7. **Outputs**: [`design`] hands each pattern's result to the command's hook as soon as the
+//!    pattern is complete (its own CSVs and PNGs are written then), keeps only what the later
+//!    stages and the report need of it ([`PatternResult::trim`]: memory flat in the number of
+//!    patterns) and returns the [`DesignOutcome`]; the command then writes `report.md` (the
+//!    answer first) and the global CSVs with sidecars (`crate::present::design_report`, a
+//!    layer above this one).
 //!
 //! Every stage is stored under the output directory with the inputs that made it
 //! ([`store`]): a re-run with the same `--out-dir` reuses every finished stage and DEM run, and one
@@ -38,6 +41,7 @@ pub mod scan;
 pub mod shortlist;
 pub mod store;
 pub mod symmetry;
+pub mod trim;
 
 pub use params::{DesignParams, DesignScene};
 
@@ -125,6 +129,11 @@ pub struct Evaluated {
     pub wall_s: f64,
     /// Reused from an earlier run.
     pub reused: bool,
+    /// α of each row of the scan (degrees, scan order): kept when [`PatternResult::trim`]
+    /// drops `eval.scan`.
+    pub scan_alphas_deg: Vec<f64>,
+    /// Number of friction estimates (rows of `eval.friction`, kept when trimmed).
+    pub estimates: usize,
 }
 
 /// Everything the design found for one pattern.
@@ -150,8 +159,15 @@ pub struct PatternResult {
     pub stop: String,
     /// The evaluated orientations, in evaluation order.
     pub evaluated: Vec<Evaluated>,
-    /// The candidates, best first.
+    /// The candidates, best first (below the top few, each with its lowest-load friction
+    /// row only once trimmed: [`PatternResult::trim`]).
     pub ranking: Vec<Candidate>,
+    /// Candidates with a load whose failed contacts sit on a mount in resonance (counted over
+    /// every friction row before the rows are trimmed; [`trim::resonance_flagged`]).
+    pub resonance_flagged: usize,
+    /// Whether [`PatternResult::trim`] dropped the bulky rows (screen, orientations, α scans,
+    /// friction rows below the top few).
+    pub trimmed: bool,
 }
 
 /// One DEM confirmation run and what it is compared with.
@@ -180,7 +196,8 @@ pub struct DemEntry {
 /// What [`design`] found.
 #[derive(Debug, Clone)]
 pub struct DesignOutcome {
-    /// Per pattern, in the order given.
+    /// Per pattern, in the order given; trimmed ([`PatternResult::trim`]) once handed to the
+    /// design's hook.
     pub patterns: Vec<PatternResult>,
     /// The DEM runs (empty with `--no-dem`).
     pub dem: Vec<DemEntry>,
@@ -329,12 +346,20 @@ pub fn tag(v: f64) -> String {
     format!("{}", label(v))
 }
 
-/// Runs the design (see the module docs) into `store`; reports progress through `progress`.
+/// What [`design`] calls with each pattern's complete result (its friction estimates for the
+/// DEM included), in pattern order, before trimming it: the command writes the pattern's own
+/// files there. Not called in a DEM shard (`--shard`: no outputs).
+pub type PatternHook<'a> = &'a dyn Fn(&PatternResult) -> Result<()>;
+
+/// Runs the design (see the module docs) into `store`; reports progress through `progress`;
+/// hands each pattern to `on_pattern` when complete, then trims it ([`PatternResult::trim`]),
+/// so memory does not grow with the pattern's rows: the outcome's patterns are trimmed.
 pub fn design(
     scenes: &[DesignScene],
     p: &DesignParams,
     store: &Store,
     progress: &dyn Progress,
+    on_pattern: PatternHook,
 ) -> Result<DesignOutcome> {
     if store.claim(&inputs(scenes, p, false), "--out-dir")? {
         progress.note(&format!(
@@ -343,14 +368,24 @@ pub fn design(
         ));
     }
     // 1–5 per pattern: cut, screen, shortlist, α scan + friction, ranking
+    // (with the DEM: the estimates it is compared with, per pattern), then the pattern's own
+    // outputs through the hook, then only what the rest needs is kept
     let mut patterns: Vec<PatternResult> = Vec::new();
     for ds in scenes {
-        patterns.push(pattern(ds, p, store, progress)?);
+        let mut pr = pattern(ds, p, store, progress)?;
+        if !p.no_dem {
+            confirm_estimates(std::slice::from_mut(&mut pr), p, store)?;
+        }
+        pr.resonance_flagged = trim::resonance_flagged(&pr.ranking);
+        if p.dem_shard.is_all() {
+            on_pattern(&pr)?;
+        }
+        pr.trim(p);
+        patterns.push(pr);
     }
     // 6. DEM confirmation
     if !p.no_dem && !p.dem_shard.is_all() {
         // a shard of the DEM stage: its share of the runs, no report
-        confirm_estimates(&mut patterns, p, store)?;
         let (jobs, _) = confirm_jobs(&patterns, p);
         let part = p.dem_shard.range(jobs.len());
         progress.note(&format!(
@@ -382,7 +417,6 @@ pub fn design(
     let dem = if p.no_dem {
         Vec::new()
     } else {
-        confirm_estimates(&mut patterns, p, store)?;
         confirm_stage(&patterns, p, store, progress)?
     };
     let answers = patterns
@@ -508,6 +542,8 @@ fn pattern(
             .collect();
         for (o, r) in level.picks.iter().zip(done) {
             let (eval, wall_s, reused) = r?;
+            let scan_alphas_deg = eval.scan.iter().map(|r| r.alpha_deg).collect();
+            let estimates = eval.friction.len();
             ranking.extend(rank::candidates(
                 name,
                 &eval,
@@ -522,6 +558,8 @@ fn pattern(
                 eval,
                 wall_s,
                 reused,
+                scan_alphas_deg,
+                estimates,
             });
         }
         progress.finish();
@@ -560,6 +598,8 @@ fn pattern(
         stop,
         evaluated,
         ranking,
+        resonance_flagged: 0,
+        trimmed: false,
     })
 }
 
@@ -793,6 +833,8 @@ mod tests {
             stop: String::new(),
             evaluated: vec![],
             ranking,
+            resonance_flagged: 0,
+            trimmed: false,
         }
     }
 
