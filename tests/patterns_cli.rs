@@ -253,3 +253,65 @@ fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `design --family SPEC` generates the candidates into OUT/patterns/ and designs them exactly
+/// as `patterns` + `design --patterns` would; a bad family is refused before anything is written.
+#[test]
+fn design_family_generates_and_designs_the_candidates() {
+    let dir = tmpdir("design-family");
+    let small = ["--slider-radius-um", "15", "--substrate-um", "60x60"];
+    let design = [
+        "design",
+        "--no-dem",
+        "--theta",
+        "0:30:2",
+        "--load-mn",
+        "0.01,0.03",
+    ];
+    let tol0 = ["--theta-tol", "0", "--direction-tol", "0"];
+    let family = "rectangular:a=3:3.5:0.5,b=3";
+    let o = bin()
+        .args(design)
+        .args(["--family", family])
+        .args(small)
+        .args(tol0)
+        .arg("--out-dir")
+        .arg(dir.join("f"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let o = bin()
+        .args(["patterns", "--family", family])
+        .args(small)
+        .arg("--out-dir")
+        .arg(dir.join("c"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let o = bin()
+        .args(design)
+        .arg("--patterns")
+        .arg(dir.join("c/index.csv"))
+        .args(small)
+        .args(tol0)
+        .arg("--out-dir")
+        .arg(dir.join("p"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let read = |p: &str| std::fs::read_to_string(dir.join(p)).unwrap();
+    assert_eq!(read("f/patterns/index.csv"), read("c/index.csv"));
+    assert_eq!(read("f/patterns.csv"), read("p/patterns.csv"));
+    assert_eq!(read("f/ranking.csv"), read("p/ranking.csv"));
+    let o = bin()
+        .args(design)
+        .args(["--family", "bogus"])
+        .arg("--out-dir")
+        .arg(dir.join("bad"))
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("`--family`"));
+    assert!(!dir.join("bad").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}

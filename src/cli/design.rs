@@ -33,8 +33,15 @@ pub struct Args {
     scene: Vec<PathBuf>,
     /// An index.csv of `superlube patterns`: designs every candidate's scene file (named by its
     /// pattern_id), as if each were given with --scene; the ranking spans all of them.
-    #[arg(long, value_name = "INDEX.csv")]
+    #[arg(long, value_name = "INDEX.csv", conflicts_with = "family")]
     patterns: Option<PathBuf>,
+    /// A lattice family (as `superlube patterns --family`: `directional`, `presets[:s=…]`,
+    /// `rectangular:a=…,b=…`, `oblique:a=…,b=…,gamma_deg=…`): its candidates over the substrate
+    /// of the one --pattern or --scene given (default square-tri) are written to
+    /// OUT/patterns/ (equal slider area, p, q ≤ 3, orders ≤ 4; run `superlube patterns` for
+    /// other knobs) and designed as with --patterns OUT/patterns/index.csv.
+    #[arg(long, value_name = "SPEC")]
+    family: Option<String>,
     /// Scene override flags, applied to every pattern and scene.
     #[command(flatten)]
     overrides: SceneOverrides,
@@ -229,11 +236,28 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
     let mut out: Vec<DesignScene> = Vec::new();
     let mut files = a.scene.clone();
     let mut facts = Vec::new();
-    if let Some(index) = &a.patterns {
+    let mut pattern = a.pattern.clone();
+    let generated = match &a.family {
+        Some(spec) => {
+            if a.scene.len() > 1 || pattern.as_deref().is_some_and(|p| p.contains(',')) {
+                bail!("`--family`: give at most one --pattern or --scene (the base of the candidates)");
+            }
+            let base = scene_args(a, pattern.take(), files.pop()).resolve(None)?;
+            let params = super::patterns::check(spec, 3, 4.0)?;
+            Some(super::patterns::generate(
+                &base,
+                &params,
+                crate::study::patterns::Normalize::Area,
+                &a.out.join("patterns"),
+            )?)
+        }
+        None => None,
+    };
+    if let Some(index) = a.patterns.as_ref().or(generated.as_ref()) {
         files.extend(crate::study::patterns::index_scenes(index)?);
         facts = crate::study::patterns::index_facts(index)?;
     }
-    let patterns: Vec<String> = match (&a.pattern, files.is_empty()) {
+    let patterns: Vec<String> = match (&pattern, files.is_empty()) {
         (Some(p), _) => p.split(',').map(|s| s.trim().to_string()).collect(),
         (None, true) => vec!["square-tri".into(), "tri-tri".into()],
         (None, false) => vec![],

@@ -42,52 +42,67 @@ pub struct Args {
     out: PathBuf,
 }
 
+/// Runs `superlube patterns`.
 pub fn run(a: Args) -> Result<()> {
     let sc = a.scene.resolve(None)?;
-    if a.max_pq < 1 {
-        bail!("`--max-pq`: {} must be at least 1", a.max_pq);
+    let params = check(&a.family, a.max_pq, a.max_order)?;
+    generate(&sc, &params, a.normalize, &a.out).map(|_| ())
+}
+
+/// The checked parameters of a family (errors name `--family`, `--max-pq`, `--max-order`).
+pub(super) fn check(family: &str, max_pq: u32, max_order: f64) -> Result<PatternParams> {
+    if max_pq < 1 {
+        bail!("`--max-pq`: {max_pq} must be at least 1");
     }
-    if !(a.max_order.is_finite() && a.max_order >= 1.0) {
-        bail!("`--max-order`: {} must be a number ≥ 1", a.max_order);
+    if !(max_order.is_finite() && max_order >= 1.0) {
+        bail!("`--max-order`: {max_order} must be a number ≥ 1");
     }
-    let params = PatternParams {
-        family: parse_family(&a.family, parse_list_or_range)?,
-        family_text: a.family.clone(),
-        max_pq: a.max_pq,
-        max_order: a.max_order,
-    };
-    if a.out.exists() && !a.out.is_dir() {
-        bail!(
-            "`--out-dir`: {} exists and is not a folder",
-            a.out.display()
-        );
+    Ok(PatternParams {
+        family: parse_family(family, parse_list_or_range)?,
+        family_text: family.to_string(),
+        max_pq,
+        max_order,
+    })
+}
+
+/// Writes the candidates of `params` over the scene `sc` into the folder `out` (one scene file
+/// each and `index.csv`, with sidecars) and returns the index's path. Cost: the enumeration and
+/// one classification per lattice (milliseconds), one small file per candidate.
+pub(super) fn generate(
+    sc: &crate::cli::scene_args::Resolved,
+    params: &PatternParams,
+    normalize: Normalize,
+    out: &std::path::Path,
+) -> Result<PathBuf> {
+    if out.exists() && !out.is_dir() {
+        bail!("`--out-dir`: {} exists and is not a folder", out.display());
     }
-    let cands = candidates(&sc.scene, &params)?;
+    let cands = candidates(&sc.scene, params)?;
     let width = cands.len().to_string().len().max(3);
     let mut files = Vec::new();
     for (k, c) in cands.iter().enumerate() {
         let id = format!("p{:0width$}", k + 1);
-        files.push(candidate_scene(&sc.scene, c, &id, a.normalize)?);
+        files.push(candidate_scene(&sc.scene, c, &id, normalize)?);
     }
-    std::fs::create_dir_all(&a.out)
-        .with_context(|| format!("`--out-dir`: cannot create {}", a.out.display()))?;
+    std::fs::create_dir_all(&out)
+        .with_context(|| format!("`--out-dir`: cannot create {}", out.display()))?;
     let rep = Reporter::stderr();
     let mut outs = Outputs::new(
         Inputs {
             workflow: "patterns".into(),
             scene: Some(scene_file(&sc.scene)),
             params: serde_json::json!({
-                "family": a.family,
-                "max_pq": a.max_pq,
-                "max_order": a.max_order,
-                "normalize": a.normalize.name(),
+                "family": params.family_text,
+                "max_pq": params.max_pq,
+                "max_order": params.max_order,
+                "normalize": normalize.name(),
             }),
         },
         sc.warnings.clone(),
     );
     let mut csv = csv::Writer::from_writer(Vec::new());
     for (f, row) in &files {
-        let path = a.out.join(&row.scene_file);
+        let path = out.join(&row.scene_file);
         let text = toml::to_string(f).map_err(anyhow::Error::from);
         outs.write("scene", Some(&path), text.map(String::into_bytes), None);
         csv.serialize(row)?;
@@ -95,7 +110,7 @@ pub fn run(a: Args) -> Result<()> {
     let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"));
     outs.write(
         "--out-dir index",
-        Some(&a.out.join("index.csv")),
+        Some(&out.join("index.csv")),
         bytes,
         Some(files.len() as u64),
     );
@@ -111,7 +126,8 @@ pub fn run(a: Args) -> Result<()> {
             .map(|(k, n)| format!("{n} {k}"))
             .collect::<Vec<_>>()
             .join(", "),
-        a.out.display()
+        out.display()
     ));
-    outs.finish()
+    outs.finish()?;
+    Ok(out.join("index.csv"))
 }
