@@ -84,7 +84,7 @@ pub(super) fn generate(
         let id = format!("p{:0width$}", k + 1);
         files.push(candidate_scene(&sc.scene, c, &id, normalize)?);
     }
-    std::fs::create_dir_all(&out)
+    std::fs::create_dir_all(out)
         .with_context(|| format!("`--out-dir`: cannot create {}", out.display()))?;
     let rep = Reporter::stderr();
     let mut outs = Outputs::new(
