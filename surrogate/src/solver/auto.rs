@@ -10,7 +10,7 @@
 //! edge, σ_h > 0) auto escalates to rigid-tilt, warm-started from the rigid-z state, and reports
 //! `RigidTilt` in [`Equilibrium::model`].
 
-use super::assemble::Ctx;
+use super::ctx::Ctx;
 use super::rigid_tilt::{assemble_tilt, max_lever, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, PairSet};

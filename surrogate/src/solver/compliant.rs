@@ -5,7 +5,8 @@
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
 
-use super::assemble::{assemble, Ctx};
+use super::assemble::assemble;
+use super::ctx::Ctx;
 use super::law::{body_pairs, pair_response, BodyPair};
 use super::rigid_tilt::rigid_tilt_state;
 use super::z_root::ZRoot;

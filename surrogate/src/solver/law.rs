@@ -1,7 +1,7 @@
 //! The vertical Hertz law of one pair, written in the offset from its touch height so that
 //! tiny overlaps (grazing contacts, nN loads on thousands of contacts) keep full precision.
 
-use super::assemble::Ctx;
+use super::ctx::Ctx;
 use super::PairSet;
 
 /// Vertical response of one sphere pair.

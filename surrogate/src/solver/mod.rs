@@ -13,6 +13,7 @@ mod along;
 mod assemble;
 mod auto;
 mod compliant;
+mod ctx;
 mod equilibrium;
 mod law;
 mod model;

@@ -1,7 +1,8 @@
 //! Rigid slider, height only: the safeguarded 1-D Newton root find of ΣF_z(z) = W
 //! (see [`super::z_root::ZRoot`]), exact for flat, inversion-symmetric scenes.
 
-use super::assemble::{assemble, Ctx};
+use super::assemble::assemble;
+use super::ctx::Ctx;
 use super::law::{body_pairs, BodyPair};
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};

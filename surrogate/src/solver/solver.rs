@@ -1,8 +1,8 @@
 //! [`Solver`]: a scene prepared for many quasi-static solves (different θ, shifts and loads).
 
-use super::assemble::Ctx;
 use super::auto::solve_auto;
 use super::compliant::solve_compliant;
+use super::ctx::Ctx;
 use super::rigid_tilt::{assemble_tilt, max_lever, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
