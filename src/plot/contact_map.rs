@@ -117,8 +117,10 @@ pub fn contact_map(path: &Path, data: &ContactMapData) -> Result<()> {
             .label(format!("coating failed (p0 > {} GPa)", data.p_crit_gpa))
             .legend(|(x, y)| Circle::new((x + 10, y), 7, RED.stroke_width(3)));
         chart
+            // legend entry only: a sphere outside the view (near enough that its pixel
+            // coordinates stay far inside i32)
             .draw_series(std::iter::once(Circle::new(
-                (-1e9, -1e9),
+                (cx - 3.0 * half, cy - 3.0 * half),
                 1,
                 RGBColor(215, 215, 215).filled(),
             )))
