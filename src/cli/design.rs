@@ -243,7 +243,11 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
                 bail!("`--family`: give at most one --pattern or --scene (the base of the candidates)");
             }
             let base = scene_args(a, pattern.take(), files.pop()).resolve(None)?;
-            let params = super::patterns::check(spec, 3, 4.0)?;
+            let params = super::patterns::check(
+                spec,
+                super::patterns::DEFAULT_MAX_PQ,
+                super::patterns::DEFAULT_MAX_ORDER,
+            )?;
             Some(super::patterns::generate(
                 &base,
                 &params,

@@ -7,6 +7,11 @@ use crate::study::{meta::scene_file, Inputs, Outputs, Progress, Reporter};
 use anyhow::{bail, Context, Result};
 use std::path::PathBuf;
 
+/// Default `--max-pq` (also what `design --family` uses).
+pub(super) const DEFAULT_MAX_PQ: u32 = 3;
+/// Default `--max-order` (also what `design --family` uses).
+pub(super) const DEFAULT_MAX_ORDER: f64 = 4.0;
+
 /// Options of `superlube patterns`: enumerate slider lattices of a family over the scene's
 /// substrate (spheres not overlapping), classify each (lubric / directional / interlocked, from
 /// the two lattices' reciprocal vectors), and write one scene file per candidate plus an index.
@@ -23,11 +28,11 @@ pub struct Args {
     family: String,
     /// Largest p and q (each ≥ 1) of the commensurate period ratios p/q (directional family and
     /// the `p_q` column).
-    #[arg(long = "max-pq", value_name = "N", default_value_t = 3)]
+    #[arg(long = "max-pq", value_name = "N", default_value_t = DEFAULT_MAX_PQ)]
     max_pq: u32,
     /// Classification cut-off: reciprocal vectors shared by slider and substrate count up to
     /// this multiple of the substrate's shortest one (higher orders lock more weakly).
-    #[arg(long = "max-order", value_name = "X", default_value_t = 4.0)]
+    #[arg(long = "max-order", value_name = "X", default_value_t = DEFAULT_MAX_ORDER)]
     max_order: f64,
     /// What the candidates share, so that `design --patterns` compares them fairly: `area` (the
     /// base scene's slider outline, default) or `spheres` (each outline scaled to hold the base

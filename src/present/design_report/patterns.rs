@@ -210,21 +210,23 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
         values: rows.iter().map(|r| r.spheres as f64).collect(),
     };
     let x = varying.first().copied().unwrap_or(&spheres);
-    let robust = |keep: &dyn Fn(usize) -> bool| -> Vec<(f64, f64)> {
+    // (x, limit) of the rows `keep` admits, sorted by x
+    let points = |keep: &dyn Fn(usize) -> bool, limit: fn(&PatternRow) -> f64| {
         let mut v: Vec<(f64, f64)> = rows
             .iter()
             .enumerate()
             .filter(|(i, _)| keep(*i))
-            .map(|(i, r)| (x.values[i], r.superlubric_to_mN))
+            .map(|(i, r)| (x.values[i], limit(r)))
             .collect();
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
         v
     };
+    let robust = |r: &PatternRow| r.superlubric_to_mN;
     let curves = match varying.get(1) {
         None => vec![
             Curve {
                 name: "robust limit (over the tolerance box)".into(),
-                points: robust(&|_| true),
+                points: points(&|_| true, robust),
                 colour: Colour::Palette(0),
                 style: if varying.is_empty() {
                     Style::Markers
@@ -234,15 +236,7 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
             },
             Curve {
                 name: "nominal limit (θ, α exact)".into(),
-                points: {
-                    let mut v: Vec<(f64, f64)> = rows
-                        .iter()
-                        .enumerate()
-                        .map(|(i, r)| (x.values[i], r.superlubric_to_nominal_mN))
-                        .collect();
-                    v.sort_by(|a, b| a.0.total_cmp(&b.0));
-                    v
-                },
+                points: points(&|_| true, |r| r.superlubric_to_nominal_mN),
                 colour: Colour::Palette(1),
                 style: if varying.is_empty() {
                     Style::Markers
@@ -258,7 +252,7 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
                 .enumerate()
                 .map(|(k, &v)| Curve {
                     name: format!("{} = {}{}", s.short, fmt_g(v, 4), s.unit),
-                    points: robust(&|i| round6(s.values[i]) == v),
+                    points: points(&|i| round6(s.values[i]) == v, robust),
                     colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
                     style: Style::LinePoints,
                 })
@@ -266,7 +260,7 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
         }
         Some(_) => vec![Curve {
             name: "robust limit, one marker per pattern".into(),
-            points: robust(&|_| true),
+            points: points(&|_| true, robust),
             colour: Colour::Palette(0),
             style: Style::Markers,
         }],

@@ -7,15 +7,11 @@ use surrogate::solver::{Equilibrium, Model, SearchKind};
 use surrogate::units::{deg_to_rad, mn_to_n};
 use surrogate::Scene;
 
-/// One of the best patterns, its rank-1 design and that design's equilibrium.
+/// One of the best patterns: its rank-1 design's scene and equilibrium.
 #[derive(Debug, Clone)]
 pub struct BestPattern {
-    /// Index of the pattern in the outcome.
-    pub index: usize,
     /// The pattern's scene with θ set to the design's, named as in the design.
     pub scene: Scene,
-    /// The design's θ (degrees).
-    pub theta_deg: f64,
     /// The load of the map (mN): the robust superlubric limit, or the nominal one when the
     /// design holds only at its nominal orientation.
     pub load_mn: f64,
@@ -71,11 +67,5 @@ pub fn best_contacts(o: &DesignOutcome, i: usize) -> Result<Option<BestPattern>>
         search: SearchKind::Grid,
     };
     let eq = crate::study::contacts::contacts(&scene, &cp)?;
-    Ok(Some(BestPattern {
-        index: i,
-        scene,
-        theta_deg,
-        load_mn,
-        eq,
-    }))
+    Ok(Some(BestPattern { scene, load_mn, eq }))
 }
