@@ -1,22 +1,20 @@
 //! Flags renamed so that one concept has one name across commands (`--out` a file, `--out-dir`
 //! a folder; `--solver` the surrogate's load-sharing model, `--model` only the DEM's). The old
-//! names stay hidden aliases for a release; using one prints a note naming the new one.
+//! names stay hidden clap aliases (`#[arg(long = "new", alias = "old")]`) for a release; using
+//! one prints a note naming the new one. The aliases are the one list: a new rename needs no
+//! entry here.
 
-/// (subcommand, old flag, new flag).
-pub const RENAMED: &[(&str, &str, &str)] = &[
-    ("design", "--out", "--out-dir"),
-    ("design", "--scan-um", "--scan-distance-um"),
-    ("tolerance", "--out", "--out-dir"),
-    ("patterns", "--out", "--out-dir"),
-    ("screen", "--model", "--solver"),
-    ("slurm", "--out", "--out-dir"),
-    ("export-lammps", "--out", "--out-dir"),
-];
+use clap::CommandFactory;
 
 /// The notes for the old flag names in the command line `args` (program name first, then the
-/// subcommand). Cost: one pass over the arguments.
+/// subcommand): each `--old` that is a hidden alias of a flag of that subcommand. Cost: one
+/// build of the clap command tree (well under a millisecond) and one pass over the arguments.
 pub fn notes(args: &[String]) -> Vec<String> {
     let Some(sub) = args.get(1) else {
+        return Vec::new();
+    };
+    let cli = super::Cli::command();
+    let Some(cmd) = cli.find_subcommand(sub) else {
         return Vec::new();
     };
     let mut out = Vec::new();
@@ -24,11 +22,16 @@ pub fn notes(args: &[String]) -> Vec<String> {
         if a == "--" {
             break;
         }
-        let name = a.split('=').next().unwrap_or(a);
-        for &(cmd, old, new) in RENAMED {
-            if cmd == sub && name == old {
+        let Some(old) = a.split('=').next().and_then(|n| n.strip_prefix("--")) else {
+            continue;
+        };
+        for arg in cmd.get_arguments() {
+            let (Some(new), Some(aliases)) = (arg.get_long(), arg.get_all_aliases()) else {
+                continue;
+            };
+            if aliases.contains(&old) {
                 out.push(format!(
-                    "note: `superlube {cmd} {old}` is now `{new}`; the old name still works for this release"
+                    "note: `superlube {sub} --{old}` is now `--{new}`; the old name still works for this release"
                 ));
             }
         }
@@ -68,5 +71,19 @@ mod tests {
         ]))
         .is_empty());
         assert!(notes(&args(&["superlube"])).is_empty());
+        // every renamed flag of the issue has its note
+        for (sub, old) in [
+            ("tolerance", "--out"),
+            ("patterns", "--out"),
+            ("export-lammps", "--out"),
+            ("slurm", "--out"),
+            ("screen", "--model"),
+        ] {
+            assert_eq!(
+                notes(&args(&["superlube", sub, old, "x"])).len(),
+                1,
+                "{sub} {old}"
+            );
+        }
     }
 }
