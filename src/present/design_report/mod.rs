@@ -115,6 +115,23 @@ pub fn write(
     finish(files, o, progress)
 }
 
+/// Draws the figure `rel` of `store` with `draw` (given its path) when it is missing or `stale`
+/// (its data changed), recording it in `outs` (sidecar, or the failure) and `wrote`.
+fn redraw(
+    store: &Store,
+    outs: &mut crate::study::Outputs,
+    wrote: &mut Vec<String>,
+    rel: &str,
+    stale: bool,
+    draw: impl FnOnce(&std::path::Path) -> Result<()>,
+) {
+    let path = store.path(rel);
+    if stale || !path.exists() {
+        outs.attempt(rel, &path, || draw(&path));
+        wrote.push(rel.to_string());
+    }
+}
+
 /// Writes the design's global outputs — `ranking.csv`, `patterns.csv`, `dem.csv`, the
 /// `mu_<p>.png` charts (they carry the DEM), the tolerance maps, `report.md` — each only when
 /// its bytes change, and logs every file written, the per-pattern ones `files` wrote included
@@ -175,12 +192,14 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
         let fr_changed = wrote
             .iter()
             .any(|w| w == &format!("friction_{}.csv", pr.scene.name));
-        if !store.path(&rel).exists() || fr_changed || dem_changed {
-            outs.attempt(&rel, &store.path(&rel), || {
-                chart_png(&store.path(&rel), &mu_chart(pr, &dem, p))
-            });
-            wrote.push(rel);
-        }
+        redraw(
+            store,
+            &mut outs,
+            &mut wrote,
+            &rel,
+            fr_changed || dem_changed,
+            |path| chart_png(path, &mu_chart(pr, &dem, p)),
+        );
     }
     // tolerance maps around the answers
     for (pr, m) in o.patterns.iter().zip(&o.maps) {
@@ -197,7 +216,7 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
             wrote.push(rel);
         }
         let rel = format!("tolerance_{name}.png");
-        if !store.path(&rel).exists() || changed {
+        redraw(store, &mut outs, &mut wrote, &rel, changed, |path| {
             let title = format!(
                 "{name}: superlubric limit around the answer θ = {}°, direction {}° (box ±{}° × ±{}°)",
                 m.nominal.0,
@@ -205,18 +224,15 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
                 p.theta_tol_deg,
                 p.direction_tol_deg
             );
-            outs.attempt(&rel, &store.path(&rel), || {
-                crate::plot::tolerance::tolerance_png(
-                    &store.path(&rel),
-                    &title,
-                    &m.rows,
-                    m.theta_points,
-                    m.nominal,
-                    (p.theta_tol_deg, p.direction_tol_deg),
-                )
-            });
-            wrote.push(rel);
-        }
+            crate::plot::tolerance::tolerance_png(
+                path,
+                &title,
+                &m.rows,
+                m.theta_points,
+                m.nominal,
+                (p.theta_tol_deg, p.direction_tol_deg),
+            )
+        });
     }
     let md = markdown(o, p)?;
     if store.write_if_changed(&mut outs, "report.md", Ok(md.into_bytes()), None) {

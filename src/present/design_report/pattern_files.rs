@@ -115,19 +115,12 @@ fn write_pattern(
         wrote.push(rel);
     }
     // PNGs (redrawn when missing or their data changed)
-    let png = |rel: &str| store.path(rel);
-    let pmax = format!("pmax_{name}.png");
-    if !png(&pmax).exists() || shortlist_changed {
-        outs.attempt(&pmax, &png(&pmax), || {
-            chart_png(&png(&pmax), &pmax_chart(pr, p))
-        });
-        wrote.push(pmax);
-    }
-    let corr = format!("corrugation_{name}.png");
-    if !png(&corr).exists() || scans_changed {
-        outs.attempt(&corr, &png(&corr), || {
-            chart_png(&png(&corr), &corrugation_chart(pr))
-        });
-        wrote.push(corr);
-    }
+    let rel = format!("pmax_{name}.png");
+    super::redraw(store, outs, wrote, &rel, shortlist_changed, |path| {
+        chart_png(path, &pmax_chart(pr, p))
+    });
+    let rel = format!("corrugation_{name}.png");
+    super::redraw(store, outs, wrote, &rel, scans_changed, |path| {
+        chart_png(path, &corrugation_chart(pr))
+    });
 }

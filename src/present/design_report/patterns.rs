@@ -289,21 +289,17 @@ pub fn write_figures(
     rows: &[PatternRow],
 ) -> Result<()> {
     let changed = wrote.iter().any(|w| w == "patterns.csv");
-    let rel = "patterns.png";
-    if changed || !store.path(rel).exists() {
-        outs.attempt(rel, &store.path(rel), || {
-            chart_png(&store.path(rel), &limit_chart(o, rows))
-        });
-        wrote.push(rel.into());
-    }
+    super::redraw(store, outs, wrote, "patterns.png", changed, |path| {
+        chart_png(path, &limit_chart(o, rows))
+    });
     for i in best_order(o, CONTACT_MAPS) {
         let rel = format!("contacts_{}.png", o.patterns[i].scene.name);
+        // the equilibrium is solved only for a map to redraw
         if changed || !store.path(&rel).exists() {
             if let Some(b) = best_contacts(o, i)? {
-                outs.attempt(&rel, &store.path(&rel), || {
-                    contact_map_png(&store.path(&rel), &b.scene, mn_to_n(b.load_mn), &b.eq)
+                super::redraw(store, outs, wrote, &rel, true, |path| {
+                    contact_map_png(path, &b.scene, mn_to_n(b.load_mn), &b.eq)
                 });
-                wrote.push(rel);
             }
         }
     }
