@@ -301,6 +301,20 @@ fn design_family_generates_and_designs_the_candidates() {
     assert_ok(&o);
     let read = |p: &str| std::fs::read_to_string(dir.join(p)).unwrap();
     assert_eq!(read("f/patterns/index.csv"), read("c/index.csv"));
+    // another family into the same folder is refused, its candidates untouched
+    let before = read("f/patterns/index.csv");
+    let o = bin()
+        .args(design)
+        .args(["--family", "rectangular:a=3.5,b=3"])
+        .args(small)
+        .args(tol0)
+        .arg("--out-dir")
+        .arg(dir.join("f"))
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("`--family`"));
+    assert_eq!(read("f/patterns/index.csv"), before);
     assert_eq!(read("f/patterns.csv"), read("p/patterns.csv"));
     assert_eq!(read("f/ranking.csv"), read("p/ranking.csv"));
     let o = bin()

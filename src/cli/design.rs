@@ -253,6 +253,7 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
                 &params,
                 crate::study::patterns::Normalize::Area,
                 &a.out.join("patterns"),
+                Some("--family"),
             )?)
         }
         None => None,

@@ -51,7 +51,7 @@ pub struct Args {
 pub fn run(a: Args) -> Result<()> {
     let sc = a.scene.resolve(None)?;
     let params = check(&a.family, a.max_pq, a.max_order)?;
-    generate(&sc, &params, a.normalize, &a.out).map(|_| ())
+    generate(&sc, &params, a.normalize, &a.out, None).map(|_| ())
 }
 
 /// The checked parameters of a family (errors name `--family`, `--max-pq`, `--max-order`).
@@ -72,12 +72,15 @@ pub(super) fn check(family: &str, max_pq: u32, max_order: f64) -> Result<Pattern
 
 /// Writes the candidates of `params` over the scene `sc` into the folder `out` (one scene file
 /// each and `index.csv`, with sidecars) and returns the index's path. Cost: the enumeration and
-/// one classification per lattice (milliseconds), one small file per candidate.
+/// one classification per lattice (milliseconds), one small file per candidate. With `flag`
+/// (`design --family`), a folder whose `index.csv` lists other candidates is refused naming
+/// `flag`, before anything is written.
 pub(super) fn generate(
     sc: &crate::cli::scene_args::Resolved,
     params: &PatternParams,
     normalize: Normalize,
     out: &std::path::Path,
+    keep_other: Option<&str>,
 ) -> Result<PathBuf> {
     if out.exists() && !out.is_dir() {
         bail!("`--out-dir`: {} exists and is not a folder", out.display());
@@ -88,6 +91,20 @@ pub(super) fn generate(
     for (k, c) in cands.iter().enumerate() {
         let id = format!("p{:0width$}", k + 1);
         files.push(candidate_scene(&sc.scene, c, &id, normalize)?);
+    }
+    let mut csv = csv::Writer::from_writer(Vec::new());
+    for (_, row) in &files {
+        csv.serialize(row)?;
+    }
+    let index = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
+    if let Some(flag) = keep_other {
+        let path = out.join("index.csv");
+        if path.exists() && std::fs::read(&path).ok().as_deref() != Some(&index[..]) {
+            bail!(
+                "`{flag}`: {} lists other candidates (another family or scene); give another --out-dir (nothing was written)",
+                path.display()
+            );
+        }
     }
     std::fs::create_dir_all(out)
         .with_context(|| format!("`--out-dir`: cannot create {}", out.display()))?;
@@ -105,18 +122,15 @@ pub(super) fn generate(
         },
         sc.warnings.clone(),
     );
-    let mut csv = csv::Writer::from_writer(Vec::new());
     for (f, row) in &files {
         let path = out.join(&row.scene_file);
         let text = toml::to_string(f).map_err(anyhow::Error::from);
         outs.write("scene", Some(&path), text.map(String::into_bytes), None);
-        csv.serialize(row)?;
     }
-    let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"));
     outs.write(
         "--out-dir index",
         Some(&out.join("index.csv")),
-        bytes,
+        Ok(index),
         Some(files.len() as u64),
     );
     let mut kinds = std::collections::BTreeMap::new();
