@@ -106,7 +106,7 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
                 .map(|(r, pc)| dem_superlubric(Some(r), None, w, pc, p.mu_superlubric).is_ok());
             let sl_est = fr
                 .zip(p_crit)
-                .map(|(f, pc)| crate::study::design::rank::superlubric(f, pc, p.mu_superlubric));
+                .map(|(f, pc)| crate::study::verdict::superlubric(f, pc, p.mu_superlubric));
             DemRow {
                 pattern: e.pattern.clone(),
                 rank: e.rank,

@@ -2,7 +2,8 @@
 //!
 //! A candidate (θ, α) is **superlubric at load W** when its friction estimate along α exists,
 //! its coating is intact on the whole sliding path (the largest P_max along the path, which
-//! starts at the screened placement, ≤ P_crit) and μ_est < `mu_superlubric` (0.02).
+//! starts at the screened placement, ≤ P_crit) and μ_est < `mu_superlubric` (0.02): the rule
+//! [`crate::study::verdict::superlubric`].
 //!
 //! **Score**, compared in this order:
 //! 1. `superlubric_to` — the highest load W_k of the list such that the candidate is
@@ -22,10 +23,9 @@
 
 use super::scan::ThetaEval;
 use crate::study::rows::FrictionRow;
-use crate::study::verdict::Verdict;
+use crate::study::verdict::{intact, superlubric, Verdict};
 use serde::{Deserialize, Serialize};
 use std::cmp::Ordering;
-use surrogate::units::pa_to_gpa;
 
 /// One (θ, α) candidate of a pattern with its friction rows (one per load, ascending).
 #[derive(Debug, Clone, PartialEq)]
@@ -81,16 +81,6 @@ pub struct Score {
     /// With several substrate seeds, each seed's own limit at the nominal (θ, α) (mN, seed
     /// order): the spread behind the worst case. `None`: one substrate, or not computed.
     pub seed_limits_mn: Option<Vec<f64>>,
-}
-
-/// Whether a friction row is superlubric (see the module docs).
-pub fn superlubric(r: &FrictionRow, p_crit: f64, mu_sl: f64) -> bool {
-    intact(r, p_crit) && r.mu_est.is_some_and(|m| m < mu_sl)
-}
-
-/// Whether a friction row's coating is intact on its whole path.
-pub fn intact(r: &FrictionRow, p_crit: f64) -> bool {
-    r.error.is_empty() && r.p_max_GPa.is_some_and(|p| p <= pa_to_gpa(p_crit))
 }
 
 /// The score of the rows of one (θ, α), loads ascending.

@@ -17,9 +17,9 @@
 
 mod seeds;
 
-use super::{placement_intact, rows_at, superlubric, LimitParams};
+use super::{placement_intact, rows_at, LimitParams};
 use crate::study::rows::{label, FrictionRow};
-use crate::study::verdict::Verdict;
+use crate::study::verdict::{superlubric, Verdict};
 use anyhow::Result;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
