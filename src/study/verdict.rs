@@ -79,6 +79,20 @@ impl Verdict {
         Verdict::of(r.mu_est, r.p_max_GPa.map(|p| p * 1e9), mu_sl, p_crit)
     }
 
+    /// The worst verdict of `rows` (every load up to a limit, and every sample of a tolerance
+    /// box): `Not` when there are none, so a row borderline at any load up to the limit makes
+    /// the whole limit borderline.
+    pub fn worst<'r>(
+        rows: impl IntoIterator<Item = &'r FrictionRow>,
+        mu_sl: f64,
+        p_crit: f64,
+    ) -> Verdict {
+        rows.into_iter()
+            .map(|r| Verdict::of_row(r, mu_sl, p_crit))
+            .max()
+            .unwrap_or(Verdict::Not)
+    }
+
     /// The lowercase word (`superlubric`, `borderline`, `not`).
     pub fn word(self) -> &'static str {
         match self {

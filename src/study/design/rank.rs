@@ -67,7 +67,8 @@ pub struct Score {
     pub theta_window_deg: Option<f64>,
     /// Direction half-width (degrees) inside which it stays superlubric at that load.
     pub direction_window_deg: Option<f64>,
-    /// The worst verdict at `superlubric_to_mn` (over the box's samples with a tolerance).
+    /// The worst verdict over every load up to `superlubric_to_mn` (and over the box's samples
+    /// estimated there, with a tolerance); `Not` when that is 0.
     pub verdict: Verdict,
     /// Whether `superlubric_to_mn` is exact (else an upper bound: the robust evaluation stopped
     /// once the design could not reach the top of the ranking).
@@ -97,10 +98,7 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
         // stage replaces these where the box is wider
         theta_window_deg: Some(0.0),
         direction_window_deg: Some(0.0),
-        verdict: match n_sl {
-            0 => Verdict::Not,
-            n => Verdict::of_row(&rows[n - 1], mu_sl, p_crit),
-        },
+        verdict: Verdict::worst(&rows[..n_sl], mu_sl, p_crit),
         exact: true,
         intact_to_mn: load(n_in),
         mu_worst: upto
@@ -210,15 +208,17 @@ pub struct RankingRow {
     pub superlubric_to_mN: f64,
     /// The same at the nominal (θ, α) alone (mN).
     pub superlubric_to_nominal_mN: f64,
-    /// θ half-width (degrees) around the nominal inside which every sample stays superlubric
-    /// at `superlubric_to_nominal_mN` (sampled out to `theta_tol_deg`: equal to it means "at
-    /// least"). Empty without a tolerance, and for designs below the exact top of the ranking
-    /// other than the nominal optimum (not computed).
+    /// θ half-width (degrees) around the nominal inside which every sample on the θ axis (the
+    /// nominal direction) is superlubric at every load up to `superlubric_to_nominal_mN`
+    /// (sampled out to `theta_tol_deg`: equal to it means "at least"). 0 with a zero tolerance;
+    /// empty for designs below the exact top of the ranking other than the nominal optimum (not
+    /// computed).
     pub theta_window_deg: Option<f64>,
-    /// The same along the pulling direction (degrees; at most `direction_tol_deg`).
+    /// The same along the pulling-direction axis (degrees; at most `direction_tol_deg`).
     pub direction_window_deg: Option<f64>,
-    /// The worst verdict at `superlubric_to_mN` over the box: superlubric, borderline (within
-    /// the estimate's measured uncertainty of the μ or P_crit threshold) or not.
+    /// The worst verdict over every load up to `superlubric_to_mN` and every sample of the box
+    /// estimated there: superlubric, borderline (within the estimate's measured uncertainty of
+    /// the μ or P_crit threshold) or not (also when `superlubric_to_mN` is 0).
     pub verdict: String,
     /// Whether `superlubric_to_mN` is exact; `false`: an upper bound (the robust evaluation
     /// stops once a design cannot reach the designs ranked above it, which are exact).
@@ -314,9 +314,42 @@ mod tests {
         assert_eq!(s.intact_to_mn, 2.0);
         assert_eq!(s.mu_worst, 0.015);
         assert_eq!(s.contacts, 200.0);
+        assert_eq!(s.verdict, Verdict::Superlubric);
         let rows = vec![fr(1.0, 0.03, 3.0), fr(2.0, 0.01, 3.0)];
         let s = score(&rows, 4e9, 0.02);
         assert_eq!((s.superlubric_to_mn, s.intact_to_mn), (0.0, 2.0));
         assert_eq!(s.mu_worst, 0.03);
+        assert_eq!(s.verdict, Verdict::Not);
+    }
+
+    /// A load below the limit inside the μ band makes the limit borderline, though the limit
+    /// load itself is clear of both bands.
+    #[test]
+    fn the_verdict_is_the_worst_over_every_load_up_to_the_limit() {
+        let rows = vec![
+            fr(1.0, 0.011, 3.0),
+            fr(2.0, 0.018, 3.0),
+            fr(3.0, 0.010, 3.0),
+            fr(4.0, 0.030, 3.0),
+        ];
+        assert_eq!(
+            Verdict::of_row(&rows[2], 0.02, 4e9),
+            Verdict::Superlubric,
+            "the limit load alone is clear"
+        );
+        let s = score(&rows, 4e9, 0.02);
+        assert_eq!(s.superlubric_to_mn, 3.0);
+        assert_eq!(s.verdict, Verdict::Borderline);
+        // a P_max inside the band at the lowest load counts too; rows past the limit do not
+        let rows = vec![fr(1.0, 0.011, 3.9), fr(2.0, 0.010, 3.0), fr(3.0, 0.05, 5.0)];
+        let s = score(&rows, 4e9, 0.02);
+        assert_eq!((s.superlubric_to_mn, s.verdict), (2.0, Verdict::Borderline));
+        let rows = vec![
+            fr(1.0, 0.011, 3.0),
+            fr(2.0, 0.010, 3.0),
+            fr(3.0, 0.019, 3.0),
+        ];
+        let s = score(&rows[..2], 4e9, 0.02);
+        assert_eq!(s.verdict, Verdict::Superlubric);
     }
 }

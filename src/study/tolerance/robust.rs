@@ -137,12 +137,29 @@ pub struct Robust {
     pub theta_window_deg: Option<f64>,
     /// The same along the direction axis.
     pub direction_window_deg: Option<f64>,
-    /// The worst verdict over the box's samples at the limit load (`Not` when 0).
+    /// The worst verdict over every load up to the limit and every sample of the box estimated
+    /// there (`Not` when 0; [`worst_verdict`]).
     pub verdict: Verdict,
     /// Friction paths solved (cost).
     pub paths: usize,
     /// Whether `superlubric_to` is exact.
     pub exact: bool,
+}
+
+/// The worst verdict over every load up to `b` (a load count) of every sample, counting the
+/// rows estimated (with an exact limit: all of them); `Not` when `b` is 0. So a sample
+/// borderline at a load below the limit makes the limit borderline.
+pub fn worst_verdict(samples: &[SampleState], b: usize, mu_sl: f64, p_crit: f64) -> Verdict {
+    if b == 0 {
+        return Verdict::Not;
+    }
+    Verdict::worst(
+        samples
+            .iter()
+            .flat_map(|s| s.rows.iter().take(b).filter_map(Option::as_ref)),
+        mu_sl,
+        p_crit,
+    )
 }
 
 /// A robust search on one design (see the module docs).
@@ -457,16 +474,7 @@ impl<'a> RobustSearch<'a> {
     pub fn result(&self) -> Robust {
         let st = &self.state;
         let b = st.bound;
-        let verdict = if b == 0 {
-            Verdict::Not
-        } else {
-            st.samples
-                .iter()
-                .filter_map(|s| s.rows[b - 1].as_ref())
-                .map(|r| Verdict::of_row(r, self.p.mu_superlubric, self.p_crit))
-                .max()
-                .unwrap_or(Verdict::Not)
-        };
+        let verdict = worst_verdict(&st.samples, b, self.p.mu_superlubric, self.p_crit);
         let w = &st.samples[st.worst];
         Robust {
             superlubric_to: b,
@@ -497,5 +505,46 @@ mod tests {
             assert_eq!((c.0.abs(), c.1.abs()), (0.1, 0.5));
         }
         assert!(ToleranceBox::new(0.0, 0.0, 0.02, 0.25).is_point());
+    }
+
+    /// The verdict of a limit is the worst over every load up to it and every sample: a corner
+    /// borderline at the lowest load makes a limit of two loads borderline; loads above the
+    /// limit and rows not estimated do not count.
+    #[test]
+    fn the_verdict_is_the_worst_below_the_limit_over_every_sample() {
+        let row = |mu: f64, p_gpa: f64| {
+            let mut r = FrictionRow::new(
+                "x",
+                0.0,
+                0.0,
+                0.0,
+                1e-3,
+                &Err(surrogate::SceneError::invalid("x", 0.0, "y")),
+            );
+            r.error.clear();
+            r.mu_est = Some(mu);
+            r.p_max_GPa = Some(p_gpa);
+            r
+        };
+        let sample = |rows: Vec<Option<FrictionRow>>| SampleState {
+            seed: 0,
+            theta_offset_deg: 0.0,
+            direction_offset_deg: 0.0,
+            cap: rows.len(),
+            rows,
+        };
+        let clear = || Some(row(0.010, 3.0));
+        let samples = vec![
+            sample(vec![clear(), clear(), Some(row(0.05, 5.0))]),
+            sample(vec![Some(row(0.018, 3.0)), clear(), None]),
+            sample(vec![clear(), None, Some(row(0.019, 3.9))]),
+        ];
+        let v = |b: usize| worst_verdict(&samples, b, 0.02, 4e9);
+        assert_eq!(v(0), Verdict::Not);
+        assert_eq!(v(1), Verdict::Borderline);
+        assert_eq!(v(2), Verdict::Borderline, "borderline at the lowest load");
+        let clean = vec![samples[0].clone(), samples[0].clone()];
+        assert_eq!(worst_verdict(&clean, 2, 0.02, 4e9), Verdict::Superlubric);
+        assert_eq!(worst_verdict(&clean, 3, 0.02, 4e9), Verdict::Not);
     }
 }
