@@ -5,7 +5,7 @@
 use super::rows::{row_at, DemRow};
 use crate::study::design::answer::{Answer, Check};
 use crate::study::design::rank::Candidate;
-use crate::study::design::{DesignOutcome, DesignParams, PatternResult};
+use crate::study::design::{tolerance_box, DesignOutcome, DesignParams, PatternResult};
 use crate::study::rows::label;
 use crate::study::verdict::{band_words, Verdict};
 use std::fmt::Write as _;
@@ -110,6 +110,8 @@ pub fn answer_line(
             d.pattern == *name
                 && d.theta_deg == b.theta_deg
                 && d.alpha_deg == b.alpha_deg
+                && d.theta_offset_deg == 0.0
+                && d.direction_offset_deg == 0.0
                 && d.protocol == "design"
         })
         .map(|d| match d.mu_dem {
@@ -132,13 +134,21 @@ pub fn answer_line(
         Check::Confirmed(loads) => {
             let _ = write!(
                 m,
-                " **Confirmed by the DEM** at {} mN ({}).",
+                " **Confirmed by the DEM** at {} mN ({}){}.",
                 loads
                     .iter()
                     .map(|w| format!("{w}"))
                     .collect::<Vec<_>>()
                     .join(", "),
-                runs.join("; ")
+                runs.join("; "),
+                if tolerance_box(p).is_point() {
+                    String::new()
+                } else {
+                    format!(
+                        ", and at every corner of its tolerance box at {} mN",
+                        b.score.superlubric_to_mn
+                    )
+                }
             );
         }
         Check::Contradicted(why) => {
@@ -165,7 +175,7 @@ pub fn answer_line(
         .iter()
         .filter(|d| {
             d.pattern == *name
-                && a.index == Some(0)
+                && Some(d.rank) == a.index.map(|i| i + 1)
                 && (d.theta_offset_deg != 0.0 || d.direction_offset_deg != 0.0)
         })
         .collect();

@@ -50,8 +50,38 @@ pub struct Candidate {
     pub reason: String,
     /// Friction estimate per load.
     pub friction: Vec<FrictionRow>,
+    /// The estimates its robust search made at the corners of its tolerance box (the design's
+    /// own substrate), every load estimated there: the estimate beside a corner's DEM run.
+    /// Empty without a tolerance or a search.
+    pub corners: Vec<CornerEstimate>,
     /// The score.
     pub score: Score,
+}
+
+/// One friction estimate at a corner of a candidate's tolerance box.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CornerEstimate {
+    /// θ offset from the candidate (degrees).
+    pub theta_offset_deg: f64,
+    /// Pull-direction offset from the candidate, substrate frame (degrees).
+    pub direction_offset_deg: f64,
+    /// The estimate (its `load_mN` is the load).
+    pub row: FrictionRow,
+}
+
+impl Candidate {
+    /// The estimate at the box corner (`dt`, `dd`) (degrees) at load `w_mn` (mN), where its
+    /// robust search estimated that corner at that load.
+    pub fn corner_row(&self, dt: f64, dd: f64, w_mn: f64) -> Option<&FrictionRow> {
+        self.corners
+            .iter()
+            .find(|c| {
+                (c.theta_offset_deg - dt).abs() < 1e-9
+                    && (c.direction_offset_deg - dd).abs() < 1e-9
+                    && (c.row.load_mN - w_mn).abs() < 1e-12
+            })
+            .map(|c| &c.row)
+    }
 }
 
 /// The score of a candidate (see the module docs; loads in mN).
@@ -146,6 +176,7 @@ pub fn candidates(
             reason: reason.to_string(),
             score: score(&rows, p_crit, mu_sl),
             friction: rows,
+            corners: Vec::new(),
         })
         .collect()
 }

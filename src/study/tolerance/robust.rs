@@ -57,6 +57,25 @@ impl ToleranceBox {
         self.theta_offsets_deg.len() == 1 && self.direction_offsets_deg.len() == 1
     }
 
+    /// The corners of the box (θ offset, direction offset), distinct, direction outer and θ
+    /// inner from the negative side: four, two where one tolerance is 0, none for a point.
+    /// Exactly the extreme offsets of [`ToleranceBox::samples`] (−0 read as 0).
+    pub fn corners(&self) -> Vec<Offset> {
+        if self.is_point() {
+            return Vec::new();
+        }
+        let ends = |o: &[f64]| {
+            let mut e = vec![o[0] + 0.0, o[o.len() - 1] + 0.0];
+            e.dedup();
+            e
+        };
+        let th = ends(&self.theta_offsets_deg);
+        ends(&self.direction_offsets_deg)
+            .into_iter()
+            .flat_map(|d| th.iter().map(move |&t| (t, d)))
+            .collect()
+    }
+
     /// Every sample (θ offset, direction offset) except the nominal, in the order in which a
     /// failure is most likely found early: corners first, then the rest of the box by its
     /// distance from the nominal (farthest first; the box scaled to a square), the two axes
@@ -505,6 +524,18 @@ mod tests {
             assert_eq!((c.0.abs(), c.1.abs()), (0.1, 0.5));
         }
         assert!(ToleranceBox::new(0.0, 0.0, 0.02, 0.25).is_point());
+        assert_eq!(
+            bx.corners(),
+            vec![(-0.1, -0.5), (0.1, -0.5), (-0.1, 0.5), (0.1, 0.5)]
+        );
+        for c in bx.corners() {
+            assert!(s.contains(&c));
+        }
+        assert_eq!(
+            ToleranceBox::new(0.0, 0.5, 0.02, 0.25).corners(),
+            vec![(0.0, -0.5), (0.0, 0.5)]
+        );
+        assert!(ToleranceBox::new(0.0, 0.0, 0.02, 0.25).corners().is_empty());
     }
 
     /// The verdict of a limit is the worst over every load up to it and every sample: a corner
