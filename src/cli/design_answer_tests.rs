@@ -219,9 +219,9 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
     // a corner failing only at the next load above does not count
     let corner_fails = |e: &DemEntry| {
         let at_limit = label(n_to_mn(e.load)) == 0.06;
-        if e.rank == 1 && e.theta_offset_deg == 0.1 && e.direction_offset_deg == -0.5 && at_limit {
-            0.05
-        } else if e.rank == 1 && e.theta_offset_deg != 0.0 && !at_limit {
+        let named = e.theta_offset_deg == 0.1 && e.direction_offset_deg == -0.5;
+        let fails = (named && at_limit) || (e.theta_offset_deg != 0.0 && !at_limit);
+        if e.rank == 1 && fails {
             0.05
         } else {
             0.01

@@ -375,7 +375,7 @@ mod tests {
         let rows = vec![fr(1.0, 0.011, 3.9), fr(2.0, 0.010, 3.0), fr(3.0, 0.05, 5.0)];
         let s = score(&rows, 4e9, 0.02);
         assert_eq!((s.superlubric_to_mn, s.verdict), (2.0, Verdict::Borderline));
-        let rows = vec![
+        let rows = [
             fr(1.0, 0.011, 3.0),
             fr(2.0, 0.010, 3.0),
             fr(3.0, 0.019, 3.0),
