@@ -329,9 +329,13 @@ fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> DemSectio
     }
 }
 
-/// A window cell: `±w` (degrees), `–` where not computed.
+/// A window cell: `±w` (degrees), `0` for none, `–` where not computed.
 fn window(w: Option<f64>) -> String {
-    w.map_or("–".into(), |w| format!("±{w}"))
+    match w {
+        None => "–".into(),
+        Some(w) if w == 0.0 => "0".into(),
+        Some(w) => format!("±{w}"),
+    }
 }
 
 /// The tolerance box and its sampling in words, e.g. `θ ±0.1° sampled every 0.02° (11 offsets)
@@ -565,5 +569,16 @@ impl ReportData {
             reproduce,
             slides,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// A window cell: a half-width with its ±, none as 0, not computed as a dash.
+    #[test]
+    fn window_cells() {
+        assert_eq!(super::window(Some(0.25)), "±0.25");
+        assert_eq!(super::window(Some(0.0)), "0");
+        assert_eq!(super::window(None), "–");
     }
 }
