@@ -333,7 +333,7 @@ fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> DemSectio
 fn window(w: Option<f64>) -> String {
     match w {
         None => "–".into(),
-        Some(w) if w == 0.0 => "0".into(),
+        Some(0.0) => "0".into(),
         Some(w) => format!("±{w}"),
     }
 }
