@@ -303,4 +303,19 @@ fn a_borderline_answer_is_never_a_plain_yes() {
     let head = &line[..line.find("mN**").unwrap()];
     assert!(head.contains("**borderline** superlubric up to"), "{line}");
     assert!(line.contains("docs/validation/verdict-band.md"), "{line}");
+    // superlubric at the nominal orientation only: not "superlubric nowhere"
+    pr.ranking[0].score.superlubric_to_mn = 0.0;
+    pr.ranking[0].score.verdict = Verdict::Not;
+    let line = answer_line(&pr, &a, &[], &p, 0.09);
+    assert!(!line.contains("no design is superlubric"), "{line}");
+    assert!(
+        line.contains("is superlubric up to 0.06 mN at its nominal orientation only"),
+        "{line}"
+    );
+    pr.ranking[0].score.nominal_to_mn = 0.0;
+    let line = answer_line(&pr, &a, &[], &p, 0.09);
+    assert!(
+        line.contains("no design is superlubric even at the lowest load"),
+        "{line}"
+    );
 }

@@ -58,7 +58,17 @@ pub fn answer_line(
             "- **{name}**: no design — no orientation keeps the coating intact (P_max ≤ {pc} GPa) even at the lowest load."
         );
     };
-    if b.score.superlubric_to_mn == 0.0 {
+    if b.score.superlubric_to_mn == 0.0 && b.score.nominal_to_mn > 0.0 {
+        // superlubric at its nominal orientation, but not over its whole tolerance box
+        let _ = write!(
+            m,
+            "- **{name}**: no design stays superlubric over its whole tolerance box even at the lowest load; the best candidate, θ = {}°, α = {}°, is superlubric up to {} mN at its nominal orientation only (μ_est ≤ {}).",
+            b.theta_deg,
+            b.alpha_deg,
+            b.score.nominal_to_mn,
+            fmt_g(b.score.mu_worst, 3),
+        );
+    } else if b.score.superlubric_to_mn == 0.0 {
         let _ = write!(
             m,
             "- **{name}**: no design is superlubric even at the lowest load; the best candidate, θ = {}°, α = {}°, has μ_est = {} there (coating intact on its path up to {} mN).",
