@@ -461,3 +461,101 @@ fn seeds_give_each_realisations_limit_behind_the_worst_case() {
     assert!(listed >= 3, "{r:?}");
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// A window known in advance. tri-tri at θ = 0 is commensurate: every sphere sits on top of
+/// one, and rotating the slider lifts the rim spheres off, so the screen's P_max at the
+/// placement rises with |δθ|. With P_crit set between two of its values on a fine θ list (at
+/// its largest relative step between 0.3° and 0.9°), μ_sl out of reach (10), a friction path of
+/// 2 nm through the placement (P_max on it is the placement's), the coating fails exactly
+/// beyond a θ offset h* read off the screen alone. The design's θ window, sampled every 0.1°,
+/// must be h* to that step (the largest sample ≤ h*), its direction window the whole direction
+/// tolerance, and its robust limit below the nominal (the box is wider than the window).
+#[test]
+fn the_theta_window_of_a_coating_failure_is_found_to_the_sampling_step() {
+    let d = tmpdir("tolerance-known");
+    let scene = [
+        "--pattern",
+        "tri-tri",
+        "--slider-radius-um",
+        "15",
+        "--substrate-um",
+        "60x60",
+        "--load-mn",
+        "0.09",
+    ];
+    // 1. the screen's placement P_max over a fine θ list around 0
+    let screen = d.join("screen.csv");
+    let o = bin()
+        .arg("screen")
+        .args(scene)
+        .arg("--theta=-1:1:0.02")
+        .arg("--out")
+        .arg(&screen)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let pts: Vec<(f64, f64)> = rows(&screen)
+        .iter()
+        .map(|r| (num(r, "theta_deg").abs(), num(r, "p_max_GPa")))
+        .collect();
+    assert!(pts.len() > 90, "{}", pts.len());
+    let mut hs: Vec<f64> = pts.iter().map(|p| p.0).collect();
+    hs.sort_by(f64::total_cmp);
+    hs.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    // M(h): the largest P_max over |δθ| ≤ h (non-decreasing)
+    let m = |h: f64| {
+        pts.iter()
+            .filter(|p| p.0 <= h + 1e-9)
+            .map(|p| p.1)
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (j, jump) = (1..hs.len())
+        .filter(|&j| hs[j] >= 0.3 && hs[j] <= 0.9)
+        .map(|j| (j, m(hs[j]) / m(hs[j - 1])))
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap();
+    assert!(jump > 1.0, "P_max must rise off the commensurate angle");
+    let p_crit: f64 = format!("{:.6}", 0.5 * (m(hs[j - 1]) + m(hs[j])))
+        .parse()
+        .unwrap();
+    let known = hs
+        .iter()
+        .copied()
+        .filter(|&h| m(h) <= p_crit)
+        .fold(0.0f64, f64::max);
+    assert!((0.28..0.9).contains(&known), "h* = {known}");
+    // 2. the design with a tolerance box wider than that window
+    let out = d.join("design");
+    let o = bin()
+        .args(["design", "--theta", "0", "--no-dem"])
+        .args(scene)
+        .args([
+            "--p-crit-gpa",
+            &p_crit.to_string(),
+            "--mu-superlubric",
+            "10",
+        ])
+        .args(["--length-um", "0.002", "--step-um", "0.001"])
+        .args(["--transient-um", "0", "--max-period-um", "0.002"])
+        .args(["--transverse-um", "0"])
+        .args(["--scan-distance-um", "0.5", "--alpha-refine-deg", "none"])
+        .args(["--theta-tol", "1", "--theta-tol-step", "0.1"])
+        .args(["--direction-tol", "0.5", "--direction-tol-step", "0.5"])
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let r = rows(&out.join("ranking.csv"));
+    let best = &r[0];
+    assert_eq!(num(best, "theta_deg"), 0.0);
+    assert_eq!(num(best, "superlubric_to_nominal_mN"), 0.09, "{best:?}");
+    let w = num(best, "theta_window_deg");
+    assert!(
+        w <= known + 1e-9 && w > known - 0.1 - 1e-9,
+        "θ window {w}° against h* = {known}° (step 0.1°)"
+    );
+    assert_eq!(num(best, "direction_window_deg"), 0.5, "{best:?}");
+    assert_eq!(num(best, "superlubric_to_mN"), 0.0, "{best:?}");
+    std::fs::remove_dir_all(&d).ok();
+}

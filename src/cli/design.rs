@@ -589,3 +589,7 @@ pub fn run(a: Args) -> Result<()> {
 #[cfg(test)]
 #[path = "design_tests.rs"]
 mod tests;
+
+#[cfg(test)]
+#[path = "design_answer_tests.rs"]
+mod answer_tests;

@@ -1,7 +1,8 @@
 //! The verdict of one friction estimate (θ, α, W): superlubric, borderline or not.
 //!
-//! The estimate's own rule (`superlubric` in [`crate::study::design::rank`]) is a yes/no on two
-//! thresholds: μ_est < μ_sl (0.02) and the path's largest P_max ≤ P_crit. The verdict widens each
+//! The estimate's own rule ([`superlubric`], here: the one rule of the screen's scan, the
+//! ranking, the tolerance search, the answer and the report) is a yes/no on two thresholds:
+//! μ_est < μ_sl (0.02) and the path's largest P_max ≤ P_crit ([`intact`]). The verdict widens each
 //! threshold by the estimate's measured error against the DEM, so that a row the DEM could place
 //! on the other side of a threshold is called **borderline**, never a plain yes:
 //!
@@ -21,6 +22,19 @@ use super::rows::FrictionRow;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use surrogate::units::pa_to_gpa;
+
+/// Whether a friction row's coating is intact on its whole path: no error and the path's
+/// largest P_max ≤ `p_crit` (Pa). Cost: a comparison.
+pub fn intact(r: &FrictionRow, p_crit: f64) -> bool {
+    r.error.is_empty() && r.p_max_GPa.is_some_and(|p| p <= pa_to_gpa(p_crit))
+}
+
+/// The estimate's yes/no rule: a friction row is **superlubric** when its coating is intact on
+/// the whole path ([`intact`]) and μ_est < `mu_sl`. No band (the [`Verdict`] adds it). Cost: a
+/// few comparisons.
+pub fn superlubric(r: &FrictionRow, p_crit: f64, mu_sl: f64) -> bool {
+    intact(r, p_crit) && r.mu_est.is_some_and(|m| m < mu_sl)
+}
 
 /// Range of μ_est/μ_DEM measured off the mount resonance (lowest, highest).
 pub const MU_RATIO: (f64, f64) = (0.83, 1.10);
@@ -63,6 +77,20 @@ impl Verdict {
             return Verdict::Not;
         }
         Verdict::of(r.mu_est, r.p_max_GPa.map(|p| p * 1e9), mu_sl, p_crit)
+    }
+
+    /// The worst verdict of `rows` (every load up to a limit, and every sample of a tolerance
+    /// box): `Not` when there are none, so a row borderline at any load up to the limit makes
+    /// the whole limit borderline.
+    pub fn worst<'r>(
+        rows: impl IntoIterator<Item = &'r FrictionRow>,
+        mu_sl: f64,
+        p_crit: f64,
+    ) -> Verdict {
+        rows.into_iter()
+            .map(|r| Verdict::of_row(r, mu_sl, p_crit))
+            .max()
+            .unwrap_or(Verdict::Not)
     }
 
     /// The lowercase word (`superlubric`, `borderline`, `not`).

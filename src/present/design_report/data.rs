@@ -6,7 +6,7 @@ use super::commands::slide_command;
 use super::commands::{corrugation_command, friction_command, loads_text, screen_command};
 use super::rows::{dem_rows, DemRow};
 use super::words::{answer_line, fmt_g, opt, protocol_words, which_design};
-use crate::study::design::{DesignOutcome, DesignParams};
+use crate::study::design::{tolerance_box, DesignOutcome, DesignParams};
 use crate::study::friction::resonance_note;
 use crate::study::rows::label;
 use serde::Serialize;
@@ -35,6 +35,10 @@ pub struct ReportData {
     pub dem: Option<DemSection>,
     /// The best 10 candidates per pattern.
     pub ranking: Vec<RankingLine>,
+    /// How the ranking's tolerance box is sampled, in words (empty without a tolerance).
+    pub sampling: String,
+    /// The verdict's band in words ([`crate::study::verdict::band_words`]), per pattern's P_crit.
+    pub band: String,
     /// Patterns with candidates on a mount in resonance.
     pub resonance: Vec<ResonanceLine>,
     /// The screen and shortlist of each pattern.
@@ -133,7 +137,15 @@ pub struct RankingLine {
     pub theta_deg: String,
     pub alpha_deg: String,
     pub pull_deg: String,
+    /// The robust limit (mN), `≤ x` where it is an upper bound (`robust_exact = false`).
     pub superlubric_to_mn: String,
+    /// The limit at the nominal (θ, α) alone (mN).
+    pub nominal_mn: String,
+    /// The θ and direction windows (±degrees), `–` where not computed.
+    pub theta_window_deg: String,
+    pub direction_window_deg: String,
+    /// The worst verdict up to the robust limit.
+    pub verdict: String,
     pub mu_worst: String,
     pub contacts: String,
     pub intact_to_mn: String,
@@ -317,6 +329,64 @@ fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> DemSectio
     }
 }
 
+/// A window cell: `±w` (degrees), `0` for none, `–` where not computed.
+fn window(w: Option<f64>) -> String {
+    match w {
+        None => "–".into(),
+        Some(0.0) => "0".into(),
+        Some(w) => format!("±{w}"),
+    }
+}
+
+/// The tolerance box and its sampling in words, e.g. `θ ±0.1° sampled every 0.02° (11 offsets)
+/// × pull direction ±0.5° every 0.25° (5 offsets)`, plus the seeds; empty without a tolerance.
+/// The step stated is the one used: the tolerance over the offsets on each side (≤ the
+/// `--…-tol-step` asked).
+pub fn sampling_words(p: &DesignParams) -> String {
+    let bx = tolerance_box(p);
+    if bx.is_point() {
+        return String::new();
+    }
+    let axis = |tol: f64, o: &[f64]| {
+        if o.len() < 2 {
+            format!("±{tol}° (not sampled)")
+        } else {
+            let step = label(o[1] - o[0]);
+            format!("±{tol}° sampled every {step}° ({} offsets)", o.len())
+        }
+    };
+    let mut m = format!(
+        "θ {} × pull direction {}",
+        axis(p.theta_tol_deg, &bx.theta_offsets_deg),
+        axis(p.direction_tol_deg, &bx.direction_offsets_deg)
+    );
+    if !p.seeds.is_empty() {
+        m.push_str(&format!(
+            " × the substrate seeds {} besides the scene's own",
+            p.seeds
+                .iter()
+                .map(|s| s.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    }
+    m
+}
+
+/// The verdict's band in words for the patterns' P_crit (one sentence per distinct P_crit).
+fn band_text(o: &DesignOutcome, p: &DesignParams) -> String {
+    let mut seen: Vec<f64> = Vec::new();
+    let mut parts: Vec<String> = Vec::new();
+    for pr in &o.patterns {
+        let pc = pr.scene.scene.coating.p_crit;
+        if !seen.contains(&pc) {
+            seen.push(pc);
+            parts.push(crate::study::verdict::band_words(p.mu_superlubric, pc));
+        }
+    }
+    parts.join("; ")
+}
+
 impl ReportData {
     /// The report's data from the outcome `o` of the design with parameters `p`.
     /// Cost: a pass over the ranking, the DEM runs and the evaluated θ.
@@ -338,7 +408,15 @@ impl ReportData {
                         theta_deg: format!("{}", c.theta_deg),
                         alpha_deg: format!("{}", c.alpha_deg),
                         pull_deg: fmt_g(c.direction_deg, 4),
-                        superlubric_to_mn: format!("{}", c.score.superlubric_to_mn),
+                        superlubric_to_mn: format!(
+                            "{}{}",
+                            if c.score.exact { "" } else { "≤ " },
+                            c.score.superlubric_to_mn
+                        ),
+                        nominal_mn: format!("{}", c.score.nominal_to_mn),
+                        theta_window_deg: window(c.score.theta_window_deg),
+                        direction_window_deg: window(c.score.direction_window_deg),
+                        verdict: c.score.verdict.to_string(),
                         mu_worst: fmt_g(c.score.mu_worst, 3),
                         contacts: fmt_g(c.score.contacts, 3),
                         intact_to_mn: format!("{}", c.score.intact_to_mn),
@@ -482,6 +560,8 @@ impl ReportData {
             dem_ran: o.dem_ran,
             dem: has_dem.then(|| dem_section(o, p, &dem)),
             ranking,
+            sampling: sampling_words(p),
+            band: band_text(o, p),
             resonance,
             screens,
             walls,
@@ -489,5 +569,16 @@ impl ReportData {
             reproduce,
             slides,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// A window cell: a half-width with its ±, none as 0, not computed as a dash.
+    #[test]
+    fn window_cells() {
+        assert_eq!(super::window(Some(0.25)), "±0.25");
+        assert_eq!(super::window(Some(0.0)), "0");
+        assert_eq!(super::window(None), "–");
     }
 }

@@ -315,6 +315,12 @@ mod tests {
                 resonance_drop: s("2.8"),
             }),
             ranking: vec![],
+            sampling: if levels > 0 {
+                s("θ ±0.1° sampled every 0.02° (11 offsets) × pull direction ±0.5° sampled every 0.25° (5 offsets)")
+            } else {
+                String::new()
+            },
+            band: s("borderline = μ_est in [0.0166, 0.0220)"),
             resonance: vec![],
             screens: vec![ScreenLine {
                 pattern: s("square-tri"),
@@ -363,6 +369,70 @@ mod tests {
             !md.contains("Patterns compared") && !md.contains("\n\n\n"),
             "{md}"
         );
+    }
+
+    /// The ranking section states the order of the score, the box's sampling and the band's
+    /// source, and its table carries the robust and nominal limits, the windows and the
+    /// verdict, with an upper bound marked "≤".
+    #[test]
+    fn the_ranking_table_has_the_robust_score() {
+        let s = |v: &str| v.to_string();
+        let mut d = small(false, 2);
+        let line = |rank: usize, to: &str, exact_window: &str| RankingLine {
+            pattern: s("square-tri"),
+            rank,
+            theta_deg: s("10"),
+            alpha_deg: s("90"),
+            pull_deg: s("90.0"),
+            superlubric_to_mn: s(to),
+            nominal_mn: s("0.09"),
+            theta_window_deg: s(exact_window),
+            direction_window_deg: s(exact_window),
+            verdict: s("borderline"),
+            mu_worst: s("0.0150"),
+            contacts: s("12.0"),
+            intact_to_mn: s("0.09"),
+            screen_intact_to_mn: s("0.09"),
+            corrugation_nm: s("0.100"),
+            reason: s("survives the highest load"),
+        };
+        d.ranking = vec![line(1, "0.06", "±0.1"), line(2, "≤ 0.03", "–")];
+        let md = render(&d).unwrap();
+        let sec = &md[md.find("## Ranking").unwrap()..md.find("## Screen and shortlist").unwrap()];
+        let order = [
+            "robust limit",
+            "θ window",
+            "direction window",
+            "μ_est",
+            "contact number",
+        ];
+        let at: Vec<usize> = order
+            .iter()
+            .map(|w| sec.find(w).unwrap_or_else(|| panic!("{w}: {sec}")))
+            .collect();
+        assert!(at.windows(2).all(|w| w[0] < w[1]), "{sec}");
+        assert!(sec.contains("θ ±0.1° sampled every 0.02°"), "{sec}");
+        assert!(sec.contains("docs/validation/verdict-band.md"), "{sec}");
+        assert!(!sec.contains("(1) highest load"), "{sec}");
+        assert!(sec.contains("| superlubric to, robust (mN) | nominal (mN) | θ window (°) | direction window (°) | verdict |"), "{sec}");
+        assert!(
+            sec.contains("| 90.0 | 0.06 | 0.09 | ±0.1 | ±0.1 | borderline | 0.0150 |"),
+            "{sec}"
+        );
+        assert!(
+            sec.contains("| 90.0 | ≤ 0.03 | 0.09 | – | – | borderline |"),
+            "{sec}"
+        );
+        // the files: the tolerance maps are named where there are any
+        assert!(
+            md.contains("`tolerance_<p>.csv` and `tolerance_<p>.png`"),
+            "{md}"
+        );
+        d.maps.clear();
+        d.sampling.clear();
+        let md = render(&d).unwrap();
+        assert!(!md.contains("tolerance_<p>.csv"));
+        assert!(md.contains("(no tolerance: 0)"), "{md}");
     }
 
     #[test]

@@ -51,15 +51,19 @@ pub struct DemRow {
     pub status: String,
     /// Friction coefficient of the DEM run.
     pub mu_dem: Option<f64>,
-    /// The surrogate estimate at the same (θ, α, W).
+    /// The surrogate estimate at the same (θ, α, W); for a tolerance-corner run, the estimate
+    /// its design's robust search made at that corner and load, empty where the search did not
+    /// estimate it there (it stops at the first sample that fails a load: the next load above
+    /// the robust limit may be unestimated at some corners).
     pub mu_est: Option<f64>,
     /// μ_est / μ_DEM.
     pub ratio_est_dem: Option<f64>,
     /// DEM verdict: μ_DEM < the superlubric limit, no contact above P_crit, not locked in.
     pub superlubric_dem: Option<bool>,
-    /// Surrogate verdict at this load (coating intact on the path, μ_est < the limit).
+    /// Surrogate verdict at this load (coating intact on the path, μ_est < the limit; empty
+    /// with `mu_est`'s estimate missing).
     pub superlubric_est: Option<bool>,
-    /// Both verdicts agree.
+    /// Both verdicts agree (empty where either is).
     pub verdicts_agree: Option<bool>,
     /// Mean spring force (mN).
     pub friction_mN: Option<f64>,
@@ -91,12 +95,22 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
         .map(|e| {
             let pr = o.patterns.iter().find(|pr| pr.scene.name == e.pattern);
             let w = label(n_to_mn(e.load));
-            let cand = pr.and_then(|pr| {
-                pr.ranking
-                    .iter()
-                    .find(|c| c.theta_deg == e.theta_deg && c.alpha_deg == e.alpha_deg)
+            let corner = e.theta_offset_deg != 0.0 || e.direction_offset_deg != 0.0;
+            // a corner run: the estimate its design's robust search made at that corner and
+            // load (none where the search did not estimate it there); else the design's own
+            let fr = pr.and_then(|pr| {
+                if corner {
+                    pr.ranking
+                        .get(e.rank.wrapping_sub(1))
+                        .filter(|c| e.theta_deg == label(c.theta_deg + e.theta_offset_deg))
+                        .and_then(|c| c.corner_row(e.theta_offset_deg, e.direction_offset_deg, w))
+                } else {
+                    pr.ranking
+                        .iter()
+                        .find(|c| c.theta_deg == e.theta_deg && c.alpha_deg == e.alpha_deg)
+                        .and_then(|c| row_at(c, w))
+                }
             });
-            let fr = cand.and_then(|c| row_at(c, w));
             let p_crit = pr.map(|pr| pr.scene.scene.coating.p_crit);
             let r = e.outcome.result.as_ref();
             let mu_est = fr.and_then(|f| f.mu_est);
@@ -106,7 +120,7 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
                 .map(|(r, pc)| dem_superlubric(Some(r), None, w, pc, p.mu_superlubric).is_ok());
             let sl_est = fr
                 .zip(p_crit)
-                .map(|(f, pc)| crate::study::design::rank::superlubric(f, pc, p.mu_superlubric));
+                .map(|(f, pc)| crate::study::verdict::superlubric(f, pc, p.mu_superlubric));
             DemRow {
                 pattern: e.pattern.clone(),
                 rank: e.rank,

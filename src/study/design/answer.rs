@@ -6,18 +6,20 @@
 //!
 //! - **confirmed** when every DEM run of the design's confirmation protocol at a confirmation
 //!   load up to its superlubric load (`superlubric_to`, from the estimate) confirms
-//!   superlubricity (at least one such run);
+//!   superlubricity (at least one such run) and, with a fabrication tolerance, so does every
+//!   run at the corners of its tolerance box at that load (the robust limit load: the centre
+//!   AND the corners hold there);
 //! - **contradicted** when one of them does not (the reason is kept: locked in, P_max above
-//!   P_crit, μ_DEM above the limit, the run failed);
-//! - **unchecked** when it has no DEM run at such a load (not among the confirmed top K, or a
-//!   superlubric load below the lowest confirmation load).
+//!   P_crit, μ_DEM above the limit, the run failed; for a corner, which corner);
+//! - **unchecked** when it has no DEM run at such a load, or no corner run at its limit (not
+//!   among the confirmed top K, or a superlubric load below the lowest confirmation load).
 //!
 //! **The answer** of a pattern is the best-ranked *confirmed* design among the DEM-checked top K;
 //! when none is confirmed, the surrogate's best with what the DEM said about it; without the DEM
 //! (`--no-dem`), the surrogate's best. Its load is the estimate's `superlubric_to` (the DEM
 //! checks it at the confirmation loads up to that load and at that load itself, not in between).
 
-use super::{DemEntry, DesignParams, PatternResult};
+use super::{tolerance_box, DemEntry, DesignParams, PatternResult};
 use surrogate::units::n_to_mn;
 
 /// What the DEM says about one design.
@@ -57,20 +59,25 @@ pub fn dem_superlubric(e: &DemEntry, p_crit: f64, mu_sl: f64) -> Result<(), Stri
 }
 
 /// What the DEM runs `dem` (the design's protocol) say about the design at `rank` (1-based) of
-/// `pr`.
+/// `pr`: its own runs up to its superlubric load, then — with a tolerance — the runs at the
+/// corners of its box at that load ([`super::confirm::corner_jobs`]); the first that does not
+/// confirm says why (a corner's reason names the corner).
 pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams) -> Check {
     let Some(c) = pr.ranking.get(rank - 1) else {
         return Check::Unchecked;
     };
     let p_crit = pr.scene.scene.coating.p_crit;
+    let w_mn = |e: &DemEntry| crate::study::rows::label(n_to_mn(e.load));
+    let corner = |e: &DemEntry| e.theta_offset_deg != 0.0 || e.direction_offset_deg != 0.0;
     let mut runs: Vec<&DemEntry> = dem
         .iter()
         .filter(|e| {
             e.pattern == pr.scene.name
                 && !e.study_protocol
+                && !corner(e)
                 && e.theta_deg == c.theta_deg
                 && e.alpha_deg == c.alpha_deg
-                && crate::study::rows::label(n_to_mn(e.load)) <= c.score.superlubric_to_mn
+                && w_mn(e) <= c.score.superlubric_to_mn
         })
         .collect();
     runs.sort_by(|a, b| a.load.total_cmp(&b.load));
@@ -82,11 +89,31 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
             return Check::Contradicted(why);
         }
     }
-    Check::Confirmed(
-        runs.iter()
-            .map(|e| crate::study::rows::label(n_to_mn(e.load)))
-            .collect(),
-    )
+    if !tolerance_box(p).is_point() && c.score.superlubric_to_mn > 0.0 {
+        let corners: Vec<&DemEntry> = dem
+            .iter()
+            .filter(|e| {
+                e.pattern == pr.scene.name
+                    && !e.study_protocol
+                    && corner(e)
+                    && e.rank == rank
+                    && e.theta_deg == crate::study::rows::label(c.theta_deg + e.theta_offset_deg)
+                    && w_mn(e) == c.score.superlubric_to_mn
+            })
+            .collect();
+        if corners.is_empty() {
+            return Check::Unchecked;
+        }
+        for e in corners {
+            if let Err(why) = dem_superlubric(e, p_crit, p.mu_superlubric) {
+                return Check::Contradicted(format!(
+                    "{why} at its tolerance corner δθ = {:+}°, δdir = {:+}°",
+                    e.theta_offset_deg, e.direction_offset_deg
+                ));
+            }
+        }
+    }
+    Check::Confirmed(runs.iter().map(|e| w_mn(e)).collect())
 }
 
 /// The answer of `pr` (see the module docs).

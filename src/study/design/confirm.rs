@@ -1,5 +1,5 @@
 //! Stage 6 of a design, the DEM confirmation: which runs (the top designs at the confirmation
-//! loads, the answer's tolerance corners, borderline designs first), the friction estimates
+//! loads and at the corners of their tolerance boxes, borderline designs first), the friction estimates
 //! they are compared with, and the batch of independent `slide` runs side by side, one thread
 //! each, through the study layer's batch runner [`crate::study::batch`].
 //!
@@ -147,13 +147,14 @@ pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64
     w
 }
 
-/// One DEM run of the confirmation: pattern, rank, θ (°), α (°), W (N), study protocol.
-/// (pattern, rank, θ, α, W, study protocol, θ offset, direction offset) of a DEM run.
-pub(super) type ConfirmEntry = (String, usize, f64, f64, f64, bool, f64, f64);
+/// One DEM run of the confirmation: (pattern, rank, θ (°), α (°), W (N), study protocol,
+/// θ offset (°), direction offset (°)).
+pub type ConfirmEntry = (String, usize, f64, f64, f64, bool, f64, f64);
 
-/// The confirmation runs (top `confirm` designs × confirmation loads), in order, with what
-/// each one is.
-pub(super) fn confirm_jobs(
+/// The confirmation runs (top `confirm` designs × confirmation loads, and the corners of each
+/// one's tolerance box, [`corner_jobs`]), with what each one is; the runs of borderline designs
+/// first, else in ranking order.
+pub fn confirm_jobs(
     patterns: &[PatternResult],
     p: &DesignParams,
 ) -> (Vec<SlideJob>, Vec<ConfirmEntry>) {
@@ -182,10 +183,9 @@ pub(super) fn confirm_jobs(
                     ),
                 ));
             }
-            if k == 0 {
-                for (job, entry) in corner_jobs(pr, c, p) {
-                    all.push((!borderline, job, entry));
-                }
+            // every design that the answer can name (any of the top K) has its corners run
+            for (job, entry) in corner_jobs(pr, c, k + 1, p) {
+                all.push((!borderline, job, entry));
             }
         }
     }
@@ -193,16 +193,18 @@ pub(super) fn confirm_jobs(
     all.into_iter().map(|(_, j, e)| (j, e)).unzip()
 }
 
-/// The DEM runs of the tolerance box's corners of the design `c` (the best of its pattern): θ ±
-/// tol × pull direction ± tol (fixed in the substrate frame: α' = direction' − line(θ')), at
-/// its robust limit load and the next load above. None without a tolerance or a limit.
+/// The DEM runs of the tolerance box's corners of the design `c` at `rank`: θ ± tol × pull
+/// direction ± tol ([`crate::study::tolerance::ToleranceBox::corners`]; the direction fixed in
+/// the substrate frame: α' = direction' − line(θ')), at its robust limit load and the next load
+/// above. None without a tolerance or a limit.
 pub(super) fn corner_jobs(
     pr: &PatternResult,
     c: &Candidate,
+    rank: usize,
     p: &DesignParams,
 ) -> Vec<(SlideJob, ConfirmEntry)> {
     let mut out = Vec::new();
-    if tolerance_box(p).is_point() || c.score.superlubric_to_mn <= 0.0 {
+    if c.score.superlubric_to_mn <= 0.0 {
         return out;
     }
     let Some(k) = p
@@ -213,10 +215,9 @@ pub(super) fn corner_jobs(
         return out;
     };
     let loads = &p.loads[k..(k + 2).min(p.loads.len())];
+    let corners = tolerance_box(p).corners();
     for &w in loads {
-        for (st, sd) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)] {
-            let dt = label(st * p.theta_tol_deg);
-            let dd = label(sd * p.direction_tol_deg);
+        for &(dt, dd) in &corners {
             let theta = label(c.theta_deg + dt);
             let scene = pr.scene.scene.with_theta(deg_to_rad(theta));
             let line = crate::study::friction::line_at(&scene, deg_to_rad(theta), p.line);
@@ -227,7 +228,7 @@ pub(super) fn corner_jobs(
                     scene,
                     params: dem_params(p, alpha, w, false),
                 },
-                (pr.scene.name.clone(), 1, theta, alpha, w, false, dt, dd),
+                (pr.scene.name.clone(), rank, theta, alpha, w, false, dt, dd),
             ));
         }
     }

@@ -14,10 +14,13 @@
 //! 4. **α scan and friction estimate** per shortlisted θ ([`scan`]): contact line, corrugation
 //!    versus α (coarse grid, then refined near the minimum), the friction estimate μ_est
 //!    (`surrogate::friction`) along the best α's at every load.
-//! 5. **Ranking** ([`rank`]): score = highest load up to which superlubric (coating intact on
-//!    the sliding path AND μ_est < 0.02 at every load up to it), then μ_est, then contacts.
+//! 5. **Ranking** ([`rank`]): score = the robust limit, the highest load up to which
+//!    superlubric (coating intact on the sliding path AND μ_est < 0.02 at every load up to it)
+//!    at every sample of the tolerance box ([`robust`]), then the θ window, the direction
+//!    window, μ_est, contacts.
 //! 6. **DEM confirmation** ([`confirm`]): the top `confirm` designs of each pattern at the
-//!    confirmation loads, independent `slide` runs side by side, one thread each (plus, with a
+//!    confirmation loads and at the corners of their tolerance boxes (borderline designs
+//!    first), independent `slide` runs side by side, one thread each (plus, with a
 //!    protocol shorter than the study's, the design the report recommends once with the study's
 //!    protocol to measure the difference there: [`protocol_check_design`]).
 //! 7. **Outputs**: [`design`] hands each pattern's result to the command's hook as soon as the
@@ -801,6 +804,7 @@ mod tests {
                 screen_intact_to_mn: 3.86,
                 reason: String::new(),
                 friction: vec![],
+                corners: vec![],
                 score: Score {
                     superlubric_to_mn: 3.86,
                     nominal_to_mn: 3.86,

@@ -2,7 +2,8 @@
 //!
 //! A candidate (θ, α) is **superlubric at load W** when its friction estimate along α exists,
 //! its coating is intact on the whole sliding path (the largest P_max along the path, which
-//! starts at the screened placement, ≤ P_crit) and μ_est < `mu_superlubric` (0.02).
+//! starts at the screened placement, ≤ P_crit) and μ_est < `mu_superlubric` (0.02): the rule
+//! [`crate::study::verdict::superlubric`].
 //!
 //! **Score**, compared in this order:
 //! 1. `superlubric_to` — the highest load W_k of the list such that the candidate is
@@ -22,10 +23,9 @@
 
 use super::scan::ThetaEval;
 use crate::study::rows::FrictionRow;
-use crate::study::verdict::Verdict;
+use crate::study::verdict::{intact, superlubric, Verdict};
 use serde::{Deserialize, Serialize};
 use std::cmp::Ordering;
-use surrogate::units::pa_to_gpa;
 
 /// One (θ, α) candidate of a pattern with its friction rows (one per load, ascending).
 #[derive(Debug, Clone, PartialEq)]
@@ -50,8 +50,38 @@ pub struct Candidate {
     pub reason: String,
     /// Friction estimate per load.
     pub friction: Vec<FrictionRow>,
+    /// The estimates its robust search made at the corners of its tolerance box (the design's
+    /// own substrate), every load estimated there: the estimate beside a corner's DEM run.
+    /// Empty without a tolerance or a search.
+    pub corners: Vec<CornerEstimate>,
     /// The score.
     pub score: Score,
+}
+
+/// One friction estimate at a corner of a candidate's tolerance box.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CornerEstimate {
+    /// θ offset from the candidate (degrees).
+    pub theta_offset_deg: f64,
+    /// Pull-direction offset from the candidate, substrate frame (degrees).
+    pub direction_offset_deg: f64,
+    /// The estimate (its `load_mN` is the load).
+    pub row: FrictionRow,
+}
+
+impl Candidate {
+    /// The estimate at the box corner (`dt`, `dd`) (degrees) at load `w_mn` (mN), where its
+    /// robust search estimated that corner at that load.
+    pub fn corner_row(&self, dt: f64, dd: f64, w_mn: f64) -> Option<&FrictionRow> {
+        self.corners
+            .iter()
+            .find(|c| {
+                (c.theta_offset_deg - dt).abs() < 1e-9
+                    && (c.direction_offset_deg - dd).abs() < 1e-9
+                    && (c.row.load_mN - w_mn).abs() < 1e-12
+            })
+            .map(|c| &c.row)
+    }
 }
 
 /// The score of a candidate (see the module docs; loads in mN).
@@ -67,7 +97,8 @@ pub struct Score {
     pub theta_window_deg: Option<f64>,
     /// Direction half-width (degrees) inside which it stays superlubric at that load.
     pub direction_window_deg: Option<f64>,
-    /// The worst verdict at `superlubric_to_mn` (over the box's samples with a tolerance).
+    /// The worst verdict over every load up to `superlubric_to_mn` (and over the box's samples
+    /// estimated there, with a tolerance); `Not` when that is 0.
     pub verdict: Verdict,
     /// Whether `superlubric_to_mn` is exact (else an upper bound: the robust evaluation stopped
     /// once the design could not reach the top of the ranking).
@@ -81,16 +112,6 @@ pub struct Score {
     /// With several substrate seeds, each seed's own limit at the nominal (θ, α) (mN, seed
     /// order): the spread behind the worst case. `None`: one substrate, or not computed.
     pub seed_limits_mn: Option<Vec<f64>>,
-}
-
-/// Whether a friction row is superlubric (see the module docs).
-pub fn superlubric(r: &FrictionRow, p_crit: f64, mu_sl: f64) -> bool {
-    intact(r, p_crit) && r.mu_est.is_some_and(|m| m < mu_sl)
-}
-
-/// Whether a friction row's coating is intact on its whole path.
-pub fn intact(r: &FrictionRow, p_crit: f64) -> bool {
-    r.error.is_empty() && r.p_max_GPa.is_some_and(|p| p <= pa_to_gpa(p_crit))
 }
 
 /// The score of the rows of one (θ, α), loads ascending.
@@ -107,10 +128,7 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
         // stage replaces these where the box is wider
         theta_window_deg: Some(0.0),
         direction_window_deg: Some(0.0),
-        verdict: match n_sl {
-            0 => Verdict::Not,
-            n => Verdict::of_row(&rows[n - 1], mu_sl, p_crit),
-        },
+        verdict: Verdict::worst(&rows[..n_sl], mu_sl, p_crit),
         exact: true,
         intact_to_mn: load(n_in),
         mu_worst: upto
@@ -158,6 +176,7 @@ pub fn candidates(
             reason: reason.to_string(),
             score: score(&rows, p_crit, mu_sl),
             friction: rows,
+            corners: Vec::new(),
         })
         .collect()
 }
@@ -220,15 +239,17 @@ pub struct RankingRow {
     pub superlubric_to_mN: f64,
     /// The same at the nominal (θ, α) alone (mN).
     pub superlubric_to_nominal_mN: f64,
-    /// θ half-width (degrees) around the nominal inside which every sample stays superlubric
-    /// at `superlubric_to_nominal_mN` (sampled out to `theta_tol_deg`: equal to it means "at
-    /// least"). Empty without a tolerance, and for designs below the exact top of the ranking
-    /// other than the nominal optimum (not computed).
+    /// θ half-width (degrees) around the nominal inside which every sample on the θ axis (the
+    /// nominal direction) is superlubric at every load up to `superlubric_to_nominal_mN`
+    /// (sampled out to `theta_tol_deg`: equal to it means "at least"). 0 with a zero tolerance;
+    /// empty for designs below the exact top of the ranking other than the nominal optimum (not
+    /// computed).
     pub theta_window_deg: Option<f64>,
-    /// The same along the pulling direction (degrees; at most `direction_tol_deg`).
+    /// The same along the pulling-direction axis (degrees; at most `direction_tol_deg`).
     pub direction_window_deg: Option<f64>,
-    /// The worst verdict at `superlubric_to_mN` over the box: superlubric, borderline (within
-    /// the estimate's measured uncertainty of the μ or P_crit threshold) or not.
+    /// The worst verdict over every load up to `superlubric_to_mN` and every sample of the box
+    /// estimated there: superlubric, borderline (within the estimate's measured uncertainty of
+    /// the μ or P_crit threshold) or not (also when `superlubric_to_mN` is 0).
     pub verdict: String,
     /// Whether `superlubric_to_mN` is exact; `false`: an upper bound (the robust evaluation
     /// stops once a design cannot reach the designs ranked above it, which are exact).
@@ -324,9 +345,42 @@ mod tests {
         assert_eq!(s.intact_to_mn, 2.0);
         assert_eq!(s.mu_worst, 0.015);
         assert_eq!(s.contacts, 200.0);
+        assert_eq!(s.verdict, Verdict::Superlubric);
         let rows = vec![fr(1.0, 0.03, 3.0), fr(2.0, 0.01, 3.0)];
         let s = score(&rows, 4e9, 0.02);
         assert_eq!((s.superlubric_to_mn, s.intact_to_mn), (0.0, 2.0));
         assert_eq!(s.mu_worst, 0.03);
+        assert_eq!(s.verdict, Verdict::Not);
+    }
+
+    /// A load below the limit inside the μ band makes the limit borderline, though the limit
+    /// load itself is clear of both bands.
+    #[test]
+    fn the_verdict_is_the_worst_over_every_load_up_to_the_limit() {
+        let rows = vec![
+            fr(1.0, 0.011, 3.0),
+            fr(2.0, 0.018, 3.0),
+            fr(3.0, 0.010, 3.0),
+            fr(4.0, 0.030, 3.0),
+        ];
+        assert_eq!(
+            Verdict::of_row(&rows[2], 0.02, 4e9),
+            Verdict::Superlubric,
+            "the limit load alone is clear"
+        );
+        let s = score(&rows, 4e9, 0.02);
+        assert_eq!(s.superlubric_to_mn, 3.0);
+        assert_eq!(s.verdict, Verdict::Borderline);
+        // a P_max inside the band at the lowest load counts too; rows past the limit do not
+        let rows = vec![fr(1.0, 0.011, 3.9), fr(2.0, 0.010, 3.0), fr(3.0, 0.05, 5.0)];
+        let s = score(&rows, 4e9, 0.02);
+        assert_eq!((s.superlubric_to_mn, s.verdict), (2.0, Verdict::Borderline));
+        let rows = [
+            fr(1.0, 0.011, 3.0),
+            fr(2.0, 0.010, 3.0),
+            fr(3.0, 0.019, 3.0),
+        ];
+        let s = score(&rows[..2], 4e9, 0.02);
+        assert_eq!(s.verdict, Verdict::Superlubric);
     }
 }

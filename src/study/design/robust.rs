@@ -9,7 +9,7 @@
 //! Cost: about one single-load path per sample to disprove a bound, and one path per sample to
 //! verify a limit; docs/validation/tolerance-cost.md.
 
-use super::rank::{self, Candidate};
+use super::rank::{self, Candidate, CornerEstimate};
 use super::store::Store;
 use super::{DesignParams, DesignScene};
 use crate::study::meta::Inputs;
@@ -200,6 +200,26 @@ impl<'a> Searches<'a> {
     }
 }
 
+/// Every estimate search `s` made at a corner of `bx` on the design's own substrate (seed 0).
+fn corner_estimates(bx: &ToleranceBox, s: &RobustSearch) -> Vec<CornerEstimate> {
+    let corners = bx.corners();
+    s.state
+        .samples
+        .iter()
+        .filter(|x| {
+            x.seed == 0
+                && corners.contains(&(x.theta_offset_deg + 0.0, x.direction_offset_deg + 0.0))
+        })
+        .flat_map(|x| {
+            x.rows.iter().flatten().map(|r| CornerEstimate {
+                theta_offset_deg: x.theta_offset_deg + 0.0,
+                direction_offset_deg: x.direction_offset_deg + 0.0,
+                row: r.clone(),
+            })
+        })
+        .collect()
+}
+
 /// The loads (count) up to `mn`.
 fn count(p: &DesignParams, mn: f64) -> usize {
     p.loads.iter().filter(|&&w| label(n_to_mn(w)) <= mn).count()
@@ -358,9 +378,11 @@ pub fn robust_stage(
                     .iter()
                     .find(|(k, _)| *k == key)
                     .map(|(_, v)| v.clone());
+                c.corners = corner_estimates(&searches.bx, s);
             }
             None => {
                 // never refined: its nominal limit is its bound, its windows unknown
+                c.corners = Vec::new();
                 c.score.exact = false;
                 c.score.theta_window_deg = None;
                 c.score.direction_window_deg = None;

@@ -15,7 +15,7 @@
 //!   the lowest load; if the candidate is superlubric there (coating intact on the path and
 //!   μ_est below the limit), at the other loads up to the orientation's coating-intact load
 //!   `W_c`, ascending, up to and including the first load whose coating fails on the sliding
-//!   path (beyond it neither the score nor the intact-to load of [`super::rank`] can change;
+//!   path (beyond it neither the score nor the intact-to load of the ranking can change;
 //!   each estimate is bit-identical to one path for all loads). Loads above `W_c` are not
 //!   estimated: the coating fails there at the screened placement, the first sample of every
 //!   path, so the candidate cannot
@@ -199,7 +199,7 @@ pub fn evaluate(
             .map_or(p.loads.len(), |k| k + 1);
         let lowest = estimate_friction_loads(solver, theta, dir, &p.loads[..1], &p.friction)?;
         let first = row(p.loads[0], &lowest[0]);
-        let go_on = super::rank::superlubric(&first, p_crit, p.mu_superlubric);
+        let go_on = crate::study::verdict::superlubric(&first, p_crit, p.mu_superlubric);
         friction.push(first);
         if go_on {
             // ascending, LOAD_CHUNK loads per path (bit-identical to one path for all), up to
@@ -209,7 +209,7 @@ pub fn evaluate(
                 let r = estimate_friction_loads(solver, theta, dir, chunk, &p.friction)?;
                 for (&w, r) in chunk.iter().zip(&r) {
                     let next = row(w, r);
-                    let failed = !super::rank::intact(&next, p_crit);
+                    let failed = !crate::study::verdict::intact(&next, p_crit);
                     friction.push(next);
                     if failed {
                         break 'chunks;

@@ -6,7 +6,6 @@
 //! `patterns.csv` read: every candidate's score and its lowest-load friction row, the full
 //! friction rows of the top designs, the levels, θ list and wall times.
 
-use super::confirm::corner_jobs;
 use super::rank::Candidate;
 use super::{DesignParams, PatternResult};
 
@@ -26,8 +25,8 @@ pub fn resonance_flagged(ranking: &[Candidate]) -> usize {
 impl PatternResult {
     /// Drops the rows that only the pattern's own files need (see the module docs); the ranks
     /// kept whole are the top `max(confirm, CHART_DESIGNS)` (the DEM runs, the answers, the
-    /// μ chart) and, with the DEM, a candidate at a tolerance corner of the best design (its
-    /// estimate sits beside that DEM run). Call after the pattern's estimates for the DEM
+    /// μ chart; they keep their corner estimates, which sit beside their corner DEM runs).
+    /// Call after the pattern's estimates for the DEM
     /// ([`super::design`] does) and after `resonance_flagged` is counted. Idempotent.
     /// Cost: frees O(screen rows + scan rows + friction rows) of memory.
     pub fn trim(&mut self, p: &DesignParams) {
@@ -38,18 +37,10 @@ impl PatternResult {
             e.eval.friction = Vec::new();
         }
         let keep = p.confirm.max(CHART_DESIGNS);
-        let corners: Vec<(f64, f64)> = match (p.no_dem, self.ranking.first()) {
-            (false, Some(best)) => corner_jobs(self, best, p)
-                .into_iter()
-                .map(|(_, e)| (e.2, e.3))
-                .collect(),
-            _ => Vec::new(),
-        };
         for c in self.ranking.iter_mut().skip(keep) {
-            if !corners.contains(&(c.theta_deg, c.alpha_deg)) {
-                c.friction.truncate(1);
-                c.friction.shrink_to_fit();
-            }
+            c.friction.truncate(1);
+            c.friction.shrink_to_fit();
+            c.corners = Vec::new();
         }
         self.trimmed = true;
     }

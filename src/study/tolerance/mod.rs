@@ -30,10 +30,11 @@ pub use snapshot::Snapshot;
 
 use super::corrugation::contact_line;
 use super::rows::{label, FrictionRow};
+use super::verdict::superlubric;
 use anyhow::Result;
 use surrogate::friction::{estimate_friction_loads, FrictionParams};
 use surrogate::solver::{Model, Pose, Solver};
-use surrogate::units::{deg_to_rad, pa_to_gpa};
+use surrogate::units::deg_to_rad;
 
 /// Loads per friction path above a guess (a cost knob only: each estimate is bit-identical for
 /// any grouping of loads into paths).
@@ -77,13 +78,6 @@ pub fn placement_intact(solver: &Solver, theta: f64, loads: &[f64]) -> usize {
         .iter()
         .take_while(|r| r.as_ref().is_ok_and(|e| e.p_max <= p_crit))
         .count()
-}
-
-/// Whether a row is superlubric by the estimate's thresholds (the design's rule).
-pub fn superlubric(r: &FrictionRow, p_crit: f64, mu_sl: f64) -> bool {
-    r.error.is_empty()
-        && r.p_max_GPa.is_some_and(|p| p <= pa_to_gpa(p_crit))
-        && r.mu_est.is_some_and(|m| m < mu_sl)
 }
 
 /// The friction rows of (θ, direction) (degrees; direction from the substrate's x axis) at the

@@ -17,9 +17,9 @@
 
 mod seeds;
 
-use super::{placement_intact, rows_at, superlubric, LimitParams};
+use super::{placement_intact, rows_at, LimitParams};
 use crate::study::rows::{label, FrictionRow};
-use crate::study::verdict::Verdict;
+use crate::study::verdict::{superlubric, Verdict};
 use anyhow::Result;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -55,6 +55,25 @@ impl ToleranceBox {
     /// Whether the box is the nominal point alone.
     pub fn is_point(&self) -> bool {
         self.theta_offsets_deg.len() == 1 && self.direction_offsets_deg.len() == 1
+    }
+
+    /// The corners of the box (θ offset, direction offset), distinct, direction outer and θ
+    /// inner from the negative side: four, two where one tolerance is 0, none for a point.
+    /// Exactly the extreme offsets of [`ToleranceBox::samples`] (−0 read as 0).
+    pub fn corners(&self) -> Vec<Offset> {
+        if self.is_point() {
+            return Vec::new();
+        }
+        let ends = |o: &[f64]| {
+            let mut e = vec![o[0] + 0.0, o[o.len() - 1] + 0.0];
+            e.dedup();
+            e
+        };
+        let th = ends(&self.theta_offsets_deg);
+        ends(&self.direction_offsets_deg)
+            .into_iter()
+            .flat_map(|d| th.iter().map(move |&t| (t, d)))
+            .collect()
     }
 
     /// Every sample (θ offset, direction offset) except the nominal, in the order in which a
@@ -137,12 +156,29 @@ pub struct Robust {
     pub theta_window_deg: Option<f64>,
     /// The same along the direction axis.
     pub direction_window_deg: Option<f64>,
-    /// The worst verdict over the box's samples at the limit load (`Not` when 0).
+    /// The worst verdict over every load up to the limit and every sample of the box estimated
+    /// there (`Not` when 0; [`worst_verdict`]).
     pub verdict: Verdict,
     /// Friction paths solved (cost).
     pub paths: usize,
     /// Whether `superlubric_to` is exact.
     pub exact: bool,
+}
+
+/// The worst verdict over every load up to `b` (a load count) of every sample, counting the
+/// rows estimated (with an exact limit: all of them); `Not` when `b` is 0. So a sample
+/// borderline at a load below the limit makes the limit borderline.
+pub fn worst_verdict(samples: &[SampleState], b: usize, mu_sl: f64, p_crit: f64) -> Verdict {
+    if b == 0 {
+        return Verdict::Not;
+    }
+    Verdict::worst(
+        samples
+            .iter()
+            .flat_map(|s| s.rows.iter().take(b).filter_map(Option::as_ref)),
+        mu_sl,
+        p_crit,
+    )
 }
 
 /// A robust search on one design (see the module docs).
@@ -457,16 +493,7 @@ impl<'a> RobustSearch<'a> {
     pub fn result(&self) -> Robust {
         let st = &self.state;
         let b = st.bound;
-        let verdict = if b == 0 {
-            Verdict::Not
-        } else {
-            st.samples
-                .iter()
-                .filter_map(|s| s.rows[b - 1].as_ref())
-                .map(|r| Verdict::of_row(r, self.p.mu_superlubric, self.p_crit))
-                .max()
-                .unwrap_or(Verdict::Not)
-        };
+        let verdict = worst_verdict(&st.samples, b, self.p.mu_superlubric, self.p_crit);
         let w = &st.samples[st.worst];
         Robust {
             superlubric_to: b,
@@ -497,5 +524,58 @@ mod tests {
             assert_eq!((c.0.abs(), c.1.abs()), (0.1, 0.5));
         }
         assert!(ToleranceBox::new(0.0, 0.0, 0.02, 0.25).is_point());
+        assert_eq!(
+            bx.corners(),
+            vec![(-0.1, -0.5), (0.1, -0.5), (-0.1, 0.5), (0.1, 0.5)]
+        );
+        for c in bx.corners() {
+            assert!(s.contains(&c));
+        }
+        assert_eq!(
+            ToleranceBox::new(0.0, 0.5, 0.02, 0.25).corners(),
+            vec![(0.0, -0.5), (0.0, 0.5)]
+        );
+        assert!(ToleranceBox::new(0.0, 0.0, 0.02, 0.25).corners().is_empty());
+    }
+
+    /// The verdict of a limit is the worst over every load up to it and every sample: a corner
+    /// borderline at the lowest load makes a limit of two loads borderline; loads above the
+    /// limit and rows not estimated do not count.
+    #[test]
+    fn the_verdict_is_the_worst_below_the_limit_over_every_sample() {
+        let row = |mu: f64, p_gpa: f64| {
+            let mut r = FrictionRow::new(
+                "x",
+                0.0,
+                0.0,
+                0.0,
+                1e-3,
+                &Err(surrogate::SceneError::invalid("x", 0.0, "y")),
+            );
+            r.error.clear();
+            r.mu_est = Some(mu);
+            r.p_max_GPa = Some(p_gpa);
+            r
+        };
+        let sample = |rows: Vec<Option<FrictionRow>>| SampleState {
+            seed: 0,
+            theta_offset_deg: 0.0,
+            direction_offset_deg: 0.0,
+            cap: rows.len(),
+            rows,
+        };
+        let clear = || Some(row(0.010, 3.0));
+        let samples = vec![
+            sample(vec![clear(), clear(), Some(row(0.05, 5.0))]),
+            sample(vec![Some(row(0.018, 3.0)), clear(), None]),
+            sample(vec![clear(), None, Some(row(0.019, 3.9))]),
+        ];
+        let v = |b: usize| worst_verdict(&samples, b, 0.02, 4e9);
+        assert_eq!(v(0), Verdict::Not);
+        assert_eq!(v(1), Verdict::Borderline);
+        assert_eq!(v(2), Verdict::Borderline, "borderline at the lowest load");
+        let clean = vec![samples[0].clone(), samples[0].clone()];
+        assert_eq!(worst_verdict(&clean, 2, 0.02, 4e9), Verdict::Superlubric);
+        assert_eq!(worst_verdict(&clean, 3, 0.02, 4e9), Verdict::Not);
     }
 }
