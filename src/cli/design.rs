@@ -207,7 +207,8 @@ pub struct Args {
     #[arg(long = "dem-dt-us", value_name = "US", allow_hyphen_values = true)]
     dem_dt_us: Option<f64>,
     /// DEM model of the confirmation runs (as `slide --model`): `reduced` (rigid-z, default:
-    /// within 1 % of the full model on superlubric scenes, minutes for a whole design), `auto`
+    /// measured against the full model in docs/validation/dem-engine.md "Model choice"; minutes
+    /// for a whole design), `auto`
     /// (the full model near coating failure and where stick-slip is expected: up to tens of
     /// minutes per run) or `full`. Pruning and the active set (exact) are on in every model.
     #[arg(long = "dem-model", value_enum, default_value_t = ModelArg::Reduced)]
