@@ -63,7 +63,7 @@ fn scripts_say_what_slurm_needs() {
             "3",
             "--out-dir",
             job.to_str().unwrap(),
-            "--threads",
+            "--cpus-per-task",
             "2",
             "--partition",
             "short",
@@ -335,8 +335,12 @@ fn bad_flags_are_refused_before_writing() {
     refused(&[&s[..], &["--out-dir", j]].concat(), &["--shards"]);
     refused(&[&s[..], &["--shards", "2"]].concat(), &["--out-dir"]);
     refused(
-        &[&s[..], &["--shards", "2", "--out-dir", j, "--threads", "0"]].concat(),
-        &["--threads"],
+        &[
+            &s[..],
+            &["--shards", "2", "--out-dir", j, "--cpus-per-task", "0"],
+        ]
+        .concat(),
+        &["--cpus-per-task"],
     );
     refused(
         &[&s[..], &["--shards", "2", "--out-dir", j, "--time", "1h"]].concat(),

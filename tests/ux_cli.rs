@@ -200,4 +200,23 @@ fn old_flag_names_still_work_with_a_note() {
     assert!(dir.join("index.csv").exists());
     assert!(String::from_utf8_lossy(&o.stderr).contains("is now `--out-dir`"));
     std::fs::remove_dir_all(&dir).ok();
+    // slurm's CPUs per task: `--threads` is now `--cpus-per-task` (Slurm's own name)
+    let job = std::env::temp_dir().join(format!("superlube-renamed-slurm-{}", std::process::id()));
+    let o = bin()
+        .args(["slurm", "screen", "--theta", "0:2:1"])
+        .args(TINY)
+        .args(["--shards", "2", "--threads", "3", "--out-dir"])
+        .arg(&job)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    assert!(
+        String::from_utf8_lossy(&o.stderr)
+            .contains("`superlube slurm --threads` is now `--cpus-per-task`"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let array = std::fs::read_to_string(job.join("array.sbatch")).unwrap();
+    assert!(array.contains("--cpus-per-task=3"), "{array}");
+    std::fs::remove_dir_all(&job).ok();
 }

@@ -1,8 +1,10 @@
 //! `superlube._native`: the Python module's bridge to the `superlube` commands.
 //!
-//! Three functions, no physics: `scene` resolves and validates a scene exactly as every
+//! Four functions, no physics: `scene` resolves and validates a scene exactly as every
 //! command does (preset ← scene file ← keyword fields; errors name the field), `flags` lists
-//! a command's options (the Python layer maps snake-case keywords onto them), and `run` runs
+//! a command's options (the Python layer maps snake-case keywords onto them), `renamed` its
+//! old option names (clap's hidden aliases, which the Python layer accepts with a warning as
+//! the command line does with a note), and `run` runs
 //! one command line in process — the same flag checks, the same study workflow, the same files
 //! and sidecars as the `superlube` binary — on a worker thread with the GIL released, forwarding
 //! its progress to a Python callback on the calling thread and stopping it on Ctrl-C or when the
@@ -258,6 +260,25 @@ fn flags(command: &str) -> PyResult<Vec<(String, bool)>> {
         .collect())
 }
 
+/// The renamed options of command `command` as (old name, current name) pairs, e.g.
+/// `("model", "solver")` for `screen`: the hidden clap aliases that `superlube` still accepts
+/// for a release with a note (`cli::renamed`).
+#[pyfunction]
+fn renamed(command: &str) -> PyResult<Vec<(String, String)>> {
+    let cli = Cli::command();
+    let sub = cli
+        .find_subcommand(command)
+        .ok_or_else(|| PyValueError::new_err(format!("no command `{command}`")))?;
+    Ok(sub
+        .get_arguments()
+        .filter_map(|a| Some((a.get_long()?, a.get_all_aliases()?)))
+        .flat_map(|(new, olds)| {
+            olds.into_iter()
+                .map(move |o| (o.to_string(), new.to_string()))
+        })
+        .collect())
+}
+
 /// THE scene resolution of every command, on a scene file `path` (or none) with the fields of
 /// `overlay` (TOML text in the scene file's format) on top: returns the merged scene file as
 /// TOML, the fully resolved scene file as JSON (every field, user units) and the warnings
@@ -295,6 +316,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     quiet_cancel_panics();
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(flags, m)?)?;
+    m.add_function(wrap_pyfunction!(renamed, m)?)?;
     m.add_function(wrap_pyfunction!(scene, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -11,9 +11,11 @@ sidecar: the resolved scene, the parameters and a hash of the inputs.
 
 Values: numbers, lists/tuples/numpy arrays of numbers (``theta_deg=[0, 21.8, 30]``), or the
 CLI's text forms (``theta_deg="0:30:0.1"``, an inclusive range). ``True`` turns a switch on.
-Outputs a command can also write (``png="map.png"``, ``contacts_out="c.csv"``, ``out="s.csv"``)
-are written where the keyword says, with their sidecars; otherwise in a temporary directory that
-is removed afterwards.
+Outputs a command can also write (``plot="map.png"``, ``contacts_out="c.csv"``, ``out="s.csv"``,
+``out_dir="design"``) are written where the keyword says, with their sidecars; otherwise in a
+temporary directory that is removed afterwards. A renamed flag keeps its old keyword for a
+release, as the command line keeps the old flag name: ``screen(model="auto")`` works as
+``screen(solver="auto")`` with a :class:`DeprecationWarning` naming the new keyword.
 
 Every function also takes ``progress`` (None: a tqdm bar when tqdm is installed; False: none;
 a callable ``f(p)``: called on the calling thread at most every 0.1 s with ``p`` a dict of
@@ -98,10 +100,10 @@ def screen(scene: SceneLike = None, *, progress: Any = None, threads: Optional[i
     contacts, P_max (GPa), height z (µm), coating failure, tilt (µrad) and the model used.
 
     Options (``superlube screen --help``): ``theta_deg`` (degrees; default the scene's θ, else
-    0:30:0.1), ``load_mN`` (mN; default 0.35, 1.4, 2.1, 3.86), ``model`` (auto, rigid-z,
-    rigid-tilt, compliant), ``search`` (grid, bvh), ``contacts_out`` (path), ``force``,
-    ``shard`` ("i/n"), ``resume``, ``out`` (path). Cost: one equilibrium per (θ, W), about
-    1 ms each for the study's scenes on one core.
+    0:30:0.1), ``load_mN`` (mN; default 0.35, 1.4, 2.1, 3.86), ``solver`` (auto, rigid-z,
+    rigid-tilt, compliant; formerly ``model``), ``search`` (grid, bvh), ``contacts_out``
+    (path), ``force``, ``shard`` ("i/n"), ``resume``, ``out`` (path). Cost: one equilibrium per
+    (θ, W), about 1 ms each for the study's scenes on one core.
 
     Returns a DataFrame with the columns of the screen CSV: pattern, theta_deg, load_mN,
     contacts, p_max_GPa, z_um, coating_failed, failed_contacts, tilt_x_urad, tilt_y_urad, model,
@@ -115,8 +117,9 @@ def landscape(scene: SceneLike = None, *, progress: Any = None, threads: Optiona
     """Height landscape Δz over the substrate's repeat cell at one θ and load (quasi-static).
 
     Options (``superlube landscape --help``): ``theta_deg`` (degrees), ``load_mN`` (mN),
-    ``grid`` (N points per side, N×N solves; default 51), ``png``, ``contacts_png``,
-    ``contacts_out`` (paths), ``model``, ``search``, ``force``, ``shard``, ``resume``, ``out``.
+    ``grid`` (N points per side, N×N solves; default 51), ``plot`` (heat-map PNG),
+    ``contact_map`` (contact-map PNG), ``contacts_out`` (per-contact CSV), ``force``, ``shard``,
+    ``resume``, ``out``.
 
     Returns a DataFrame ``x_um, y_um, dz_nm`` (shift of the slider centre in µm, Δz = z − min z
     in nm), row-major with x fastest.
@@ -129,8 +132,9 @@ def corrugation(scene: SceneLike = None, *, progress: Any = None,
     """Corrugation (nm) and static-friction barrier (mN) along pulling directions α.
 
     Options (``superlube corrugation --help``): ``theta_deg``, ``load_mN``, ``alpha_deg``
-    (degrees, list or range), ``line_deg``, ``method``, ``png``, ``force``, ``shard``,
-    ``resume``, ``out`` and the path options of the command.
+    (degrees, list or range), ``line_deg``, ``distance_um`` and ``step_um`` (the path, µm),
+    ``method`` (direct, landscape), ``grid``, ``plot`` (PNG), ``force``, ``shard``, ``resume``,
+    ``out``.
 
     Returns a DataFrame ``theta_deg, load_mN, line_deg, alpha_deg, direction_deg,
     corrugation_nm, max_lateral_force_mN``, one row per α.
@@ -159,16 +163,17 @@ def tolerance(scene: SceneLike = None, *, progress: Any = None,
     Options (``superlube tolerance --help``): ``theta_deg`` (nominal θ), ``alpha`` (degrees from
     the contact line) or ``direction_deg`` (from x), ``theta_range``, ``theta_points``,
     ``direction_range``, ``direction_points``, ``theta_tol``, ``direction_tol`` (degrees),
-    ``load_mN``, ``mu_superlubric``, ``line_deg`` and the path options of the estimate.
+    ``load_mN``, ``mu_superlubric``, ``line_deg``, the path options of the estimate and
+    ``out_dir`` (the command's folder: map.csv, map.png; kept).
 
     Returns a DataFrame with ``map.csv``'s columns (``theta_deg, direction_deg,
     theta_offset_deg, direction_offset_deg, …, superlubric_to_mN, confident_to_mN,
     limited_by``), one row per point, direction outer, θ inner.
     """
-    tmp, paths = _go("tolerance", [_scene(scene)], options, {"out": "tolerance"}, progress,
+    tmp, paths = _go("tolerance", [_scene(scene)], options, {"out-dir": "tolerance"}, progress,
                      threads)  # fmt: skip
     try:
-        p = os.path.join(paths["out"], "map.csv")
+        p = os.path.join(paths["out-dir"], "map.csv")
         return _run._attach(_run.read_table(p), p)
     finally:
         _run.remove(tmp)
@@ -224,7 +229,7 @@ def design(scenes: Union[SceneLike, Sequence[SceneLike]] = None, *, progress: An
     ``scenes``: one Scene or several (each named after its preset or file stem), or None with
     ``pattern="tri-tri,square-tri"`` (the default patterns). Options: those of
     ``superlube design --help`` in snake case (``load_mN``, ``no_dem``, ``top``,
-    ``confirm_loads``, ``per_level``, ``out`` (a directory, kept) …). Cost: a minute per
+    ``confirm_loads``, ``per_level``, ``out_dir`` (a directory, kept) …). Cost: a minute per
     pattern for the surrogate tiers (``no_dem=True``), plus the DEM runs.
 
     Returns ``(ranking, summary)``: ``ranking.csv`` as a DataFrame (every ranked design of every
@@ -238,10 +243,10 @@ def design(scenes: Union[SceneLike, Sequence[SceneLike]] = None, *, progress: An
         scene_list = [_scene(scenes)]
     else:
         scene_list = [_scene(s) for s in scenes]
-    tmp, paths = _go("design", scene_list, options, {"out": "design"}, progress, threads,
+    tmp, paths = _go("design", scene_list, options, {"out-dir": "design"}, progress, threads,
                      allow_scene_flags=True)  # fmt: skip
     try:
-        out = paths["out"]
+        out = paths["out-dir"]
         ranking = os.path.join(out, "ranking.csv")
         table = _run._attach(_run.read_table(ranking), ranking) if os.path.exists(ranking) else None
         with open(os.path.join(out, "report.md"), encoding="utf-8") as f:

@@ -16,6 +16,10 @@ def run(
 def flags(command: str) -> List[Tuple[str, bool]]:
     """Long options of `command` as (name, takes a value)."""
 
+def renamed(command: str) -> List[Tuple[str, str]]:
+    """Renamed options of `command` as (old name, current name), e.g. ("model", "solver"):
+    the old names the command still accepts for a release."""
+
 def scene(path: Optional[str], overlay: str) -> Tuple[str, str, List[str]]:
     """Scene file `path` (or none) with the TOML `overlay` on top → (merged TOML, resolved
     scene as JSON, warnings). ValueError naming the bad field."""

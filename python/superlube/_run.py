@@ -7,6 +7,7 @@ import json
 import logging
 import math
 import os
+import sys
 import tempfile
 import warnings
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
@@ -39,10 +40,54 @@ def _flag_value(v: Any, key: str) -> str:
     return os.fspath(v) if hasattr(v, "__fspath__") else str(v)
 
 
+def _caller_stacklevel() -> int:
+    """The ``stacklevel`` of :func:`warnings.warn`, called from the caller of this function,
+    that points at the first frame outside this package (the user's call)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    f, level = sys._getframe(1), 1
+    while f is not None and os.path.dirname(os.path.abspath(f.f_code.co_filename)) == here:
+        f, level = f.f_back, level + 1
+    return level
+
+
+def renamed_keywords(command: str, kwargs: Dict[str, Any]) -> Dict[str, Any]:
+    """``kwargs`` with the keywords of renamed options under their current names, as the
+    command line accepts an old flag name (a hidden alias, e.g. ``screen --model`` → ``--solver``)
+    with a note: here a :class:`DeprecationWarning` naming the new keyword. Giving both the old
+    and the new name is a ValueError."""
+    old_to_new = dict(_native.renamed(command))
+    if not old_to_new:
+        return dict(kwargs)
+    out: Dict[str, Any] = {}
+    for key, value in kwargs.items():
+        name = key.lower().replace("_", "-")
+        new = old_to_new.get(name)
+        if new is None:
+            stem, _, unit = name.rpartition("-")
+            if unit in _UNITS and stem in old_to_new:
+                new = old_to_new[stem]
+        if new is None:
+            out[key] = value
+            continue
+        new_key = new.replace("-", "_")
+        if new_key in kwargs or new_key in out:
+            raise ValueError(f"{command}: `{key}` is the old name of `{new_key}`: give one of them")
+        warnings.warn(
+            f"superlube.{command.replace('-', '_')}(): `{key}` is now `{new_key}`; the old name "
+            "still works for this release",
+            DeprecationWarning,
+            stacklevel=_caller_stacklevel(),
+        )
+        out[new_key] = value
+    return out
+
+
 def to_argv(command: str, kwargs: Dict[str, Any], allow_scene_flags: bool = False) -> List[str]:
     """``superlube COMMAND`` flags from snake-case keywords: ``load_mN=[1.4, 2.1]`` →
     ``--load-mn=1.4,2.1``, ``theta_deg=(0, 30, 0.1)``… (a str is passed as is, e.g. a range
-    ``"0:30:0.1"``); True → a switch, False/None → left out. Unknown keyword → ValueError."""
+    ``"0:30:0.1"``); True → a switch, False/None → left out; an old option name → its current
+    one, with a DeprecationWarning. Unknown keyword → ValueError."""
+    kwargs = renamed_keywords(command, kwargs)
     known = dict(_native.flags(command))
     argv: List[str] = []
     for key, value in kwargs.items():
@@ -177,8 +222,8 @@ def run(
     """Runs ``superlube COMMAND`` with the scene flags, the keywords as flags and the outputs
     (flag → file name in a temporary directory unless the keyword gives a path), then hands the
     paths of the outputs to the caller; returns (tmp dir, {flag: path}). The caller reads them
-    and removes the directory."""
-    kw = dict(kwargs)
+    and removes the directory. Old option names are accepted as in :func:`to_argv`."""
+    kw = renamed_keywords(command, kwargs)
     tmp = tempfile.mkdtemp(prefix="superlube-")
     rep = _Reporter(progress)
     try:

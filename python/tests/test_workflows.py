@@ -84,6 +84,26 @@ def test_bad_option_raises_before_any_file(private_tmp, tmp_path):
     assert list(private_tmp.iterdir()) == []
 
 
+def test_old_option_names_work_with_a_warning(tmp_path):
+    scene = superlube.Scene("square-tri", **TINY)
+    new = superlube.screen(scene, theta_deg=[0, 5], load_mN=[1.4], solver="rigid-z")
+    with pytest.warns(DeprecationWarning, match="`model` is now `solver`") as w:
+        old = superlube.screen(scene, theta_deg=[0, 5], load_mN=[1.4], model="rigid-z")
+    ours = [x for x in w if "is now" in str(x.message)]
+    assert [x.filename for x in ours] == [__file__]  # points at the caller, not the package
+    pd.testing.assert_frame_equal(old, new, check_exact=True)
+    assert set(new["model"]) == {"rigid-z"}
+    with pytest.raises(ValueError, match="old name"):
+        superlube.screen(scene, theta_deg=[0], solver="auto", model="auto")
+    # an output keyword: tolerance's folder is `out_dir`, formerly `out`
+    opts = dict(theta_deg=30, alpha=0, load_mN="0.05", theta_range=0.2, theta_points=2,
+                direction_range=0.5, direction_points=2)  # fmt: skip
+    with pytest.warns(DeprecationWarning, match="`out` is now `out_dir`"):
+        superlube.tolerance(superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60]),
+                            out=tmp_path / "tol", **opts)  # fmt: skip
+    assert (tmp_path / "tol" / "map.csv").exists()
+
+
 def test_slide_returns_the_json_summary(cli_bin, tmp_path):
     scene = superlube.Scene("square-tri", radius_um=9, size_um=[60, 40])
     series, summary = superlube.slide(scene, load_mN=1.4, **DEM)
@@ -241,7 +261,7 @@ def test_tolerance_map_equals_cli(cli_bin, tmp_path):
     subprocess.run([cli_bin, "tolerance", "--scene", tmp_path / "s.toml", "--theta", "30",
                     "--alpha", "0", "--load-mn", "0.05,0.1", "--theta-range", "0.2",
                     "--theta-points", "3", "--direction-range", "0.5", "--direction-points",
-                    "3", "--out", tmp_path / "cli"], check=True, capture_output=True)  # fmt: skip
+                    "3", "--out-dir", tmp_path / "cli"], check=True, capture_output=True)  # fmt: skip
     import csv
     with open(tmp_path / "cli" / "map.csv") as f:
         cli = list(csv.DictReader(f))

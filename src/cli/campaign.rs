@@ -61,9 +61,9 @@ pub struct CampaignArgs {
         allow_hyphen_values = true
     )]
     pub shard: Option<String>,
-    /// DEM model [default: reduced: rigid-z, measured within 1 % of the full model on
-    /// superlubric scenes and within the run-to-run noise elsewhere (docs/validation/dem-engine.md "Model
-    /// choice"); `auto` runs the full model near coating failure, 10–25 min per run].
+    /// DEM model [default: reduced: rigid-z, measured against the full model in
+    /// docs/validation/dem-engine.md "Model choice"; `auto` runs the full model near coating
+    /// failure, at the cost per run given in docs/commands/figures.md].
     #[arg(long, value_enum, requires = "friction")]
     pub model: Option<ModelArg>,
     /// Equilibration time in µs [default: the study's 10].

@@ -5,6 +5,7 @@ use super::dem_args::ModelArg;
 use super::friction_args::FrictionKnobArgs;
 use super::tolerance_args::ToleranceArgs;
 use super::{checks, parse_list_or_range, SceneArgs, SceneOverrides};
+use crate::study::campaign::STUDY_LOADS_MN;
 use crate::study::dem_run::{DemParams, ModelSpec};
 use crate::study::design::store::Store;
 use crate::study::design::{cut, design, DesignParams, DesignScene};
@@ -13,11 +14,15 @@ use anyhow::{bail, Result};
 use dem::protocol::RunIo;
 use dem::{SimParams, Start};
 use std::path::PathBuf;
+use std::sync::LazyLock;
 use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 
-/// The study's load list (mN): 0.35 to 3.5 in steps of 0.35, and 3.86, as clap's default
-/// string; [`crate::study::campaign::STUDY_LOADS_MN`] is the definition (a test checks both agree).
-pub const STUDY_LOADS: &str = "0.35,0.7,1.05,1.4,1.75,2.1,2.45,2.8,3.15,3.5,3.86";
+/// The study's load list (mN) as clap's default string (`0.35,0.7,…,3.5,3.86`), formatted from
+/// its one definition [`STUDY_LOADS_MN`].
+pub static STUDY_LOADS: LazyLock<String> = LazyLock::new(|| {
+    let loads: Vec<String> = STUDY_LOADS_MN.iter().map(|w| w.to_string()).collect();
+    loads.join(",")
+});
 
 /// Options of `superlube design`.
 #[derive(clap::Args, Debug)]
@@ -60,7 +65,7 @@ pub struct Args {
     no_symmetry_cut: bool,
     /// Normal loads W in mN, strictly increasing (list or range) [default: the study's
     /// 0.35, 0.70, …, 3.50, 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS, allow_hyphen_values = true)]
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), allow_hyphen_values = true)]
     load_mn: String,
     /// Friction coefficient below which a design counts as superlubric.
     #[arg(
@@ -202,7 +207,8 @@ pub struct Args {
     #[arg(long = "dem-dt-us", value_name = "US", allow_hyphen_values = true)]
     dem_dt_us: Option<f64>,
     /// DEM model of the confirmation runs (as `slide --model`): `reduced` (rigid-z, default:
-    /// within 1 % of the full model on superlubric scenes, minutes for a whole design), `auto`
+    /// measured against the full model in docs/validation/dem-engine.md "Model choice"; minutes
+    /// for a whole design), `auto`
     /// (the full model near coating failure and where stick-slip is expected: up to tens of
     /// minutes per run) or `full`. Pruning and the active set (exact) are on in every model.
     #[arg(long = "dem-model", value_enum, default_value_t = ModelArg::Reduced)]

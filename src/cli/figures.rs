@@ -51,9 +51,15 @@ pub struct Args {
         allow_hyphen_values = true
     )]
     step_um: f64,
-    /// How the corrugation figure's heights are computed: direct (a solve per path sample) or
-    /// landscape (interpolated, fast).
-    #[arg(long = "corrugation-method", value_enum, default_value_t = Method::Direct)]
+    /// How the corrugation figure's heights are computed (as `corrugation --method`): direct (a
+    /// solve per path sample) or landscape (interpolated, fast).
+    #[arg(
+        long = "method",
+        alias = "corrugation-method",
+        value_name = "METHOD",
+        value_enum,
+        default_value_t = Method::Direct
+    )]
     corrugation_method: Method,
     /// Landscape grid points per side (≥ 2).
     #[arg(long, value_name = "N", default_value_t = 51)]

@@ -134,7 +134,8 @@ mod tests {
     use super::*;
     use clap::CommandFactory;
 
-    /// The CLI's default load list (a clap default string) is the study's one definition.
+    /// The CLI's default load list (a clap default string formatted from the study's one
+    /// definition) parses back to it exactly.
     #[test]
     fn the_default_loads_are_the_study_loads() {
         let v: Vec<f64> = design::STUDY_LOADS

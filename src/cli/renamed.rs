@@ -78,6 +78,8 @@ mod tests {
             ("export-lammps", "--out"),
             ("slurm", "--out"),
             ("screen", "--model"),
+            ("figures", "--corrugation-method"),
+            ("slurm", "--threads"),
         ] {
             assert_eq!(
                 notes(&args(&["superlube", sub, old, "x"])).len(),

@@ -21,7 +21,12 @@ pub struct Opts {
     out: Option<PathBuf>,
     /// CPUs per array task (`#SBATCH --cpus-per-task`), also RAYON_NUM_THREADS of the task
     /// [default: 4].
-    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    #[arg(
+        long = "cpus-per-task",
+        alias = "threads",
+        value_name = "T",
+        allow_hyphen_values = true
+    )]
     threads: Option<String>,
     /// Time limit per array task in Slurm syntax (`MM`, `HH:MM:SS`, `D-HH:MM:SS`)
     /// [default: 4 × the estimated time of one shard, at least 30 minutes].
@@ -114,7 +119,7 @@ fn combine(a: Opts, b: Opts) -> Result<Opts> {
     Ok(Opts {
         shards: one(a.shards, b.shards, "--shards")?,
         out: one(a.out, b.out, "--out-dir")?,
-        threads: one(a.threads, b.threads, "--threads")?,
+        threads: one(a.threads, b.threads, "--cpus-per-task")?,
         time: one(a.time, b.time, "--time")?,
         merge_time: one(a.merge_time, b.merge_time, "--merge-time")?,
         partition: one(a.partition, b.partition, "--partition")?,
@@ -209,7 +214,7 @@ pub fn run(a: Args) -> Result<()> {
         bail!("`--shards N` is required: the number of array tasks (shards)");
     };
     let shards = count(Some(shards_text), "--shards", 1)?;
-    let threads = count(o.threads.as_deref(), "--threads", 4)?;
+    let threads = count(o.threads.as_deref(), "--cpus-per-task", 4)?;
     for (flag, v) in [("--time", &o.time), ("--merge-time", &o.merge_time)] {
         if let Some(t) = v {
             if !valid_time(t) {

@@ -65,7 +65,7 @@ pub struct Args {
     #[command(flatten)]
     tol: ToleranceArgs,
     /// Normal loads W in mN, strictly increasing [default: the study's 0.35 … 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS, allow_hyphen_values = true)]
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), allow_hyphen_values = true)]
     load_mn: String,
     /// Friction coefficient below which a load counts as superlubric.
     #[arg(

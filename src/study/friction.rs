@@ -98,8 +98,8 @@ pub fn resonance_note(scene: &Scene, knobs: &FrictionParams) -> Option<String> {
     let t = TiltResonance::of(scene, knobs).filter(|t| t.expected())?;
     Some(format!(
         "{t}: where contacts fail (column mount_resonance) the DEM's friction can be up to {}× \
-         below mu_est (measured on the 3 such runs of the 17-run DEM comparison; substrate \
-         roughness σ_h ≥ {} nm detunes it; docs/validation/friction.md, \"The mount's resonance\")",
+         below mu_est (measured against the DEM; substrate roughness σ_h ≥ {} nm detunes it; \
+         docs/validation/friction.md, \"The mount's resonance\")",
         RESONANCE_DROP_MAX,
         m_to_nm(DETUNING_SIGMA_H)
     ))

@@ -7,7 +7,8 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::body::{dot3, g_of, mat_vec};
-use super::sim::{kick, kick_hm, spring_stretch, Index, Sim};
+use super::kernel::{kick, kick_hm, spring_stretch, Index};
+use super::sim::Sim;
 use super::team::{Exec, Shards};
 use crate::model::{ContactModel, PairOut};
 use crate::params::DampingFrame;

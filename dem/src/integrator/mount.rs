@@ -33,8 +33,9 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::body::{dot3, g_of, inverse3, mat_vec, Body};
-use super::sim::Sim;
+use super::kernel::Index;
 use crate::params::DampingFrame;
+use crate::system::State;
 use crate::SimParams;
 
 /// The constant data of the implicit mount step for one `dt` (SI).
@@ -136,32 +137,34 @@ impl Mount {
     fn damp(&self, v: f64, vq: f64) -> f64 {
         self.decay * (v + self.drag * vq)
     }
-}
 
-impl Sim {
-    /// `K_c(h)·D(h)·C(dt)·D(h)` of the mount network (module doc): the z state of the active
-    /// slider spheres, of the common mode and of the ringing aggregate, and the layer's Z and
-    /// tilts. The second contact half kick is the force pass's. No-op without the implicit
-    /// mount.
-    pub(crate) fn mount_step(&mut self) {
-        let Some(mt) = self.mount.as_ref() else {
-            return;
-        };
-        let dt = self.dt;
+    /// `K_c(h)·D(h)·C(dt)·D(h)` of the mount network (module doc) at step `dt` (s): the z state
+    /// of the active slider spheres, of the common mode and of the ringing aggregate, and the
+    /// layer's Z and tilts, in `state`. The second contact half kick is the force pass's.
+    /// `idx`: the active set's index (the inactive spheres' weight `G_in`).
+    pub(crate) fn step(
+        &self,
+        dt: f64,
+        body: &Body,
+        params: &SimParams,
+        idx: &Index,
+        state: &mut State,
+    ) {
+        let mt = self;
         let h = 0.5 * dt;
-        let m_s = self.body.m_s;
+        let m_s = body.m_s;
         let hm = h / m_s;
-        let kz = self.params.k_slider_z;
-        let load = self.params.load;
-        let off = &self.body.off;
+        let kz = params.k_slider_z;
+        let load = params.load;
+        let off = &body.off;
         let g_in = if mt.tilting {
-            self.idx.g_in
+            idx.g_in
         } else {
             let mut g = [[0.0; 3]; 3];
-            g[0][0] = self.idx.n_in as f64;
+            g[0][0] = idx.n_in as f64;
             g
         };
-        let s = &mut self.state;
+        let s = state;
         let q0 = [s.cl_x[2], s.tilt[0], s.tilt[1]];
         let qd_in = mt.mask([s.cl_v[2], s.tilt_v[0], s.tilt_v[1]]);
         // D(h) of the layer (absolute damping)
@@ -234,135 +237,5 @@ impl Sim {
                 s.tilt_v[r] = mt.decay * qd1[r + 1];
             }
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::params::DampingFrame;
-    use crate::system::SystemSpec;
-
-    /// One slider sphere on its k_z spring under the light control layer (locked mount): the
-    /// sphere carries a constant upward contact-like force F, the layer the load W = F. The
-    /// relative coordinate x = z − Z is then a damped oscillator around F/k_z,
-    /// `ẍ = −ω²(x − F/k_z) − ẋ/τ`, ω² = k_z(1/m_c + 1/m_s) (absolute damping frame). Steps `n`
-    /// of the engine's sequence (contact half kick, mount step, contact half kick) at `dt`
-    /// and returns `(t, x, ẋ)` after each, with ω and F/k_z.
-    fn one_sphere(dt: f64, tau: f64, n: usize, implicit: bool) -> (Vec<(f64, f64, f64)>, f64, f64) {
-        let scene = surrogate::Scene::preset("square-tri").unwrap();
-        let spec = SystemSpec {
-            substrate: Vec::new(),
-            slider_sites: vec![[0.0, 0.0]],
-            slider_z: vec![1e-6],
-            control_z: 1e-6,
-            sphere_radius: scene.sphere_radius,
-            material: scene.material,
-            tilt_stiffness: None,
-            disc: None,
-            substrate_size: None,
-            scene: None,
-        };
-        let force = 1e-6;
-        let params = SimParams {
-            implicit_mount: implicit,
-            damping_time: tau,
-            damping_frame: DampingFrame::Absolute,
-            load: force,
-            dt: Some(dt),
-            ..SimParams::default()
-        };
-        let model = crate::contact_model(&scene, &params, None);
-        let mut sim = Sim::new(spec, model, params, dt, dt).unwrap();
-        let m_s = sim.body.m_s;
-        let (kz, mc) = (sim.params.k_slider_z, sim.body.mz);
-        let omega = (kz * (1.0 / mc + 1.0 / m_s)).sqrt();
-        let h = 0.5 * dt;
-        let mut out = Vec::new();
-        for k in 0..n {
-            sim.state.act.sl_f[0][2] = force;
-            if implicit {
-                sim.mount_step();
-                sim.state.act.sl_v[0][2] += h * force / m_s;
-            } else {
-                // velocity-Verlet on the same two bodies, for contrast
-                let s = &mut sim.state;
-                let fz = |s: &crate::system::State| {
-                    let sp = kz * (s.cl_x[2] - s.act.sl_x[0][2]);
-                    (
-                        sp + force - m_s * s.act.sl_v[0][2] / tau,
-                        -sp - force - mc * s.cl_v[2] / tau,
-                    )
-                };
-                let (f1, f2) = fz(s);
-                s.act.sl_v[0][2] += h * f1 / m_s;
-                s.cl_v[2] += h * f2 / mc;
-                s.act.sl_x[0][2] += dt * s.act.sl_v[0][2];
-                s.cl_x[2] += dt * s.cl_v[2];
-                let (f1, f2) = fz(s);
-                s.act.sl_v[0][2] += h * f1 / m_s;
-                s.cl_v[2] += h * f2 / mc;
-            }
-            let s = &sim.state;
-            let x = s.act.sl_x[0][2] - s.cl_x[2];
-            let v = s.act.sl_v[0][2] - s.cl_v[2];
-            out.push(((k + 1) as f64 * dt, x, v));
-        }
-        (out, omega, force / kz)
-    }
-
-    /// At 10× the explicit limit (ω·dt = 20): the static deflection is F/k_z (after the ringing
-    /// has decayed) to `(dt/2τ)²`, and the ringing's amplitude `√((x − x*)² + ẋ²/ω²)` decays as
-    /// the analytic `x*·e^{−t/2τ}` (down to 0.22 x*) within 5 % (the trapezoidal map mistimes a mode it cannot
-    /// resolve, but keeps its energy, and the damping is exact); velocity-Verlet blows up.
-    #[test]
-    fn one_sphere_at_ten_times_the_explicit_limit_matches_the_analytic_response() {
-        let probe = one_sphere(1e-12, 1.0, 1, true);
-        let omega = probe.1;
-        let dt = 10.0 * 2.0 / omega;
-        // decay: τ = 100 ns, 300 ns (450 steps)
-        let tau = 100e-9;
-        let (run, _, xs) = one_sphere(dt, tau, 450, true);
-        let mut worst: f64 = 0.0;
-        for &(t, x, v) in run.iter().skip(50) {
-            let amp = ((x - xs).powi(2) + (v / omega).powi(2)).sqrt();
-            let want = xs * (-t / (2.0 * tau)).exp();
-            worst = worst.max((amp / want - 1.0).abs());
-        }
-        eprintln!("ringing amplitude vs the analytic decay: worst {worst:.4}");
-        assert!(
-            worst < 0.05,
-            "ringing amplitude off the analytic decay by {worst}"
-        );
-        let t_end = run.last().unwrap().0;
-        assert!(
-            (-t_end / (2.0 * tau)).exp() < 0.3,
-            "too short to see the decay"
-        );
-        // statics: 40 τ; the split of the damping shifts the rest point by ~(dt/2τ)²/2
-        // (3·10⁻⁸ at the study's τ = 1 µs and contact-limited step)
-        let (run, _, xs) = one_sphere(dt, tau, 6000, true);
-        let (_, x, _) = *run.last().unwrap();
-        let bound = (0.5 * dt / tau).powi(2);
-        eprintln!(
-            "static deflection / (F/k_z) − 1 = {:e} (bound {bound:e})",
-            x / xs - 1.0
-        );
-        assert!(
-            (x / xs - 1.0).abs() < bound,
-            "static deflection {x} vs F/k_z {xs}"
-        );
-        let x_prev = run[run.len() - 2].1;
-        assert!(
-            (x - x_prev).abs() < bound * xs,
-            "not at rest: {x_prev} → {x}"
-        );
-        // the explicit scheme at this step
-        let (run, _, xs) = one_sphere(dt, tau, 50, false);
-        let x = run.last().unwrap().1;
-        assert!(
-            x.is_nan() || x.abs() >= 1e3 * xs,
-            "velocity-Verlet stayed bounded at ω·dt = 20: {x}"
-        );
     }
 }

@@ -5,7 +5,8 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::body::{dot3, g_of, mat_vec};
-use super::sim::{spring_stretch, Observables, Sim};
+use super::kernel::spring_stretch;
+use super::sim::{Observables, Sim};
 use crate::model::NormalModel;
 use crate::DemError;
 

@@ -392,7 +392,7 @@ pub fn design(
         let (jobs, _) = confirm_jobs(&patterns, p);
         let part = p.dem_shard.range(jobs.len());
         progress.note(&format!(
-            "DEM shard {}/{}: runs {}..{} of {} into {}; run the design without --shard (same --out, every shard's dem/ runs in it) to write the report",
+            "DEM shard {}/{}: runs {}..{} of {} into {}; run the design without --shard (same --out-dir, every shard's dem/ runs in it) to write the report",
             p.dem_shard.index,
             p.dem_shard.count,
             part.start,

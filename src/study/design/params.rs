@@ -76,7 +76,7 @@ pub struct DesignParams {
     pub jobs: usize,
     /// Shard of the DEM confirmation runs to compute ([`crate::study::Shard::ALL`]: every
     /// run, then the report). With a part, the design computes its share of the runs into
-    /// `--out/dem/` and stops before the report; a call without a shard (all shards' `dem/`
+    /// `--out-dir/dem/` and stops before the report; a call without a shard (all shards' `dem/`
     /// runs in the same `--out-dir`) reuses them and writes the report.
     pub dem_shard: crate::study::Shard,
     /// The DEM protocol of every confirmation run (α and line are set per run).

@@ -21,7 +21,7 @@ use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// What the error of a stage made with other inputs suggests.
-const HINT: &str = "; remove it or use another --out";
+const HINT: &str = "; remove it or use another --out-dir";
 
 /// The output directory of a design.
 pub struct Store {

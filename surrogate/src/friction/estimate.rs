@@ -252,6 +252,18 @@ pub fn estimate_friction_loads(
         .collect())
 }
 
+/// Transverse forces |F_⊥| (N) up to this fraction of the load W count as none (the round-off
+/// of the solver's forces): a path along which every sampled |F_⊥| stays within it is a mirror
+/// line of the scene and does not drift ([`transverse_starts`]; `docs/validation/friction.md`,
+/// "The drift across the pull").
+const TRANSVERSE_FORCE_TOL: f64 = 1e-9;
+
+/// The drift model takes F_⊥ and the coating's C on every `DRIFT_SAMPLE_EVERY`-th sample of the
+/// straight path (and its end): 0.5 µm apart at the default 0.05 µm step, finer than the
+/// 1.5–3 µm scale of the landscape ([`transverse_starts`]; `docs/validation/friction.md`, "The
+/// drift across the pull": "every 10th sample").
+const DRIFT_SAMPLE_EVERY: usize = 10;
+
 /// Step 2 of [`estimate_friction_loads`] (`transverse.rs`): per load of `loads` (N), the start
 /// of the path across the pull, in samples of `h` (m) along e⊥ (0: through the placement), and
 /// P_max (Pa) at the placement where the path leaves it (else 0).
@@ -268,9 +280,9 @@ fn transverse_starts(
     params: &FrictionParams,
 ) -> (Vec<i64>, Vec<f64>) {
     let e_perp = [-e[1], e[0]];
-    let tol_f = |w: f64| 1e-9 * w;
-    // F_⊥ and C along the straight path, every 10th sample (and its end)
-    let mut coarse: Vec<f64> = s.iter().step_by(10).copied().collect();
+    let tol_f = |w: f64| TRANSVERSE_FORCE_TOL * w;
+    // F_⊥ and C along the straight path, every DRIFT_SAMPLE_EVERY-th sample (and its end)
+    let mut coarse: Vec<f64> = s.iter().step_by(DRIFT_SAMPLE_EVERY).copied().collect();
     if coarse.last() != s.last() {
         coarse.push(*s.last().expect("a path has samples"));
     }

@@ -91,7 +91,8 @@
 //! `length` (12 µm, four 3 µm lattice spacings); the model skips the first `transient` (3 µm,
 //! the spring loading from rest) and measures between the first and last landing after it, so
 //! the window spans whole stick-slip cycles. The step (≤ 0.05 µm) resolves the landscape, which
-//! varies on the 1.5–3 µm scale of the lattices (measured convergence: see the crate README).
+//! varies on the 1.5–3 µm scale of the lattices (measured convergence:
+//! `docs/validation/friction.md`, "Measured", "Error of the defaults").
 //!
 //! ## The start across the pull
 //! The DEM's pulling spring holds the slider across the pull with only K0 = 50 N/m. Where the
@@ -141,6 +142,6 @@ pub use estimate::{estimate_friction, estimate_friction_loads, FrictionEstimate}
 pub use params::FrictionParams;
 pub use path::lattice_period;
 pub use resonance::{
-    critical_overlap, roughness_detunes, TiltResonance, DETUNING_SIGMA_H, RESONANCE_BAND,
-    RESONANCE_DROP_MAX,
+    critical_overlap, roughness_detunes, TiltResonance, DETUNING_OVERLAP_FRACTION,
+    DETUNING_SIGMA_H, RESONANCE_BAND, RESONANCE_DROP_MAX,
 };

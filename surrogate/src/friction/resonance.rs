@@ -64,6 +64,13 @@ pub const DETUNING_SIGMA_H: f64 = 5e-9;
 /// resonance"). User-facing warnings quote this constant.
 pub const RESONANCE_DROP_MAX: f64 = 2.8;
 
+/// Fraction of the critical overlap δ_crit ([`critical_overlap`]) that σ_h must also reach for
+/// roughness to detune the resonance ([`roughness_detunes`]): not measured, it keeps the flag on
+/// where a softer coating or a higher P_crit would need more roughness if the detuning scales
+/// with the contact's overlap (module doc, "Roughness detunes it"). On the study's scene
+/// δ_crit/2 = 4.9 nm ≈ [`DETUNING_SIGMA_H`].
+pub const DETUNING_OVERLAP_FRACTION: f64 = 0.5;
+
 /// Overlap δ_crit (m) of a slider–substrate sphere pair of `scene` whose Hertz pressure p0 is P_crit
 /// ([`crate::contact::Hertz::overlap_for_p0`]: `a = π P_crit R_eff / (2E*)`, `δ_crit = a² / R_eff`; 9.8 nm on the
 /// study's scene). O(1).
@@ -72,9 +79,11 @@ pub fn critical_overlap(scene: &Scene) -> f64 {
 }
 
 /// Whether `scene`'s substrate is rough enough to detune the mount's resonance:
-/// `σ_h ≥ max(`[`DETUNING_SIGMA_H`]`, δ_crit/2)` with δ_crit of [`critical_overlap`]. O(1).
+/// `σ_h ≥ max(`[`DETUNING_SIGMA_H`]`, `[`DETUNING_OVERLAP_FRACTION`]` · δ_crit)` (δ_crit/2) with
+/// δ_crit of [`critical_overlap`]. O(1).
 pub fn roughness_detunes(scene: &Scene) -> bool {
-    scene.substrate.sigma_h >= DETUNING_SIGMA_H.max(0.5 * critical_overlap(scene))
+    scene.substrate.sigma_h
+        >= DETUNING_SIGMA_H.max(DETUNING_OVERLAP_FRACTION * critical_overlap(scene))
 }
 
 /// The spring mount's tilt frequency against the stuck pairs' lateral frequency (SI).
