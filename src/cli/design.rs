@@ -19,6 +19,9 @@ use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 /// string; [`crate::study::campaign::STUDY_LOADS_MN`] is the definition (a test checks both agree).
 pub const STUDY_LOADS: &str = "0.35,0.7,1.05,1.4,1.75,2.1,2.45,2.8,3.15,3.5,3.86";
 
+/// The default θ list (degrees) of `--theta`, before the symmetry cut (the study's).
+pub const DEFAULT_THETA: &str = "0:30:0.1";
+
 /// Options of `superlube design`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -46,14 +49,12 @@ pub struct Args {
     #[command(flatten)]
     overrides: SceneOverrides,
     /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
-    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md).
-    #[arg(
-        long,
-        value_name = "DEG",
-        default_value = "0:30:0.1",
-        allow_hyphen_values = true
-    )]
-    theta: String,
+    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md); a list
+    /// that does not span a domain is named in the log and the report [default: 0:30:0.1, and
+    /// for a pattern whose domain it does not span (no derived symmetry, or a domain wider
+    /// than 30°) the whole domain at 0.1°, or 0.25° when wider than 60°].
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    theta: Option<String>,
     /// Screen θ as given, without the symmetry cut (for scenes whose symmetry is broken, e.g.
     /// by --offset-um).
     #[arg(long = "no-symmetry-cut")]
@@ -329,7 +330,8 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
 
 /// Every check of `superlube design`, before any work.
 pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
-    let thetas_deg = parse_list_or_range(&a.theta, "--theta")?;
+    let theta_text = a.theta.clone().unwrap_or_else(|| DEFAULT_THETA.to_string());
+    let thetas_deg = parse_list_or_range(&theta_text, "--theta")?;
     let loads = checks::loads(&a.load_mn)?;
     if let Some(k) = loads.windows(2).position(|w| w[1] <= w[0]) {
         bail!(
@@ -490,7 +492,8 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         direction_tol_step_deg,
         seeds,
         thetas_deg,
-        theta_text: a.theta.clone(),
+        theta_text,
+        theta_default: a.theta.is_none(),
         symmetry_cut: !a.no_symmetry_cut,
         loads,
         mu_superlubric: a.mu_superlubric,

@@ -367,7 +367,19 @@ impl ReportData {
             .iter()
             .map(|pr| ScreenLine {
                 pattern: pr.scene.name.clone(),
-                symmetry: pr.sym.describe(),
+                symmetry: {
+                    let mut t = match crate::study::design::theta_note(&pr.sym, &pr.thetas_deg, p) {
+                        None => pr.sym.describe(),
+                        Some(n) if n.starts_with("the θ list") => {
+                            format!("{}; **{n}**", pr.sym.describe())
+                        }
+                        Some(n) => format!("{}; {n}", pr.sym.describe()),
+                    };
+                    if let Some(n) = crate::study::design::line_note(&pr.scene, p) {
+                        t = format!("{t}. The {}", n.trim_start_matches("the "));
+                    }
+                    t
+                },
                 thetas: pr.thetas_deg.len(),
                 theta_first: pr
                     .thetas_deg
