@@ -41,10 +41,16 @@ pub struct Args {
     /// A lattice family (as `superlube patterns --family`: `directional`, `presets[:s=…]`,
     /// `rectangular:a=…,b=…`, `oblique:a=…,b=…,gamma_deg=…`): its candidates over the substrate
     /// of the one --pattern or --scene given (default square-tri) are written to
-    /// OUT/patterns/ (equal slider area, p, q ≤ 3, orders ≤ 4; run `superlube patterns` for
-    /// other knobs) and designed as with --patterns OUT/patterns/index.csv.
+    /// OUT/patterns/ (equal slider area unless --normalize spheres, p, q ≤ 3, orders ≤ 4; run
+    /// `superlube patterns` for other knobs) and designed as with --patterns
+    /// OUT/patterns/index.csv.
     #[arg(long, value_name = "SPEC")]
     family: Option<String>,
+    /// With --family: what the candidates share, as `superlube patterns --normalize`: `area`
+    /// (the base scene's slider outline, default) or `spheres` (each outline scaled to hold
+    /// the base slider's sphere count); the report states the rule.
+    #[arg(long, value_enum, value_name = "RULE", requires = "family")]
+    normalize: Option<crate::study::patterns::Normalize>,
     /// Scene override flags, applied to every pattern and scene.
     #[command(flatten)]
     overrides: SceneOverrides,
@@ -252,7 +258,7 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             Some(super::patterns::generate(
                 &base,
                 &params,
-                crate::study::patterns::Normalize::Area,
+                a.normalize.unwrap_or_default(),
                 &a.out.join("patterns"),
                 Some("--family"),
             )?)

@@ -701,6 +701,10 @@ pub struct CandidateFacts {
     pub p_q: String,
     /// Commensurate direction (degrees from the substrate x axis), when there is one.
     pub commensurate_direction_deg: Option<f64>,
+    /// What the candidates share (`area` or `spheres`: `superlube patterns --normalize`), from
+    /// the index's sidecar; empty when it does not say.
+    #[serde(default)]
+    pub normalize: String,
 }
 
 /// The facts of every candidate of an `index.csv`, by `pattern_id`. Errors name `--patterns`.
@@ -717,6 +721,11 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
     }
     let mut r = csv::Reader::from_path(index)
         .map_err(|e| anyhow::anyhow!("`--patterns`: cannot read {}: {e}", index.display()))?;
+    // the fairness rule the candidates were made with (a hand-written index has no sidecar)
+    let normalize = super::meta::Sidecar::of(index)
+        .ok()
+        .and_then(|s| s.params.get("normalize")?.as_str().map(str::to_string))
+        .unwrap_or_default();
     let mut out = Vec::new();
     for (k, row) in r.deserialize::<Row>().enumerate() {
         let row = row.map_err(|e| {
@@ -728,6 +737,7 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
                 contact_type: row.contact_type,
                 p_q: row.p_q,
                 commensurate_direction_deg: row.commensurate_direction_deg,
+                normalize: normalize.clone(),
             },
         ));
     }

@@ -27,6 +27,8 @@ pub struct ReportData {
     pub maps: Vec<String>,
     /// The patterns side by side (`patterns.csv`), when more than one was designed.
     pub compared: Vec<super::patterns::PatternLine>,
+    /// The fairness rule of the comparison, one sentence ([`super::patterns::fairness`]).
+    pub fairness: String,
     /// The best patterns with a contact map (`contacts_<p>.png`), best first.
     pub contact_maps: Vec<String>,
     /// Whether the DEM stage ran.
@@ -482,6 +484,11 @@ impl ReportData {
                     .collect()
             } else {
                 Vec::new()
+            },
+            fairness: if o.patterns.len() > 1 {
+                super::patterns::fairness(o, &super::patterns::pattern_rows(o))
+            } else {
+                String::new()
             },
             compared: if o.patterns.len() > 1 {
                 super::patterns::pattern_rows(o)
