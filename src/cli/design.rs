@@ -266,8 +266,12 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
         None => None,
     };
     if let Some(index) = a.patterns.as_ref().or(generated.as_ref()) {
-        files.extend(crate::study::patterns::index_scenes(index)?);
         facts = crate::study::patterns::index_facts(index)?;
+        // the contact-type pre-screen orders the surrogate's work
+        files.extend(crate::study::patterns::prescreen_order(
+            crate::study::patterns::index_scenes(index)?,
+            &facts,
+        ));
     }
     let patterns: Vec<String> = match (&pattern, files.is_empty()) {
         (Some(p), _) => p.split(',').map(|s| s.trim().to_string()).collect(),
@@ -559,6 +563,28 @@ pub fn run(a: Args) -> Result<()> {
         for w in &s.warnings {
             crate::study::Progress::note(&rep, &format!("warning: {}: {w}", s.name));
         }
+    }
+    if a.patterns.is_some() || a.family.is_some() {
+        let mut n = [0usize; 4];
+        for s in &scenes {
+            let t = s.facts.as_ref().map_or("", |f| f.contact_type.as_str());
+            n[crate::study::patterns::prescreen_class(t)] += 1;
+        }
+        crate::study::Progress::note(
+            &rep,
+            &format!(
+                "design: {} candidates in the contact-type pre-screen's order: {} lubric (in every direction), {} directional, {} interlocked{}; index order within each",
+                scenes.len(),
+                n[0],
+                n[1],
+                n[2],
+                if n[3] > 0 {
+                    format!(", then {} unclassified", n[3])
+                } else {
+                    String::new()
+                }
+            ),
+        );
     }
     let t0 = std::time::Instant::now();
     let store = Store::new(&a.out);

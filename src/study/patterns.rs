@@ -744,6 +744,38 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
     Ok(out)
 }
 
+/// Rank of a contact type in the pre-screen order: `lubric` (in every direction) first, then
+/// `directional`, then `interlocked`, then anything else (an index without the column).
+pub fn prescreen_class(contact_type: &str) -> usize {
+    match contact_type {
+        "lubric" => 0,
+        "directional" => 1,
+        "interlocked" => 2,
+        _ => 3,
+    }
+}
+
+/// The scene files `files` of an index (row order) in the order the contact-type pre-screen
+/// gives ([`prescreen_class`] of each file's `pattern_id` in `facts`, its stem), index order
+/// within a class: the surrogate's work goes to the most promising candidates first.
+/// Deterministic (a stable sort).
+pub fn prescreen_order(
+    files: Vec<std::path::PathBuf>,
+    facts: &[(String, CandidateFacts)],
+) -> Vec<std::path::PathBuf> {
+    let class = |f: &std::path::Path| {
+        let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
+        facts
+            .iter()
+            .find(|(id, _)| Some(id) == stem.as_ref())
+            .map_or(3, |(_, c)| prescreen_class(&c.contact_type))
+    };
+    let mut v: Vec<(usize, std::path::PathBuf)> =
+        files.into_iter().map(|f| (class(&f), f)).collect();
+    v.sort_by_key(|(c, _)| *c);
+    v.into_iter().map(|(_, f)| f).collect()
+}
+
 /// The scene files of an `index.csv` written by `superlube patterns` (its `scene_file` column,
 /// relative to the index), in row order. Errors name `--patterns` and the line.
 pub fn index_scenes(index: &std::path::Path) -> Result<Vec<std::path::PathBuf>> {
@@ -851,6 +883,39 @@ mod tests {
             assert!((a / d_u - m.p as f64 / m.q as f64).abs() < 1e-9, "{c:?}");
             assert!(matches!(c.contact, ContactType::Directional { .. }));
         }
+    }
+
+    /// The pre-screen order: lubric, then directional, then interlocked, then unclassified;
+    /// index order within a class.
+    #[test]
+    fn prescreen_order_puts_lubric_first_and_keeps_index_order_within_a_class() {
+        let facts: Vec<(String, CandidateFacts)> = [
+            ("p1", "interlocked"),
+            ("p2", "directional"),
+            ("p3", "lubric"),
+            ("p4", "directional"),
+            ("p5", ""),
+            ("p6", "lubric"),
+        ]
+        .iter()
+        .map(|(id, t)| {
+            (
+                id.to_string(),
+                CandidateFacts {
+                    contact_type: t.to_string(),
+                    ..Default::default()
+                },
+            )
+        })
+        .collect();
+        let files: Vec<std::path::PathBuf> = (1..=6)
+            .map(|k| std::path::PathBuf::from(format!("c/p{k}.toml")))
+            .collect();
+        let got: Vec<String> = prescreen_order(files, &facts)
+            .iter()
+            .map(|f| f.file_stem().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(got, ["p3", "p6", "p2", "p4", "p1", "p5"]);
     }
 
     #[test]
