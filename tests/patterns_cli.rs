@@ -312,6 +312,41 @@ fn design_family_generates_and_designs_the_candidates() {
         ],
         "--family",
     );
+    // --normalize spheres: candidates of (about) the base slider's sphere count, and the report
+    // says that this is the rule of the comparison
+    let o = bin()
+        .args([
+            "design",
+            "--no-dem",
+            "--theta",
+            "0:30:10",
+            "--load-mn",
+            "0.01",
+        ])
+        .args(["--family", "presets:s=3:3.5:0.5", "--normalize", "spheres"])
+        .args(small)
+        .args(tol0)
+        .arg("--out-dir")
+        .arg(dir.join("n"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let index = std::fs::read_to_string(dir.join("n/patterns/index.csv")).unwrap();
+    let spheres: Vec<f64> = index
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(5).unwrap().parse().unwrap())
+        .collect();
+    assert!(spheres.len() >= 3, "{index}");
+    let (lo, hi) = spheres
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+    assert!(hi <= 1.1 * lo, "{spheres:?}");
+    let report = std::fs::read_to_string(dir.join("n/report.md")).unwrap();
+    assert!(
+        report.contains("Compared at **equal sphere count**: the candidates were made with `superlube patterns --normalize spheres`"),
+        "{report}"
+    );
     let o = bin()
         .args(["patterns", "--family", family])
         .args(small)

@@ -671,8 +671,20 @@ pub fn scale_to_count(f: &surrogate::SceneFile, target: usize) -> Result<surroga
     let guess = (target as f64 / n1 as f64).sqrt();
     // the smallest scale with at least `target` spheres, between lo (fewer) and hi (enough)
     let (mut lo, mut hi) = (guess * 0.5, guess * 2.0);
-    if count(hi)? < target {
-        anyhow::bail!("its outline cannot hold {target} spheres at twice the estimated scale");
+    match count(hi) {
+        Ok(n) if n >= target => {}
+        Ok(_) => {
+            anyhow::bail!("its outline cannot hold {target} spheres at twice the estimated scale")
+        }
+        // twice the estimate does not fit the substrate: grow from the estimate in 5 % steps
+        // (an error once even the needed scale does not fit)
+        Err(_) => {
+            hi = guess;
+            while count(hi)? < target {
+                hi *= 1.05;
+            }
+            lo = if hi == guess { guess * 0.5 } else { hi / 1.05 };
+        }
     }
     for _ in 0..40 {
         let mid = 0.5 * (lo + hi);
