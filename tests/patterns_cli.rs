@@ -200,6 +200,15 @@ fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
     let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
     assert_eq!(rows.len(), index.lines().count() - 1);
     let col = |name: &str| h.iter().position(|c| c == name).unwrap();
+    // best first: ranks 1, 2, …, the robust limit never rising down the table
+    let limits: Vec<f64> = rows
+        .iter()
+        .map(|r| r[col("superlubric_to_mN")].parse().unwrap())
+        .collect();
+    assert!(limits.windows(2).all(|w| w[0] >= w[1]), "{limits:?}");
+    for (k, row) in rows.iter().enumerate() {
+        assert_eq!(row[col("rank")], (k + 1).to_string());
+    }
     for row in &rows {
         assert_eq!(&row[col("contact_type")], "directional");
         assert!(!row[col("p_q")].is_empty());
@@ -220,9 +229,15 @@ fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
         .split("\n## ")
         .next()
         .unwrap();
+    // the fairness rule, from the index's sidecar (`--normalize area`, the default)
+    assert!(
+        table.contains("Compared at **equal slider area**: the candidates were made with `superlube patterns --normalize area`"),
+        "{table}"
+    );
     for row in &rows {
         let line = format!(
-            "| {} | {} | {} |",
+            "| {} | {} | {} | {} |",
+            &row[col("rank")],
             &row[col("pattern")],
             &row[col("outline")],
             &row[col("spheres")]
@@ -280,6 +295,58 @@ fn design_family_generates_and_designs_the_candidates() {
         .output()
         .unwrap();
     assert_ok(&o);
+    assert!(
+        String::from_utf8_lossy(&o.stderr)
+            .contains("candidates in the contact-type pre-screen's order"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    fails_naming(
+        &[
+            "design",
+            "--no-dem",
+            "--normalize",
+            "spheres",
+            "--out-dir",
+            "/tmp/x",
+        ],
+        "--family",
+    );
+    // --normalize spheres: candidates of (about) the base slider's sphere count, and the report
+    // says that this is the rule of the comparison
+    let o = bin()
+        .args([
+            "design",
+            "--no-dem",
+            "--theta",
+            "0:30:10",
+            "--load-mn",
+            "0.01",
+        ])
+        .args(["--family", "presets:s=3:3.5:0.5", "--normalize", "spheres"])
+        .args(small)
+        .args(tol0)
+        .arg("--out-dir")
+        .arg(dir.join("n"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let index = std::fs::read_to_string(dir.join("n/patterns/index.csv")).unwrap();
+    let spheres: Vec<f64> = index
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(5).unwrap().parse().unwrap())
+        .collect();
+    assert!(spheres.len() >= 3, "{index}");
+    let (lo, hi) = spheres
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+    assert!(hi <= 1.1 * lo, "{spheres:?}");
+    let report = std::fs::read_to_string(dir.join("n/report.md")).unwrap();
+    assert!(
+        report.contains("Compared at **equal sphere count**: the candidates were made with `superlube patterns --normalize spheres`"),
+        "{report}"
+    );
     let o = bin()
         .args(["patterns", "--family", family])
         .args(small)
@@ -327,5 +394,347 @@ fn design_family_generates_and_designs_the_candidates() {
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("`--family`"));
     assert!(!dir.join("bad").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The three geometries of the smoke tests, each a scene file in `dir` with a 15 µm slider
+/// (3 µm spheres on both bodies, so that the DEM takes them): a honeycomb basis, a polygon
+/// outline, a slider site file. Returns (name, scene file, its slider sphere count).
+fn geometries(dir: &std::path::Path) -> Vec<(&'static str, std::path::PathBuf, usize)> {
+    let sub = "[substrate]\nsize_um = [100, 100]\n";
+    let mut csv = String::from("x_um,y_um\n");
+    // an irregular pad: a 3.5 µm grid with a vacancy and one row shifted
+    for i in -3i32..=3 {
+        for j in -3i32..=3 {
+            if (i, j) != (1, 2) {
+                let x = 3.5 * i as f64 + if j == 0 { 1.0 } else { 0.0 };
+                csv += &format!("{x},{}\n", 3.5 * j as f64);
+            }
+        }
+    }
+    std::fs::write(dir.join("pad.csv"), csv).unwrap();
+    let scenes = [
+        (
+            "basis",
+            format!("pattern = 'tri-tri'\n{sub}[slider]\nradius_um = 15\nlattice = {{ kind = 'honeycomb', spacing_um = 6.0 }}\n"),
+        ),
+        (
+            "outline",
+            format!("pattern = 'square-tri'\n{sub}[slider]\noutline = {{ kind = 'polygon', vertices_um = [[-15, -12], [15, -12], [18, 6], [0, 15], [-15, 6]] }}\n"),
+        ),
+        (
+            "sites",
+            format!("pattern = 'square-tri'\n{sub}[slider]\nsites = 'pad.csv'\n"),
+        ),
+    ];
+    scenes
+        .iter()
+        .map(|(name, text)| {
+            let f = dir.join(format!("{name}.toml"));
+            std::fs::write(&f, text).unwrap();
+            let n = surrogate::SceneFile::read(&f)
+                .unwrap()
+                .into_scene()
+                .unwrap()
+                .slider_sites_local()
+                .len();
+            (*name, f, n)
+        })
+        .collect()
+}
+
+/// The screen's contacts of `scene` at θ = 0 and `load` mN.
+fn screen_contacts(scene: &std::path::Path, load: &str) -> usize {
+    let out = bin()
+        .args(["screen", "--theta", "0", "--load-mn", load, "--scene"])
+        .arg(scene)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let mut r = csv::Reader::from_reader(&out.stdout[..]);
+    let h = r.headers().unwrap().clone();
+    let c = h.iter().position(|x| x == "contacts").unwrap();
+    r.records().next().unwrap().unwrap()[c].parse().unwrap()
+}
+
+fn json(path: &std::path::Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// `landscape`, `corrugation` and `friction` run on a basis, an outline and a site file: one
+/// row per grid point / α / load, and each result differs from the base preset's (the geometry
+/// is used, not the preset the scene starts from). A site-file slider has no lattice for the
+/// contact-line estimate: without `--line-deg` the commands that take α refuse it, naming it.
+#[test]
+fn maps_and_friction_run_on_bases_outlines_and_site_files() {
+    let dir = tmpdir("geometry-maps");
+    let run = |args: &[&str], scene: &std::path::Path, line: bool, out: &std::path::Path| {
+        let mut c = bin();
+        c.args(args).arg("--scene").arg(scene).arg("--out").arg(out);
+        if line && args[0] != "landscape" {
+            c.args(["--line-deg", "0"]);
+        }
+        let o = c.output().unwrap();
+        assert_ok(&o);
+        assert!(crate_sidecar(out).exists(), "{}", out.display());
+        std::fs::read_to_string(out).unwrap()
+    };
+    let landscape = [
+        "landscape",
+        "--theta",
+        "0",
+        "--load-mn",
+        "0.05",
+        "--grid",
+        "4",
+    ];
+    let corrugation = [
+        "corrugation",
+        "--theta",
+        "0",
+        "--load-mn",
+        "0.05",
+        "--alpha",
+        "0,90",
+        "--distance-um",
+        "3",
+        "--step-um",
+        "0.5",
+    ];
+    let friction = [
+        "friction",
+        "--theta",
+        "0",
+        "--load-mn",
+        "0.02,0.05",
+        "--alpha",
+        "0",
+    ];
+    for (name, scene, _) in geometries(&dir) {
+        let sites = name == "sites";
+        let base = dir.join(format!("{name}-base.toml"));
+        let text = std::fs::read_to_string(&scene).unwrap();
+        // the base preset with a plain 15 µm disc slider
+        let plain = text.split("[slider]").next().unwrap();
+        std::fs::write(&base, format!("{plain}[slider]\nradius_um = 15\n")).unwrap();
+        for (args, rows) in [
+            (&landscape[..], 16),
+            (&corrugation[..], 2),
+            (&friction[..], 2),
+        ] {
+            let out = dir.join(format!("{name}-{}.csv", args[0]));
+            let got = run(args, &scene, sites, &out);
+            assert_eq!(got.lines().count(), rows + 1, "{name} {}: {got}", args[0]);
+            let plain = run(
+                args,
+                &base,
+                sites,
+                &dir.join(format!("{name}-{}-base.csv", args[0])),
+            );
+            assert_ne!(got, plain, "{name} {}: the geometry is not used", args[0]);
+            if sites && args[0] != "landscape" {
+                let o = bin()
+                    .args(args)
+                    .arg("--scene")
+                    .arg(&scene)
+                    .output()
+                    .unwrap();
+                assert!(!o.status.success(), "{name} {}", args[0]);
+                let e = String::from_utf8_lossy(&o.stderr);
+                assert!(e.contains("`--line-deg`") && e.contains("pad.csv"), "{e}");
+            }
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+fn crate_sidecar(p: &std::path::Path) -> std::path::PathBuf {
+    let mut s = p.as_os_str().to_owned();
+    s.push(".meta.json");
+    s.into()
+}
+
+/// `equilibrate`, `slide` (about 1 µs) and `export-lammps` run on a basis, an outline and a
+/// site file: the DEM starts from the surrogate's contacts of the same scene (the screen's), and
+/// the export's data holds one slider sphere per site of the scene.
+#[test]
+fn dem_tiers_and_export_run_on_bases_outlines_and_site_files() {
+    let dir = tmpdir("geometry-dem");
+    let dem = [
+        "--theta",
+        "0",
+        "--load-mn",
+        "0.05",
+        "--equilibrate-us",
+        "0.3",
+        "--rigid-z",
+    ];
+    for (name, scene, n) in geometries(&dir) {
+        let line: &[&str] = if name == "sites" {
+            &["--line-deg", "0"]
+        } else {
+            &[]
+        };
+        let contacts = screen_contacts(&scene, "0.05");
+        assert!(contacts > 0 && contacts <= n, "{name}: {contacts} of {n}");
+        let js = dir.join(format!("{name}-eq.json"));
+        let o = bin()
+            .arg("equilibrate")
+            .args(dem)
+            .arg("--scene")
+            .arg(&scene)
+            .arg("--out")
+            .arg(dir.join(format!("{name}-eq.csv")))
+            .arg("--json")
+            .arg(&js)
+            .output()
+            .unwrap();
+        assert_ok(&o);
+        assert_eq!(
+            json(&js)["surrogate_contacts"].as_u64(),
+            Some(contacts as u64),
+            "{name}"
+        );
+        let js = dir.join(format!("{name}-slide.json"));
+        let o = bin()
+            .arg("slide")
+            .args(dem)
+            .args([
+                "--relax-us",
+                "0.2",
+                "--slide-us",
+                "0.5",
+                "--speed-m-s",
+                "1",
+                "--prune",
+            ])
+            .args(["--alpha", "0"])
+            .args(line)
+            .arg("--scene")
+            .arg(&scene)
+            .arg("--out")
+            .arg(dir.join(format!("{name}-slide.csv")))
+            .arg("--json")
+            .arg(&js)
+            .output()
+            .unwrap();
+        assert_ok(&o);
+        let j = json(&js);
+        assert!(
+            j["mean_contacts"].as_f64().unwrap() <= n as f64,
+            "{name}: {j}"
+        );
+        let out = dir.join(format!("{name}-lammps"));
+        let o = bin()
+            .args([
+                "export-lammps",
+                "--theta",
+                "0",
+                "--load-mn",
+                "0.05",
+                "--slide-us",
+                "1",
+            ])
+            .args(line)
+            .arg("--scene")
+            .arg(&scene)
+            .arg("--out-dir")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_ok(&o);
+        let e = json(&out.join("export.json"));
+        assert_eq!(
+            e["ids"]["slider"]["count"].as_u64(),
+            Some(n as u64),
+            "{name}"
+        );
+        if name == "sites" {
+            let o = bin()
+                .args(["slide", "--theta", "0", "--load-mn", "0.05", "--scene"])
+                .arg(&scene)
+                .output()
+                .unwrap();
+            assert!(!o.status.success());
+            assert!(String::from_utf8_lossy(&o.stderr).contains("`--line-deg`"));
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Without `--theta`, a pattern whose symmetry cannot be derived (a substrate from a site file)
+/// is screened over the whole 0–360° at the wide-domain step, and the log and the report say
+/// so; a `--theta` that covers only part of the domain is named, with the part not screened.
+#[test]
+fn design_screens_the_whole_domain_without_theta_and_names_a_partial_one() {
+    let dir = tmpdir("design-domain");
+    let mut csv = String::from("x_um,y_um\n");
+    for j in -9i32..=9 {
+        for i in -10i32..=10 {
+            let x = 3.2 * i as f64 + if j % 2 == 0 { 0.0 } else { 1.6 };
+            let y = 2.8 * j as f64;
+            if x.abs() <= 30.0 {
+                csv += &format!("{x},{y}\n");
+            }
+        }
+    }
+    std::fs::write(dir.join("sub.csv"), csv).unwrap();
+    let scene = dir.join("free.toml");
+    std::fs::write(
+        &scene,
+        "pattern = 'tri-tri'\n[slider]\nradius_um = 6\n[substrate]\nsize_um = [60, 60]\nsites = 'sub.csv'\n",
+    )
+    .unwrap();
+    let design = |theta: Option<&str>, out: &str| {
+        let mut c = bin();
+        c.args(["design", "--no-dem", "--load-mn", "0.005,0.01"])
+            .args(["--theta-tol", "0", "--direction-tol", "0"])
+            .args([
+                "--max-top",
+                "2",
+                "--per-level",
+                "1",
+                "--alpha-step-deg",
+                "45",
+            ])
+            .args(["--alpha-refine-deg", "none", "--scan-distance-um", "2"])
+            .args(["--scan-step-um", "0.5", "--scene"])
+            .arg(&scene)
+            .arg("--out-dir")
+            .arg(dir.join(out));
+        if let Some(t) = theta {
+            c.args(["--theta", t]);
+        }
+        let o = c.output().unwrap();
+        assert_ok(&o);
+        let log = String::from_utf8_lossy(&o.stderr).into_owned();
+        let report = std::fs::read_to_string(dir.join(out).join("report.md")).unwrap();
+        let mut r = csv::Reader::from_path(dir.join(out).join("screen_free.csv")).unwrap();
+        let h = r.headers().unwrap().clone();
+        let c = h.iter().position(|x| x == "theta_deg").unwrap();
+        let mut thetas: Vec<f64> = r
+            .records()
+            .map(|x| x.unwrap()[c].parse().unwrap())
+            .collect();
+        thetas.dedup();
+        (log, report, thetas)
+    };
+    let (log, report, thetas) = design(None, "whole");
+    let step = 0.25;
+    assert_eq!(thetas.len(), (360.0 / step) as usize, "{log}");
+    assert_eq!(thetas[0], 0.0);
+    assert_eq!(*thetas.last().unwrap(), 360.0 - step);
+    for note in [&log, &report] {
+        assert!(
+            note.contains("no --theta given: the whole domain at 0.25°"),
+            "{note}"
+        );
+        assert!(!note.contains("not screened"), "{note}");
+    }
+    let (log, report, thetas) = design(Some("0:30:1"), "part");
+    assert_eq!(thetas.len(), 31);
+    let gap = "the θ list does not cover the domain [0°, 360°): 30°–360° not screened";
+    assert!(log.contains(gap), "{log}");
+    assert!(report.contains(&format!("**{gap}")), "{report}");
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -70,6 +70,22 @@ pub fn alphas(text: &str) -> Result<Vec<f64>> {
         .collect()
 }
 
+/// Refuses a command whose α (from the contact line) the user gives on a scene with a site
+/// file when `--line-deg` is not given: a site file has no lattice for the moiré estimate of
+/// the line (the scene keeps the base preset's lattice, which the file replaced), so α would
+/// be measured from a line of a lattice that is not there. `design` and `tolerance
+/// --direction-deg` do not need this: they measure α from the substrate x axis and say so.
+pub fn line_for(scene: &surrogate::Scene, line: Option<f64>) -> Result<()> {
+    if line.is_none() {
+        if let Some(why) = crate::study::corrugation::site_file_body(scene) {
+            bail!(
+                "`--line-deg`: {why}, which has no lattice for the moiré contact-line estimate that α is measured from; give --line-deg DEG (the contact-line direction from the substrate x axis; 0 measures α from the x axis)"
+            );
+        }
+    }
+    Ok(())
+}
+
 /// `--line-deg` (finite degrees from the substrate x axis) → rad.
 pub fn line_deg(v: Option<f64>) -> Result<Option<f64>> {
     match v {

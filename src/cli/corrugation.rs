@@ -118,6 +118,7 @@ pub fn prepare(a: Args) -> Result<Prepared> {
     let (distance, step) = checks::path(a.distance_um, a.step_um)?;
     let line = checks::line_deg(a.line_deg)?;
     let sc = a.scene.resolve(a.theta)?;
+    checks::line_for(&sc.scene, line)?;
     if a.method == Method::Landscape {
         checks::grid(a.grid)?;
         if sc.scene.substrate.sigma_h > 0.0 {

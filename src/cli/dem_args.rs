@@ -257,6 +257,9 @@ impl DemArgs {
         }
         let sc = self.scene.resolve(thetas[0])?;
         let p = self.params(alphas[0], loads[0], protocol)?;
+        if protocol.slide_us > 0.0 {
+            self.check_line(&sc.scene)?;
+        }
         check_outputs(&[
             ("--out", self.out.as_deref()),
             ("--json", self.json.as_deref()),
@@ -264,6 +267,12 @@ impl DemArgs {
             ("--xyz", self.xyz.as_deref()),
         ])?;
         Ok((sc, p))
+    }
+
+    /// Refuses a site-file scene without `--line-deg` ([`checks::line_for`]): α is measured
+    /// from the contact line.
+    pub fn check_line(&self, scene: &surrogate::Scene) -> Result<()> {
+        checks::line_for(scene, checks::line_deg(self.line_deg)?)
     }
 
     /// The run parameters at pulling angle `alpha_deg` (degrees) and load `load_mn` (mN) with

@@ -24,6 +24,9 @@ pub static STUDY_LOADS: LazyLock<String> = LazyLock::new(|| {
     loads.join(",")
 });
 
+/// The default θ list (degrees) of `--theta`, before the symmetry cut (the study's).
+pub const DEFAULT_THETA: &str = "0:30:0.1";
+
 /// Options of `superlube design`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -43,22 +46,26 @@ pub struct Args {
     /// A lattice family (as `superlube patterns --family`: `directional`, `presets[:s=…]`,
     /// `rectangular:a=…,b=…`, `oblique:a=…,b=…,gamma_deg=…`): its candidates over the substrate
     /// of the one --pattern or --scene given (default square-tri) are written to
-    /// OUT/patterns/ (equal slider area, p, q ≤ 3, orders ≤ 4; run `superlube patterns` for
-    /// other knobs) and designed as with --patterns OUT/patterns/index.csv.
+    /// OUT/patterns/ (equal slider area unless --normalize spheres, p, q ≤ 3, orders ≤ 4; run
+    /// `superlube patterns` for other knobs) and designed as with --patterns
+    /// OUT/patterns/index.csv.
     #[arg(long, value_name = "SPEC")]
     family: Option<String>,
+    /// With --family: what the candidates share, as `superlube patterns --normalize`: `area`
+    /// (the base scene's slider outline, default) or `spheres` (each outline scaled to hold
+    /// the base slider's sphere count); the report states the rule.
+    #[arg(long, value_enum, value_name = "RULE", requires = "family")]
+    normalize: Option<crate::study::patterns::Normalize>,
     /// Scene override flags, applied to every pattern and scene.
     #[command(flatten)]
     overrides: SceneOverrides,
     /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
-    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md).
-    #[arg(
-        long,
-        value_name = "DEG",
-        default_value = "0:30:0.1",
-        allow_hyphen_values = true
-    )]
-    theta: String,
+    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md); a list
+    /// that does not span a domain is named in the log and the report [default: 0:30:0.1, and
+    /// for a pattern whose domain it does not span (no derived symmetry, or a domain wider
+    /// than 30°) the whole domain at 0.1°, or 0.25° when wider than 60°].
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    theta: Option<String>,
     /// Screen θ as given, without the symmetry cut (for scenes whose symmetry is broken, e.g.
     /// by --offset-um).
     #[arg(long = "no-symmetry-cut")]
@@ -257,7 +264,7 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             Some(super::patterns::generate(
                 &base,
                 &params,
-                crate::study::patterns::Normalize::Area,
+                a.normalize.unwrap_or_default(),
                 &a.out.join("patterns"),
                 Some("--family"),
             )?)
@@ -265,8 +272,12 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
         None => None,
     };
     if let Some(index) = a.patterns.as_ref().or(generated.as_ref()) {
-        files.extend(crate::study::patterns::index_scenes(index)?);
         facts = crate::study::patterns::index_facts(index)?;
+        // the contact-type pre-screen orders the surrogate's work
+        files.extend(crate::study::patterns::prescreen_order(
+            crate::study::patterns::index_scenes(index)?,
+            &facts,
+        ));
     }
     let patterns: Vec<String> = match (&pattern, files.is_empty()) {
         (Some(p), _) => p.split(',').map(|s| s.trim().to_string()).collect(),
@@ -335,7 +346,8 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
 
 /// Every check of `superlube design`, before any work.
 pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
-    let thetas_deg = parse_list_or_range(&a.theta, "--theta")?;
+    let theta_text = a.theta.clone().unwrap_or_else(|| DEFAULT_THETA.to_string());
+    let thetas_deg = parse_list_or_range(&theta_text, "--theta")?;
     let loads = checks::loads(&a.load_mn)?;
     if let Some(k) = loads.windows(2).position(|w| w[1] <= w[0]) {
         bail!(
@@ -496,7 +508,8 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         direction_tol_step_deg,
         seeds,
         thetas_deg,
-        theta_text: a.theta.clone(),
+        theta_text,
+        theta_default: a.theta.is_none(),
         symmetry_cut: !a.no_symmetry_cut,
         loads,
         mu_superlubric: a.mu_superlubric,
@@ -556,6 +569,28 @@ pub fn run(a: Args) -> Result<()> {
         for w in &s.warnings {
             crate::study::Progress::note(&rep, &format!("warning: {}: {w}", s.name));
         }
+    }
+    if a.patterns.is_some() || a.family.is_some() {
+        let mut n = [0usize; 4];
+        for s in &scenes {
+            let t = s.facts.as_ref().map_or("", |f| f.contact_type.as_str());
+            n[crate::study::patterns::prescreen_class(t)] += 1;
+        }
+        crate::study::Progress::note(
+            &rep,
+            &format!(
+                "design: {} candidates in the contact-type pre-screen's order: {} lubric (in every direction), {} directional, {} interlocked{}; index order within each",
+                scenes.len(),
+                n[0],
+                n[1],
+                n[2],
+                if n[3] > 0 {
+                    format!(", then {} unclassified", n[3])
+                } else {
+                    String::new()
+                }
+            ),
+        );
     }
     let t0 = std::time::Instant::now();
     let store = Store::new(&a.out);

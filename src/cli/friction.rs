@@ -91,6 +91,7 @@ pub fn prepare(a: Args) -> Result<Prepared> {
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
     let sc = a.scene.resolve(None)?;
+    checks::line_for(&sc.scene, line)?;
     let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {
         (Some(t), _) => checks::thetas(t)?,
         (None, _) => vec![sc.scene.slider.theta],

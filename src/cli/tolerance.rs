@@ -140,6 +140,7 @@ pub fn run(a: Args) -> Result<()> {
     let direction_deg = match (a.alpha, a.direction_deg) {
         (Some(al), None) => {
             checks::alpha(al)?;
+            checks::line_for(&sc.scene, line)?;
             let l = crate::study::friction::line_at(&sc.scene, sc.scene.slider.theta, line);
             label(rad_to_deg(l.angle) + al)
         }

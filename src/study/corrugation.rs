@@ -69,13 +69,38 @@ pub struct LineChoice {
     pub angle: f64,
     /// Whether the user gave it (otherwise the moiré estimate).
     pub given: bool,
-    /// The moiré estimate (always computed, for the log).
+    /// The moiré estimate (always computed, for the log; meaningless when `no_lattice`).
     pub estimate: ContactLine,
+    /// Not given and a body comes from a site file ([`site_file_body`]): there is no lattice
+    /// for the moiré estimate, so the line is the substrate x axis (0°).
+    pub no_lattice: bool,
+}
+
+/// Which body of `scene` comes from a site file, in words (`the slider comes from the site
+/// file `s.csv``), the slider first; `None` when both are lattices. Such a body has no lattice
+/// for the moiré contact-line estimate (its scene keeps the base preset's lattice, which the
+/// file replaced).
+pub fn site_file_body(scene: &Scene) -> Option<String> {
+    let g = &scene.geometry;
+    g.slider_sites
+        .as_ref()
+        .map(|l| format!("the slider comes from the site file `{}`", l.path))
+        .or_else(|| {
+            g.substrate_sites
+                .as_ref()
+                .map(|l| format!("the substrate comes from the site file `{}`", l.path))
+        })
 }
 
 impl LineChoice {
     /// One log line describing the choice.
     pub fn describe(&self) -> String {
+        if self.no_lattice {
+            return format!(
+                "contact line: {:.3}° from x (the substrate x axis: a site file has no lattice for the moiré estimate; --line-deg sets the line)",
+                self.angle.to_degrees()
+            );
+        }
         format!(
             "contact line: {:.3}° from x ({}; moiré estimate {:.3}°{}, line spacing {:.2} µm)",
             self.angle.to_degrees(),
@@ -95,13 +120,18 @@ impl LineChoice {
     }
 }
 
-/// The contact line of `scene` at its θ: `given` (rad) or the moiré estimate.
+/// The contact line of `scene` at its θ: `given` (rad) or the moiré estimate; with a site file
+/// ([`site_file_body`]) and none given, the substrate x axis (`no_lattice`). The commands
+/// whose α the user gives refuse that case first (`--line-deg`); `design` and `tolerance`
+/// measure α from it and say so.
 pub fn contact_line(scene: &Scene, given: Option<f64>) -> LineChoice {
     let estimate = contact_line_direction(scene, scene.slider.theta, &MapParams::default());
+    let no_lattice = given.is_none() && site_file_body(scene).is_some();
     LineChoice {
-        angle: given.unwrap_or(estimate.angle),
+        angle: given.unwrap_or(if no_lattice { 0.0 } else { estimate.angle }),
         given: given.is_some(),
         estimate,
+        no_lattice,
     }
 }
 

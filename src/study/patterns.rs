@@ -671,8 +671,20 @@ pub fn scale_to_count(f: &surrogate::SceneFile, target: usize) -> Result<surroga
     let guess = (target as f64 / n1 as f64).sqrt();
     // the smallest scale with at least `target` spheres, between lo (fewer) and hi (enough)
     let (mut lo, mut hi) = (guess * 0.5, guess * 2.0);
-    if count(hi)? < target {
-        anyhow::bail!("its outline cannot hold {target} spheres at twice the estimated scale");
+    match count(hi) {
+        Ok(n) if n >= target => {}
+        Ok(_) => {
+            anyhow::bail!("its outline cannot hold {target} spheres at twice the estimated scale")
+        }
+        // twice the estimate does not fit the substrate: grow from the estimate in 5 % steps
+        // (an error once even the needed scale does not fit)
+        Err(_) => {
+            hi = guess;
+            while count(hi)? < target {
+                hi *= 1.05;
+            }
+            lo = if hi == guess { guess * 0.5 } else { hi / 1.05 };
+        }
     }
     for _ in 0..40 {
         let mid = 0.5 * (lo + hi);
@@ -701,6 +713,10 @@ pub struct CandidateFacts {
     pub p_q: String,
     /// Commensurate direction (degrees from the substrate x axis), when there is one.
     pub commensurate_direction_deg: Option<f64>,
+    /// What the candidates share (`area` or `spheres`: `superlube patterns --normalize`), from
+    /// the index's sidecar; empty when it does not say.
+    #[serde(default)]
+    pub normalize: String,
 }
 
 /// The facts of every candidate of an `index.csv`, by `pattern_id`. Errors name `--patterns`.
@@ -717,6 +733,11 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
     }
     let mut r = csv::Reader::from_path(index)
         .map_err(|e| anyhow::anyhow!("`--patterns`: cannot read {}: {e}", index.display()))?;
+    // the fairness rule the candidates were made with (a hand-written index has no sidecar)
+    let normalize = super::meta::Sidecar::of(index)
+        .ok()
+        .and_then(|s| s.params.get("normalize")?.as_str().map(str::to_string))
+        .unwrap_or_default();
     let mut out = Vec::new();
     for (k, row) in r.deserialize::<Row>().enumerate() {
         let row = row.map_err(|e| {
@@ -728,10 +749,43 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
                 contact_type: row.contact_type,
                 p_q: row.p_q,
                 commensurate_direction_deg: row.commensurate_direction_deg,
+                normalize: normalize.clone(),
             },
         ));
     }
     Ok(out)
+}
+
+/// Rank of a contact type in the pre-screen order: `lubric` (in every direction) first, then
+/// `directional`, then `interlocked`, then anything else (an index without the column).
+pub fn prescreen_class(contact_type: &str) -> usize {
+    match contact_type {
+        "lubric" => 0,
+        "directional" => 1,
+        "interlocked" => 2,
+        _ => 3,
+    }
+}
+
+/// The scene files `files` of an index (row order) in the order the contact-type pre-screen
+/// gives ([`prescreen_class`] of each file's `pattern_id` in `facts`, its stem), index order
+/// within a class: the surrogate's work goes to the most promising candidates first.
+/// Deterministic (a stable sort).
+pub fn prescreen_order(
+    files: Vec<std::path::PathBuf>,
+    facts: &[(String, CandidateFacts)],
+) -> Vec<std::path::PathBuf> {
+    let class = |f: &std::path::Path| {
+        let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
+        facts
+            .iter()
+            .find(|(id, _)| Some(id) == stem.as_ref())
+            .map_or(3, |(_, c)| prescreen_class(&c.contact_type))
+    };
+    let mut v: Vec<(usize, std::path::PathBuf)> =
+        files.into_iter().map(|f| (class(&f), f)).collect();
+    v.sort_by_key(|(c, _)| *c);
+    v.into_iter().map(|(_, f)| f).collect()
 }
 
 /// The scene files of an `index.csv` written by `superlube patterns` (its `scene_file` column,
@@ -841,6 +895,39 @@ mod tests {
             assert!((a / d_u - m.p as f64 / m.q as f64).abs() < 1e-9, "{c:?}");
             assert!(matches!(c.contact, ContactType::Directional { .. }));
         }
+    }
+
+    /// The pre-screen order: lubric, then directional, then interlocked, then unclassified;
+    /// index order within a class.
+    #[test]
+    fn prescreen_order_puts_lubric_first_and_keeps_index_order_within_a_class() {
+        let facts: Vec<(String, CandidateFacts)> = [
+            ("p1", "interlocked"),
+            ("p2", "directional"),
+            ("p3", "lubric"),
+            ("p4", "directional"),
+            ("p5", ""),
+            ("p6", "lubric"),
+        ]
+        .iter()
+        .map(|(id, t)| {
+            (
+                id.to_string(),
+                CandidateFacts {
+                    contact_type: t.to_string(),
+                    ..Default::default()
+                },
+            )
+        })
+        .collect();
+        let files: Vec<std::path::PathBuf> = (1..=6)
+            .map(|k| std::path::PathBuf::from(format!("c/p{k}.toml")))
+            .collect();
+        let got: Vec<String> = prescreen_order(files, &facts)
+            .iter()
+            .map(|f| f.file_stem().unwrap().to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(got, ["p3", "p6", "p2", "p4", "p1", "p5"]);
     }
 
     #[test]

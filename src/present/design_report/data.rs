@@ -27,6 +27,8 @@ pub struct ReportData {
     pub maps: Vec<String>,
     /// The patterns side by side (`patterns.csv`), when more than one was designed.
     pub compared: Vec<super::patterns::PatternLine>,
+    /// The fairness rule of the comparison, one sentence ([`super::patterns::fairness`]).
+    pub fairness: String,
     /// The best patterns with a contact map (`contacts_<p>.png`), best first.
     pub contact_maps: Vec<String>,
     /// Whether the DEM stage ran.
@@ -445,7 +447,19 @@ impl ReportData {
             .iter()
             .map(|pr| ScreenLine {
                 pattern: pr.scene.name.clone(),
-                symmetry: pr.sym.describe(),
+                symmetry: {
+                    let mut t = match crate::study::design::theta_note(&pr.sym, &pr.thetas_deg, p) {
+                        None => pr.sym.describe(),
+                        Some(n) if n.starts_with("the θ list") => {
+                            format!("{}; **{n}**", pr.sym.describe())
+                        }
+                        Some(n) => format!("{}; {n}", pr.sym.describe()),
+                    };
+                    if let Some(n) = crate::study::design::line_note(&pr.scene, p) {
+                        t = format!("{t}. The {}", n.trim_start_matches("the "));
+                    }
+                    t
+                },
                 thetas: pr.thetas_deg.len(),
                 theta_first: pr
                     .thetas_deg
@@ -548,6 +562,11 @@ impl ReportData {
                     .collect()
             } else {
                 Vec::new()
+            },
+            fairness: if o.patterns.len() > 1 {
+                super::patterns::fairness(o, &super::patterns::pattern_rows(o))
+            } else {
+                String::new()
             },
             compared: if o.patterns.len() > 1 {
                 super::patterns::pattern_rows(o)

@@ -268,6 +268,7 @@ mod tests {
             ],
             maps: vec![s("square-tri")],
             compared: vec![],
+            fairness: String::new(),
             contact_maps: vec![],
             dem_ran: dem,
             dem: dem.then(|| DemSection {
@@ -439,7 +440,9 @@ mod tests {
     fn patterns_are_compared_in_one_table_when_there_are_several() {
         let s = |v: &str| v.to_string();
         let mut d = small(false, 0);
+        d.fairness = s("Compared at equal slider area.");
         d.compared = vec![super::patterns::PatternLine {
+            rank: 1,
             pattern: s("p001"),
             outline: s("disc r=100"),
             spheres: 3505,
@@ -456,7 +459,11 @@ mod tests {
         let md = render(&d).unwrap();
         assert!(md.contains("](patterns.png)"), "{md}");
         assert!(md.contains("](contacts_p001.png)"), "{md}");
-        assert!(md.contains("|---|\n| p001 | disc r=100 | 3505 | 31416 | 0 | 90 | 3.86 | 3.86 | 123 | 1.10 | directional |\n\n!["), "{md}");
+        assert!(
+            md.contains("outline area at the robust limit. Compared at equal slider area.\n"),
+            "{md}"
+        );
+        assert!(md.contains("|---|\n| 1 | p001 | disc r=100 | 3505 | 31416 | 0 | 90 | 3.86 | 3.86 | 123 | 1.10 | directional |\n\n!["), "{md}");
         assert!(!md.contains("\n\n\n"), "{md}");
     }
 

@@ -4,7 +4,7 @@
 use super::words::fmt_g;
 use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
 use crate::plot::figures::contact_map_png;
-use crate::study::design::best::{best_contacts, best_order};
+use crate::study::design::best::{best_contacts, best_order, pattern_order};
 use crate::study::design::store::Store;
 use crate::study::design::DesignOutcome;
 use crate::study::rows::label;
@@ -17,9 +17,12 @@ use surrogate::units::{m2_to_um2, m_to_um, mn_to_n, n_to_un, pa_to_kpa};
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[allow(non_snake_case)]
 pub struct PatternRow {
+    /// Rank of the pattern (1 = best): by its rank-1 design, in the ranking's order
+    /// ([`crate::study::design::best::pattern_order`]).
+    pub rank: usize,
     /// Pattern (design scene name; the `pattern_id` of a `superlube patterns` index).
     pub pattern: String,
-    /// Slider lattice vectors (µm), `x y;x y`.
+    /// Slider lattice vectors (µm), `x y;x y`; `sites FILE` for a slider from a site file.
     pub lattice_um: String,
     /// Slider basis sites (µm), `x y;x y` (empty: one site per cell).
     pub basis_um: String,
@@ -56,12 +59,15 @@ fn pairs_um(v: &[[f64; 2]]) -> String {
         .join(";")
 }
 
-/// The rows of every pattern of `o`, in the design's order. Cost: one slider site list per
-/// pattern.
+/// The rows of every pattern of `o`, best first ([`pattern_order`]: by the robust limit of
+/// its rank-1 design, then the ranking's tie-breaks, then the order given). Cost: one slider
+/// site list per pattern.
 pub fn pattern_rows(o: &DesignOutcome) -> Vec<PatternRow> {
-    o.patterns
-        .iter()
-        .map(|pr| {
+    pattern_order(o)
+        .into_iter()
+        .enumerate()
+        .map(|(k, i)| {
+            let pr = &o.patterns[i];
             let sc = &pr.scene.scene;
             let area = sc.geometry.outline.area(sc.slider.radius);
             let spheres = sc.slider_sites_local().len();
@@ -69,8 +75,13 @@ pub fn pattern_rows(o: &DesignOutcome) -> Vec<PatternRow> {
             let w = best.map_or(0.0, |c| c.score.superlubric_to_mn);
             let facts = pr.scene.facts.clone().unwrap_or_default();
             PatternRow {
+                rank: k + 1,
                 pattern: pr.scene.name.clone(),
-                lattice_um: pairs_um(&[sc.slider.lattice.a1, sc.slider.lattice.a2]),
+                lattice_um: match &sc.geometry.slider_sites {
+                    // the file replaced the base preset's lattice: name it, not that lattice
+                    Some(l) => format!("sites {}", l.path),
+                    None => pairs_um(&[sc.slider.lattice.a1, sc.slider.lattice.a2]),
+                },
                 basis_um: pairs_um(&sc.geometry.slider_basis),
                 outline: sc.geometry.outline.describe(sc.slider.radius),
                 spheres,
@@ -92,6 +103,7 @@ pub fn pattern_rows(o: &DesignOutcome) -> Vec<PatternRow> {
 /// One row of the report's "Patterns compared" table (cells as printed).
 #[derive(Debug, Clone, Serialize)]
 pub struct PatternLine {
+    pub rank: usize,
     pub pattern: String,
     pub outline: String,
     pub spheres: usize,
@@ -108,6 +120,7 @@ pub struct PatternLine {
 impl From<&PatternRow> for PatternLine {
     fn from(r: &PatternRow) -> Self {
         PatternLine {
+            rank: r.rank,
             pattern: r.pattern.clone(),
             outline: r.outline.clone(),
             spheres: r.spheres,
@@ -124,6 +137,63 @@ impl From<&PatternRow> for PatternLine {
                 r.contact_type.clone()
             },
         }
+    }
+}
+
+/// The fairness rule of the comparison in one sentence: equal slider area or equal sphere
+/// count as `superlube patterns --normalize` made the candidates (read from the index's
+/// sidecar), else what the patterns as given share (area, sphere count, or neither: then the
+/// mean pressure and the load per sphere are the columns to compare). Cost: one pass.
+pub fn fairness(o: &DesignOutcome, rows: &[PatternRow]) -> String {
+    let rule: Vec<&str> = o
+        .patterns
+        .iter()
+        .map(|pr| pr.scene.facts.as_ref().map_or("", |f| f.normalize.as_str()))
+        .collect();
+    let same = |f: &dyn Fn(&PatternRow) -> f64| {
+        rows.windows(2)
+            .all(|w| (f(&w[0]) - f(&w[1])).abs() <= 1e-9 * f(&w[0]).abs().max(1.0))
+    };
+    let equal_area = same(&|r: &PatternRow| r.slider_area_um2);
+    let equal_count = same(&|r: &PatternRow| r.spheres as f64);
+    if rule.iter().all(|r| *r == "spheres") {
+        format!(
+            "Compared at **equal sphere count**: the candidates were made with `superlube patterns --normalize spheres` (each outline scaled to hold the base slider's sphere count, the closest its lattice allows: {}).",
+            if equal_count {
+                "all equal".to_string()
+            } else {
+                range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
+            }
+        )
+    } else if rule.iter().all(|r| *r == "area") {
+        format!(
+            "Compared at **equal slider area**: the candidates were made with `superlube patterns --normalize area` (each keeps the base scene's outline, {} µm²; the sphere count follows the lattice: {}).",
+            rows.first().map_or(String::new(), |r| format!("{:.0}", r.slider_area_um2)),
+            range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
+        )
+    } else if equal_area {
+        "Compared as given, at **equal slider area** (the sphere count follows each lattice)."
+            .into()
+    } else if equal_count {
+        "Compared as given, at **equal sphere count**.".into()
+    } else {
+        format!(
+            "Compared as given: **neither the slider area ({}) nor the sphere count ({}) is equal**, so compare the mean pressure and the load per sphere.",
+            range_text(rows.iter().map(|r| r.slider_area_um2), "µm²"),
+            range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
+        )
+    }
+}
+
+/// `a–b unit` of the values, rounded to integers (`a unit` when all equal).
+fn range_text(v: impl Iterator<Item = f64>, unit: &str) -> String {
+    let (lo, hi) = v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+        (a.min(x), b.max(x))
+    });
+    if lo == hi {
+        format!("{lo:.0} {unit}")
+    } else {
+        format!("{lo:.0}–{hi:.0} {unit}")
     }
 }
 
@@ -156,22 +226,28 @@ const MAX_SERIES: usize = 12;
 /// (`patterns.png`): x is the first slider lattice parameter that varies across the patterns —
 /// a = |a1|, b = |a2| (µm) or the angle γ between them (°) — else the sphere count. With one
 /// varying parameter, the robust and the nominal limit as two curves; with a second one, one
-/// robust curve per value of it (up to 12, else markers). Cost: one pass over the rows.
+/// robust curve per value of it (up to 12, else markers). With a slider from a site file
+/// among the patterns (no lattice), against the sphere count. Cost: one pass over the rows.
 pub fn limit_chart(o: &DesignOutcome, rows: &[PatternRow]) -> Chart {
-    let lat: Vec<([f64; 2], [f64; 2])> = o
-        .patterns
+    if o.patterns
         .iter()
-        .map(|pr| {
-            (
-                pr.scene.scene.slider.lattice.a1,
-                pr.scene.scene.slider.lattice.a2,
-            )
+        .any(|pr| pr.scene.scene.geometry.slider_sites.is_some())
+    {
+        return chart_over(&[], rows);
+    }
+    // in the rows' order
+    let lat: Vec<([f64; 2], [f64; 2])> = pattern_order(o)
+        .into_iter()
+        .map(|i| {
+            let l = &o.patterns[i].scene.scene.slider.lattice;
+            (l.a1, l.a2)
         })
         .collect();
     chart_over(&lat, rows)
 }
 
-/// [`limit_chart`] over the slider lattice vectors (a1, a2; m) of each row.
+/// [`limit_chart`] over the slider lattice vectors (a1, a2; m) of each row (none: against the
+/// sphere count).
 fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
     let norm = |v: [f64; 2]| v[0].hypot(v[1]);
     let params = [
@@ -312,6 +388,7 @@ mod tests {
 
     fn row(spheres: usize, w: f64) -> PatternRow {
         PatternRow {
+            rank: 0,
             pattern: String::new(),
             lattice_um: String::new(),
             basis_um: String::new(),

@@ -31,22 +31,32 @@ pub fn best_design(pr: &PatternResult) -> Option<(f64, f64)> {
     (w > 0.0).then_some((c.theta_deg, w))
 }
 
-/// The `n` patterns of `o` whose rank-1 design holds to the highest load (robust limit first,
-/// then the nominal one, then the order given), as indices into `o.patterns`.
-/// Cost: one pass over the patterns.
+/// Every pattern of `o`, best first (indices into `o.patterns`): ordered by its rank-1 design
+/// with the ranking's own order ([`super::rank::compare`]: the robust limit, the tolerance
+/// windows, μ_est, contacts, then θ and α), then in the order given; patterns without a
+/// candidate last. Cost: O(n log n) over the patterns.
+pub fn pattern_order(o: &DesignOutcome) -> Vec<usize> {
+    let mut idx: Vec<usize> = (0..o.patterns.len()).collect();
+    // a stable sort: exact ties keep the order given
+    idx.sort_by(
+        |&a, &b| match (o.patterns[a].ranking.first(), o.patterns[b].ranking.first()) {
+            (Some(x), Some(y)) => super::rank::compare(x, y),
+            (Some(_), None) => std::cmp::Ordering::Less,
+            (None, Some(_)) => std::cmp::Ordering::Greater,
+            (None, None) => std::cmp::Ordering::Equal,
+        },
+    );
+    idx
+}
+
+/// The first `n` patterns of [`pattern_order`] whose rank-1 design is superlubric at some load
+/// ([`best_design`]), as indices into `o.patterns`. Cost: as [`pattern_order`].
 pub fn best_order(o: &DesignOutcome, n: usize) -> Vec<usize> {
-    let mut order: Vec<(usize, f64, f64)> = o
-        .patterns
-        .iter()
-        .enumerate()
-        .filter(|(_, pr)| best_design(pr).is_some())
-        .map(|(i, pr)| {
-            let s = &pr.ranking[0].score;
-            (i, s.superlubric_to_mn, s.nominal_to_mn)
-        })
-        .collect();
-    order.sort_by(|a, b| b.1.total_cmp(&a.1).then(b.2.total_cmp(&a.2)));
-    order.into_iter().take(n).map(|(i, _, _)| i).collect()
+    pattern_order(o)
+        .into_iter()
+        .filter(|&i| best_design(&o.patterns[i]).is_some())
+        .take(n)
+        .collect()
 }
 
 /// Pattern `i` of `o` with its rank-1 design's equilibrium at the load of [`best_design`]

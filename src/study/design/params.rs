@@ -28,6 +28,10 @@ pub struct DesignParams {
     pub thetas_deg: Vec<f64>,
     /// The `--theta` text (for messages).
     pub theta_text: String,
+    /// `--theta` was not given: `thetas_deg` is the default `0:30:0.1`, and a pattern whose
+    /// domain it does not span is screened over its whole domain
+    /// ([`super::default_domain`]).
+    pub theta_default: bool,
     /// Cut θ to the pattern's fundamental domain ([`super::symmetry`]).
     pub symmetry_cut: bool,
     /// Normal loads W (N), strictly increasing.

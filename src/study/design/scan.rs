@@ -8,7 +8,8 @@
 //!   none). Coarse: α = k·`alpha_step` over [0, P_α) (P_α the α period,
 //!   [`super::symmetry`]: 0 is along the contact line, 90° across it); each refinement step r
 //!   scans the best α so far ± half the previous step in steps of r (folded into [0, P_α),
-//!   angles already scanned not repeated).
+//!   angles already scanned not repeated). A full-turn period (P_α = 360°) is scanned as
+//!   (−180°, 180°], the range of a pulling angle.
 //! - **Best α's.** The `alphas_per_theta` lowest-corrugation angles at least one coarse step
 //!   apart (circularly within the period); ties: the first in scan order.
 //! - **Friction.** [`surrogate::friction::estimate_friction_loads`] along each best α: first at
@@ -68,11 +69,19 @@ const LOAD_CHUNK: usize = 3;
 /// estimates keep `FrictionParams::segment` (1.5 µm there measured no faster).
 const SEGMENT: f64 = 1.5e-6;
 
-/// A degree value folded into [0, p) and cleaned to 1e-9°.
+/// A degree value folded into [0, p) and cleaned to 1e-9°; with a full-turn period (p =
+/// 360°: a pattern without a common rotation, or whose symmetry was not derived) into
+/// (−180°, 180°], the range of a pulling angle.
 fn fold_alpha(a: f64, p: f64) -> f64 {
     let v = clean(a.rem_euclid(p));
-    if v >= p - 1e-9 {
-        0.0
+    let v = if v >= p - 1e-9 { 0.0 } else { v };
+    signed(v, p)
+}
+
+/// `v` in [0, p) as a pulling angle: unchanged for p ≤ 180°, else above 180° one turn down.
+fn signed(v: f64, p: f64) -> f64 {
+    if p > 180.0 + 1e-9 && v > 180.0 + 1e-9 {
+        clean(v - 360.0)
     } else {
         v
     }
@@ -84,10 +93,11 @@ fn alpha_distance(a: f64, b: f64, p: f64) -> f64 {
     d.min(p - d)
 }
 
-/// The coarse α grid (degrees) over [0, p) with step `step`.
+/// The coarse α grid (degrees) over [0, p) with step `step` (over (−180°, 180°] for p = 360°,
+/// [`fold_alpha`]).
 pub fn coarse_grid(p: f64, step: f64) -> Vec<f64> {
     let n = (p / step - 1e-9).ceil().max(1.0) as usize;
-    (0..n).map(|k| clean(k as f64 * step)).collect()
+    (0..n).map(|k| signed(clean(k as f64 * step), p)).collect()
 }
 
 /// Number of corrugation paths the scan of one orientation solves (for progress and budgets):
@@ -242,6 +252,15 @@ mod tests {
         assert_eq!(fold_alpha(-89.0, 180.0), 91.0);
         assert_eq!(fold_alpha(180.0, 180.0), 0.0);
         assert_eq!(fold_alpha(-0.5, 60.0), 59.5);
+        // a full-turn period: pulling angles in (−180°, 180°]
+        assert_eq!(fold_alpha(225.0, 360.0), -135.0);
+        assert_eq!(fold_alpha(180.0, 360.0), 180.0);
+        assert_eq!(fold_alpha(-0.5, 360.0), -0.5);
+        assert_eq!(
+            coarse_grid(360.0, 90.0),
+            vec![0.0, 90.0, 180.0, -90.0],
+            "every grid angle a valid α"
+        );
         assert_eq!(alpha_distance(89.0, -89.0, 180.0), 2.0);
     }
 }

@@ -250,12 +250,79 @@ impl PairSymmetry {
         }
     }
 
+    /// The parts of the fundamental domain that the θ list `thetas_deg` (degrees, as screened)
+    /// leaves out: the gaps between its values folded into the domain (the domain's ends
+    /// included; around the period for a domain without a mirror; modulo 360° when the symmetry
+    /// was not derived) that are wider than the list's own largest step. Each gap is
+    /// `(from, to)` in degrees, `to` past the domain's end for a gap through it. Empty when the
+    /// list spans the domain. O(n log n).
+    pub fn unscreened(&self, thetas_deg: &[f64]) -> Vec<(f64, f64)> {
+        let (lo, hi, closed) = self.domain();
+        let step = thetas_deg
+            .windows(2)
+            .map(|w| (w[1] - w[0]).abs())
+            .fold(0.0, f64::max);
+        let wide = |g: f64| g > step + 1e-6;
+        let mut v: Vec<f64> = thetas_deg
+            .iter()
+            .map(|&t| {
+                if self.not_derived.is_some() {
+                    (t - lo).rem_euclid(hi - lo) + lo
+                } else {
+                    self.fold(t)
+                }
+            })
+            .collect();
+        v.sort_by(f64::total_cmp);
+        v.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+        let (Some(&first), Some(&last)) = (v.first(), v.last()) else {
+            return vec![(lo, hi)];
+        };
+        let mut gaps: Vec<(f64, f64)> = v
+            .windows(2)
+            .filter(|w| wide(w[1] - w[0]))
+            .map(|w| (w[0], w[1]))
+            .collect();
+        if closed {
+            if wide(first - lo) {
+                gaps.insert(0, (lo, first));
+            }
+            if wide(hi - last) {
+                gaps.push((last, hi));
+            }
+        } else if wide(first - lo + hi - last) {
+            gaps.push((last, first + hi - lo));
+        }
+        gaps
+    }
+
+    /// The gaps of [`PairSymmetry::unscreened`] in words: `30°–60°`, `350°–360° and 0°–10°`.
+    pub fn gaps_text(&self, gaps: &[(f64, f64)]) -> String {
+        let (lo, hi, _) = self.domain();
+        gaps.iter()
+            .map(|&(a, b)| {
+                if b > hi + 1e-9 {
+                    format!(
+                        "{}°–{}° and {}°–{}°",
+                        fmt(a),
+                        fmt(hi),
+                        fmt(lo),
+                        fmt(b - (hi - lo))
+                    )
+                } else {
+                    format!("{}°–{}°", fmt(a), fmt(b))
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
     /// One line describing the symmetry, e.g. `period 30°, mirror θ → −θ: domain [0°, 15°];
     /// α period 180°`.
     pub fn describe(&self) -> String {
         if let Some(why) = &self.not_derived {
             return format!(
-                "symmetry not derived ({why}): the full θ range is screened (no symmetry cut); α period 360°"
+                "symmetry not derived ({why}): no symmetry cut, the domain is the full θ range [0°, 360°); α period 360°"
             );
         }
         let (lo, hi, closed) = self.domain();
@@ -497,5 +564,59 @@ mod geometry_tests {
         let s = PairSymmetry::of_scene(&t);
         assert!(s.not_derived.is_some() && s.contains(-75.0) && s.contains(300.0));
         assert!(s.describe().contains("full θ range"), "{}", s.describe());
+        assert!(!s.describe().contains("screened"), "{}", s.describe());
+    }
+
+    /// The θ lists that leave part of the domain out are found, with the part named.
+    #[test]
+    fn unscreened_parts_of_the_domain() {
+        let r = |t: &str| crate::study::range::parse_list_or_range(t, "--theta").unwrap();
+        let t = Lattice::triangular(3e-6);
+        let st = PairSymmetry::of(&Lattice::square(3e-6), &t);
+        // square-tri [0°, 15°]: the study's list (cut) and a coarse list span it
+        let cut: Vec<f64> = r("0:30:0.1")
+            .into_iter()
+            .filter(|&x| st.contains(x))
+            .collect();
+        assert!(st.unscreened(&cut).is_empty());
+        assert!(st.unscreened(&r("0:30:0.1")).is_empty(), "folded, uncut");
+        assert!(st.unscreened(&r("0,5,15")).is_empty());
+        // a list stopping short of 15°, one starting late, a single θ
+        assert_eq!(st.unscreened(&r("0:14:0.5")), vec![(14.0, 15.0)]);
+        assert_eq!(st.unscreened(&r("3:15:1")), vec![(0.0, 3.0)]);
+        assert_eq!(st.unscreened(&[7.0]), vec![(0.0, 7.0), (7.0, 15.0)]);
+        // an oblique slider on a triangle: [0°, 60°) without a mirror; 0:30 covers half
+        let o = PairSymmetry::of(&Lattice::oblique([3e-6, 0.0], [1.0e-6, 2.8e-6]), &t);
+        let g = o.unscreened(&r("0:30:0.1"));
+        assert_eq!(g.len(), 1);
+        assert!(
+            (g[0].0 - 30.0).abs() < 1e-9 && (g[0].1 - 60.0).abs() < 1e-9,
+            "{g:?}"
+        );
+        let whole: Vec<f64> = r("0:60:0.1")
+            .into_iter()
+            .filter(|&x| o.contains(x))
+            .collect();
+        assert!(o.unscreened(&whole).is_empty());
+        // around the period: −10°..10° leaves 10°–50° out
+        let g = o.unscreened(&r("-10:10:1"));
+        assert_eq!(g.len(), 1);
+        assert!(
+            (g[0].0 - 10.0).abs() < 1e-9 && (g[0].1 - 50.0).abs() < 1e-9,
+            "{g:?}"
+        );
+        // not derived: the domain is [0°, 360°); 0:30 leaves 30°–360° out
+        let mut nd = o.clone();
+        nd.not_derived = Some("test".into());
+        nd.period_deg = 360.0;
+        nd.mirror_deg = None;
+        let g = nd.unscreened(&r("0:30:0.1"));
+        assert_eq!(nd.gaps_text(&g), "30°–360°");
+        // a gap through the period's end is named in two parts
+        assert_eq!(
+            nd.gaps_text(&nd.unscreened(&r("10:300:1"))),
+            "300°–360° and 0°–10°"
+        );
+        assert!(nd.unscreened(&r("0:359.75:0.25")).is_empty());
     }
 }

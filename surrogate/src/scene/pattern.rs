@@ -131,6 +131,15 @@ impl Outline {
                     Err(bad("vertices_um must be finite"))
                 } else if polygon_area(vertices).abs() <= 0.0 {
                     Err(bad("vertices_um enclose no area"))
+                } else if let Some((i, j)) = self_intersection(vertices) {
+                    let n = vertices.len();
+                    Err(bad(&format!(
+                        "vertices_um: the outline crosses itself (edge {}–{} meets edge {}–{}; vertices counted from 1); give the vertices in order around a simple polygon",
+                        i + 1,
+                        (i + 1) % n + 1,
+                        j + 1,
+                        (j + 1) % n + 1
+                    )))
                 } else {
                     Ok(())
                 }
@@ -149,6 +158,62 @@ fn polygon_area(v: &[[f64; 2]]) -> f64 {
         })
         .sum::<f64>()
         * 0.5
+}
+
+/// The first pair of edges (i, j), i < j, of the closed polygon `v` that touch or cross
+/// although they are not neighbours (edge k joins vertices k and k + 1), or whose neighbours
+/// fold back onto each other (overlap along a line); `None` for a simple polygon. Exact
+/// orientation tests on the coordinates. O(n²) in the vertices.
+fn self_intersection(v: &[[f64; 2]]) -> Option<(usize, usize)> {
+    let n = v.len();
+    let orient = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
+        let x = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        if x > 0.0 {
+            1
+        } else if x < 0.0 {
+            -1
+        } else {
+            0
+        }
+    };
+    // c on the segment ab, given that a, b, c are collinear
+    let on = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
+        c[0] >= a[0].min(b[0])
+            && c[0] <= a[0].max(b[0])
+            && c[1] >= a[1].min(b[1])
+            && c[1] <= a[1].max(b[1])
+    };
+    let meet = |p1: [f64; 2], p2: [f64; 2], q1: [f64; 2], q2: [f64; 2]| {
+        let (d1, d2) = (orient(q1, q2, p1), orient(q1, q2, p2));
+        let (d3, d4) = (orient(p1, p2, q1), orient(p1, p2, q2));
+        (d1 * d2 < 0 && d3 * d4 < 0)
+            || (d1 == 0 && on(q1, q2, p1))
+            || (d2 == 0 && on(q1, q2, p2))
+            || (d3 == 0 && on(p1, p2, q1))
+            || (d4 == 0 && on(p1, p2, q2))
+    };
+    for i in 0..n {
+        let (a, b) = (v[i], v[(i + 1) % n]);
+        for j in i + 1..n {
+            let (c, d) = (v[j], v[(j + 1) % n]);
+            if j == i + 1 || (i == 0 && j == n - 1) {
+                // neighbours share a vertex: they fail only by folding back along each other
+                let (shared, p, q) = if j == i + 1 { (b, a, d) } else { (a, b, c) };
+                if orient(shared, p, q) == 0
+                    && (p[0] - shared[0]) * (q[0] - shared[0])
+                        + (p[1] - shared[1]) * (q[1] - shared[1])
+                        > 0.0
+                {
+                    return Some((i, j));
+                }
+                continue;
+            }
+            if meet(a, b, c, d) {
+                return Some((i, j));
+            }
+        }
+    }
+    None
 }
 
 /// Even–odd crossing test.
@@ -533,4 +598,63 @@ pub fn check_basis(l: &Lattice, basis: &[[f64; 2]], d: f64, field: &str) -> Resu
         ));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn polygon(v: &[[f64; 2]]) -> Outline {
+        Outline::Polygon {
+            vertices: v.iter().map(|p| p.map(um_to_m)).collect(),
+        }
+    }
+
+    /// A self-intersecting polygon (a bow tie, a pentagram, a spike folding back on an edge) is
+    /// refused naming the field and the edges; simple ones (convex, concave) are accepted.
+    #[test]
+    fn self_intersecting_polygons_are_refused() {
+        let ok = [
+            polygon(&[[0.0, 0.0], [100.0, 0.0], [50.0, 80.0]]),
+            // an L-shaped (concave) pad
+            polygon(&[
+                [0.0, 0.0],
+                [60.0, 0.0],
+                [60.0, 20.0],
+                [20.0, 20.0],
+                [20.0, 60.0],
+                [0.0, 60.0],
+            ]),
+        ];
+        for o in &ok {
+            assert!(o.validate("slider.outline").is_ok(), "{o:?}");
+        }
+        // a bow tie: edge 1–2 crosses edge 3–4 (its area is not zero: the halves differ)
+        let bow = polygon(&[[0.0, 0.0], [100.0, 60.0], [100.0, 0.0], [0.0, 40.0]]);
+        assert!(polygon_area(bow.vertices().unwrap().as_slice()).abs() > 0.0);
+        let e = bow.validate("slider.outline").unwrap_err().to_string();
+        assert!(
+            e.contains("slider.outline") && e.contains("crosses itself") && e.contains("1–2"),
+            "{e}"
+        );
+        // a pentagram (the vertices of a regular pentagon in star order)
+        let star: Vec<[f64; 2]> = (0..5)
+            .map(|k| {
+                let a = std::f64::consts::TAU * (2 * k) as f64 / 5.0;
+                [50.0 * a.cos(), 50.0 * a.sin()]
+            })
+            .collect();
+        assert!(polygon(&star).validate("slider.outline").is_err());
+        // a vertex touching a non-adjacent edge, and an edge folding back onto its neighbour
+        let touch = polygon(&[
+            [0.0, 0.0],
+            [100.0, 0.0],
+            [100.0, 50.0],
+            [50.0, 0.0],
+            [0.0, 50.0],
+        ]);
+        assert!(touch.validate("slider.outline").is_err());
+        let fold = polygon(&[[0.0, 0.0], [100.0, 0.0], [50.0, 0.0], [50.0, 50.0]]);
+        assert!(fold.validate("slider.outline").is_err());
+    }
 }
