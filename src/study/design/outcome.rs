@@ -1,0 +1,132 @@
+//! What the design stages return: stored stages, each pattern's result, the DEM entries and
+//! the outcome handed to the report.
+
+use super::confirm::SlideOutcome;
+use super::rank::Candidate;
+use super::scan::ThetaEval;
+use super::shortlist::{Level, Orientation};
+use super::symmetry::PairSymmetry;
+use super::DesignScene;
+use crate::study::rows::ScreenRow;
+use serde::{Deserialize, Serialize};
+
+/// A stage's record of its own wall time.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Timing {
+    /// Wall time of the stage when it was computed (s).
+    pub wall_s: f64,
+}
+
+/// An orientation's evaluation as stored (`stages/<pattern>/theta_<θ>.json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EvalStage {
+    /// The evaluation.
+    pub eval: ThetaEval,
+    /// Its wall time when computed (s).
+    pub wall_s: f64,
+}
+
+/// One evaluated orientation of a pattern.
+#[derive(Debug, Clone)]
+pub struct Evaluated {
+    /// The screen's view of it.
+    pub orientation: Orientation,
+    /// Why it was shortlisted.
+    pub reason: String,
+    /// The α scan and friction estimate.
+    pub eval: ThetaEval,
+    /// Wall time when computed (s).
+    pub wall_s: f64,
+    /// Reused from an earlier run.
+    pub reused: bool,
+    /// α of each row of the scan (degrees, scan order): kept when [`PatternResult::trim`]
+    /// drops `eval.scan`.
+    pub scan_alphas_deg: Vec<f64>,
+    /// Number of friction estimates (rows of `eval.friction`, kept when trimmed).
+    pub estimates: usize,
+}
+
+/// Everything the design found for one pattern.
+#[derive(Debug, Clone)]
+pub struct PatternResult {
+    /// The pattern.
+    pub scene: DesignScene,
+    /// Its symmetry.
+    pub sym: PairSymmetry,
+    /// θ screened (degrees, after the cut).
+    pub thetas_deg: Vec<f64>,
+    /// The screen rows (θ outer, loads inner).
+    pub screen: Vec<ScreenRow>,
+    /// Wall time of the screen when computed (s; `None` if not recorded).
+    pub screen_wall_s: Option<f64>,
+    /// The orientations (θ order) and the levels of the shortlist.
+    pub orientations: Vec<Orientation>,
+    /// The levels of the shortlist, highest first.
+    pub levels: Vec<Level>,
+    /// How many levels were evaluated (from the top).
+    pub levels_evaluated: usize,
+    /// Why the evaluation stopped.
+    pub stop: String,
+    /// The evaluated orientations, in evaluation order.
+    pub evaluated: Vec<Evaluated>,
+    /// The candidates, best first (below the top few, each with its lowest-load friction
+    /// row only once trimmed: [`PatternResult::trim`]).
+    pub ranking: Vec<Candidate>,
+    /// Candidates with a load whose failed contacts sit on a mount in resonance (counted over
+    /// every friction row before the rows are trimmed; [`trim::resonance_flagged`]).
+    pub resonance_flagged: usize,
+    /// Whether [`PatternResult::trim`] dropped the bulky rows (screen, orientations, α scans,
+    /// friction rows below the top few).
+    pub trimmed: bool,
+}
+
+/// One DEM confirmation run and what it is compared with.
+#[derive(Debug, Clone)]
+pub struct DemEntry {
+    /// Pattern name.
+    pub pattern: String,
+    /// Rank of the design within its pattern.
+    pub rank: usize,
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// α (degrees).
+    pub alpha_deg: f64,
+    /// Load (N).
+    pub load: f64,
+    /// The study's protocol (the protocol-check run) rather than the design's.
+    pub study_protocol: bool,
+    /// θ offset (degrees) from the design for a tolerance-corner run (0: the design itself).
+    pub theta_offset_deg: f64,
+    /// Pull-direction offset (degrees, substrate frame) for a tolerance-corner run.
+    pub direction_offset_deg: f64,
+    /// The run.
+    pub outcome: SlideOutcome,
+}
+
+/// What [`design`] found.
+#[derive(Debug, Clone)]
+pub struct DesignOutcome {
+    /// Per pattern, in the order given; trimmed ([`PatternResult::trim`]) once handed to the
+    /// design's hook.
+    pub patterns: Vec<PatternResult>,
+    /// The DEM runs (empty with `--no-dem`).
+    pub dem: Vec<DemEntry>,
+    /// Whether the DEM stage ran.
+    pub dem_ran: bool,
+    /// The answer per pattern (the ranking checked against the DEM, [`answer`]).
+    pub answers: Vec<super::answer::Answer>,
+    /// Per pattern, the tolerance map around its answer (θ points per row, rows) when the
+    /// design has a tolerance ([`answer_map`]).
+    pub maps: Vec<Option<AnswerMap>>,
+}
+
+/// The tolerance map around a pattern's answer (`tolerance_<pattern>.csv/.png`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct AnswerMap {
+    /// θ (degrees) and pulling direction (degrees from x) of the answer.
+    pub nominal: (f64, f64),
+    /// Grid points along θ (the rows run direction outer, θ inner).
+    pub theta_points: usize,
+    /// The map's rows.
+    pub rows: Vec<crate::study::tolerance::ToleranceRow>,
+}
