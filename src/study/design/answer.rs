@@ -60,7 +60,7 @@ pub fn dem_superlubric(e: &DemEntry, p_crit: f64, mu_sl: f64) -> Result<(), Stri
 
 /// What the DEM runs `dem` (the design's protocol) say about the design at `rank` (1-based) of
 /// `pr`: its own runs up to its superlubric load, then — with a tolerance — the runs at the
-/// corners of its box at that load ([`super::confirm::corner_jobs`]); the first that does not
+/// corners of its box at that load (`confirm::corner_jobs`); the first that does not
 /// confirm says why (a corner's reason names the corner).
 pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams) -> Check {
     let Some(c) = pr.ranking.get(rank - 1) else {

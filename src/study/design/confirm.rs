@@ -152,7 +152,7 @@ pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64
 pub type ConfirmEntry = (String, usize, f64, f64, f64, bool, f64, f64);
 
 /// The confirmation runs (top `confirm` designs × confirmation loads, and the corners of each
-/// one's tolerance box, [`corner_jobs`]), with what each one is; the runs of borderline designs
+/// one's tolerance box, `corner_jobs`), with what each one is; the runs of borderline designs
 /// first, else in ranking order.
 pub fn confirm_jobs(
     patterns: &[PatternResult],

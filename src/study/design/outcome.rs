@@ -73,7 +73,7 @@ pub struct PatternResult {
     /// row only once trimmed: [`PatternResult::trim`]).
     pub ranking: Vec<Candidate>,
     /// Candidates with a load whose failed contacts sit on a mount in resonance (counted over
-    /// every friction row before the rows are trimmed; [`trim::resonance_flagged`]).
+    /// every friction row before the rows are trimmed; [`super::trim::resonance_flagged`]).
     pub resonance_flagged: usize,
     /// Whether [`PatternResult::trim`] dropped the bulky rows (screen, orientations, α scans,
     /// friction rows below the top few).
@@ -103,7 +103,7 @@ pub struct DemEntry {
     pub outcome: SlideOutcome,
 }
 
-/// What [`design`] found.
+/// What [`super::design`] found.
 #[derive(Debug, Clone)]
 pub struct DesignOutcome {
     /// Per pattern, in the order given; trimmed ([`PatternResult::trim`]) once handed to the
@@ -113,10 +113,10 @@ pub struct DesignOutcome {
     pub dem: Vec<DemEntry>,
     /// Whether the DEM stage ran.
     pub dem_ran: bool,
-    /// The answer per pattern (the ranking checked against the DEM, [`answer`]).
+    /// The answer per pattern (the ranking checked against the DEM, [`super::answer`]).
     pub answers: Vec<super::answer::Answer>,
     /// Per pattern, the tolerance map around its answer (θ points per row, rows) when the
-    /// design has a tolerance ([`answer_map`]).
+    /// design has a tolerance ([`super::answer_map`]).
     pub maps: Vec<Option<AnswerMap>>,
 }
 

@@ -94,7 +94,7 @@ fn alpha_distance(a: f64, b: f64, p: f64) -> f64 {
 }
 
 /// The coarse α grid (degrees) over [0, p) with step `step` (over (−180°, 180°] for p = 360°,
-/// [`fold_alpha`]).
+/// `fold_alpha`).
 pub fn coarse_grid(p: f64, step: f64) -> Vec<f64> {
     let n = (p / step - 1e-9).ceil().max(1.0) as usize;
     (0..n).map(|k| signed(clean(k as f64 * step), p)).collect()

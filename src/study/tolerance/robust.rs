@@ -157,7 +157,7 @@ pub struct Robust {
     /// The same along the direction axis.
     pub direction_window_deg: Option<f64>,
     /// The worst verdict over every load up to the limit and every sample of the box estimated
-    /// there (`Not` when 0; [`worst_verdict`]).
+    /// there (`Not` when 0; `worst_verdict`).
     pub verdict: Verdict,
     /// Friction paths solved (cost).
     pub paths: usize,
