@@ -327,3 +327,78 @@ fn a_run_on_a_resonant_mount_says_so() {
     assert!(!warned);
     assert_eq!(r_intact, r);
 }
+
+/// Two sphere sizes (2 µm slider spheres on the 3 µm substrate, a 15 µm slider): the DEM, in
+/// both models and started from a gap, settles on the screen's equilibrium of the same scene
+/// (contacts equal, P_max within 2 %, as the one-size equilibrium tests), and its snapshots
+/// give each body its own radius. A wrong contact distance (2 × either radius) would change the
+/// contacts; R_eff of either size alone (R/2) P_max by 13–14 %.
+#[test]
+fn two_sphere_sizes_settle_on_the_screen() {
+    let d = tmpdir("two_sizes");
+    let scene = d.join("two.toml");
+    std::fs::write(
+        &scene,
+        "pattern = 'square-tri'\n[substrate]\nsize_um = [60, 60]\n\
+         [slider]\nradius_um = 15\nsphere_diameter_um = 2.0\n",
+    )
+    .unwrap();
+    let load = ["--theta", "0", "--load-mn", "0.05"];
+    let out = bin()
+        .arg("screen")
+        .args(load)
+        .arg("--scene")
+        .arg(&scene)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let mut r = csv::Reader::from_reader(&out.stdout[..]);
+    let h = r.headers().unwrap().clone();
+    let row = r.records().next().unwrap().unwrap();
+    let col = |k: &str| -> f64 { row[h.iter().position(|x| x == k).unwrap()].parse().unwrap() };
+    let (contacts, p_max) = (col("contacts"), col("p_max_GPa"));
+    assert!(contacts > 0.0);
+    for model in ["reduced", "full"] {
+        let (js, xyz) = (
+            d.join(format!("{model}.json")),
+            d.join(format!("{model}.xyz")),
+        );
+        let out = bin()
+            .arg("equilibrate")
+            .args(load)
+            .args(["--model", model, "--equilibrate-us", "3"])
+            .args(["--start", "gap", "--gap-nm", "1", "--xyz-every", "1000"])
+            .arg("--scene")
+            .arg(&scene)
+            .arg("--xyz")
+            .arg(&xyz)
+            .arg("--out")
+            .arg(d.join(format!("{model}.csv")))
+            .arg("--json")
+            .arg(&js)
+            .output()
+            .unwrap();
+        assert_ok(&out);
+        let j = json(&js);
+        assert_eq!(j["surrogate_contacts"].as_f64(), Some(contacts), "{model}");
+        assert_eq!(j["contacts"].as_f64(), Some(contacts), "{model}: {j}");
+        let p = j["p_max_GPa"].as_f64().unwrap();
+        assert!(
+            (p / p_max - 1.0).abs() < 0.02,
+            "{model}: DEM P_max {p} vs screen {p_max} GPa"
+        );
+        let text = std::fs::read_to_string(&xyz).unwrap();
+        let radius = |species: &str| -> Vec<f64> {
+            let mut r: Vec<f64> = text
+                .lines()
+                .filter(|l| l.starts_with(&format!("{species} ")))
+                .map(|l| l.split_whitespace().nth(4).unwrap().parse().unwrap())
+                .collect();
+            r.dedup();
+            r
+        };
+        assert_eq!(radius("S"), [1.0], "{model}");
+        assert_eq!(radius("B"), [1.5], "{model}");
+    }
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -399,6 +399,137 @@ fn lammps_and_the_rust_dem_agree_on_a_small_scene() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Two sphere sizes through LAMMPS (2 µm slider spheres on the 3 µm substrate; ≈ 6 s of
+/// `lmp`): the same protocol as the one-size cross-check, shorter (0.5 µs equilibration, 2.5 µs
+/// of sliding at 1 m/s). Equilibrium contacts equal and P_max within 0.5 %, the spring force
+/// while it loads up within 0.5 % (measured: 10⁻⁵), friction within 5 % (measured 1.5 %), and
+/// `lammps-check` (contact distance R_sl + R_sb, R_eff of the pair from export.json) agrees
+/// with the deck's own time series at every common frame.
+#[test]
+fn lammps_and_the_rust_dem_agree_with_two_sphere_sizes() {
+    let Some(lmp) = lmp() else { return };
+    let dir = tmpdir("cross-two");
+    let scene = two_size_scene(&dir);
+    let args = [
+        "--scene",
+        scene.to_str().unwrap(),
+        "--tilt",
+        "locked",
+        "--theta",
+        "0",
+        "--alpha",
+        "90",
+        "--load-mn",
+        "0.05",
+        "--mu",
+        "0.5",
+        "--p-crit-gpa",
+        "2",
+        "--equilibrate-us",
+        "0.5",
+        "--relax-us",
+        "0.2",
+        "--slide-us",
+        "2.5",
+        "--speed-m-s",
+        "1",
+        "--dt-us",
+        "2e-5",
+        "--sample-us",
+        "0.05",
+    ];
+    let meta = export(&dir, &[&args[..], &["--dump-us", "0.05"]].concat());
+    assert_eq!(meta["slider_sphere_radius_um"].as_f64(), Some(1.0));
+    let rust = bin()
+        .arg("slide")
+        .args(args)
+        .arg("--out")
+        .arg(dir.join("rust.csv"))
+        .arg("--json")
+        .arg(dir.join("rust.json"))
+        .spawn()
+        .unwrap();
+    let log = run_deck(&lmp, &dir, &[]);
+    assert_ok("superlube slide", &rust.wait_with_output().unwrap());
+
+    let rows = csv(&dir.join("rust.csv"));
+    let eq = rows
+        .iter()
+        .find(|r| (r["t_us"] - 0.5).abs() < 1e-9)
+        .expect("rust sample at 0.5 µs");
+    let l = result(&log, "equilibrate");
+    assert_eq!(l["step"], 25_000.0);
+    assert_eq!(l["contacts"], eq["contacts"], "equilibrium contacts");
+    let (pl, pr) = (l["p_max_GPa"], eq["p_max_GPa"]);
+    assert!(
+        (pl - pr).abs() < 0.005 * pr,
+        "P_max LAMMPS {pl} vs Rust {pr} GPa"
+    );
+    let lrows = csv(&dir.join("timeseries.csv"));
+    let mut ramp = 0;
+    for r in rows
+        .iter()
+        .filter(|r| r["support_x_um"] > 0.1 && r["support_x_um"] < 0.5)
+    {
+        let l = lrows
+            .iter()
+            .find(|l| (l["t_us"] - r["t_us"]).abs() < 1e-6)
+            .expect("same sample");
+        let (a, b) = (l["spring_force_mN"], r["spring_force_mN"]);
+        assert!(
+            (a - b).abs() < 0.005 * b.abs(),
+            "t = {} µs: spring force LAMMPS {a} vs Rust {b}",
+            r["t_us"]
+        );
+        ramp += 1;
+    }
+    assert!(ramp >= 5, "{ramp} ramp samples");
+    let fr = json(&dir.join("rust.json"))["friction_mN"]
+        .as_f64()
+        .unwrap();
+    let fl = log
+        .lines()
+        .find_map(|l| l.strip_prefix("RESULT friction_mN="))
+        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
+        .expect("RESULT friction_mN line");
+    eprintln!("two sizes: P_max {pl} / {pr} GPa; friction LAMMPS {fl} / Rust {fr} mN");
+    assert!(fr > 0.3 * 0.5 * 0.05, "the slider must slide: {fr} mN");
+    assert!(
+        (fl - fr).abs() < 0.05 * fr,
+        "friction LAMMPS {fl} vs Rust {fr} mN"
+    );
+
+    let out = bin()
+        .arg("lammps-check")
+        .arg(dir.join("contacts.dump"))
+        .arg("--out")
+        .arg(dir.join("check.csv"))
+        .output()
+        .unwrap();
+    assert_ok("lammps-check", &out);
+    let dt = meta["dt_us"].as_f64().unwrap();
+    let mut matched = 0;
+    for f in &csv(&dir.join("check.csv")) {
+        let t = f["step"] * dt;
+        if let Some(r) = lrows.iter().find(|r| (r["t_us"] - t).abs() < 1e-6) {
+            assert_eq!(
+                f["contacts"], r["contacts"],
+                "contacts at step {}",
+                f["step"]
+            );
+            let (a, b) = (f["p_max_GPa"], r["p_max_GPa"]);
+            assert!(
+                (a - b).abs() <= 1e-9 * b.max(1.0),
+                "P_max at step {}: {a} vs {b}",
+                f["step"]
+            );
+            matched += 1;
+        }
+    }
+    assert!(matched >= 60, "{matched} frames matched the time series");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn springs_mount_resists_a_moment_with_the_scene_stiffness() {
     let Some(lmp) = lmp() else { return };
@@ -608,6 +739,87 @@ fn export_is_the_rust_scene_and_is_deterministic() {
         !deck.contains("# ---- 3. slide"),
         "--slide-us 0: no sliding phase"
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The small scene with 2 µm slider spheres on the 3 µm substrate (a scene file in `dir`).
+fn two_size_scene(dir: &Path) -> PathBuf {
+    let f = dir.join("two.toml");
+    std::fs::write(
+        &f,
+        "pattern = 'square-tri'\n[substrate]\nsize_um = [66, 54]\n\
+         [slider]\nradius_um = 15\nsphere_diameter_um = 2.0\n",
+    )
+    .unwrap();
+    f
+}
+
+/// Reads `scene.data`'s Atoms section: (type, diameter µm) of every atom.
+fn data_diameters(path: &Path) -> Vec<(u32, f64)> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let atoms = text.split("Atoms").nth(1).unwrap();
+    let atoms = atoms.split("Bonds").next().unwrap();
+    atoms
+        .lines()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>())
+        .filter(|f| f.len() == 8)
+        .map(|f| (f[1].parse().unwrap(), f[5].parse().unwrap()))
+        .collect()
+}
+
+#[test]
+fn export_of_two_sphere_sizes_writes_each_bodys_diameter() {
+    // No LAMMPS needed. Each substrate atom has the substrate's diameter, each slider atom the
+    // slider's (LAMMPS `granular` takes R_eff and the contact distance from the two atoms);
+    // export.json records both radii and R_eff = R_sl R_sb/(R_sl + R_sb); the deck's P_max
+    // uses the contact distance R_sl + R_sb and the substrate's drag is scaled by its mass.
+    let dir = tmpdir("two-sizes");
+    let scene = two_size_scene(&dir);
+    let args = [
+        "--scene",
+        scene.to_str().unwrap(),
+        "--theta",
+        "0",
+        "--load-mn",
+        "0.05",
+        "--slide-us",
+        "0",
+    ];
+    let meta = export(&dir.join("a"), &args);
+    let d = data_diameters(&dir.join("a/scene.data"));
+    let of = |ty: u32| -> Vec<f64> {
+        let mut v: Vec<f64> = d.iter().filter(|a| a.0 == ty).map(|a| a.1).collect();
+        v.dedup();
+        v
+    };
+    assert_eq!(of(1), [3.0], "substrate diameters");
+    assert_eq!(of(2), [2.0], "slider diameters");
+    assert_eq!(
+        d.iter().filter(|a| a.0 == 2).count() as u64,
+        meta["ids"]["slider"]["count"].as_u64().unwrap()
+    );
+    assert_eq!(meta["sphere_radius_um"].as_f64(), Some(1.5));
+    assert_eq!(meta["slider_sphere_radius_um"].as_f64(), Some(1.0));
+    assert!((meta["r_eff_um"].as_f64().unwrap() - 0.6).abs() < 1e-12);
+    let deck = std::fs::read_to_string(dir.join("a/in.superlube.lmp")).unwrap();
+    let line = |start: &str| -> &str { deck.lines().find(|l| l.starts_with(start)).unwrap() };
+    assert!(
+        line("variable        pmax_GPa").contains("(c_dmin<2.5)*(2.5-c_dmin)"),
+        "{}",
+        line("variable        pmax_GPa")
+    );
+    // γ_substrate/γ_slider = m_b/m_s = (3/2)³
+    let visc: Vec<&str> = line("fix             visc").split_whitespace().collect();
+    let k = visc.iter().position(|w| *w == "scale").unwrap();
+    assert_eq!(visc[k + 1], "1");
+    assert!((visc[k + 2].parse::<f64>().unwrap() - 3.375).abs() < 1e-12);
+    // one size: no slider radius of its own, no substrate scale, every sphere 3 µm
+    let one = export(&dir.join("b"), &[SMALL, &args[2..]].concat());
+    assert!(one.get("slider_sphere_radius_um").is_none(), "{one}");
+    let d = data_diameters(&dir.join("b/scene.data"));
+    assert!(d.iter().filter(|a| a.0 <= 2).all(|a| a.1 == 3.0));
+    let deck = std::fs::read_to_string(dir.join("b/in.superlube.lmp")).unwrap();
+    assert!(!deck.contains("scale 1 "));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -56,7 +56,8 @@ pub struct Prepared {
 }
 
 /// The contact model of `scene` with damping from `params`; `friction` overrides the scene's
-/// pressure-switched coating law (e.g. a [`model::Constant`] μ for reference runs).
+/// pressure-switched coating law (e.g. a [`model::Constant`] μ for reference runs). Hertz of
+/// the slider–substrate pair (`R_eff` from both sphere radii), radius sum `R_sl + R_sb`.
 pub fn contact_model(
     scene: &Scene,
     params: &SimParams,
@@ -76,7 +77,7 @@ pub fn contact_model(
         friction: friction.unwrap_or(Friction::PressureSwitched(PressureSwitched::from(
             &scene.coating,
         ))),
-        radius_sum: 2.0 * scene.sphere_radius,
+        radius_sum: scene.contact_distance(),
     }
 }
 
@@ -89,10 +90,12 @@ pub fn stability_input(
     p_ref: f64,
 ) -> StabilityInput {
     let m = contact_model(scene, params, None);
-    let m_sphere = scene.material.sphere_mass(scene.sphere_radius);
+    let m_slider = scene.material.sphere_mass(scene.slider_sphere_radius());
+    let m_substrate = scene.material.sphere_mass(scene.sphere_radius);
     let m_control = scene.material.sphere_mass(params.control_sphere_radius);
     StabilityInput {
-        m_sphere,
+        m_slider,
+        m_substrate,
         m_control,
         n_slider,
         n_contacts,
@@ -100,7 +103,7 @@ pub fn stability_input(
         g_star: m.tangential.g_star,
         r_eff: m.normal.hertz.r_eff,
         p_ref,
-        tilt_omega2: tilt_omega2(scene, params, m_sphere, m_control),
+        tilt_omega2: tilt_omega2(scene, params, m_slider, m_control),
     }
 }
 

@@ -141,7 +141,8 @@ pub struct SimParams {
     /// then and keeps the faster (on a shared machine a second thread can be slower). 0 forces
     /// the parallel passes (tests). Does not change results.
     pub parallel_min_work: usize,
-    /// Largest admissible overlap as a fraction of the sphere radius; beyond it the run stops
+    /// Largest admissible overlap as a fraction of the sphere radius (the smaller of the
+    /// slider's and the substrate's when they differ); beyond it the run stops
     /// with [`crate::DemError::Unstable`].
     pub overlap_bound: f64,
 }

@@ -3,8 +3,8 @@
 use crate::{DemError, SimParams};
 use surrogate::Scene;
 
-/// Checks that the slider disc plus one sphere radius stays over the substrate rectangle along
-/// the whole slide: from the disc centre at the scene's offset to `support_speed × slide_time`
+/// Checks that the slider disc plus one slider sphere radius stays over the substrate rectangle
+/// along the whole slide: from the disc centre at the scene's offset to `support_speed × slide_time`
 /// further along the pulling direction α, plus a drift allowance of one substrate lattice
 /// period in every direction (the slider settling into the corrugation when it is released).
 /// Nothing to check when the run does not slide. The error names the flags to change and the
@@ -18,7 +18,7 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
     let lat = scene.substrate.lattice;
     let norm = |a: [f64; 2]| (a[0] * a[0] + a[1] * a[1]).sqrt();
     let drift = norm(lat.a1).max(norm(lat.a2));
-    let reach = scene.slider.radius + scene.sphere_radius + drift;
+    let reach = scene.slider.radius + scene.slider_sphere_radius() + drift;
     let half = [0.5 * scene.substrate.size[0], 0.5 * scene.substrate.size[1]];
     let lim = [half[0] - reach, half[1] - reach];
     let c0 = scene.slider.offset;
@@ -62,7 +62,7 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
         travel * um,
         params.alpha.to_degrees(),
         scene.slider.radius * um,
-        scene.sphere_radius * um,
+        scene.slider_sphere_radius() * um,
         drift * um,
         o * um,
         scene.substrate.size[0] * um,

@@ -133,7 +133,8 @@ pub type FrameSink<'a> = dyn FnMut(&FrameReport, &[FailedContact]) -> Result<(),
 
 /// Reads the dump `input` (named `name` in errors) of an export described by `meta`, calls
 /// `on_frame` with each frame's report and its contacts above P_crit (sorted by slider, then
-/// substrate index), and returns the summary. p0 = (2E*/π)√(δ/R_eff), δ = 2R − distance.
+/// substrate index), and returns the summary. p0 = (2E*/π)√(δ/R_eff), δ = R_sl + R_sb −
+/// distance.
 /// Memory: one frame plus the set of distinct failed pairs.
 pub fn check_dump<R: BufRead>(
     input: R,
@@ -148,7 +149,7 @@ pub fn check_dump<R: BufRead>(
             &format!("not a `{}` export.json", super::meta::FORMAT),
         ));
     }
-    let two_r = 2.0 * meta.sphere_radius_um;
+    let two_r = meta.contact_distance_um();
     let pref = 2.0 * meta.e_star_gpa / std::f64::consts::PI;
     let ids = &meta.ids;
     let mut s = CheckSummary {

@@ -53,10 +53,13 @@ pub enum DeckMount {
 /// Damping of the 0 K Langevin-equivalent viscous drag, in deck terms.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckViscous {
-    /// γ = m/τ of a slider/substrate sphere (pg/µs).
+    /// γ = m/τ of a slider sphere (pg/µs).
     pub gamma_sphere: f64,
-    /// γ of one control sphere / γ of a sphere (–).
+    /// γ of one control sphere / γ of a slider sphere (–).
     pub control_ratio: f64,
+    /// γ of a substrate sphere / γ of a slider sphere (–) when the two bodies' sphere sizes
+    /// differ; `None` for one size (the substrate takes `gamma_sphere`).
+    pub substrate_ratio: Option<f64>,
     /// Relative frame: slider spheres damped relative to the control layer's velocity, the
     /// control layer (x, y) relative to the support's.
     pub relative: bool,
@@ -81,7 +84,8 @@ pub struct DeckInputs {
     pub damping: LammpsDamping,
     /// Constant friction coefficient.
     pub mu: f64,
-    /// Contact distance 2R (µm), R_eff (µm), 2E*/π (GPa) for P_max.
+    /// Contact distance R_sl + R_sb (µm; 2R for one sphere size), R_eff (µm), 2E*/π (GPa) for
+    /// P_max.
     pub contact_distance: f64,
     /// R_eff (µm).
     pub r_eff: f64,
@@ -284,8 +288,12 @@ pub fn render(d: &DeckInputs) -> String {
     match d.viscous {
         Some(v) => {
             w!("# 0 K Langevin-equivalent damping F = -m v / tau (gamma = m/tau per type)");
+            let sub = match v.substrate_ratio {
+                Some(r) => format!(" scale 1 {}", N(r)),
+                None => String::new(),
+            };
             w!(
-                "fix             visc damped viscous {} scale 3 {} scale 4 {}",
+                "fix             visc damped viscous {}{sub} scale 3 {} scale 4 {}",
                 N(v.gamma_sphere),
                 N(v.control_ratio),
                 N(v.control_ratio)

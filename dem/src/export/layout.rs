@@ -124,6 +124,8 @@ fn sign(v: f64) -> i32 {
 /// Lays out `spec` (sites and start heights from [`crate::from_scene`]) with `local` the slider
 /// sites relative to the disc centre in the slider's own frame (`Scene::slider_sites_local`, same
 /// order), `params` (control-sphere radius, support lead, α) and the axial tie length (m).
+/// Each substrate and slider atom has its body's sphere diameter (LAMMPS `granular` takes
+/// per-atom radii: R_eff and the contact distance of a pair come from its two atoms).
 /// The two control sub-layers have half the material density each, so the control layer has
 /// the Rust engine's mass `n·m_control`. O(N).
 pub fn layout(
@@ -135,7 +137,8 @@ pub fn layout(
     let n = spec.slider_sites.len();
     assert_eq!(local.len(), n, "local sites must match the slider sites");
     let rho = spec.material.density;
-    let d = 2.0 * spec.sphere_radius;
+    let d_sb = 2.0 * spec.substrate_sphere_radius;
+    let d_sl = 2.0 * spec.slider_sphere_radius;
     let dc = 2.0 * params.control_sphere_radius;
     let mut atoms = Vec::with_capacity(spec.substrate.len() + 3 * n + 1);
     let mut id = 0u64;
@@ -153,11 +156,11 @@ pub fn layout(
     };
     let sub_first = 1;
     for p in &spec.substrate {
-        push(TYPE_SUBSTRATE, *p, d, rho, 0);
+        push(TYPE_SUBSTRATE, *p, d_sb, rho, 0);
     }
     let sl_first = sub_first + spec.substrate.len() as u64;
     for (s, z) in spec.slider_sites.iter().zip(&spec.slider_z) {
-        push(TYPE_SLIDER, [s[0], s[1], *z], d, rho, 0);
+        push(TYPE_SLIDER, [s[0], s[1], *z], d_sl, rho, 0);
     }
     let quadrant = |q: &[f64; 2]| (1 + (sign(q[0]) + 1) + 3 * (sign(q[1]) + 1)) as u32;
     let zc = spec.control_z;
@@ -248,7 +251,8 @@ mod tests {
             slider_sites: vec![[1e-6, 2e-6], [4e-6, 2e-6], [1e-6, 5e-6]],
             slider_z: vec![3e-6, 3e-6, 2.9e-6],
             control_z: 2.9e-6,
-            sphere_radius: 1.5e-6,
+            slider_sphere_radius: 1e-6,
+            substrate_sphere_radius: 1.5e-6,
             material: Material::default(),
             tilt_stiffness: None,
             disc: None,
@@ -266,6 +270,9 @@ mod tests {
         assert_eq!(l.ids.slider.first, 3);
         assert_eq!(l.ids.support.last(), 12);
         assert_eq!(l.atoms[1].pos[2], 1e-9, "σ_h height kept");
+        // each body's own sphere diameter
+        assert!(l.atoms[..2].iter().all(|a| a.diameter == 3e-6));
+        assert!(l.atoms[2..5].iter().all(|a| a.diameter == 2e-6));
         // control sphere of site 1 (local (2, −1)): s_x = +1, s_y = −1 → 1 + 2 + 0 = 3
         assert_eq!(l.atoms[l.ids.control_axial.first as usize].molecule, 3);
         assert_eq!(l.atoms[l.ids.control_axial.first as usize].pos[2], 5.9e-6);

@@ -92,8 +92,13 @@ pub struct ExportMeta {
     /// Coating strength P_crit (GPa).
     #[serde(rename = "p_crit_GPa")]
     pub p_crit_gpa: f64,
-    /// Radius of slider and substrate spheres (µm).
+    /// Radius of the substrate spheres, and of the slider's unless `slider_sphere_radius_um`
+    /// is given (µm).
     pub sphere_radius_um: f64,
+    /// Radius of the slider spheres when it differs from the substrate's (µm); absent for one
+    /// sphere size.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub slider_sphere_radius_um: Option<f64>,
     /// Effective modulus E* of a sphere pair (GPa).
     #[serde(rename = "e_star_GPa")]
     pub e_star_gpa: f64,
@@ -109,4 +114,14 @@ pub struct ExportMeta {
     pub surrogate: SurrogateStart,
     /// LAMMPS atoms in the data file.
     pub atoms: u64,
+}
+
+impl ExportMeta {
+    /// Centre distance (µm) at which a slider and a substrate sphere touch: the sum of their
+    /// radii (`2R`, bit for bit, for one sphere size).
+    pub fn contact_distance_um(&self) -> f64 {
+        self.slider_sphere_radius_um
+            .unwrap_or(self.sphere_radius_um)
+            + self.sphere_radius_um
+    }
 }

@@ -141,11 +141,13 @@ pub fn export_lammps(
     };
     let lay = layout::layout(&sim.spec, &scene.slider_sites_local(), p, opts.tie_length);
     let hertz = scene.hertz();
-    let m_s = scene.material.sphere_mass(scene.sphere_radius);
+    let m_s = sim.spec.slider_sphere_mass();
+    let m_b = sim.spec.substrate_sphere_mass();
     let m_c = 0.5 * scene.material.sphere_mass(p.control_sphere_radius);
     let viscous = (p.damping_time.is_finite() && p.damping_time > 0.0).then(|| DeckViscous {
         gamma_sphere: micro::drag(m_s / p.damping_time),
         control_ratio: m_c / m_s,
+        substrate_ratio: (m_b != m_s).then(|| m_b / m_s),
         relative: p.damping_frame == crate::DampingFrame::Relative,
     });
     let mount = match scene.slider.mount {
@@ -212,6 +214,19 @@ pub fn export_lammps(
             prep.start.z * um
         ),
     ];
+    let (r_sl, r_sb) = (
+        sim.spec.slider_sphere_radius,
+        sim.spec.substrate_sphere_radius,
+    );
+    if r_sl != r_sb {
+        header.push(format!(
+            "spheres: slider diameter {} um, substrate diameter {} um (per-atom diameters; R_eff = {} um, contact distance {} um)",
+            2.0 * r_sl * um,
+            2.0 * r_sb * um,
+            hertz.r_eff * um,
+            (r_sl + r_sb) * um
+        ));
+    }
     if let Some(w) = scene.edge_warning() {
         header.push(format!("warning: {w}"));
     }
@@ -225,7 +240,7 @@ pub fn export_lammps(
         poisson: scene.material.poisson,
         damping,
         mu: opts.mu,
-        contact_distance: micro::len(2.0 * scene.sphere_radius),
+        contact_distance: micro::len(sim.spec.contact_distance()),
         r_eff: micro::len(hertz.r_eff),
         p0_prefactor_gpa: 2.0 * hertz.e_star / std::f64::consts::PI * 1e-9,
         skin: micro::len(p.skin),
@@ -275,7 +290,8 @@ pub fn export_lammps(
         mu1: scene.coating.mu1,
         mu2: scene.coating.mu2,
         p_crit_gpa: scene.coating.p_crit * 1e-9,
-        sphere_radius_um: scene.sphere_radius * um,
+        sphere_radius_um: r_sb * um,
+        slider_sphere_radius_um: (r_sl != r_sb).then_some(r_sl * um),
         e_star_gpa: hertz.e_star * 1e-9,
         r_eff_um: hertz.r_eff * um,
         dt_us: sim.dt * um,

@@ -44,8 +44,8 @@ impl Sim {
     /// ω² (1/s²) of the free deviation modes: slider lateral, slider vertical, substrate.
     pub(crate) fn free_omega2(&self) -> [f64; 3] {
         let p = &self.params;
-        let m = self.body.m_s;
-        [p.k_slider_xy / m, p.k_slider_z / m, p.k_substrate_xy / m]
+        let (m, mb) = (self.body.m_s, self.body.m_b);
+        [p.k_slider_xy / m, p.k_slider_z / m, p.k_substrate_xy / mb]
     }
 
     /// The step maps of `n` steps of the three free deviation modes (slider z: the implicit
@@ -298,7 +298,7 @@ impl Sim {
     /// Rebuilds the candidate pair list from the global positions (keeps histories).
     fn rebuild(&mut self) {
         let s = &mut self.state;
-        let cutoff = 2.0 * self.spec.sphere_radius + self.params.skin;
+        let cutoff = self.spec.contact_distance() + self.params.skin;
         s.pairs = build_pairs(&s.sub_x, &self.sub_h, &s.sl_x, cutoff, &s.pairs);
         s.ref_sub.clone_from(&s.sub_x);
         s.ref_sl.clone_from(&s.sl_x);
@@ -320,7 +320,7 @@ impl Sim {
         let n = was_sl.len();
         let nb = was_sub.len();
         let margin = self.params.active_margin;
-        let two_r = 2.0 * self.spec.sphere_radius;
+        let two_r = self.spec.contact_distance();
         let mut sl_on = vec![false; n];
         let mut sub_on = vec![false; nb];
         let mut pairs = Vec::new();

@@ -21,8 +21,13 @@ pub(crate) struct Body {
     pub off: Vec<[f64; 2]>,
     /// Control-layer centre at the start (m).
     pub centre0: [f64; 2],
-    /// Mass of one slider/substrate sphere (kg).
+    /// Mass of one slider sphere (kg).
     pub m_s: f64,
+    /// Mass of one substrate sphere (kg).
+    pub m_b: f64,
+    /// Effective mass of a slider–substrate pair (kg), `m_s m_b/(m_s + m_b)` (`m_s/2` for one
+    /// sphere size).
+    pub m_eff: f64,
     /// Control-layer mass (kg), the lateral inertia of the layer.
     pub m_cl: f64,
     /// Mass moving with Z (kg): the layer, plus the slider spheres with `rigid_z`.
@@ -62,7 +67,8 @@ impl Body {
             .iter()
             .map(|s| [s[0] - c[0], s[1] - c[1]])
             .collect();
-        let m_s = spec.sphere_mass();
+        let m_s = spec.slider_sphere_mass();
+        let m_b = spec.substrate_sphere_mass();
         let m_c = spec.material.sphere_mass(params.control_sphere_radius);
         let m_cl = n as f64 * m_c;
         let mz = if params.rigid_z {
@@ -100,6 +106,8 @@ impl Body {
             off,
             centre0: c,
             m_s,
+            m_b,
+            m_eff: crate::model::reduced_mass(m_s, m_b),
             m_cl,
             mz,
             tilt,

@@ -290,7 +290,7 @@ impl Sim {
                 kxy: p.k_slider_xy,
                 kz: p.k_slider_z,
                 m_s: self.body.m_s,
-                m_eff: 0.5 * self.body.m_s,
+                m_eff: self.body.m_eff,
                 inv_tau,
                 dt: self.dt,
                 hm: h / self.body.m_s,
@@ -400,7 +400,7 @@ impl Sim {
             &self.idx,
             &self.spec,
             &self.params,
-            self.body.m_s,
+            self.body.m_b,
             inv_tau,
             h,
         );

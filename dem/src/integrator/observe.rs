@@ -96,7 +96,7 @@ impl Sim {
         let a = &s.act;
         let mut e = 0.0;
         for v in &a.sub_v {
-            e += 0.5 * m * (v[0] * v[0] + v[1] * v[1]);
+            e += 0.5 * self.body.m_b * (v[0] * v[0] + v[1] * v[1]);
         }
         for v in &a.sl_v {
             let vz = if rigid { 0.0 } else { v[2] * v[2] };
@@ -242,10 +242,10 @@ impl Sim {
                 });
             }
         }
-        // A slider sphere torn from its control-layer site by more than a sphere radius, or a
+        // A slider sphere torn from its control-layer site by more than its radius, or a
         // slider below the substrate plane, means the integration has blown up (the overlap
         // bound alone misses spheres that jumped clean through the substrate).
-        let r = self.spec.sphere_radius;
+        let r = self.spec.slider_sphere_radius;
         let q = self.q();
         let tilting = self.body.tilt.is_some();
         for (k, x) in a.sl_x.iter().enumerate() {
@@ -289,7 +289,12 @@ impl Sim {
         if s.cl_x[2] < self.h_min {
             return Err(self.unstable("the slider fell through the substrate".into()));
         }
-        let bound = self.params.overlap_bound * self.spec.sphere_radius;
+        // relative to the smaller sphere when the two bodies' sizes differ
+        let bound = self.params.overlap_bound
+            * self
+                .spec
+                .slider_sphere_radius
+                .min(self.spec.substrate_sphere_radius);
         let m = a.out.iter().map(|o| o.delta).fold(0.0, f64::max);
         if m > bound {
             return Err(self.unstable(format!(

@@ -86,9 +86,14 @@ impl Sim {
         self.body.m_cl
     }
 
-    /// Mass of a slider / substrate sphere (kg).
-    pub fn sphere_mass(&self) -> f64 {
+    /// Mass of a slider sphere (kg).
+    pub fn slider_sphere_mass(&self) -> f64 {
         self.body.m_s
+    }
+
+    /// Mass of a substrate sphere (kg).
+    pub fn substrate_sphere_mass(&self) -> f64 {
+        self.body.m_b
     }
 
     /// Number of slider spheres.

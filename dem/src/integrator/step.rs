@@ -218,12 +218,13 @@ impl Sim {
             &self.idx,
             &self.spec,
             &self.params,
-            self.body.m_s,
+            self.body.m_b,
             inv_tau,
             h,
         );
         let dt = self.dt;
         let hm = h / self.body.m_s;
+        let hm_b = h / self.body.m_b;
         let rigid = self.params.rigid_z;
         // z already advanced by the implicit mount step
         let implicit = self.mount.is_some();
@@ -314,8 +315,8 @@ impl Sim {
                 .zip(f.iter())
                 .zip(&sub_x0[a..])
             {
-                kick_hm(&mut v[0], f[0], hm);
-                kick_hm(&mut v[1], f[1], hm);
+                kick_hm(&mut v[0], f[0], hm_b);
+                kick_hm(&mut v[1], f[1], hm_b);
                 x[0] += dt * v[0];
                 x[1] += dt * v[1];
                 let d = [x[0] - x0[0], x[1] - x0[1]];
@@ -406,7 +407,8 @@ mod tests {
             slider_sites: vec![[0.0, 0.0]],
             slider_z: vec![1e-6],
             control_z: 1e-6,
-            sphere_radius: scene.sphere_radius,
+            slider_sphere_radius: scene.sphere_radius,
+            substrate_sphere_radius: scene.sphere_radius,
             material: scene.material,
             tilt_stiffness: None,
             disc: None,

@@ -35,6 +35,17 @@ pub struct ContactModel {
     pub radius_sum: f64,
 }
 
+/// Effective mass (kg) of a pair of masses `m1`, `m2`: `m1 m2/(m1 + m2)`, and exactly `m1/2`
+/// when they are equal (so one sphere size keeps the one-size arithmetic bit for bit).
+#[inline]
+pub fn reduced_mass(m1: f64, m2: f64) -> f64 {
+    if m1 == m2 {
+        0.5 * m1
+    } else {
+        m1 * m2 / (m1 + m2)
+    }
+}
+
 impl ContactModel {
     /// Evaluates the pair with centre difference `d = x1 − x2` (m), relative velocity
     /// `v = v1 − v2` (m/s), tangential history `xi` (updated in place; reset when apart),
@@ -170,5 +181,18 @@ mod tests {
             "mindlin-rescale kept {c1} of {c0}"
         );
         assert!((d1 / d0 - 0.5f64.sqrt()).abs() < 1e-6, "{d1} of {d0}");
+    }
+
+    /// The pair's effective mass: exactly m/2 for equal masses (the one-size arithmetic), and
+    /// m1 m2/(m1 + m2), symmetric, between min/2 and min, otherwise.
+    #[test]
+    fn reduced_mass_of_equal_and_unequal_spheres() {
+        let m = Material::default().sphere_mass(1.5e-6);
+        assert_eq!(super::reduced_mass(m, m).to_bits(), (0.5 * m).to_bits());
+        let mb = Material::default().sphere_mass(1e-6);
+        let r = super::reduced_mass(m, mb);
+        assert_eq!(r, super::reduced_mass(mb, m));
+        assert!((1.0 / r - (1.0 / m + 1.0 / mb)).abs() < 1e-12 / r);
+        assert!(r > 0.5 * mb && r < mb);
     }
 }

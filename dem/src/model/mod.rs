@@ -14,7 +14,7 @@ pub mod pressure_switched;
 pub mod tangential;
 
 pub use constant::Constant;
-pub use contact::{ContactModel, PairOut};
+pub use contact::{reduced_mass, ContactModel, PairOut};
 pub use friction::{Friction, FrictionLaw};
 pub use hertz::HertzNormal;
 pub use mindlin::Mindlin;

@@ -40,7 +40,8 @@ pub fn prepare_file(path: &Path, sim: &Sim) -> std::io::Result<()> {
 pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<u64> {
     let s = &sim.state;
     let um = 1e6;
-    let r = sim.spec.sphere_radius * um;
+    let r = sim.spec.slider_sphere_radius * um;
+    let rb = sim.spec.substrate_sphere_radius * um;
     let snap = sim.snapshot();
     let n = snap.slider.len() + snap.substrate.len() + 2;
     let mut b = String::with_capacity(n * 64);
@@ -50,7 +51,7 @@ pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<u64> {
     ));
     for (j, x) in snap.substrate.iter().enumerate() {
         b.push_str(&format!(
-            "B {:.6} {:.6} {:.6} {r} {}\n",
+            "B {:.6} {:.6} {:.6} {rb} {}\n",
             x[0] * um,
             x[1] * um,
             x[2] * um,

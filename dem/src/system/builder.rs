@@ -29,25 +29,13 @@ pub struct StartInfo {
 }
 
 /// Lays out the particles of `scene` (at its own θ and offset) for `params` (load, α, travel,
-/// reductions). Cost: one surrogate solve, O(N log N).
+/// reductions), with the slider's and the substrate's own sphere radii (one per body; the
+/// scene refuses per-site sizes). Cost: one surrogate solve, O(N log N).
 pub fn from_scene(
     scene: &Scene,
     params: &SimParams,
     start: Start,
 ) -> Result<(SystemSpec, StartInfo), DemError> {
-    if let Some(r) = scene.geometry.slider_sphere_radius {
-        return Err(surrogate::SceneError::invalid(
-            "slider.sphere_diameter_um",
-            2e6 * r,
-            &format!(
-                "the DEM models one sphere size for slider and substrate ({} µm here): the \
-                 screening tiers (screen, landscape, corrugation, friction, design --no-dem) take \
-                 two sizes",
-                2e6 * scene.sphere_radius
-            ),
-        )
-        .into());
-    }
     let solver = Solver::new(scene)?;
     let eq = solver.solve(
         Pose {
@@ -72,7 +60,6 @@ pub fn from_scene(
         sub.retain(|p| seg_dist2([p[0], p[1]], c, e) <= reach * reach);
     }
     let pruned = all - sub.len();
-    let r = scene.sphere_radius;
     let (slider_z, control_z) = match start {
         Start::Surrogate => {
             let mut z = vec![eq.z; n];
@@ -95,7 +82,7 @@ pub fn from_scene(
         }
         Start::Gap(g) => {
             let ztop = sub.iter().map(|p| p[2]).fold(f64::NEG_INFINITY, f64::max);
-            let z0 = ztop + 2.0 * r + g;
+            let z0 = ztop + scene.contact_distance() + g;
             (vec![z0; n], z0)
         }
     };
@@ -105,7 +92,8 @@ pub fn from_scene(
             slider_sites: sites,
             slider_z,
             control_z,
-            sphere_radius: r,
+            slider_sphere_radius: scene.slider_sphere_radius(),
+            substrate_sphere_radius: scene.sphere_radius,
             material: scene.material,
             tilt_stiffness: scene
                 .slider

@@ -16,8 +16,11 @@ pub struct SystemSpec {
     /// Initial control-layer reference height Z (m): slider sphere i's z-spring is relaxed at
     /// `z_i = Z + t_x·y_i − t_y·x_i` (tilts t start at 0).
     pub control_z: f64,
-    /// Radius of slider and substrate spheres (m).
-    pub sphere_radius: f64,
+    /// Radius of every slider sphere (m).
+    pub slider_sphere_radius: f64,
+    /// Radius of every substrate sphere (m); may differ from the slider's (the contact law
+    /// then takes `R_eff = R_sl R_sb/(R_sl + R_sb)` and the contact distance `R_sl + R_sb`).
+    pub substrate_sphere_radius: f64,
     /// Material (density for the masses, elastic constants for the contact model).
     pub material: Material,
     /// Rotational stiffness `K_t` (N·m/rad, lab frame, on `[t_x, t_y]`) of the slider mount when
@@ -33,21 +36,30 @@ pub struct SystemSpec {
 }
 
 impl SystemSpec {
-    /// Mass of one slider or substrate sphere (kg).
-    pub fn sphere_mass(&self) -> f64 {
-        self.material.sphere_mass(self.sphere_radius)
+    /// Mass of one slider sphere (kg).
+    pub fn slider_sphere_mass(&self) -> f64 {
+        self.material.sphere_mass(self.slider_sphere_radius)
+    }
+    /// Mass of one substrate sphere (kg).
+    pub fn substrate_sphere_mass(&self) -> f64 {
+        self.material.sphere_mass(self.substrate_sphere_radius)
+    }
+    /// Centre distance (m) at which a slider and a substrate sphere touch, `R_sl + R_sb`
+    /// (`2R`, bit for bit, for one size).
+    pub fn contact_distance(&self) -> f64 {
+        self.slider_sphere_radius + self.substrate_sphere_radius
     }
     /// Total particle count: substrate + slider + control-layer spheres + 1 support.
     pub fn particle_count(&self) -> usize {
         self.substrate.len() + 2 * self.slider_sites.len() + 1
     }
-    /// How far (m) the slider disc, plus one sphere radius, reaches beyond the substrate
+    /// How far (m) the slider disc, plus one slider sphere radius, reaches beyond the substrate
     /// rectangle when its centre is at `centre` (m); ≤ 0 when it lies wholly over it. `None`
     /// when the layout does not record the outline.
     pub fn overhang_at(&self, centre: [f64; 2]) -> Option<f64> {
         let (_, r) = self.disc?;
         let [lx, ly] = self.substrate_size?;
-        let reach = r + self.sphere_radius;
+        let reach = r + self.slider_sphere_radius;
         Some((centre[0].abs() + reach - 0.5 * lx).max(centre[1].abs() + reach - 0.5 * ly))
     }
 }
