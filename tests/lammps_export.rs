@@ -116,6 +116,42 @@ fn csv(path: &Path) -> Vec<std::collections::HashMap<String, f64>> {
         .collect()
 }
 
+/// The deck's own window mean of the spring force (`RESULT friction_mN=` line of the log, mN).
+fn deck_friction(log: &str) -> f64 {
+    log.lines()
+        .find_map(|l| l.strip_prefix("RESULT friction_mN="))
+        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
+        .expect("RESULT friction_mN line")
+}
+
+/// While the spring loads up (support travel 0.1–0.5 µm, before the first slip) the Rust
+/// (`rows`) and LAMMPS (`lrows`) trajectories must coincide: the spring force at the same steps
+/// within 0.5 %, on at least `min` samples.
+fn assert_ramp_agrees(
+    rows: &[std::collections::HashMap<String, f64>],
+    lrows: &[std::collections::HashMap<String, f64>],
+    min: usize,
+) {
+    let mut ramp = 0;
+    for r in rows
+        .iter()
+        .filter(|r| r["support_x_um"] > 0.1 && r["support_x_um"] < 0.5)
+    {
+        let l = lrows
+            .iter()
+            .find(|l| (l["t_us"] - r["t_us"]).abs() < 1e-6)
+            .expect("same sample");
+        let (a, b) = (l["spring_force_mN"], r["spring_force_mN"]);
+        assert!(
+            (a - b).abs() < 0.005 * b.abs(),
+            "t = {} µs: spring force LAMMPS {a} vs Rust {b}",
+            r["t_us"]
+        );
+        ramp += 1;
+    }
+    assert!(ramp >= min, "{ramp} ramp samples");
+}
+
 fn json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
@@ -275,27 +311,8 @@ fn lammps_and_the_rust_dem_agree_on_a_small_scene() {
         "P_max LAMMPS {pl} vs Rust {pr} GPa"
     );
 
-    // While the spring loads up (support travel 0.1–0.5 µm, before the first slip) the two
-    // trajectories must coincide: the spring force at the same steps within 0.5 %.
     let lrows = csv(&dir.join("timeseries.csv"));
-    let mut ramp = 0;
-    for r in rows
-        .iter()
-        .filter(|r| r["support_x_um"] > 0.1 && r["support_x_um"] < 0.5)
-    {
-        let l = lrows
-            .iter()
-            .find(|l| (l["t_us"] - r["t_us"]).abs() < 1e-6)
-            .expect("same sample");
-        let (a, b) = (l["spring_force_mN"], r["spring_force_mN"]);
-        assert!(
-            (a - b).abs() < 0.005 * b.abs(),
-            "t = {} µs: spring force LAMMPS {a} vs Rust {b}",
-            r["t_us"]
-        );
-        ramp += 1;
-    }
-    assert!(ramp >= 10, "{ramp} ramp samples");
+    assert_ramp_agrees(&rows, &lrows, 10);
 
     // Friction: the mean spring force over the last 2/3 of sliding, the same samples in both.
     let rj = json(&dir.join("rust.json"));
@@ -308,11 +325,7 @@ fn lammps_and_the_rust_dem_agree_on_a_small_scene() {
         .collect();
     assert!(w.len() > 60, "{} LAMMPS samples in the window", w.len());
     let fl = w.iter().sum::<f64>() / w.len() as f64;
-    let deck_mean = log
-        .lines()
-        .find_map(|l| l.strip_prefix("RESULT friction_mN="))
-        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
-        .expect("RESULT friction_mN line");
+    let deck_mean = deck_friction(&log);
     eprintln!(
         "equilibrium: contacts {} / {}, P_max {pl} / {pr} GPa; friction LAMMPS {fl} mN (deck {deck_mean}) / Rust {fr} mN",
         l["contacts"], eq["contacts"]
@@ -466,32 +479,11 @@ fn lammps_and_the_rust_dem_agree_with_two_sphere_sizes() {
         "P_max LAMMPS {pl} vs Rust {pr} GPa"
     );
     let lrows = csv(&dir.join("timeseries.csv"));
-    let mut ramp = 0;
-    for r in rows
-        .iter()
-        .filter(|r| r["support_x_um"] > 0.1 && r["support_x_um"] < 0.5)
-    {
-        let l = lrows
-            .iter()
-            .find(|l| (l["t_us"] - r["t_us"]).abs() < 1e-6)
-            .expect("same sample");
-        let (a, b) = (l["spring_force_mN"], r["spring_force_mN"]);
-        assert!(
-            (a - b).abs() < 0.005 * b.abs(),
-            "t = {} µs: spring force LAMMPS {a} vs Rust {b}",
-            r["t_us"]
-        );
-        ramp += 1;
-    }
-    assert!(ramp >= 5, "{ramp} ramp samples");
+    assert_ramp_agrees(&rows, &lrows, 5);
     let fr = json(&dir.join("rust.json"))["friction_mN"]
         .as_f64()
         .unwrap();
-    let fl = log
-        .lines()
-        .find_map(|l| l.strip_prefix("RESULT friction_mN="))
-        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
-        .expect("RESULT friction_mN line");
+    let fl = deck_friction(&log);
     eprintln!("two sizes: P_max {pl} / {pr} GPa; friction LAMMPS {fl} / Rust {fr} mN");
     assert!(fr > 0.3 * 0.5 * 0.05, "the slider must slide: {fr} mN");
     assert!(

@@ -243,14 +243,19 @@ fn run(
     }
 }
 
+/// The clap definition of subcommand `command` (`ValueError` naming it when there is none).
+fn subcommand(command: &str) -> PyResult<clap::Command> {
+    Cli::command()
+        .find_subcommand(command)
+        .cloned()
+        .ok_or_else(|| PyValueError::new_err(format!("no command `{command}`")))
+}
+
 /// The long options of command `command` as (name, takes a value) pairs, e.g.
 /// `("load-mn", true)`, `("force", false)`.
 #[pyfunction]
 fn flags(command: &str) -> PyResult<Vec<(String, bool)>> {
-    let cli = Cli::command();
-    let sub = cli
-        .find_subcommand(command)
-        .ok_or_else(|| PyValueError::new_err(format!("no command `{command}`")))?;
+    let sub = subcommand(command)?;
     Ok(sub
         .get_arguments()
         .filter_map(|a| {
@@ -265,10 +270,7 @@ fn flags(command: &str) -> PyResult<Vec<(String, bool)>> {
 /// for a release with a note (`cli::renamed`).
 #[pyfunction]
 fn renamed(command: &str) -> PyResult<Vec<(String, String)>> {
-    let cli = Cli::command();
-    let sub = cli
-        .find_subcommand(command)
-        .ok_or_else(|| PyValueError::new_err(format!("no command `{command}`")))?;
+    let sub = subcommand(command)?;
     Ok(sub
         .get_arguments()
         .filter_map(|a| Some((a.get_long()?, a.get_all_aliases()?)))

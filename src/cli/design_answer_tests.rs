@@ -100,21 +100,11 @@ fn pattern(ds: &DesignScene, n: usize) -> PatternResult {
             },
         })
         .collect();
-    PatternResult {
-        scene: ds.clone(),
-        sym: crate::study::design::symmetry::PairSymmetry::of_scene(sc),
-        thetas_deg: vec![],
-        screen: vec![],
-        screen_wall_s: None,
-        orientations: vec![],
-        levels: vec![],
-        levels_evaluated: 0,
-        stop: String::new(),
-        evaluated: vec![],
+    PatternResult::of_ranking(
+        ds.clone(),
+        crate::study::design::symmetry::PairSymmetry::of_scene(sc),
         ranking,
-        resonance_flagged: 0,
-        trimmed: false,
-    }
+    )
 }
 
 /// The DEM entries of every confirmation run of `pr`, each with μ_DEM `mu(entry)` (P_max 3 GPa).

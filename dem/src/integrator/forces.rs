@@ -426,24 +426,8 @@ impl Sim {
         });
     }
 
-    /// Second half kick of the control layer.
+    /// Second half kick of the control layer (the same map as the first half kick).
     fn kick_control_second(&mut self, h: f64) {
-        let s = &mut self.state;
-        if s.held_xy {
-            s.cl_v[0] = 0.0;
-            s.cl_v[1] = 0.0;
-        } else {
-            kick(&mut s.cl_v[0], s.cl_f[0], h, self.body.m_cl);
-            kick(&mut s.cl_v[1], s.cl_f[1], h, self.body.m_cl);
-        }
-        match &self.body.tilt {
-            None => kick(&mut s.cl_v[2], s.cl_f[2], h, self.body.mz),
-            Some(t) => {
-                let a = mat_vec(&t.m_inv, [s.cl_f[2], s.tilt_f[0], s.tilt_f[1]]);
-                s.cl_v[2] += h * a[0];
-                s.tilt_v[0] += h * a[1];
-                s.tilt_v[1] += h * a[2];
-            }
-        }
+        self.kick_control(h);
     }
 }

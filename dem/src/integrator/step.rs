@@ -139,7 +139,7 @@ impl Sim {
 
     /// First half kick of the control layer (lateral unless held; Z and the tilts through the
     /// mass matrix).
-    fn kick_control(&mut self, h: f64) {
+    pub(super) fn kick_control(&mut self, h: f64) {
         let s = &mut self.state;
         if s.held_xy {
             s.cl_v[0] = 0.0;

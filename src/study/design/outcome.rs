@@ -130,3 +130,30 @@ pub struct AnswerMap {
     /// The map's rows.
     pub rows: Vec<crate::study::tolerance::ToleranceRow>,
 }
+
+impl PatternResult {
+    /// A result holding only `ranking` (nothing screened or evaluated): for the tests of the
+    /// stages after the ranking (answer, confirmation, report).
+    #[cfg(test)]
+    pub(crate) fn of_ranking(
+        scene: DesignScene,
+        sym: PairSymmetry,
+        ranking: Vec<Candidate>,
+    ) -> Self {
+        PatternResult {
+            scene,
+            sym,
+            thetas_deg: vec![],
+            screen: vec![],
+            screen_wall_s: None,
+            orientations: vec![],
+            levels: vec![],
+            levels_evaluated: 0,
+            stop: String::new(),
+            evaluated: vec![],
+            ranking,
+            resonance_flagged: 0,
+            trimmed: false,
+        }
+    }
+}

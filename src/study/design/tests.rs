@@ -35,8 +35,8 @@ fn pattern(name: &str, n: usize) -> PatternResult {
             },
         })
         .collect();
-    PatternResult {
-        scene: DesignScene {
+    PatternResult::of_ranking(
+        DesignScene {
             name: name.into(),
             scene,
             flags: vec![],
@@ -44,18 +44,8 @@ fn pattern(name: &str, n: usize) -> PatternResult {
             facts: None,
         },
         sym,
-        thetas_deg: vec![],
-        screen: vec![],
-        screen_wall_s: None,
-        orientations: vec![],
-        levels: vec![],
-        levels_evaluated: 0,
-        stop: String::new(),
-        evaluated: vec![],
         ranking,
-        resonance_flagged: 0,
-        trimmed: false,
-    }
+    )
 }
 
 /// A design is confirmed at the confirmation loads and at its own superlubric load (once,
