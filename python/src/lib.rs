@@ -20,9 +20,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc, Mutex};
 use std::time::Duration;
 use superlube::cli::Cli;
-use superlube::study::meta::{scene_file, set_command_line};
-use superlube::study::progress::{with_reporter, Cancelled};
-use superlube::study::Progress;
+use superlube::runs::meta::{scene_file, set_command_line};
+use superlube::runs::progress::Progress;
+use superlube::runs::progress::{with_reporter, Cancelled};
 use surrogate::SceneFile;
 
 /// Held while a command runs (see [`run`]).

@@ -6,11 +6,13 @@ use super::checks;
 use super::dem_args::ModelArg;
 use super::slide::{jobs as jobs_flag, seeds as seeds_flag};
 use crate::plot::friction::friction_png;
+use crate::runs::sink::csv_bytes;
+use crate::runs::{
+    output::check_outputs, output::Outputs, progress::Progress, progress::Reporter, shard::Shard,
+};
 use crate::study::batch::{run_part, summary_inputs, BatchOptions};
 use crate::study::campaign::{figure_rows, study_times, CampaignParams, Fig, STUDY_LOADS_MN};
 use crate::study::dem_run::ModelSpec;
-use crate::study::sink::csv_bytes;
-use crate::study::{check_outputs, Outputs, Progress, Reporter, Shard};
 use anyhow::{bail, Result};
 use std::path::{Path, PathBuf};
 use surrogate::units::us_to_s;

@@ -5,15 +5,16 @@ use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs, SweepPlan};
 use crate::plot::figures::corrugation_png;
+use crate::runs::sink::Tee;
+use crate::runs::{
+    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
+    output::SweepRun, progress::Progress, progress::Reporter, sweep::Sweep,
+};
 use crate::study::corrugation::{
     check_paths, contact_line, corrugation, estimate, CorrugationParams, Method,
 };
+use crate::study::record;
 use crate::study::rows::CorrugationRow;
-use crate::study::sink::Tee;
-use crate::study::{
-    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Progress, Reporter, Sweep,
-    SweepRun,
-};
 use anyhow::{bail, Context, Result};
 use std::path::PathBuf;
 

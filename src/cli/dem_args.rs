@@ -4,9 +4,10 @@
 use super::parse_list_or_range;
 use super::protocol_args::ProtocolArgs;
 use super::{checks, SceneArgs};
+use crate::runs::sink::csv_bytes;
+use crate::runs::{meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs};
 use crate::study::dem_run::{DemOutcome, DemParams, ModelSpec};
-use crate::study::sink::csv_bytes;
-use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs};
+use crate::study::record;
 use anyhow::{bail, Result};
 use dem::model::{Constant, Friction};
 use dem::protocol::RunIo;

@@ -5,11 +5,11 @@ use super::dem_args::ModelArg;
 use super::friction_args::FrictionKnobArgs;
 use super::tolerance_args::ToleranceArgs;
 use super::{checks, parse_list_or_range, SceneArgs, SceneOverrides};
+use crate::runs::{output::check_outputs, progress::Reporter};
 use crate::study::campaign::STUDY_LOADS_MN;
 use crate::study::dem_run::{DemParams, ModelSpec};
 use crate::study::design::store::Store;
 use crate::study::design::{cut, design, DesignParams, DesignScene};
-use crate::study::{check_outputs, Reporter};
 use anyhow::{bail, Result};
 use dem::protocol::RunIo;
 use dem::{SimParams, Start};
@@ -480,9 +480,9 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             if a.no_dem {
                 bail!("`--shard`: shards the DEM confirmation runs, but --no-dem skips them");
             }
-            crate::study::Shard::parse(t, "--shard")?
+            crate::runs::shard::Shard::parse(t, "--shard")?
         }
-        None => crate::study::Shard::ALL,
+        None => crate::runs::shard::Shard::ALL,
     };
     let (theta_tol_deg, direction_tol_deg) = a.tol.checked()?;
     let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step")?;
@@ -567,7 +567,7 @@ pub fn run(a: Args) -> Result<()> {
     let rep = Reporter::stderr();
     for s in &scenes {
         for w in &s.warnings {
-            crate::study::Progress::note(&rep, &format!("warning: {}: {w}", s.name));
+            crate::runs::progress::Progress::note(&rep, &format!("warning: {}: {w}", s.name));
         }
     }
     if a.patterns.is_some() || a.family.is_some() {
@@ -576,7 +576,7 @@ pub fn run(a: Args) -> Result<()> {
             let t = s.facts.as_ref().map_or("", |f| f.contact_type.as_str());
             n[crate::study::patterns::prescreen_class(t)] += 1;
         }
-        crate::study::Progress::note(
+        crate::runs::progress::Progress::note(
             &rep,
             &format!(
                 "design: {} candidates in the contact-type pre-screen's order: {} lubric (in every direction), {} directional, {} interlocked{}; index order within each",
@@ -598,7 +598,7 @@ pub fn run(a: Args) -> Result<()> {
     let files = crate::present::design_report::Writer::new(&store, &record, &params);
     let o = design(&scenes, &params, &store, &rep, &|pr| files.pattern(pr))?;
     if !params.dem_shard.is_all() {
-        crate::study::Progress::note(
+        crate::runs::progress::Progress::note(
             &rep,
             &format!(
                 "design: shard {}/{} of the DEM runs done in {:.1} s (no report from a shard)",
@@ -611,7 +611,7 @@ pub fn run(a: Args) -> Result<()> {
     }
     crate::present::design_report::publish(files, &o, &rep)?;
     let failed = o.dem.iter().filter(|d| d.outcome.error.is_some()).count();
-    crate::study::Progress::note(
+    crate::runs::progress::Progress::note(
         &rep,
         &format!(
             "design: done in {:.1} s; the answer is in {}{}",

@@ -3,8 +3,8 @@
 
 use super::dem_args::DemArgs;
 use super::protocol_args::ProtocolArgs;
+use crate::runs::progress::Reporter;
 use crate::study::equilibrate::equilibrate;
-use crate::study::Reporter;
 use anyhow::Result;
 
 /// Options of `superlube equilibrate`.

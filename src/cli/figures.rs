@@ -4,11 +4,11 @@
 use super::campaign::CampaignArgs;
 use super::checks;
 use crate::plot::figures::{contact_map_png, corrugation_figure_png, landscape_png, sweep_png};
+use crate::runs::sink::csv_bytes;
+use crate::runs::{meta::Inputs, output::check_outputs, output::Outputs, progress::Reporter};
 use crate::study::corrugation::{CorrugationParams, Method};
 use crate::study::figures::{figures, Figure, FiguresParams, Group};
 use crate::study::rows::ContactRow;
-use crate::study::sink::csv_bytes;
-use crate::study::{check_outputs, Inputs, Outputs, Reporter};
 use anyhow::{bail, Result};
 use std::path::{Path, PathBuf};
 

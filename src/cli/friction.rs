@@ -4,10 +4,12 @@ use super::friction_args::FrictionKnobArgs;
 use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs, SweepPlan};
-use crate::study::friction::{check, estimate, friction, resonance_note, FrictionSweepParams};
-use crate::study::{
-    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Reporter, Sweep, SweepRun,
+use crate::runs::{
+    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
+    output::SweepRun, progress::Reporter, sweep::Sweep,
 };
+use crate::study::friction::{check, estimate, friction, resonance_note, FrictionSweepParams};
+use crate::study::record;
 use anyhow::{bail, Result};
 use std::path::PathBuf;
 
@@ -136,7 +138,7 @@ fn execute(p: Prepared) -> Result<()> {
     let rep = Reporter::stderr();
     sc.log(&rep);
     if let Some(note) = resonance_note(&sc.scene, &params.knobs) {
-        crate::study::Progress::note(&rep, &format!("note: {note}"));
+        crate::runs::progress::Progress::note(&rep, &format!("note: {note}"));
     }
     // θ is swept: the recorded scene does not keep a θ of its own.
     let mut recorded = scene_file(&sc.scene);
@@ -154,7 +156,7 @@ fn execute(p: Prepared) -> Result<()> {
         friction(&sc.scene, &params, items, csv, &rep)
     })?;
     if let Some(s) = stats {
-        crate::study::Progress::note(
+        crate::runs::progress::Progress::note(
             &rep,
             &format!(
                 "friction: {} estimates in {:.2} s ({:.1} ms per (θ, α, W))",

@@ -1,8 +1,8 @@
 //! `superlube lammps-check`: reads the contact dump of an exported LAMMPS run and reports the
 //! contacts, P_max and the contacts above P_crit per frame (engine: `dem::export::check`).
 
-use crate::study::meta::Inputs;
-use crate::study::output::{check_outputs, Outputs};
+use crate::runs::meta::Inputs;
+use crate::runs::output::{check_outputs, Outputs};
 use anyhow::{bail, Context, Result};
 use dem::export::{check_dump, files, ExportMeta, FailedContact};
 use std::io::{BufReader, Write};

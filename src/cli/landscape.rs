@@ -5,19 +5,20 @@ use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs, SweepPlan};
 use crate::plot::figures::{contact_map_png, landscape_png};
+use crate::runs::meta::sidecar_path;
+use crate::runs::resume::is_complete;
+use crate::runs::sink::{csv_bytes, RowSink, Tee};
+use crate::runs::{
+    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
+    output::SweepRun, progress::Progress, progress::Reporter, shard::Shard,
+};
 use crate::study::contacts::{contacts, ContactsParams};
 use crate::study::landscape::{
     self as workflow, estimate, finish, heights, landscape, spill_path, LandscapeParams,
     LandscapeStats,
 };
-use crate::study::meta::sidecar_path;
-use crate::study::resume::is_complete;
+use crate::study::record;
 use crate::study::rows::{ContactRow, LandscapeRow};
-use crate::study::sink::{csv_bytes, RowSink, Tee};
-use crate::study::{
-    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Progress, Reporter, Shard,
-    SweepRun,
-};
 use anyhow::Result;
 use std::path::{Path, PathBuf};
 use surrogate::solver::{Model, SearchKind};

@@ -1,9 +1,9 @@
 //! `superlube merge`: shard files → [`crate::study::merge`] → the unsharded output + sidecar.
 
+use crate::runs::output::same_file;
+use crate::runs::sink::StreamFile;
+use crate::runs::{output::check_outputs, output::Outputs, progress::Progress, progress::Reporter};
 use crate::study::merge::{check, merge};
-use crate::study::output::same_file;
-use crate::study::sink::StreamFile;
-use crate::study::{check_outputs, Outputs, Progress, Reporter};
 use anyhow::{bail, Result};
 use std::path::PathBuf;
 
@@ -45,7 +45,7 @@ pub fn run(a: Args) -> Result<()> {
         Ok(r) => r,
         Err(e) => {
             if let Some(out) = &a.out {
-                let _ = std::fs::remove_file(crate::study::sink::partial_path(out));
+                let _ = std::fs::remove_file(crate::runs::sink::partial_path(out));
             }
             return Err(e);
         }

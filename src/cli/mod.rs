@@ -31,7 +31,7 @@ mod value_enums;
 pub use crate::study::range::parse_list_or_range;
 pub use scene_args::{SceneArgs, SceneOverrides};
 
-use crate::study::{Estimate, Sweep};
+use crate::runs::{budget::Estimate, sweep::Sweep};
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 

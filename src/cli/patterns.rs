@@ -2,8 +2,10 @@
 //! `index.csv` (with sidecar).
 
 use super::{parse_list_or_range, SceneArgs};
+use crate::runs::{
+    meta::scene_file, meta::Inputs, output::Outputs, progress::Progress, progress::Reporter,
+};
 use crate::study::patterns::{candidate_scene, candidates, parse_family, Normalize, PatternParams};
-use crate::study::{meta::scene_file, Inputs, Outputs, Progress, Reporter};
 use anyhow::{bail, Context, Result};
 use std::path::PathBuf;
 

@@ -99,7 +99,7 @@ pub struct Resolved {
 
 impl Resolved {
     /// Logs the warnings (through the command's reporter).
-    pub fn log(&self, p: &dyn crate::study::Progress) {
+    pub fn log(&self, p: &dyn crate::runs::progress::Progress) {
         for w in &self.warnings {
             p.note(&format!("warning: {w}"));
         }

@@ -3,13 +3,15 @@
 use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs, SweepPlan};
+use crate::runs::sink::csv_bytes;
+use crate::runs::{
+    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
+    output::SweepRun, progress::Reporter, sweep::Sweep,
+};
 use crate::study::contacts::{contacts, ContactsParams};
+use crate::study::record;
 use crate::study::rows::ContactRow;
 use crate::study::screen::{estimate, screen, ScreenParams};
-use crate::study::sink::csv_bytes;
-use crate::study::{
-    check_outputs, meta::scene_file, record, Estimate, Inputs, Outputs, Reporter, Sweep, SweepRun,
-};
 use anyhow::{bail, Result};
 use std::path::PathBuf;
 use surrogate::solver::{Model, SearchKind};

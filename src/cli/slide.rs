@@ -5,11 +5,13 @@
 use super::dem_args::DemArgs;
 use super::parse_list_or_range;
 use super::protocol_args::ProtocolArgs;
+use crate::runs::sink::csv_bytes;
+use crate::runs::{
+    output::check_outputs, output::Outputs, progress::Progress, progress::Reporter, shard::Shard,
+};
 use crate::study::batch::{run_name, run_part, summary_inputs, BatchOptions, SlideJob};
 use crate::study::rows::{BatchRow, ConfigStatsRow};
-use crate::study::sink::csv_bytes;
 use crate::study::slide::slide;
-use crate::study::{check_outputs, Outputs, Progress, Reporter, Shard};
 use anyhow::{bail, Result};
 use std::path::{Path, PathBuf};
 

@@ -1,9 +1,11 @@
 //! `superlube slurm <command> [its flags] --shards N --out-dir DIR`: checks the sweep command line
-//! exactly as running it would, then writes the Slurm scripts of [`crate::study::slurm`].
+//! exactly as running it would, then writes the Slurm scripts of [`crate::runs::slurm`].
 
 use super::{prepare_sweep, Cli, SweepPlan, SWEEP_COMMANDS};
-use crate::study::slurm::{format_time, job, shard_file, valid_time, SlurmParams};
-use crate::study::{check_outputs, Inputs, Outputs, Progress, Reporter};
+use crate::runs::slurm::{format_time, job, shard_file, valid_time, SlurmParams};
+use crate::runs::{
+    meta::Inputs, output::check_outputs, output::Outputs, progress::Progress, progress::Reporter,
+};
 use anyhow::{bail, Context, Result};
 use clap::{CommandFactory, FromArgMatches, Parser};
 use std::path::{Path, PathBuf};
@@ -272,7 +274,7 @@ pub fn run(a: Args) -> Result<()> {
     let (name, whole) = check_sweep(&words)?;
     // 2. Enough items for the shards, then task 0's exact command line.
     whole.sweep.shard(
-        crate::study::Shard {
+        crate::runs::shard::Shard {
             index: 0,
             count: shards,
         },

@@ -1,6 +1,6 @@
 //! `--shard i/n` and `--resume`, the flags every sweep command shares, and their checks.
 
-use crate::study::{Shard, Sweep, SweepRun};
+use crate::runs::{output::SweepRun, shard::Shard, sweep::Sweep};
 use anyhow::{bail, Result};
 use std::path::Path;
 

@@ -6,10 +6,14 @@ use super::friction_args::FrictionKnobArgs;
 use super::tolerance_args::ToleranceArgs;
 use super::{checks, SceneArgs};
 use crate::plot::tolerance::tolerance_png;
+use crate::runs::sink::csv_bytes;
+use crate::runs::{
+    meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
+    progress::Reporter,
+};
+use crate::study::record;
 use crate::study::rows::label;
-use crate::study::sink::csv_bytes;
 use crate::study::tolerance::{map, LimitParams, MapParams};
-use crate::study::{check_outputs, meta::scene_file, record, Inputs, Outputs, Progress, Reporter};
 use anyhow::{bail, Result};
 use serde_json::json;
 use std::path::PathBuf;

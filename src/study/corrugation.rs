@@ -3,10 +3,10 @@
 //! streamed in the order of the α list. Also the contact-line choice shared with the DEM runs
 //! (α is measured from it there too).
 
-use super::budget::Estimate;
-use super::progress::Progress;
 use super::rows::CorrugationRow;
-use super::sink::RowSink;
+use crate::runs::budget::Estimate;
+use crate::runs::progress::Progress;
+use crate::runs::sink::RowSink;
 use anyhow::{bail, Result};
 use surrogate::map::{
     check_slider_stays_on_substrate, compute_landscape, contact_line_direction, corrugation_direct,

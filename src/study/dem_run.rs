@@ -4,8 +4,8 @@
 //! [`super::slide`].
 
 use super::corrugation::{contact_line, LineChoice};
-use super::progress::Progress;
 use super::rows::{label, DemCase, DemSample, RunInfo};
+use crate::runs::progress::Progress;
 use anyhow::{Context, Result};
 use dem::model::Friction;
 use dem::protocol::{run, step_counts, Phase, RunIo, RunKind};

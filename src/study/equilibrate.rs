@@ -2,8 +2,8 @@
 //! orientation study's protocol), compared with the surrogate's quasi-static answer.
 
 use super::dem_run::{run_dem, DemOutcome, DemParams};
-use super::progress::Progress;
 use super::rows::EquilibrateReport;
+use crate::runs::progress::Progress;
 use anyhow::Result;
 use dem::protocol::{equilibrate_summary, RunKind};
 use surrogate::units::{m_to_nm, n_to_mn, um_to_m};

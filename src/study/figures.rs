@@ -6,11 +6,12 @@
 use super::contacts::{contacts, ContactsParams};
 use super::corrugation::{corrugation, CorrugationParams, Method};
 use super::landscape::{landscape, LandscapeParams, LandscapeStats};
-use super::meta::{scene_file, Inputs};
-use super::progress::Progress;
+use super::record;
 use super::rows::{CorrugationRow, LandscapeRow, ScreenRow};
 use super::screen::{screen, ScreenParams};
-use super::{record, Estimate};
+use crate::runs::budget::Estimate;
+use crate::runs::meta::{scene_file, Inputs};
+use crate::runs::progress::Progress;
 use anyhow::Result;
 use surrogate::solver::{Equilibrium, Model, SearchKind};
 use surrogate::units::{deg_to_rad, mn_to_n};

@@ -9,11 +9,11 @@
 //! the same whatever the thread count. α is measured from the slider's contact line at each θ
 //! (the moiré estimate, or the `line` given), as in `corrugation` and `slide`.
 
-use super::budget::Estimate;
 use super::corrugation::{contact_line, LineChoice};
-use super::progress::Progress;
 use super::rows::FrictionRow;
-use super::sink::RowSink;
+use crate::runs::budget::Estimate;
+use crate::runs::progress::Progress;
+use crate::runs::sink::RowSink;
 use anyhow::{bail, Result};
 use std::ops::Range;
 use surrogate::friction::{

@@ -17,11 +17,11 @@
 //! run's, and both are bit-identical to `surrogate::map::compute_landscape` (same poses, same
 //! solver calls).
 
-use super::budget::Estimate;
-use super::progress::Progress;
 use super::rows::{LandscapeRow, LandscapeZRow};
-use super::sink::RowSink;
-use super::sweep::{Sweep, LANDSCAPE_Z};
+use crate::runs::budget::Estimate;
+use crate::runs::progress::Progress;
+use crate::runs::sink::RowSink;
+use crate::runs::sweep::{Sweep, LANDSCAPE_Z};
 use anyhow::{bail, Context, Result};
 use rayon::prelude::*;
 use std::ops::Range;

@@ -16,11 +16,11 @@
 //! landscape runs on its own spill file.
 
 use super::landscape;
-use super::meta::{input_differences, Sidecar, VERSION};
-use super::resume::short;
-use super::sink::{CsvSink, StreamFile};
-use super::sweep::{ShardInfo, LANDSCAPE_Z};
-use super::Shard;
+use crate::runs::meta::{input_differences, Sidecar, VERSION};
+use crate::runs::resume::short;
+use crate::runs::shard::Shard;
+use crate::runs::sink::{CsvSink, StreamFile};
+use crate::runs::sweep::{ShardInfo, LANDSCAPE_Z};
 use anyhow::{bail, Context, Result};
 use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};

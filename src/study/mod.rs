@@ -1,10 +1,10 @@
 //! # The study layer: every workflow of superlube, called by every command
 //!
 //! A workflow is one function that takes a validated [`surrogate::Scene`] and a parameters
-//! struct (SI units), reports progress through a [`Progress`] callback object, and streams its
-//! rows into a [`RowSink`](sink::RowSink) (or returns its SI result). It does no flag parsing and opens no
+//! struct (SI units), reports progress through a [`Progress`](crate::runs::progress::Progress) callback object, and streams its
+//! rows into a [`RowSink`](crate::runs::sink::RowSink) (or returns its SI result). It does no flag parsing and opens no
 //! output files: the commands in `src/cli/` parse flags into a scene and parameters, check the
-//! output paths, call one workflow function, and write the files through [`Outputs`].
+//! output paths, call one workflow function, and write the files through [`Outputs`](crate::runs::output::Outputs).
 //!
 //! | workflow | function | params | output |
 //! |---|---|---|---|
@@ -20,14 +20,11 @@
 //! | slide batch | [`batch::run_batch_with`] (runs), [`batch::run_part`] (a shard's part + every row) | [`batch::SlideJob`]s + [`batch::BatchOptions`] | per run `runs/<name>/` files; [`rows::BatchRow`]s, [`rows::ConfigStatsRow`]s |
 //! | friction campaign | [`campaign::CampaignParams::plan`] → [`batch::run_part`] → [`campaign::figure_rows`] | [`campaign::CampaignParams`] | `runs.csv`, per figure [`rows::ConfigStatsRow`]s + PNG |
 //!
-//! Shared pieces: [`progress`] (the callback trait and the terminal/log reporter), [`sink`] (row
-//! sinks, streaming CSV through `OUT.partial`), [`output`] (path checks before the run, writing
-//! every output with its sidecar, failures collected, [`SweepRun`] streaming), [`meta`] (the
-//! sidecar: resolved scene, parameters, command line, input hash, shard), [`record`]
-//! (parameters in user units for the sidecar), [`rows`] (ONE row type and schema per kind of
-//! output), [`batch`] (DEM runs side by side), [`budget`] (cost estimate and the size guard behind `--force`), [`sweep`],
-//! [`shard`], [`resume`], [`merge`] (sharded and resumed sweeps, below), [`slurm`] (the job
-//! scripts of `superlube slurm`).
+//! Shared pieces of this layer: [`record`] (parameters in user units for the sidecar), [`rows`]
+//! (ONE row type and schema per kind of output), [`batch`] (DEM runs side by side), [`merge`]
+//! (sharded and resumed sweeps). The run machinery the workflows use lives one layer down in
+//! [`crate::runs`]: progress reporting, row sinks, output checks and writing, sidecars, the size
+//! guard, sweeps, shards, resume and Slurm scripts.
 //!
 //! Adding a workflow (e.g. a `design` or `friction` study): a file here with a `…Params` struct,
 //! an `estimate` for the size guard, a `record` entry, a row type in [`rows`] if it writes rows,
@@ -51,7 +48,7 @@
 //! disk without running), [`batch::run_part`] (a shard's range of the jobs, then every job's row
 //! and the number still missing), [`batch::batch_rows`], [`batch::summary_inputs`] (sidecar
 //! inputs of a batch's summary files: the run names and input hashes, the same for every shard).
-//! A batch is sharded by cutting its run list ([`Shard::range`]) and letting every shard write
+//! A batch is sharded by cutting its run list ([`Shard::range`](crate::runs::shard::Shard::range)) and letting every shard write
 //! into the same directory; the call that finds every run finished writes the summaries (no
 //! `merge` needed: the runs' own files are the shards' results). Users: `superlube slide
 //! --out-dir` (`src/cli/slide.rs`), `superlube figures --friction` (`src/cli/campaign.rs`), and
@@ -59,11 +56,11 @@
 //!
 //! ## Sweeps: `--shard i/n`, `--resume`, `superlube merge`, `superlube slurm`
 //!
-//! Every sweep follows one contract ([`sweep`]): **N items in a fixed order, item `i` giving
+//! Every sweep follows one contract ([`sweep`](crate::runs::sweep)): **N items in a fixed order, item `i` giving
 //! exactly `r` rows** (rows `i·r .. (i+1)·r`), computed independently of which process computes
-//! it. Sharding cuts the items into contiguous blocks ([`Shard::range`]); resuming keeps the
-//! complete items of `OUT.partial` ([`resume`]); merging concatenates the shards in order
-//! ([`merge`]). The shard goes into the output's sidecar as a [`ShardInfo`], the sweep's
+//! it. Sharding cuts the items into contiguous blocks ([`Shard::range`](crate::runs::shard::Shard::range)); resuming keeps the
+//! complete items of `OUT.partial` ([`resume`](crate::runs::resume)); merging concatenates the shards in order
+//! ([`merge`]). The shard goes into the output's sidecar as a [`ShardInfo`](crate::runs::sweep::ShardInfo), the sweep's
 //! `input_hash` stays that of the unsharded run (the inputs, not the shard, are hashed), so
 //! `merge` can check that files belong together and write the unsharded run's sidecar.
 //!
@@ -83,7 +80,7 @@
 //!    concatenation), and get the run with `args.sweep.run(sweep, out, &[other output flags])`
 //!    — it parses `--shard`, refuses `--shard` without `--out` or with outputs a shard cannot
 //!    write, and refuses more shards than items;
-//! 3. stream through [`Outputs::stream_sweep`]`(role, out, &run, &progress, |items, sink| …)`:
+//! 3. stream through [`Outputs::stream_sweep`](crate::runs::output::Outputs::stream_sweep)`(role, out, &run, &progress, |items, sink| …)`:
 //!    the closure computes exactly the items `items` (a sub-range of `0..N`, already cut to the
 //!    shard and past the resumed rows) and pushes their rows in order, e.g. by calling the
 //!    workflow on the slice `params.list[items]`; the progress stage should count those items,
@@ -95,10 +92,6 @@
 //! A sweep whose final rows need the whole sweep (like the landscape's min z) writes per-item
 //! rows from which they follow, under its own schema name, and adds that schema's merge in
 //! [`merge::merge`] — used by its unsharded run too, so both give the same bytes.
-
-// The run machinery lives in `crate::runs`; these re-exports keep the `crate::study::…` and
-// `super::…` paths of the workflows compiling.
-pub use crate::runs::{budget, meta, output, progress, resume, shard, sink, slurm, sweep};
 
 pub mod batch;
 pub mod campaign;
@@ -119,10 +112,3 @@ pub mod screen;
 pub mod slide;
 pub mod tolerance;
 pub mod verdict;
-
-pub use budget::Estimate;
-pub use meta::Inputs;
-pub use output::{check_outputs, Outputs, SweepRun};
-pub use progress::{Progress, Reporter};
-pub use shard::Shard;
-pub use sweep::{ShardInfo, Sweep};

@@ -1,5 +1,5 @@
 //! Each workflow's parameters in user units, as recorded in the sidecars (`params`) and hashed
-//! into `input_hash` ([`super::meta`]).
+//! into `input_hash` ([`crate::runs::meta`]).
 
 use super::contacts::ContactsParams;
 use super::corrugation::CorrugationParams;

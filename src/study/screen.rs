@@ -5,10 +5,10 @@
 //! shared pair list); the window's rows are pushed in order before the next window starts, so the
 //! output is the same whatever the thread count and memory does not grow with the sweep.
 
-use super::budget::Estimate;
-use super::progress::Progress;
 use super::rows::ScreenRow;
-use super::sink::RowSink;
+use crate::runs::budget::Estimate;
+use crate::runs::progress::Progress;
+use crate::runs::sink::RowSink;
 use anyhow::{bail, Result};
 use rayon::prelude::*;
 use surrogate::solver::{Model, Pose, SearchKind, Solver};

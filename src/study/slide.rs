@@ -2,8 +2,8 @@
 //! slide at constant support speed): friction force and coefficient, lock-in.
 
 use super::dem_run::{run_dem, DemOutcome, DemParams};
-use super::progress::Progress;
 use super::rows::SlideReport;
+use crate::runs::progress::Progress;
 use anyhow::Result;
 use dem::protocol::{slide_summary, RunKind};
 use surrogate::Scene;

@@ -36,13 +36,13 @@ pub use pattern_files::Writer;
 pub use rows::{dem_rows, DemRow, ShortlistRow};
 
 use crate::plot::design::chart_png;
+use crate::runs::meta::Inputs;
+use crate::runs::progress::Progress;
+use crate::runs::sink::csv_bytes;
 use crate::study::design::rank::RankingRow;
 use crate::study::design::store::Store;
 use crate::study::design::{DesignOutcome, DesignParams};
-use crate::study::meta::Inputs;
-use crate::study::progress::Progress;
 use crate::study::rows::label;
-use crate::study::sink::csv_bytes;
 use anyhow::{Context, Result};
 use charts::mu_chart;
 use minijinja::{AutoEscape, Environment, UndefinedBehavior};
@@ -119,7 +119,7 @@ pub fn write(
 /// (its data changed), recording it in `outs` (sidecar, or the failure) and `wrote`.
 fn redraw(
     store: &Store,
-    outs: &mut crate::study::Outputs,
+    outs: &mut crate::runs::output::Outputs,
     wrote: &mut Vec<String>,
     rel: &str,
     stale: bool,

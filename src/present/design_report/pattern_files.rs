@@ -7,12 +7,12 @@
 use super::charts::{corrugation_chart, pmax_chart};
 use super::rows::ShortlistRow;
 use crate::plot::design::chart_png;
+use crate::runs::meta::Inputs;
+use crate::runs::output::Outputs;
+use crate::runs::sink::csv_bytes;
 use crate::study::design::store::Store;
 use crate::study::design::{DesignParams, PatternResult};
-use crate::study::meta::Inputs;
 use crate::study::rows::{label, CorrugationRow, FrictionRow};
-use crate::study::sink::csv_bytes;
-use crate::study::Outputs;
 use anyhow::{bail, Result};
 use std::cell::RefCell;
 use surrogate::units::{n_to_mn, pa_to_gpa};

@@ -4,11 +4,11 @@
 use super::words::fmt_g;
 use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
 use crate::plot::figures::contact_map_png;
+use crate::runs::output::Outputs;
 use crate::study::design::best::{best_contacts, best_order, pattern_order};
 use crate::study::design::store::Store;
 use crate::study::design::DesignOutcome;
 use crate::study::rows::label;
-use crate::study::Outputs;
 use anyhow::Result;
 use serde::Serialize;
 use surrogate::units::{m2_to_um2, m_to_um, mn_to_n, n_to_un, pa_to_kpa};

@@ -1,7 +1,7 @@
 //! The jobs of a batch, what becomes of them, and their names and recorded inputs.
 
+use crate::runs::meta::{scene_file, Inputs};
 use crate::study::dem_run::DemParams;
-use crate::study::meta::{scene_file, Inputs};
 use crate::study::record;
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;

@@ -1,6 +1,6 @@
 //! The batch's progress: one stage over its runs, each run's own progress folded in.
 
-use crate::study::progress::Progress;
+use crate::runs::progress::Progress;
 use std::sync::Mutex;
 
 /// Reports the batch as one stage: the sum over runs of the fraction done (in per-mille of a

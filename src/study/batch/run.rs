@@ -2,11 +2,11 @@
 
 use super::job::{job_inputs, BatchOptions, Failure, SlideJob, SlideOutcome, SlideResult};
 use super::progress::{BatchProgress, RunProgress};
-use crate::study::meta::Inputs;
-use crate::study::progress::Progress;
-use crate::study::sink::csv_bytes;
+use crate::runs::meta::Inputs;
+use crate::runs::output::Outputs;
+use crate::runs::progress::Progress;
+use crate::runs::sink::csv_bytes;
 use crate::study::slide::slide;
-use crate::study::Outputs;
 use anyhow::{bail, Context, Result};
 use serde::de::DeserializeOwned;
 use std::path::Path;
@@ -53,7 +53,7 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
                 slide(&job.scene, &params, progress)
             }))
             .unwrap_or_else(|p| {
-                if p.is::<crate::study::progress::Cancelled>() {
+                if p.is::<crate::runs::progress::Cancelled>() {
                     std::panic::resume_unwind(p); // the caller's interrupt, not this run's failure
                 }
                 let msg = p

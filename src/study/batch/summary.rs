@@ -3,8 +3,8 @@
 
 use super::job::{job_inputs, run_facts, BatchOptions, RunFacts, SlideJob, SlideOutcome};
 use super::run::{finished_runs, run_batch_with};
-use crate::study::meta::Inputs;
-use crate::study::progress::Progress;
+use crate::runs::meta::Inputs;
+use crate::runs::progress::Progress;
 use crate::study::rows::BatchRow;
 use anyhow::Result;
 use std::path::Path;

@@ -15,8 +15,8 @@ pub use crate::study::batch::{
 use super::rank::{self, Candidate};
 use super::store::Store;
 use super::{answer, tag, tolerance_box, DemEntry, DesignParams, PatternResult};
-use crate::study::meta::{scene_file, Inputs};
-use crate::study::progress::Progress;
+use crate::runs::meta::{scene_file, Inputs};
+use crate::runs::progress::Progress;
 use crate::study::record;
 use crate::study::rows::label;
 use anyhow::Result;

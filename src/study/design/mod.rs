@@ -61,9 +61,9 @@ use stages::{eval_stage, limit_record, screen_stage, seed_solvers};
 
 pub use params::{DesignParams, DesignScene};
 
-use super::progress::Progress;
 use super::rows::label;
 use super::tolerance::LimitParams;
+use crate::runs::progress::Progress;
 use anyhow::Result;
 use confirm::{confirm_estimates, confirm_jobs, confirm_stage, run_batch, SlideOutcome};
 pub use confirm::{dem_params, loads_to_confirm, protocol_check_design, run_name};

@@ -78,11 +78,11 @@ pub struct DesignParams {
     pub no_dem: bool,
     /// DEM runs side by side (one thread each).
     pub jobs: usize,
-    /// Shard of the DEM confirmation runs to compute ([`crate::study::Shard::ALL`]: every
+    /// Shard of the DEM confirmation runs to compute ([`crate::runs::shard::Shard::ALL`]: every
     /// run, then the report). With a part, the design computes its share of the runs into
     /// `--out-dir/dem/` and stops before the report; a call without a shard (all shards' `dem/`
     /// runs in the same `--out-dir`) reuses them and writes the report.
-    pub dem_shard: crate::study::Shard,
+    pub dem_shard: crate::runs::shard::Shard,
     /// The DEM protocol of every confirmation run (α and line are set per run).
     pub dem: DemParams,
     /// The study's protocol (10 + 10 + 300 µs) is used; otherwise the report says it is shorter.

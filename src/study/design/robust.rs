@@ -12,8 +12,8 @@
 use super::rank::{self, Candidate, CornerEstimate};
 use super::store::Store;
 use super::{DesignParams, DesignScene};
-use crate::study::meta::Inputs;
-use crate::study::progress::Progress;
+use crate::runs::meta::Inputs;
+use crate::runs::progress::Progress;
 use crate::study::rows::{label, FrictionRow};
 use crate::study::tolerance::{LimitParams, RobustSearch, RobustState, Snapshot, ToleranceBox};
 use anyhow::Result;
@@ -71,7 +71,7 @@ impl<'a> Searches<'a> {
         let bx = super::tolerance_box(p);
         let inputs = Inputs {
             workflow: "design/robust".into(),
-            scene: Some(crate::study::meta::scene_file(&ds.scene)),
+            scene: Some(crate::runs::meta::scene_file(&ds.scene)),
             params: json!({
                 "theta_offsets_deg": bx.theta_offsets_deg,
                 "direction_offsets_deg": bx.direction_offsets_deg,

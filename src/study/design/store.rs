@@ -1,7 +1,7 @@
 //! The design's output directory as a store of finished stages.
 //!
 //! Every stage result is a file with the study layer's sidecar (`F.meta.json`: the stage's
-//! inputs and their `input_hash`, [`crate::study::meta`]). A stage is *reused* when its file
+//! inputs and their `input_hash`, [`crate::runs::meta`]). A stage is *reused* when its file
 //! and sidecar exist, the sidecar says complete, and its `input_hash` equals the hash of the
 //! inputs the stage would run with now; a stage file whose sidecar names other inputs is never
 //! used nor overwritten silently: the run stops with an error naming the file and the inputs
@@ -13,8 +13,8 @@
 //! bytes change ([`Store::write_if_changed`]), so a second run of a finished design leaves every
 //! file as it was.
 
-use crate::study::meta::{input_differences, sidecar_path, Inputs, Sidecar};
-use crate::study::Outputs;
+use crate::runs::meta::{input_differences, sidecar_path, Inputs, Sidecar};
+use crate::runs::output::Outputs;
 use anyhow::{bail, Context, Result};
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -77,7 +77,7 @@ impl Store {
         }
         std::fs::create_dir_all(&self.dir)
             .with_context(|| format!("creating {}", self.dir.display()))?;
-        let record = crate::study::meta::RunMeta::new(inputs, &[], &path, flag);
+        let record = crate::runs::meta::RunMeta::new(inputs, &[], &path, flag);
         surrogate::atomic_file::write_atomic(&path, record.to_json().as_bytes())
             .with_context(|| format!("writing {}", path.display()))?;
         Ok(false)

@@ -61,7 +61,7 @@ pub fn candidate_scene(
             tidy(surrogate::units::m_to_um(v[1])),
         ]
     };
-    let mut f = crate::study::meta::scene_file(base);
+    let mut f = crate::runs::meta::scene_file(base);
     f.slider.sites = None;
     f.slider.lattice = Some(surrogate::scene::LatticeFile {
         kind: "oblique".into(),
@@ -196,7 +196,7 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
     let mut r = csv::Reader::from_path(index)
         .map_err(|e| anyhow::anyhow!("`--patterns`: cannot read {}: {e}", index.display()))?;
     // the fairness rule the candidates were made with (a hand-written index has no sidecar)
-    let normalize = crate::study::meta::Sidecar::of(index)
+    let normalize = crate::runs::meta::Sidecar::of(index)
         .ok()
         .and_then(|s| s.params.get("normalize")?.as_str().map(str::to_string))
         .unwrap_or_default();
