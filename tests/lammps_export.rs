@@ -116,6 +116,50 @@ fn csv(path: &Path) -> Vec<std::collections::HashMap<String, f64>> {
         .collect()
 }
 
+/// Starts `superlube slide ARGS` (into `rust.csv`, `rust.json` of `dir`) and the exported deck
+/// in LAMMPS side by side; returns the LAMMPS log and the wall time of the LAMMPS run (s), once
+/// both have finished.
+fn run_side_by_side(lmp: &str, dir: &Path, args: &[&str]) -> (String, f64) {
+    let t0 = std::time::Instant::now();
+    let rust = bin()
+        .arg("slide")
+        .args(args)
+        .arg("--out")
+        .arg(dir.join("rust.csv"))
+        .arg("--json")
+        .arg(dir.join("rust.json"))
+        .spawn()
+        .unwrap();
+    let log = run_deck(lmp, dir, &[]);
+    let lammps_s = t0.elapsed().as_secs_f64();
+    assert_ok("superlube slide", &rust.wait_with_output().unwrap());
+    (log, lammps_s)
+}
+
+/// Whether `lammps-check`'s frame `f` (at `t_us`) has a row of the deck's time series `lrows`;
+/// where it has, its contacts are equal and its P_max agrees to 10⁻⁹ (asserted).
+fn frame_matches(
+    f: &std::collections::HashMap<String, f64>,
+    t_us: f64,
+    lrows: &[std::collections::HashMap<String, f64>],
+) -> bool {
+    let Some(r) = lrows.iter().find(|r| (r["t_us"] - t_us).abs() < 1e-6) else {
+        return false;
+    };
+    assert_eq!(
+        f["contacts"], r["contacts"],
+        "contacts at step {}",
+        f["step"]
+    );
+    let (a, b) = (f["p_max_GPa"], r["p_max_GPa"]);
+    assert!(
+        (a - b).abs() <= 1e-9 * b.max(1.0),
+        "P_max at step {}: {a} vs {b}",
+        f["step"]
+    );
+    true
+}
+
 /// The deck's own window mean of the spring force (`RESULT friction_mN=` line of the log, mN).
 fn deck_friction(log: &str) -> f64 {
     log.lines()
@@ -274,18 +318,7 @@ fn lammps_and_the_rust_dem_agree_on_a_small_scene() {
     ]);
     let meta = export(&dir, &[args.as_slice(), &["--dump-us", "0.05"]].concat());
     let t0 = std::time::Instant::now();
-    let rust = bin()
-        .arg("slide")
-        .args(&args)
-        .arg("--out")
-        .arg(dir.join("rust.csv"))
-        .arg("--json")
-        .arg(dir.join("rust.json"))
-        .spawn()
-        .unwrap();
-    let log = run_deck(&lmp, &dir, &[]);
-    let lammps_s = t0.elapsed().as_secs_f64();
-    assert_ok("superlube slide", &rust.wait_with_output().unwrap());
+    let (log, lammps_s) = run_side_by_side(&lmp, &dir, &args);
     eprintln!(
         "LAMMPS run: {lammps_s:.1} s, both runs: {:.1} s",
         t0.elapsed().as_secs_f64()
@@ -378,19 +411,8 @@ fn lammps_and_the_rust_dem_agree_on_a_small_scene() {
     let mut failed_frames = 0;
     for f in &frames {
         let t = f["step"] * dt;
-        if let Some(r) = lrows.iter().find(|r| (r["t_us"] - t).abs() < 1e-6) {
-            assert_eq!(
-                f["contacts"], r["contacts"],
-                "contacts at step {}",
-                f["step"]
-            );
-            let (a, b) = (f["p_max_GPa"], r["p_max_GPa"]);
-            assert!(
-                (a - b).abs() <= 1e-9 * b.max(1.0),
-                "P_max at step {}: {a} vs {b}",
-                f["step"]
-            );
-            assert_eq!(f["failed_contacts"] > 0.0, a > 2.0);
+        if frame_matches(f, t, &lrows) {
+            assert_eq!(f["failed_contacts"] > 0.0, f["p_max_GPa"] > 2.0);
             matched += 1;
         }
         failed_frames += (f["failed_contacts"] > 0.0) as usize;
@@ -453,17 +475,7 @@ fn lammps_and_the_rust_dem_agree_with_two_sphere_sizes() {
     ];
     let meta = export(&dir, &[&args[..], &["--dump-us", "0.05"]].concat());
     assert_eq!(meta["slider_sphere_radius_um"].as_f64(), Some(1.0));
-    let rust = bin()
-        .arg("slide")
-        .args(args)
-        .arg("--out")
-        .arg(dir.join("rust.csv"))
-        .arg("--json")
-        .arg(dir.join("rust.json"))
-        .spawn()
-        .unwrap();
-    let log = run_deck(&lmp, &dir, &[]);
-    assert_ok("superlube slide", &rust.wait_with_output().unwrap());
+    let (log, _) = run_side_by_side(&lmp, &dir, &args);
 
     let rows = csv(&dir.join("rust.csv"));
     let eq = rows
@@ -503,18 +515,7 @@ fn lammps_and_the_rust_dem_agree_with_two_sphere_sizes() {
     let mut matched = 0;
     for f in &csv(&dir.join("check.csv")) {
         let t = f["step"] * dt;
-        if let Some(r) = lrows.iter().find(|r| (r["t_us"] - t).abs() < 1e-6) {
-            assert_eq!(
-                f["contacts"], r["contacts"],
-                "contacts at step {}",
-                f["step"]
-            );
-            let (a, b) = (f["p_max_GPa"], r["p_max_GPa"]);
-            assert!(
-                (a - b).abs() <= 1e-9 * b.max(1.0),
-                "P_max at step {}: {a} vs {b}",
-                f["step"]
-            );
+        if frame_matches(f, t, &lrows) {
             matched += 1;
         }
     }

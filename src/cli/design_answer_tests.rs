@@ -5,7 +5,7 @@
 use super::*;
 use crate::present::design_report::{dem_rows, words::answer_line};
 use crate::study::design::answer::{answer, check, Check};
-use crate::study::design::confirm::confirm_jobs;
+use crate::study::design::confirm::{confirm_jobs, to_entries};
 use crate::study::design::rank::{Candidate, CornerEstimate, Score};
 use crate::study::design::{DemEntry, PatternResult};
 use crate::study::rows::{label, FrictionRow};
@@ -110,43 +110,32 @@ fn pattern(ds: &DesignScene, n: usize) -> PatternResult {
 /// The DEM entries of every confirmation run of `pr`, each with μ_DEM `mu(entry)` (P_max 3 GPa).
 fn runs(pr: &PatternResult, p: &DesignParams, mu: &dyn Fn(&DemEntry) -> f64) -> Vec<DemEntry> {
     let (_, entries) = confirm_jobs(std::slice::from_ref(pr), p);
-    entries
-        .into_iter()
-        .map(
-            |(pattern, rank, theta_deg, alpha_deg, load, study, dt, dd)| {
-                let mut e = DemEntry {
-                    pattern,
-                    rank,
-                    theta_deg,
-                    alpha_deg,
-                    load,
-                    study_protocol: study,
-                    theta_offset_deg: dt,
-                    direction_offset_deg: dd,
-                    outcome: crate::study::batch::SlideOutcome {
-                        name: format!("run{rank}"),
-                        dir: std::path::PathBuf::new(),
-                        result: None,
-                        error: None,
-                        reused: false,
-                    },
-                };
-                e.outcome.result = Some(crate::study::batch::SlideResult {
-                    friction_mN: 0.0,
-                    friction_std_mN: 0.0,
-                    mu: mu(&e),
-                    mean_contacts: 10.0,
-                    max_p_max_GPa: 3.0,
-                    mean_failed_contacts: 0.0,
-                    locked_in: false,
-                    advance_ratio: None,
-                    steps: 1,
-                    wall_s: 0.0,
-                });
-                e
-            },
-        )
-        .collect()
+    let outcomes: Vec<_> = entries
+        .iter()
+        .map(|e| crate::study::batch::SlideOutcome {
+            name: format!("run{}", e.1),
+            dir: std::path::PathBuf::new(),
+            result: None,
+            error: None,
+            reused: false,
+        })
+        .collect();
+    let mut dem = to_entries(&entries, &outcomes);
+    for e in &mut dem {
+        e.outcome.result = Some(crate::study::batch::SlideResult {
+            friction_mN: 0.0,
+            friction_std_mN: 0.0,
+            mu: mu(e),
+            mean_contacts: 10.0,
+            max_p_max_GPa: 3.0,
+            mean_failed_contacts: 0.0,
+            locked_in: false,
+            advance_ratio: None,
+            steps: 1,
+            wall_s: 0.0,
+        });
+    }
+    dem
 }
 
 /// Every design the answer can name (the top K) has its box's corners run at its robust limit

@@ -69,11 +69,10 @@ pub struct LineChoice {
     pub angle: f64,
     /// Whether the user gave it (otherwise the moiré estimate).
     pub given: bool,
-    /// The moiré estimate (always computed, for the log; meaningless when `no_lattice`).
-    pub estimate: ContactLine,
-    /// Not given and a body comes from a site file ([`site_file_body`]): there is no lattice
-    /// for the moiré estimate, so the line is the substrate x axis (0°).
-    pub no_lattice: bool,
+    /// The moiré estimate (computed whether or not a line is given, for the log); `None` when a
+    /// body comes from a site file ([`site_file_body`]): there is no lattice for it, and without
+    /// a given line the line is the substrate x axis (0°).
+    pub estimate: Option<ContactLine>,
 }
 
 /// Which body of `scene` comes from a site file, in words (`the slider comes from the site
@@ -95,12 +94,22 @@ pub fn site_file_body(scene: &Scene) -> Option<String> {
 impl LineChoice {
     /// One log line describing the choice.
     pub fn describe(&self) -> String {
-        if self.no_lattice {
+        let Some(estimate) = &self.estimate else {
             return format!(
-                "contact line: {:.3}° from x (the substrate x axis: a site file has no lattice for the moiré estimate; --line-deg sets the line)",
-                self.angle.to_degrees()
+                "contact line: {:.3}° from x ({}: a site file has no lattice for the moiré estimate{})",
+                self.angle.to_degrees(),
+                if self.given {
+                    "given by --line-deg"
+                } else {
+                    "the substrate x axis"
+                },
+                if self.given {
+                    ""
+                } else {
+                    "; --line-deg sets the line"
+                }
             );
-        }
+        };
         format!(
             "contact line: {:.3}° from x ({}; moiré estimate {:.3}°{}, line spacing {:.2} µm)",
             self.angle.to_degrees(),
@@ -109,29 +118,29 @@ impl LineChoice {
             } else {
                 "moiré estimate"
             },
-            self.estimate.angle.to_degrees(),
-            if self.estimate.degenerate {
+            estimate.angle.to_degrees(),
+            if estimate.degenerate {
                 ", degenerate: commensurate first shells, substrate row used"
             } else {
                 ""
             },
-            surrogate::units::m_to_um(self.estimate.spacing)
+            surrogate::units::m_to_um(estimate.spacing)
         )
     }
 }
 
 /// The contact line of `scene` at its θ: `given` (rad) or the moiré estimate; with a site file
-/// ([`site_file_body`]) and none given, the substrate x axis (`no_lattice`). The commands
+/// ([`site_file_body`]) and none given, the substrate x axis (no `estimate`). The commands
 /// whose α the user gives refuse that case first (`--line-deg`); `design` and `tolerance`
 /// measure α from it and say so.
 pub fn contact_line(scene: &Scene, given: Option<f64>) -> LineChoice {
-    let estimate = contact_line_direction(scene, scene.slider.theta, &MapParams::default());
-    let no_lattice = given.is_none() && site_file_body(scene).is_some();
+    let estimate = site_file_body(scene)
+        .is_none()
+        .then(|| contact_line_direction(scene, scene.slider.theta, &MapParams::default()));
     LineChoice {
-        angle: given.unwrap_or(if no_lattice { 0.0 } else { estimate.angle }),
+        angle: given.or(estimate.map(|e| e.angle)).unwrap_or(0.0),
         given: given.is_some(),
         estimate,
-        no_lattice,
     }
 }
 

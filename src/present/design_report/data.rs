@@ -393,6 +393,8 @@ impl ReportData {
     /// The report's data from the outcome `o` of the design with parameters `p`.
     /// Cost: a pass over the ranking, the DEM runs and the evaluated θ.
     pub fn new(o: &DesignOutcome, p: &DesignParams) -> Self {
+        // the patterns side by side, once (a slider site list per pattern)
+        let pats = (o.patterns.len() > 1).then(|| super::patterns::pattern_rows(o));
         let w_top = label(n_to_mn(*p.loads.last().unwrap_or(&0.0)));
         let dem = dem_rows(o, p);
         let has_dem = o.dem_ran && !dem.is_empty();
@@ -450,10 +452,8 @@ impl ReportData {
                 symmetry: {
                     let mut t = match crate::study::design::theta_note(&pr.sym, &pr.thetas_deg, p) {
                         None => pr.sym.describe(),
-                        Some(n) if n.starts_with("the θ list") => {
-                            format!("{}; **{n}**", pr.sym.describe())
-                        }
-                        Some(n) => format!("{}; {n}", pr.sym.describe()),
+                        Some(n) if n.uncovered => format!("{}; **{}**", pr.sym.describe(), n.text),
+                        Some(n) => format!("{}; {}", pr.sym.describe(), n.text),
                     };
                     if let Some(n) = crate::study::design::line_note(&pr.scene, p) {
                         t = format!("{t}. The {}", n.trim_start_matches("the "));
@@ -563,19 +563,12 @@ impl ReportData {
             } else {
                 Vec::new()
             },
-            fairness: if o.patterns.len() > 1 {
-                super::patterns::fairness(o, &super::patterns::pattern_rows(o))
-            } else {
-                String::new()
-            },
-            compared: if o.patterns.len() > 1 {
-                super::patterns::pattern_rows(o)
-                    .iter()
-                    .map(Into::into)
-                    .collect()
-            } else {
-                Vec::new()
-            },
+            fairness: pats
+                .as_ref()
+                .map_or(String::new(), |rows| super::patterns::fairness(o, rows)),
+            compared: pats
+                .as_ref()
+                .map_or(Vec::new(), |rows| rows.iter().map(Into::into).collect()),
             dem_ran: o.dem_ran,
             dem: has_dem.then(|| dem_section(o, p, &dem)),
             ranking,

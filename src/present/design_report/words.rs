@@ -81,9 +81,9 @@ pub fn answer_line(
         let fr = row_at(b, b.score.superlubric_to_mn);
         // a borderline answer is never a plain yes: the qualifier is in the headline itself
         let claim = if b.score.verdict == Verdict::Superlubric {
-            "stays superlubric".to_string()
+            "stays superlubric"
         } else {
-            "is only **borderline** superlubric".to_string()
+            "is only **borderline** superlubric"
         };
         let _ = write!(
             m,

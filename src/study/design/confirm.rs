@@ -336,8 +336,9 @@ pub fn protocol_check_design<'a>(
     Some((pr, i, w))
 }
 
-/// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study).
-pub(super) fn to_entries(entries: &[ConfirmEntry], outcomes: &[SlideOutcome]) -> Vec<DemEntry> {
+/// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study,
+/// θ offset, direction offset), in order.
+pub fn to_entries(entries: &[ConfirmEntry], outcomes: &[SlideOutcome]) -> Vec<DemEntry> {
     entries
         .iter()
         .cloned()

@@ -51,15 +51,24 @@ pub fn default_domain(sym: &PairSymmetry, p: &DesignParams) -> Option<(Vec<f64>,
     Some((v, step))
 }
 
-/// What the log and the report say of a pattern's θ list beside its symmetry: that `--theta`
-/// was not given and the whole domain is screened at the default step (when
-/// [`default_domain`] applies), or which part of the domain the θ list leaves out
-/// ([`PairSymmetry::unscreened`]); `None` when the list spans the domain as asked.
-pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> Option<String> {
+/// What the log and the report say of a pattern's θ list beside its symmetry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThetaNote {
+    /// The sentence.
+    pub text: String,
+    /// Whether the θ list leaves part of the domain out (the report puts that in bold).
+    pub uncovered: bool,
+}
+
+/// The [`ThetaNote`] of a pattern's θ list: which part of the domain the θ list leaves out
+/// ([`PairSymmetry::unscreened`]), or that `--theta` was not given and the whole domain is
+/// screened at the default step (when [`default_domain`] applies); `None` when the list spans
+/// the domain as asked.
+pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> Option<ThetaNote> {
     let gaps = sym.unscreened(thetas_deg);
     if !gaps.is_empty() {
         let (lo, hi, closed) = sym.domain();
-        return Some(format!(
+        let text = format!(
             "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give --theta over the whole domain{})",
             super::symmetry::fmt(lo),
             super::symmetry::fmt(hi),
@@ -70,10 +79,14 @@ pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> O
             } else {
                 ", or leave --theta out to screen it at the default step"
             }
-        ));
+        );
+        return Some(ThetaNote {
+            text,
+            uncovered: true,
+        });
     }
     let (_, step) = default_domain(sym, p)?;
-    Some(format!(
+    let text = format!(
         "no --theta given: the whole domain at {step}° ({} θ{})",
         thetas_deg.len(),
         if step == WIDE_THETA_STEP_DEG {
@@ -83,7 +96,11 @@ pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> O
         } else {
             String::new()
         }
-    ))
+    );
+    Some(ThetaNote {
+        text,
+        uncovered: false,
+    })
 }
 
 /// Without `--line-deg`, for a pattern with a site file: that α is measured from the substrate

@@ -50,7 +50,7 @@ pub mod symmetry;
 pub mod trim;
 
 pub use domain::{
-    cut, default_domain, line_note, theta_note, THETA_STEP_DEG, WIDE_DOMAIN_DEG,
+    cut, default_domain, line_note, theta_note, ThetaNote, THETA_STEP_DEG, WIDE_DOMAIN_DEG,
     WIDE_THETA_STEP_DEG,
 };
 pub use outcome::{
@@ -199,14 +199,15 @@ fn pattern(
             }
         )),
         Some(note) => progress.note(&format!(
-            "{name}: {}; {} θ screened{}; {note}",
+            "{name}: {}; {} θ screened{}; {}",
             sym.describe(),
             thetas_deg.len(),
             if p.symmetry_cut {
                 ""
             } else {
                 " (no symmetry cut)"
-            }
+            },
+            note.text
         )),
     }
     if let Some(n) = line_note(ds, p) {
