@@ -738,3 +738,110 @@ fn design_screens_the_whole_domain_without_theta_and_names_a_partial_one() {
     assert!(report.contains(&format!("**{gap}")), "{report}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// With more than three patterns and a tolerance, `design` takes the patterns best nominal
+/// design first and does not search the tolerance boxes of candidates that cannot enter the
+/// best three: the best three limits are those of each pattern designed alone, and a pattern
+/// left out is marked as an upper bound (`robust_exact = false`) that its own robust limit
+/// does not exceed.
+#[test]
+fn design_over_many_patterns_searches_only_those_that_can_win() {
+    let dir = tmpdir("patterns-floor");
+    let small = ["--slider-radius-um", "15", "--substrate-um", "60x60"];
+    let o = bin()
+        .args(["patterns", "--family", "rectangular:a=3:4:0.5,b=3:3.5:0.5"])
+        .args(small)
+        .arg("--out-dir")
+        .arg(dir.join("c"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let design = [
+        "design",
+        "--no-dem",
+        "--theta",
+        "0:30:3",
+        "--load-mn",
+        "0.02,0.05,0.1,0.2",
+    ];
+    let o = bin()
+        .args(design)
+        .arg("--patterns")
+        .arg(dir.join("c/index.csv"))
+        .args(small)
+        .arg("--out-dir")
+        .arg(dir.join("m"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let log = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        log.contains("each at its nominal orientation first"),
+        "{log}"
+    );
+    // each pattern alone: its exact robust limit (rank 1 of its ranking.csv)
+    let first = |path: &std::path::Path, col: &str| -> String {
+        let mut r = csv::Reader::from_path(path).unwrap();
+        let h = r.headers().unwrap().clone();
+        let i = h.iter().position(|c| c == col).unwrap();
+        let row = r.records().next().unwrap().unwrap();
+        row[i].to_string()
+    };
+    let mut r = csv::Reader::from_path(dir.join("m/patterns.csv")).unwrap();
+    let h = r.headers().unwrap().clone();
+    let col = |name: &str| h.iter().position(|c| c == name).unwrap();
+    let rows: Vec<(String, f64, bool)> = r
+        .records()
+        .map(|x| {
+            let x = x.unwrap();
+            (
+                x[col("pattern")].to_string(),
+                x[col("superlubric_to_mN")].parse().unwrap(),
+                x[col("robust_exact")].parse().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(rows.len(), 6);
+    let mut alone = Vec::new();
+    for (name, _, _) in &rows {
+        let out = dir.join(format!("s_{name}"));
+        let o = bin()
+            .args(design)
+            .arg("--scene")
+            .arg(dir.join(format!("c/{name}.toml")))
+            .args(small)
+            .arg("--out-dir")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_ok(&o);
+        assert_eq!(first(&out.join("ranking.csv"), "robust_exact"), "true");
+        alone.push(
+            first(&out.join("ranking.csv"), "superlubric_to_mN")
+                .parse::<f64>()
+                .unwrap(),
+        );
+    }
+    // the best three: exact, and the three best limits of the patterns designed alone
+    let mut best: Vec<f64> = alone.clone();
+    best.sort_by(|a, b| b.total_cmp(a));
+    for (k, (name, w, exact)) in rows.iter().take(3).enumerate() {
+        assert!(exact, "rank {} ({name}) is not exact: {rows:?}", k + 1);
+        assert_eq!(*w, best[k], "rank {}: {rows:?} vs alone {alone:?}", k + 1);
+    }
+    let third = rows[2].1;
+    let mut left_out = 0;
+    for ((name, w, exact), a) in rows.iter().zip(&alone) {
+        if *exact {
+            assert_eq!(w, a, "{name}: {rows:?} vs alone {alone:?}");
+        } else {
+            // an upper bound at most the third best, and above its own robust limit
+            assert!(*w <= third && a <= w, "{name}: {rows:?} vs alone {alone:?}");
+            left_out += 1;
+        }
+    }
+    assert!(left_out > 0, "no pattern was left out: {rows:?}");
+    let report = std::fs::read_to_string(dir.join("m/report.md")).unwrap();
+    assert!(report.contains("was not searched"), "{report}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -478,7 +478,7 @@ impl ReportData {
                         load_mn: format!("{}", label(n_to_mn(l.load))),
                         size: l.size,
                         kept: l.picks.len(),
-                        evaluated: k < pr.levels_evaluated,
+                        evaluated: k < pr.levels_evaluated && !pr.levels_skipped.contains(&k),
                     })
                     .collect(),
                 stop: pr.stop.clone(),

@@ -40,6 +40,10 @@ pub struct PatternRow {
     pub superlubric_to_mN: f64,
     /// Its limit at the nominal (θ, α) (mN).
     pub superlubric_to_nominal_mN: f64,
+    /// Whether `superlubric_to_mN` is exact (false: an upper bound; with many patterns, one
+    /// that cannot reach the best patterns' robust limits is not searched over its tolerance
+    /// box, `crate::study::design::design`).
+    pub robust_exact: bool,
     /// Mean nominal pressure at the robust limit: load / slider area (kPa).
     pub mean_pressure_kPa: f64,
     /// Load per slider sphere at the robust limit (µN).
@@ -90,6 +94,7 @@ pub fn pattern_rows(o: &DesignOutcome) -> Vec<PatternRow> {
                 alpha_deg: best.map(|c| c.alpha_deg),
                 superlubric_to_mN: w,
                 superlubric_to_nominal_mN: best.map_or(0.0, |c| c.score.nominal_to_mn),
+                robust_exact: best.is_none_or(|c| c.score.exact),
                 mean_pressure_kPa: label(pa_to_kpa(mn_to_n(w) / area)),
                 load_per_sphere_uN: label(n_to_un(mn_to_n(w) / spheres.max(1) as f64)),
                 contact_type: facts.contact_type,
@@ -127,7 +132,11 @@ impl From<&PatternRow> for PatternLine {
             slider_area_um2: format!("{:.0}", r.slider_area_um2),
             theta_deg: r.theta_deg.map_or("–".into(), |v| format!("{v}")),
             alpha_deg: r.alpha_deg.map_or("–".into(), |v| format!("{v}")),
-            superlubric_to_mn: fmt_g(r.superlubric_to_mN, 3),
+            superlubric_to_mn: format!(
+                "{}{}",
+                if r.robust_exact { "" } else { "≤ " },
+                fmt_g(r.superlubric_to_mN, 3)
+            ),
             nominal_mn: fmt_g(r.superlubric_to_nominal_mN, 3),
             mean_pressure_kpa: fmt_g(r.mean_pressure_kPa, 3),
             load_per_sphere_un: fmt_g(r.load_per_sphere_uN, 3),
@@ -298,6 +307,52 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
         v
     };
     let robust = |r: &PatternRow| r.superlubric_to_mN;
+    // with many patterns only the best are searched over their tolerance boxes (`robust_exact`):
+    // the others' `superlubric_to_mN` is an upper bound, so the curves show the nominal limit
+    // and the searched robust limits as markers
+    if rows.iter().any(|r| !r.robust_exact) {
+        let nominal = |r: &PatternRow| r.superlubric_to_nominal_mN;
+        let searched = Curve {
+            name: "robust limit (searched: the best patterns)".into(),
+            points: points(&|i| rows[i].robust_exact, robust),
+            colour: Colour::Palette(0),
+            style: Style::Markers,
+        };
+        let mut curves = match varying.get(1) {
+            Some(s) if s.distinct().len() <= MAX_SERIES => {
+                let d = s.distinct();
+                let n = d.len();
+                d.iter()
+                    .enumerate()
+                    .map(|(k, &v)| Curve {
+                        name: format!("nominal limit, {} = {}{}", s.short, fmt_g(v, 4), s.unit),
+                        points: points(&|i| round6(s.values[i]) == v, nominal),
+                        colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
+                        style: Style::Line,
+                    })
+                    .collect()
+            }
+            _ => vec![Curve {
+                name: "nominal limit (θ, α exact)".into(),
+                points: points(&|_| true, nominal),
+                colour: Colour::Palette(1),
+                style: if varying.len() == 1 {
+                    Style::Line
+                } else {
+                    Style::Markers
+                },
+            }],
+        };
+        curves.push(searched);
+        return Chart {
+            title: "superlubric limit of each pattern's best design".into(),
+            x_label: x.label.into(),
+            y_label: "superlubric to (mN)".into(),
+            curves,
+            hlines: vec![],
+            log_y: false,
+        };
+    }
     let curves = match varying.get(1) {
         None => vec![
             Curve {
@@ -352,7 +407,7 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
 }
 
 /// How many of the best patterns get a contact map (`contacts_<p>.png`).
-pub const CONTACT_MAPS: usize = 3;
+pub const CONTACT_MAPS: usize = crate::study::design::best::BEST_PATTERNS;
 
 /// Writes `patterns.png` ([`limit_chart`]) and the contact maps of the best
 /// [`CONTACT_MAPS`] patterns ([`best_order`]) at their design's limit load, each redrawn when
@@ -399,6 +454,7 @@ mod tests {
             alpha_deg: None,
             superlubric_to_mN: w,
             superlubric_to_nominal_mN: 2.0 * w,
+            robust_exact: true,
             mean_pressure_kPa: 0.0,
             load_per_sphere_uN: 0.0,
             contact_type: String::new(),

@@ -4,6 +4,7 @@
 
 use super::rows::{row_at, DemRow};
 use crate::study::design::answer::{Answer, Check};
+use crate::study::design::best::BEST_PATTERNS;
 use crate::study::design::rank::Candidate;
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams, PatternResult};
 use crate::study::rows::label;
@@ -78,12 +79,21 @@ pub fn answer_line(
             b.score.intact_to_mn
         );
     } else {
-        let fr = row_at(b, b.score.superlubric_to_mn);
-        // a borderline answer is never a plain yes: the qualifier is in the headline itself
-        let claim = if b.score.verdict == Verdict::Superlubric {
-            "stays superlubric"
+        // the claim's load: the robust limit, or the nominal one where the tolerance box was
+        // not searched to the end (the floor of many patterns: [`tolerance_words`])
+        let w = if b.score.exact {
+            b.score.superlubric_to_mn
         } else {
-            "is only **borderline** superlubric"
+            b.score.nominal_to_mn
+        };
+        let fr = row_at(b, w);
+        // a borderline answer is never a plain yes: the qualifier is in the headline itself
+        let claim = match (b.score.verdict == Verdict::Superlubric, b.score.exact) {
+            (true, true) => "stays superlubric",
+            (false, true) => "is only **borderline** superlubric",
+            // not searched over its tolerance box (the floor: [`tolerance_words`])
+            (true, false) => "stays superlubric at its nominal orientation",
+            (false, false) => "is only **borderline** superlubric at its nominal orientation",
         };
         let _ = write!(
             m,
@@ -92,8 +102,8 @@ pub fn answer_line(
             b.alpha_deg,
             fmt_g(b.direction_deg, 4),
             fmt_g(b.line_deg, 4),
-            b.score.superlubric_to_mn,
-            if b.score.superlubric_to_mn == w_top {
+            w,
+            if w == w_top {
                 " (the highest load asked)"
             } else {
                 ""
@@ -108,7 +118,7 @@ pub fn answer_line(
             },
             fmt_g(b.score.mu_worst, 3),
             opt(fr.and_then(|f| f.p_max_GPa), 3),
-            b.score.superlubric_to_mn,
+            w,
             fmt_g(b.score.contacts, 3),
             a.index.unwrap_or(0) + 1
         );
@@ -226,6 +236,29 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
     };
     let mut m = String::new();
     let sc = &b.score;
+    if !sc.exact && pr.robust_floor_mn > 0.0 && sc.superlubric_to_mn <= pr.robust_floor_mn {
+        let _ = write!(
+            m,
+            " Its limit over the fabrication tolerance θ ±{}° × pull direction ±{}° {}, and the best {} patterns' robust limits were all at least {} mN when it was taken (the patterns are taken best nominal design first), so it cannot enter the best {}.",
+            p.theta_tol_deg,
+            p.direction_tol_deg,
+            if sc.superlubric_to_mn < sc.nominal_to_mn {
+                format!(
+                    "was searched only until it fell to them: it is at most {} mN",
+                    sc.superlubric_to_mn
+                )
+            } else {
+                format!(
+                    "was not searched: it is at most its nominal limit, {} mN",
+                    sc.nominal_to_mn
+                )
+            },
+            BEST_PATTERNS,
+            pr.robust_floor_mn,
+            BEST_PATTERNS
+        );
+        return m;
+    }
     if p.theta_tol_deg > 0.0 || p.direction_tol_deg > 0.0 {
         let _ = write!(
             m,

@@ -7,6 +7,11 @@ use surrogate::solver::{Equilibrium, Model, SearchKind};
 use surrogate::units::{deg_to_rad, mn_to_n};
 use surrogate::Scene;
 
+/// How many of the best patterns a multi-pattern design shows in full (contact maps and
+/// tolerance maps) and searches over the tolerance box for certain (the robust floor of
+/// [`super::design`]).
+pub const BEST_PATTERNS: usize = 3;
+
 /// One of the best patterns: its rank-1 design's scene and equilibrium.
 #[derive(Debug, Clone)]
 pub struct BestPattern {

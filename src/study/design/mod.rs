@@ -102,10 +102,25 @@ pub fn design(
     }
     // 1–5 per pattern: cut, screen, shortlist, α scan + friction, ranking
     // (with the DEM: the estimates it is compared with, per pattern), then the pattern's own
-    // outputs through the hook, then only what the rest needs is kept
-    let mut patterns: Vec<PatternResult> = Vec::new();
-    for ds in scenes {
-        let mut pr = pattern(ds, p, store, progress)?;
+    // outputs through the hook, then only what the rest needs is kept; with many patterns and
+    // a tolerance, in the order of their nominal limits, each robust search above a floor
+    // ([`robust_order`])
+    let (order, cross) = robust_order(scenes, p, store, progress)?;
+    let mut done: Vec<Option<PatternResult>> = vec![None; scenes.len()];
+    let mut best_robust: Vec<f64> = Vec::new();
+    for i in order {
+        let ds = &scenes[i];
+        let floor = if cross && best_robust.len() >= best::BEST_PATTERNS {
+            best_robust[best::BEST_PATTERNS - 1]
+        } else {
+            0.0
+        };
+        let mut pr = pattern(ds, p, store, progress, Some(floor))?;
+        pr.robust_floor_mn = floor;
+        if let Some(c) = pr.ranking.first().filter(|c| c.score.exact) {
+            best_robust.push(c.score.superlubric_to_mn);
+            best_robust.sort_by(|a, b| b.total_cmp(a));
+        }
         if !p.no_dem {
             confirm_estimates(std::slice::from_mut(&mut pr), p, store)?;
         }
@@ -114,8 +129,9 @@ pub fn design(
             on_pattern(&pr)?;
         }
         pr.trim(p);
-        patterns.push(pr);
+        done[i] = Some(pr);
     }
+    let patterns: Vec<PatternResult> = done.into_iter().flatten().collect();
     // 6. DEM confirmation
     if !p.no_dem && !p.dem_shard.is_all() {
         // a shard of the DEM stage: its share of the runs, no report
@@ -157,31 +173,84 @@ pub fn design(
         .map(|pr| answer::answer(pr, &dem, !p.no_dem, p))
         .collect();
     let answers: Vec<answer::Answer> = answers;
-    let mut maps = Vec::new();
-    for (pr, a) in patterns.iter().zip(&answers) {
+    let mut o = DesignOutcome {
+        patterns,
+        dem,
+        dem_ran: !p.no_dem,
+        answers,
+        maps: Vec::new(),
+    };
+    // the tolerance maps: every pattern's answer, or with the floor, the best patterns' only
+    let mapped = best::best_order(&o, best::BEST_PATTERNS);
+    for (i, (pr, a)) in o.patterns.iter().zip(&o.answers).enumerate() {
         let c = a.index.and_then(|i| pr.ranking.get(i));
-        maps.push(match c {
-            Some(c) if !tolerance_box(p).is_point() && c.score.nominal_to_mn > 0.0 => {
+        o.maps.push(match c {
+            Some(c)
+                if !tolerance_box(p).is_point()
+                    && c.score.nominal_to_mn > 0.0
+                    && (!cross || mapped.contains(&i)) =>
+            {
                 Some(answer_map(&pr.scene, c, p, store, progress)?)
             }
             _ => None,
         });
     }
-    Ok(DesignOutcome {
-        patterns,
-        dem,
-        dem_ran: !p.no_dem,
-        answers,
-        maps,
-    })
+    Ok(o)
 }
 
-/// Stages 1–5 for one pattern.
+/// The order in which [`design`] takes the patterns, and whether a robust floor applies.
+///
+/// With more than [`best::BEST_PATTERNS`] patterns and a tolerance, every pattern is first
+/// evaluated at its nominal orientation only (stages 1–5 without the robust search; stored,
+/// so the second pass reuses them): the patterns are then taken best nominal design first
+/// ([`rank::compare`]), and a pattern's candidates whose nominal limit is at most the
+/// [`best::BEST_PATTERNS`]-th best robust limit found so far are not searched over the
+/// tolerance box (the robust limit never exceeds the nominal one, so they cannot enter the
+/// top). Otherwise the order given, no floor. Cost: the nominal pass, about the design at
+/// tolerance 0 (docs/validation/tolerance-cost.md).
+fn robust_order(
+    scenes: &[DesignScene],
+    p: &DesignParams,
+    store: &Store,
+    progress: &dyn Progress,
+) -> Result<(Vec<usize>, bool)> {
+    let given: Vec<usize> = (0..scenes.len()).collect();
+    if tolerance_box(p).is_point() || scenes.len() <= best::BEST_PATTERNS {
+        return Ok((given, false));
+    }
+    progress.note(&format!(
+        "design: {} patterns: each at its nominal orientation first, to search the tolerance boxes best first across patterns",
+        scenes.len()
+    ));
+    let mut firsts: Vec<(usize, Option<Candidate>)> = Vec::new();
+    for (i, ds) in scenes.iter().enumerate() {
+        let pr = pattern(ds, p, store, progress, None)?;
+        firsts.push((
+            i,
+            pr.ranking.into_iter().next().map(|mut c| {
+                c.friction.truncate(1);
+                c
+            }),
+        ));
+    }
+    // best first; a stable sort keeps the order given among equals
+    firsts.sort_by(|(_, a), (_, b)| match (a, b) {
+        (Some(x), Some(y)) => rank::compare(x, y),
+        (Some(_), None) => std::cmp::Ordering::Less,
+        (None, Some(_)) => std::cmp::Ordering::Greater,
+        (None, None) => std::cmp::Ordering::Equal,
+    });
+    Ok((firsts.into_iter().map(|(i, _)| i).collect(), true))
+}
+
+/// Stages 1–5 for one pattern; `floor`: the robust search's floor (mN, [`robust_order`];
+/// `None`: no robust search, the nominal limits only).
 fn pattern(
     ds: &DesignScene,
     p: &DesignParams,
     store: &Store,
     progress: &dyn Progress,
+    floor: Option<f64>,
 ) -> Result<PatternResult> {
     let name = &ds.name;
     let (thetas_deg, sym) = cut(ds, p)?;
@@ -242,19 +311,22 @@ fn pattern(
     let mut stop = "every level evaluated".to_string();
     let mut solver: Option<Solver> = None;
     let bx = tolerance_box(p);
+    let robust = !bx.is_point() && floor.is_some();
+    let floor_mn = floor.unwrap_or(0.0);
     let limit = LimitParams {
         loads: p.loads.clone(),
         mu_superlubric: p.mu_superlubric,
         line: p.line,
         friction: p.friction,
     };
-    let solvers: Vec<Solver> = if bx.is_point() {
+    let solvers: Vec<Solver> = if !robust {
         Vec::new()
     } else {
         seed_solvers(ds, p, None)?
     };
     let mut searches = robust::Searches::new(ds, p, &solvers, &limit, store)?;
-    for level in &levels {
+    let mut levels_skipped: Vec<usize> = Vec::new();
+    for (li, level) in levels.iter().enumerate() {
         let from = ranking.len();
         let w_mn = label(n_to_mn(level.load));
         if w_mn < best && ranking.len() >= need {
@@ -265,6 +337,25 @@ fn pattern(
                 best
             );
             break;
+        }
+        // with a floor (many patterns): a level whose orientations cannot exceed it over the
+        // tolerance box is evaluated only where the nominal pass evaluated it (stored), for
+        // the pattern's own ranking, and skipped otherwise
+        if robust && floor_mn > 0.0 {
+            let reach = if w_mn <= floor_mn {
+                w_mn
+            } else {
+                robust::level_reach(solver_of(&mut solver, ds)?, level, &bx, p)
+            };
+            let nominal_best = ranking
+                .iter()
+                .map(|c| c.score.nominal_to_mn)
+                .fold(best, f64::max);
+            if reach <= floor_mn && w_mn < nominal_best && ranking.len() >= need {
+                levels_skipped.push(li);
+                levels_evaluated += 1;
+                continue;
+            }
         }
         levels_evaluated += 1;
         let reason = if level.top {
@@ -315,8 +406,16 @@ fn pattern(
         progress.finish();
         // the robust limits of this level's candidates (the stop rule above then compares
         // each level's bound with the best robust limit: a robust design may sit lower)
-        if !bx.is_point() && ranking[from..].iter().any(|c| c.score.nominal_to_mn > 0.0) {
-            robust::robust_stage(ds, &mut ranking, &mut searches, p, store, progress)?;
+        if robust && ranking[from..].iter().any(|c| c.score.nominal_to_mn > 0.0) {
+            robust::robust_stage(
+                ds,
+                &mut ranking,
+                &mut searches,
+                p,
+                store,
+                progress,
+                floor_mn,
+            )?;
         }
         best = ranking
             .iter()
@@ -324,8 +423,31 @@ fn pattern(
             .map(|c| c.score.superlubric_to_mn)
             .fold(best, f64::max);
     }
+    if !levels_skipped.is_empty() {
+        if stop == "every level evaluated" {
+            stop = "every level taken".into();
+        }
+        stop = format!(
+            "{stop}; {} levels skipped: their orientations cannot be superlubric beyond {floor_mn} mN over the tolerance box, the floor of the best {} patterns",
+            levels_skipped.len(),
+            best::BEST_PATTERNS
+        );
+    }
     // 5. ranking (by the robust limit with a tolerance: computed level by level above)
     ranking.sort_by(rank::compare);
+    let floored = ranking
+        .iter()
+        .filter(|c| {
+            c.score.nominal_to_mn > 0.0 && !c.score.exact && c.score.superlubric_to_mn <= floor_mn
+        })
+        .count();
+    if robust && floored > 0 {
+        progress.note(&format!(
+            "{name}: {floored} designs searched over the tolerance box only until their bound fell to {floor_mn} mN, the lowest of the best {} patterns' robust limits so far: they cannot enter the best {}",
+            best::BEST_PATTERNS,
+            best::BEST_PATTERNS
+        ));
+    }
     if let Some(b) = ranking.first() {
         progress.note(&format!(
             "{name}: the estimate's best design: θ = {}°, α = {}°, superlubric up to {} mN (μ_est ≤ {:.4}); {} orientations evaluated ({stop})",
@@ -345,10 +467,12 @@ fn pattern(
         orientations,
         levels,
         levels_evaluated,
+        levels_skipped,
         stop,
         evaluated,
         ranking,
         resonance_flagged: 0,
+        robust_floor_mn: 0.0,
         trimmed: false,
     })
 }

@@ -63,8 +63,11 @@ pub struct PatternResult {
     pub orientations: Vec<Orientation>,
     /// The levels of the shortlist, highest first.
     pub levels: Vec<Level>,
-    /// How many levels were evaluated (from the top).
+    /// How many levels were taken (from the top): evaluated, or skipped (`levels_skipped`).
     pub levels_evaluated: usize,
+    /// Levels (indices into `levels`) skipped with a robust floor: their orientations could not
+    /// exceed it over the tolerance box (`super::design`, many patterns).
+    pub levels_skipped: Vec<usize>,
     /// Why the evaluation stopped.
     pub stop: String,
     /// The evaluated orientations, in evaluation order.
@@ -75,6 +78,10 @@ pub struct PatternResult {
     /// Candidates with a load whose failed contacts sit on a mount in resonance (counted over
     /// every friction row before the rows are trimmed; [`super::trim::resonance_flagged`]).
     pub resonance_flagged: usize,
+    /// The robust search's floor for this pattern (mN; 0: none): its candidates whose nominal
+    /// limit is at most this were not searched over the tolerance box, since they cannot
+    /// exceed the best patterns' robust limits (`super::design`, many patterns).
+    pub robust_floor_mn: f64,
     /// Whether [`PatternResult::trim`] dropped the bulky rows (screen, orientations, α scans,
     /// friction rows below the top few).
     pub trimmed: bool,
@@ -149,10 +156,12 @@ impl PatternResult {
             orientations: vec![],
             levels: vec![],
             levels_evaluated: 0,
+            levels_skipped: vec![],
             stop: String::new(),
             evaluated: vec![],
             ranking,
             resonance_flagged: 0,
+            robust_floor_mn: 0.0,
             trimmed: false,
         }
     }

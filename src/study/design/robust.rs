@@ -17,6 +17,7 @@ use crate::runs::progress::Progress;
 use crate::study::rows::{label, FrictionRow};
 use crate::study::tolerance::{LimitParams, RobustSearch, RobustState, Snapshot, ToleranceBox};
 use anyhow::Result;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::json;
 use std::time::Instant;
@@ -220,6 +221,46 @@ fn corner_estimates(bx: &ToleranceBox, s: &RobustSearch) -> Vec<CornerEstimate> 
         .collect()
 }
 
+/// The highest load (mN; 0: none) up to which a candidate of `level` could stay superlubric over
+/// the tolerance box `bx`: the level's load, or lower where the coating fails at the placement of
+/// every pick at some θ offset of the box (the robust limit of a sample never exceeds its
+/// placement's intact load: [`crate::study::tolerance::placement_intact`]). An upper bound,
+/// for skipping a level below the floor of many patterns ([`super::design`]). Cost: one
+/// placement solve per pick, θ offset and load up to the level's.
+pub(super) fn level_reach(
+    solver: &Solver,
+    level: &super::shortlist::Level,
+    bx: &ToleranceBox,
+    p: &DesignParams,
+) -> f64 {
+    let w = label(n_to_mn(level.load));
+    let n = count(p, w);
+    let loads = &p.loads[..n];
+    let reach = level
+        .picks
+        .par_iter()
+        .map(|o| {
+            bx.theta_offsets_deg
+                .iter()
+                .map(|&dt| {
+                    crate::study::tolerance::placement_intact(
+                        solver,
+                        surrogate::units::deg_to_rad(label(o.theta_deg + dt)),
+                        loads,
+                    )
+                })
+                .min()
+                .unwrap_or(n)
+        })
+        .max()
+        .unwrap_or(0);
+    if reach == 0 {
+        0.0
+    } else {
+        label(n_to_mn(p.loads[reach - 1]))
+    }
+}
+
 /// The loads (count) up to `mn`.
 fn count(p: &DesignParams, mn: f64) -> usize {
     p.loads.iter().filter(|&&w| label(n_to_mn(w)) <= mn).count()
@@ -227,7 +268,9 @@ fn count(p: &DesignParams, mn: f64) -> usize {
 
 /// Stage 4b on every candidate so far (`ranking`, all levels): refines best first (module
 /// docs), writes the robust limits, windows and verdicts into the scores, and stores the
-/// searches.
+/// searches. A candidate whose nominal limit is at most `floor_mn` (mN; 0: none) is not
+/// searched: it keeps its nominal limit as an upper bound (`exact: false`, windows unknown),
+/// since it cannot exceed the robust limits of the patterns that set the floor ([`super::design`]).
 pub fn robust_stage(
     ds: &DesignScene,
     ranking: &mut [Candidate],
@@ -235,13 +278,27 @@ pub fn robust_stage(
     p: &DesignParams,
     store: &Store,
     progress: &dyn Progress,
+    floor_mn: f64,
 ) -> Result<()> {
     let keep = p.confirm.max(3);
     ranking.sort_by(rank::compare);
     searches.begin_level(ranking);
     let todo: Vec<usize> = (0..ranking.len())
-        .filter(|&i| ranking[i].score.nominal_to_mn > 0.0)
+        .filter(|&i| ranking[i].score.nominal_to_mn > floor_mn.max(0.0))
         .collect();
+    // at or below the floor: upper bounds, never searched
+    for c in ranking.iter_mut() {
+        if c.score.nominal_to_mn > 0.0 && c.score.nominal_to_mn <= floor_mn {
+            c.score.exact = false;
+            c.score.theta_window_deg = None;
+            c.score.direction_window_deg = None;
+            c.corners = Vec::new();
+        }
+    }
+    if todo.is_empty() {
+        // nothing to search (the pattern's own note names the floor)
+        return searches.save(store, ranking);
+    }
     progress.stage(
         &format!(
             "{}: robust limits over θ ±{}° × direction ±{}°{}",
@@ -275,6 +332,8 @@ pub fn robust_stage(
             None => (count(p, c.score.nominal_to_mn), false, None, None),
         }
     };
+    // a bound at or below the floor is as far as a search needs to go (`count` of the loads)
+    let floor_n = count(p, floor_mn);
     let mut done = 0u64;
     loop {
         // every candidate's best possible score: its bound, its window or the whole tolerance
@@ -283,7 +342,8 @@ pub fn robust_stage(
             .iter()
             .map(|&i| {
                 let (b, exact, wt, wd) = known(searches, &ranking[i]);
-                let settled = exact && (b == 0 || wt.is_some());
+                let settled =
+                    (exact && (b == 0 || wt.is_some())) || (floor_mn > 0.0 && b <= floor_n);
                 let wt = wt.unwrap_or(p.theta_tol_deg);
                 let wd = wd.unwrap_or(p.direction_tol_deg);
                 (i, b, settled, wt, wd)
@@ -329,7 +389,8 @@ pub fn robust_stage(
     for &i in &todo {
         let c = &ranking[i];
         let (b, settled, _, _) = known(searches, c);
-        if (settled && b > 0) || c.score.nominal_to_mn == top {
+        if (settled && b > 0) || (c.score.nominal_to_mn == top && (floor_mn == 0.0 || b > floor_n))
+        {
             let k = searches.index(c);
             let before = searches.live[k].1.state.paths;
             searches.live[k].1.windows()?;
