@@ -22,7 +22,6 @@ pub(crate) fn assemble(
     defl: impl Fn(u32) -> f64,
     iterations: usize,
 ) -> Equilibrium {
-    let k = ctx.hertz.k();
     let mut contacts = Vec::new();
     let mut p_max: f64 = 0.0;
     let mut fsum = 0.0;
@@ -30,14 +29,15 @@ pub(crate) fn assemble(
     for (p, b) in ps.pairs.iter().zip(bp) {
         let w = defl(p.slider);
         let dz = q[0] + q[1] * b.g[0] + q[2] * b.g[1] + w - b.c;
-        let r = pair_response(k, ctx.two_r, b.r2, b.ut, dz);
+        let r = pair_response(b.k, b.d, b.r2, b.ut, dz);
         if r.fz <= 0.0 {
             continue;
         }
         let arm = ps.arm(p.slider);
         let zs = p.h + b.ut + dz;
-        let fnorm = ctx.hertz.force(r.delta);
-        let p0 = ctx.hertz.p0(r.delta);
+        let hertz = ctx.pair_hertz(p.slider, p.substrate);
+        let fnorm = hertz.force(r.delta);
+        let p0 = hertz.p0(r.delta);
         p_max = p_max.max(p0);
         fsum += r.fz;
         mom[0] += r.fz * arm[1];

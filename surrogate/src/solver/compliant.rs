@@ -23,8 +23,7 @@ use faer::{Col, Side};
 /// `u_j = q·g_i + w_i − h_j` and the mount's `K_q = K_t/L²`, convex; its Hessian is an arrowhead
 /// (diagonal w-block, dense nq×nq corner, nq dense coupling rows), factored with faer's sparse
 /// Cholesky (AMD ordering, no fill-in beyond the arrow).
-struct System<'a> {
-    ctx: &'a Ctx<'a>,
+struct System {
     tp: Vec<BodyPair>,
     groups: Vec<(u32, std::ops::Range<usize>)>,
     load: f64,
@@ -43,7 +42,7 @@ struct State {
     hqq: [[f64; 3]; 3],
 }
 
-impl System<'_> {
+impl System {
     fn n(&self) -> usize {
         self.groups.len()
     }
@@ -59,7 +58,6 @@ impl System<'_> {
     }
 
     fn eval(&self, x: &[f64]) -> State {
-        let k = self.ctx.hertz.k();
         let n = self.n();
         let nq = self.nq;
         let q = self.q(x);
@@ -90,7 +88,7 @@ impl System<'_> {
             let mut f = 0.0;
             let mut s = 0.0;
             for p in &self.tp[range.clone()] {
-                let r = pair_response(k, self.ctx.two_r, p.r2, p.ut, base - p.c);
+                let r = pair_response(p.k, p.d, p.r2, p.ut, base - p.c);
                 pi += r.phi;
                 f += r.fz;
                 s += r.s.max(0.0);
@@ -158,13 +156,11 @@ pub(crate) fn solve_compliant(
     let (q0, it0) = if ctx.tilts {
         rigid_tilt_state(ctx, ps, &bp, load)?
     } else {
-        let (z, it) =
-            ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz).solve(load, ctx.hertz, ctx.params)?;
+        let (z, it) = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r).solve(load, ctx.hertz, ctx.params)?;
         ([z, 0.0, 0.0], it)
     };
     let nq = if ctx.tilts { 3 } else { 1 };
     let sys = System {
-        ctx,
         tp: bp,
         groups: ps.groups(),
         load,

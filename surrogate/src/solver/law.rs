@@ -44,32 +44,60 @@ pub(crate) fn pair_response(k: f64, two_r: f64, r2: f64, ut: f64, dz: f64) -> Pa
 
 /// One pair in the body unknowns `q = [ζ, L·t_x, L·t_y]` (ζ = z − z_ref): its offset from first
 /// touch is `dz = ζ + q₁ g₀ + q₂ g₁ (+ w_i) − c` with `g = [y_arm/L, −x_arm/L]` and
-/// `c = h + u_t − z_ref` the pair's touch height relative to the highest one.
+/// `c = h + u_t − z_ref` the pair's touch height relative to the highest one (with per-site
+/// sizes `c = h + (r_i − R_sl) + u_t − z_ref`, h the substrate centre height). `k` and `d` are
+/// the pair's Hertz prefactor and contact distance (the scene's one law, or per pair).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct BodyPair {
     pub g: [f64; 2],
     pub r2: f64,
     pub ut: f64,
     pub c: f64,
+    pub k: f64,
+    pub d: f64,
 }
 
 /// The pairs of `ps` in body unknowns, and the reference height z_ref (m): the highest touch
-/// height `max(h + u_t)` (so ζ = 0 is first touch of a flat-lying slider).
+/// height `max(h + u_t)` (so ζ = 0 is first touch of a flat-lying slider). With per-site sizes
+/// each pair has its own distance `d = r_i + r_j`, `u_t = √(d² − r²)`, `k` from
+/// `R_eff = r_i r_j/(r_i + r_j)` and touch height `h + (r_i − R_sl) + u_t`. O(P).
 pub(crate) fn body_pairs(ctx: &Ctx, ps: &PairSet) -> (Vec<BodyPair>, f64) {
     let d2 = ctx.two_r * ctx.two_r;
+    let k = ctx.hertz.k();
     let mut zref = f64::NEG_INFINITY;
     let mut out: Vec<BodyPair> = ps
         .pairs
         .iter()
         .map(|p| {
             let a = ps.arm(p.slider);
-            let ut = (d2 - p.r2).max(0.0).sqrt();
-            zref = zref.max(p.h + ut);
-            BodyPair {
-                g: [a[1] / ctx.scale, -a[0] / ctx.scale],
-                r2: p.r2,
-                ut,
-                c: p.h + ut,
+            let g = [a[1] / ctx.scale, -a[0] / ctx.scale];
+            match ctx.sizes {
+                None => {
+                    let ut = (d2 - p.r2).max(0.0).sqrt();
+                    zref = zref.max(p.h + ut);
+                    BodyPair {
+                        g,
+                        r2: p.r2,
+                        ut,
+                        c: p.h + ut,
+                        k,
+                        d: ctx.two_r,
+                    }
+                }
+                Some(s) => {
+                    let d = s.distance(p.slider, p.substrate);
+                    let ut = (d * d - p.r2).max(0.0).sqrt();
+                    let c = p.h + (s.slider[p.slider as usize] - s.r_sl) + ut;
+                    zref = zref.max(c);
+                    BodyPair {
+                        g,
+                        r2: p.r2,
+                        ut,
+                        c,
+                        k: s.hertz(p.slider, p.substrate).k(),
+                        d,
+                    }
+                }
             }
         })
         .collect();

@@ -19,7 +19,6 @@ use faer::{Col, Mat, Side};
 /// `[W − ΣF_z, −ΣF_z gx + (K_q q₁₂)₀, −ΣF_z gy + (K_q q₁₂)₁]` (N) and Hessian
 /// `Σ s_j v_j v_jᵀ + diag(0, K_q)` (N/m), `v_j = [1, g_j]`. Π is convex wherever every s_j ≥ 0.
 fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
-    let k = ctx.hertz.k();
     let kq = ctx.kq();
     let kq1 = [
         kq[0][0] * q[1] + kq[0][1] * q[2],
@@ -30,7 +29,7 @@ fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [
     let mut h = [[0.0; 3], [0.0, kq[0][0], 0.0], [0.0, kq[1][0], kq[1][1]]];
     for p in tp {
         let dz = q[0] + q[1] * p.g[0] + q[2] * p.g[1] - p.c;
-        let r = pair_response(k, ctx.two_r, p.r2, p.ut, dz);
+        let r = pair_response(p.k, p.d, p.r2, p.ut, dz);
         if r.fz == 0.0 && r.s == 0.0 {
             continue;
         }
@@ -183,7 +182,7 @@ pub(crate) fn rigid_tilt_state(
     bp: &[BodyPair],
     load: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
-    let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
+    let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r);
     let (z0, it0) = zr.solve(load, ctx.hertz, ctx.params)?;
     let near = NearSet::new(bp, z0, max_lever(ctx, ps));
     let (q, it1) = tilt_from(ctx, bp, &near, load, z0)?;
@@ -265,7 +264,7 @@ pub(crate) fn tilt_from(
     if force_ok {
         return Ok((q, it1));
     }
-    let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r, ctx.hertz);
+    let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r);
     let (z, it2) = zr.solve(load, ctx.hertz, ctx.params)?;
     Ok(([z, q[1], q[2]], it1 + it2))
 }

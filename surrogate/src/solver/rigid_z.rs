@@ -20,7 +20,7 @@ impl RigidZ {
     /// Prepares the pairs of `ps`.
     pub fn new(ctx: &Ctx, ps: &PairSet) -> RigidZ {
         let (bp, zref) = body_pairs(ctx, ps);
-        let zr = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
+        let zr = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r);
         RigidZ { bp, zref, zr }
     }
 

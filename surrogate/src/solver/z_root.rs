@@ -9,18 +9,20 @@ use crate::error::SceneError;
 /// The pairs of one pair set at fixed tilt, prepared for the root find. Build once per pair set
 /// (and tilt), solve for many loads.
 pub(crate) struct ZRoot {
-    /// `(c, r2, u_t)`: touch height relative to z_ref (m), lateral distance² (m²), touch gap (m),
-    /// in pair order (unsorted).
-    all: Vec<(f64, f64, f64)>,
+    /// `(c, r2, u_t, k, d)`: touch height relative to z_ref (m), lateral distance² (m²), touch
+    /// gap (m), Hertz prefactor and contact distance of the pair, in pair order (unsorted).
+    all: Vec<Row>,
     /// Highest touch height (m): the top of the first bracket.
     c_max: f64,
-    k: f64,
     two_r: f64,
 }
 
+/// One pair of [`ZRoot`]: `(c, r2, u_t, k, d)`.
+type Row = (f64, f64, f64, f64, f64);
+
 /// The pairs of `all` that touch below ζ = `floor`, sorted by touch height, descending, so the
 /// pairs active at any ζ ≥ `floor` are a prefix. O(P + A log A) for A selected pairs.
-fn select(all: &[(f64, f64, f64)], floor: f64, act: &mut Vec<(f64, f64, f64)>) {
+fn select(all: &[Row], floor: f64, act: &mut Vec<Row>) {
     act.clear();
     act.extend(all.iter().copied().filter(|p| p.0 > floor));
     act.sort_by(|a, b| b.0.total_cmp(&a.0));
@@ -28,30 +30,33 @@ fn select(all: &[(f64, f64, f64)], floor: f64, act: &mut Vec<(f64, f64, f64)>) {
 
 impl ZRoot {
     /// Takes the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m). O(P).
-    pub fn new(pairs: &[BodyPair], q12: [f64; 2], two_r: f64, hertz: &Hertz) -> ZRoot {
-        let all: Vec<(f64, f64, f64)> = pairs
+    pub fn new(pairs: &[BodyPair], q12: [f64; 2], two_r: f64) -> ZRoot {
+        let all: Vec<Row> = pairs
             .iter()
-            .map(|p| (p.c - q12[0] * p.g[0] - q12[1] * p.g[1], p.r2, p.ut))
+            .map(|p| {
+                (
+                    p.c - q12[0] * p.g[0] - q12[1] * p.g[1],
+                    p.r2,
+                    p.ut,
+                    p.k,
+                    p.d,
+                )
+            })
             .collect();
         let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
-        ZRoot {
-            all,
-            c_max,
-            k: hertz.k(),
-            two_r,
-        }
+        ZRoot { all, c_max, two_r }
     }
 
     /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m) over `act` (sorted, descending, as from
     /// [`select`]). O(active pairs).
-    fn eval(&self, act: &[(f64, f64, f64)], zeta: f64) -> (f64, f64) {
+    fn eval(&self, act: &[Row], zeta: f64) -> (f64, f64) {
         let mut f = 0.0;
         let mut df = 0.0;
-        for &(c, r2, ut) in act {
+        for &(c, r2, ut, k, d) in act {
             if c <= zeta {
                 break;
             }
-            let r = pair_response(self.k, self.two_r, r2, ut, zeta - c);
+            let r = pair_response(k, d, r2, ut, zeta - c);
             f += r.fz;
             df -= r.s;
         }
