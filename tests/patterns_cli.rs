@@ -112,24 +112,6 @@ fn equal_site_diameters_screen_as_one_size() {
     let varied = scene("varied.toml", "varied.csv", "sphere_diameter_um = 1.5\n");
     assert_eq!(varied.lines().count(), 7);
     assert_ne!(reference, varied);
-    // the DEM tiers refuse per-site sizes before any work, naming the field
-    let v = dir.join("varied.toml");
-    let v = v.to_str().unwrap();
-    for cmd in [
-        &["equilibrate", "--scene", v, "--load-mn", "0.1"][..],
-        &[
-            "export-lammps",
-            "--scene",
-            v,
-            "--line-deg",
-            "0",
-            "--out-dir",
-            "/tmp/superlube-never",
-        ][..],
-    ] {
-        fails_naming(cmd, "slider.sites");
-    }
-    assert!(!std::path::Path::new("/tmp/superlube-never").exists());
 }
 
 #[test]

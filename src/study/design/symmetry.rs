@@ -181,7 +181,8 @@ fn combine(s: &LatticeSymmetry, b: &LatticeSymmetry) -> PairSymmetry {
 impl PairSymmetry {
     /// The symmetry of `scene`'s actual geometry (see the module docs): [`PairSymmetry::of`]
     /// for plain Bravais lattices cut to a disc; else the slider's finite site set and the
-    /// substrate's lattice with its basis. A substrate site file: not derived (full range).
+    /// substrate's lattice with its basis. A substrate site file, or a slider site file with per-site
+    /// sizes: not derived (full range).
     /// Cost O(N_slider × candidate mirrors).
     pub fn of_scene(scene: &Scene) -> PairSymmetry {
         let g = &scene.geometry;
@@ -201,6 +202,20 @@ impl PairSymmetry {
                 alpha_period_deg: 360.0,
                 not_derived: Some(format!(
                     "the substrate comes from the site file `{}`",
+                    l.path
+                )),
+            };
+        }
+        if let Some(l) = g.slider_sites.as_ref().filter(|l| l.radii.is_some()) {
+            // spheres of different sizes are not interchangeable: no cut rather than a wrong one
+            return PairSymmetry {
+                slider_order: 1,
+                substrate_order: 1,
+                period_deg: 360.0,
+                mirror_deg: None,
+                alpha_period_deg: 360.0,
+                not_derived: Some(format!(
+                    "the slider's spheres differ in size (per-site diameters of `{}`)",
                     l.path
                 )),
             };
