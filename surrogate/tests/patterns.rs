@@ -222,6 +222,90 @@ fn big_slider_sphere_carries_a_small_load_alone() {
     assert!((eq2.p_max / p0 - 1.0).abs() < 1e-9);
 }
 
+/// Every model on a slider of three sizes (3, 2.996 and 2.992 µm, the first as empty cells: the
+/// body's size) on the sites of the triangular substrate, shifted off-top, under a springs mount:
+/// the loads balance, each contact's overlap is its pair's own `r_i + r_j − |x_i − x_j|` from
+/// the two centres (slider centre `R − r_i` above the reference plane) and its p0 its own
+/// R_eff's, every size touches, and the grid and BVH searches give the same answer.
+#[test]
+fn every_model_uses_each_pairs_own_radius_sum() {
+    let csv = tmp("three-sizes.csv");
+    let mut text = String::from("x_um,y_um,diameter_um\n");
+    let d = ["", "2.996", "2.992"];
+    for j in -2i32..=2 {
+        for i in -2i32..=2 {
+            let x = 6.0 * i as f64 + 3.0 * j as f64;
+            let y = 3.0 * 3f64.sqrt() * j as f64;
+            text += &format!("{x},{y},{}\n", d[(i + 2 * j).rem_euclid(3) as usize]);
+        }
+    }
+    std::fs::write(&csv, text).unwrap();
+    let s = scene(&format!(
+        "pattern = 'tri-tri'\n[substrate]\nsize_um = [60, 60]\nsigma_h_um = 0.002\n[slider]\nsites = '{}'\n",
+        csv.display()
+    ));
+    let radii = s.slider_radii().unwrap().to_vec();
+    let sub = s.substrate_spheres();
+    let w = 2e-3;
+    let pose = Pose {
+        theta: 0.0,
+        shift: [0.2e-6, 0.1e-6],
+    };
+    let mut solver = Solver::new(&s).unwrap();
+    for model in [
+        Model::Auto,
+        Model::RigidZ,
+        Model::RigidTilt,
+        Model::Compliant,
+    ] {
+        let eq = solver.solve(pose, w, model).unwrap();
+        let mut touching: Vec<f64> = eq
+            .contacts
+            .iter()
+            .map(|c| radii[c.slider as usize])
+            .collect();
+        touching.sort_by(f64::total_cmp);
+        touching.dedup();
+        assert_eq!(touching.len(), 3, "{model:?}: sizes touching {touching:?}");
+        assert!(eq.residual_rel() < 1e-9, "{model:?}: {}", eq.residual_rel());
+        let fz: f64 = eq.contacts.iter().map(|c| c.force_z).sum();
+        assert!((fz / w - 1.0).abs() < 1e-9, "{model:?}");
+        for c in &eq.contacts {
+            let b = sub[c.substrate as usize];
+            let top = [
+                2.0 * c.point[0] - b[0],
+                2.0 * c.point[1] - b[1],
+                2.0 * c.point[2] - b[2],
+            ];
+            let dist =
+                ((top[0] - b[0]).powi(2) + (top[1] - b[1]).powi(2) + (top[2] - b[2]).powi(2))
+                    .sqrt();
+            let sum = radii[c.slider as usize] + 1.5e-6;
+            assert!(
+                (sum - dist - c.overlap).abs() < 1e-6 * c.overlap + 1e-15,
+                "{model:?}: overlap {} vs {}",
+                c.overlap,
+                sum - dist
+            );
+            let r_eff = radii[c.slider as usize] * 1.5e-6 / sum;
+            let p0 = 2.0 * s.material.e_star() / std::f64::consts::PI * (c.overlap / r_eff).sqrt();
+            assert!((c.p0 / p0 - 1.0).abs() < 1e-12, "{model:?}");
+        }
+        if model == Model::RigidZ {
+            // slider centre of sphere i: z + (R − r_i) with R = 1.5 µm
+            for c in &eq.contacts {
+                let b = sub[c.substrate as usize];
+                let zs = 2.0 * c.point[2] - b[2];
+                let r = radii[c.slider as usize];
+                assert!((zs - (eq.z + 1.5e-6 - r)).abs() < 1e-15, "{zs} {}", eq.z);
+            }
+        }
+    }
+    let grid = solver.solve(pose, w, Model::Auto).unwrap();
+    solver.search = surrogate::solver::SearchKind::Bvh;
+    assert_eq!(solver.solve(pose, w, Model::Auto).unwrap(), grid);
+}
+
 /// A site file whose diameters all equal the body's size, given as a column, as a column with
 /// empty cells, or by `sphere_diameter_um` alone, gives the same scene answers (one size: the
 /// geometry without per-site sizes); mixed cells take the body's size.
