@@ -3,6 +3,7 @@
 use super::auto::solve_auto;
 use super::compliant::solve_compliant;
 use super::ctx::{Ctx, Sizes};
+use super::law::{Law, Own, Shared};
 use super::rigid_tilt::{assemble_tilt, max_lever, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
@@ -256,11 +257,9 @@ impl Solver {
         check_load(load)?;
         self.check_model(model)?;
         let ctx = self.ctx(ps.theta);
-        match model {
-            Model::Auto => solve_auto(&ctx, ps, &RigidZ::new(&ctx, ps), load),
-            Model::RigidZ => RigidZ::new(&ctx, ps).solve(&ctx, ps, load),
-            Model::RigidTilt => solve_rigid_tilt(&ctx, ps, load),
-            Model::Compliant => solve_compliant(&ctx, ps, load),
+        match ctx.sizes {
+            None => solve_one::<Shared>(&ctx, ps, load, model),
+            Some(_) => solve_one::<Own>(&ctx, ps, load, model),
         }
     }
 
@@ -289,31 +288,58 @@ impl Solver {
         }
         let ctx = self.ctx(ps.theta);
         match model {
-            Model::Auto | Model::RigidZ | Model::RigidTilt => {
-                let rz = RigidZ::new(&ctx, ps);
-                loads
-                    .iter()
-                    .map(|&w| {
-                        check_load(w)?;
-                        match model {
-                            Model::Auto => solve_auto(&ctx, ps, &rz, w),
-                            Model::RigidZ => rz.solve(&ctx, ps, w),
-                            _ => {
-                                let (z0, it0) = rz.zr.solve(w, ctx.hertz, ctx.params)?;
-                                let near = NearSet::new(&rz.bp, z0, max_lever(&ctx, ps));
-                                let (q, it1) = tilt_from(&ctx, &rz.bp, &near, w, z0)?;
-                                Ok(assemble_tilt(&ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
-                            }
-                        }
-                    })
-                    .collect()
-            }
+            Model::Auto | Model::RigidZ | Model::RigidTilt => match ctx.sizes {
+                None => solve_many::<Shared>(&ctx, ps, loads, model),
+                Some(_) => solve_many::<Own>(&ctx, ps, loads, model),
+            },
             Model::Compliant => loads
                 .iter()
                 .map(|&w| self.solve_pairs(ps, w, model))
                 .collect(),
         }
     }
+}
+
+/// One load with the pair law `L` (see [`Solver::solve_pairs`]).
+fn solve_one<L: Law>(
+    ctx: &Ctx,
+    ps: &PairSet,
+    load: f64,
+    model: Model,
+) -> Result<Equilibrium, SceneError> {
+    match model {
+        Model::Auto => solve_auto(ctx, ps, &RigidZ::<L>::new(ctx, ps), load),
+        Model::RigidZ => RigidZ::<L>::new(ctx, ps).solve(ctx, ps, load),
+        Model::RigidTilt => solve_rigid_tilt::<L>(ctx, ps, load),
+        Model::Compliant => solve_compliant::<L>(ctx, ps, load),
+    }
+}
+
+/// Several loads sharing one rigid-z problem with the pair law `L` (auto, rigid-z, rigid-tilt;
+/// see [`Solver::solve_loads_pairs`]).
+fn solve_many<L: Law>(
+    ctx: &Ctx,
+    ps: &PairSet,
+    loads: &[f64],
+    model: Model,
+) -> Vec<Result<Equilibrium, SceneError>> {
+    let rz = RigidZ::<L>::new(ctx, ps);
+    loads
+        .iter()
+        .map(|&w| {
+            check_load(w)?;
+            match model {
+                Model::Auto => solve_auto(ctx, ps, &rz, w),
+                Model::RigidZ => rz.solve(ctx, ps, w),
+                _ => {
+                    let (z0, it0) = rz.zr.solve(w, ctx.hertz, ctx.params)?;
+                    let near = NearSet::new(&rz.bp, z0, max_lever(ctx, ps));
+                    let (q, it1) = tilt_from(ctx, &rz.bp, &near, w, z0)?;
+                    Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
+                }
+            }
+        })
+        .collect()
 }
 
 fn check_load(load: f64) -> Result<(), SceneError> {
