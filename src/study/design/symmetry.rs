@@ -580,6 +580,32 @@ mod geometry_tests {
         assert!(s.not_derived.is_some() && s.contains(-75.0) && s.contains(300.0));
         assert!(s.describe().contains("full θ range"), "{}", s.describe());
         assert!(!s.describe().contains("screened"), "{}", s.describe());
+        // a slider site file of a plus-shaped pattern: order 4 with equal diameters; with one
+        // larger arm sphere (per-site sizes) the symmetry is not derived (no cut)
+        let sl = |name: &str, d: [&str; 2]| {
+            let f = dir.join(name);
+            let mut text = String::from("x_um,y_um,diameter_um\n");
+            for (k, (x, y)) in [(0, 0), (6, 0), (0, 6), (-6, 0), (0, -6)]
+                .iter()
+                .enumerate()
+            {
+                text += &format!("{x},{y},{}\n", d[usize::from(k == 1)]);
+            }
+            std::fs::write(&f, text).unwrap();
+            scene(&format!(
+                "pattern = 'square-square'\n[substrate]\nsize_um = [40, 40]\n[slider]\nsites = '{}'\n",
+                f.display()
+            ))
+        };
+        let s = PairSymmetry::of_scene(&sl("equal.csv", ["3", "3"]));
+        assert_eq!((s.slider_order, s.not_derived.is_none()), (4, true));
+        let s = PairSymmetry::of_scene(&sl("sizes.csv", ["3", "4"]));
+        assert!(
+            s.not_derived
+                .as_deref()
+                .is_some_and(|w| w.contains("differ in size")),
+            "{s:?}"
+        );
     }
 
     /// The θ lists that leave part of the domain out are found, with the part named.
