@@ -328,6 +328,78 @@ fn a_run_on_a_resonant_mount_says_so() {
     assert_eq!(r_intact, r);
 }
 
+/// Per-site sphere sizes (a slider site file with 2 µm and 4 µm spheres) run in the surrogate
+/// tiers; the DEM tiers hold one radius per body and refuse them before any work (no output
+/// written), naming the field and the file, rather than silently using one size: equilibrate,
+/// slide (one run and a batch), and design unless it stops before the DEM (`--no-dem`).
+#[test]
+fn per_site_sizes_are_refused_by_the_dem_tiers() {
+    let d = tmpdir("per_site_sizes");
+    std::fs::write(
+        d.join("sites.csv"),
+        "x_um,y_um,diameter_um\n0,0,4\n9,0,2\n0,9,2\n-9,0,\n",
+    )
+    .unwrap();
+    let scene = d.join("varied.toml");
+    std::fs::write(
+        &scene,
+        "pattern = 'square-tri'\n[substrate]\nsize_um = [60, 60]\n[slider]\nsites = 'sites.csv'\n",
+    )
+    .unwrap();
+    let s = scene.to_str().unwrap();
+    let out = bin()
+        .args(["screen", "--scene", s, "--theta", "0", "--load-mn", "0.05"])
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let csv_out = d.join("never.csv");
+    let o = csv_out.to_str().unwrap();
+    let batch = d.join("never");
+    let b = batch.to_str().unwrap();
+    for args in [
+        &["equilibrate", "--scene", s, "--load-mn", "0.05", "--out", o][..],
+        &[
+            "slide",
+            "--scene",
+            s,
+            "--line-deg",
+            "0",
+            "--load-mn",
+            "0.05",
+            "--out",
+            o,
+        ][..],
+        &[
+            "slide",
+            "--scene",
+            s,
+            "--line-deg",
+            "0",
+            "--load-mn",
+            "0.05,0.1",
+            "--out-dir",
+            b,
+        ][..],
+    ] {
+        fails_naming(args, "slider.sites");
+        fails_naming(args, "sites.csv");
+    }
+    assert!(!csv_out.exists() && !batch.exists());
+    let design = d.join("design");
+    let args = [
+        "design",
+        "--scene",
+        s,
+        "--line-deg",
+        "0",
+        "--out-dir",
+        design.to_str().unwrap(),
+    ];
+    fails_naming(&args, "slider.sites");
+    fails_naming(&args, "--no-dem");
+    std::fs::remove_dir_all(&d).ok();
+}
+
 /// Two sphere sizes (2 µm slider spheres on the 3 µm substrate, a 15 µm slider): the DEM, in
 /// both models and started from a gap, settles on the screen's equilibrium of the same scene
 /// (contacts equal, P_max within 2 %, as the one-size equilibrium tests), and its snapshots

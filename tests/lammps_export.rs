@@ -760,6 +760,44 @@ fn data_diameters(path: &Path) -> Vec<(u32, f64)> {
         .collect()
 }
 
+/// Per-site sphere sizes (a slider site file with 2 µm and 4 µm spheres): `export-lammps`
+/// refuses the scene before writing anything, naming the field and the file (the DEM tiers hold
+/// one radius per body; each atom's own diameter is not exported yet).
+#[test]
+fn export_of_per_site_sizes_is_refused_naming_the_site_file() {
+    let dir = tmpdir("per-site-sizes");
+    std::fs::write(
+        dir.join("sites.csv"),
+        "x_um,y_um,diameter_um\n0,0,4\n9,0,2\n",
+    )
+    .unwrap();
+    let scene = dir.join("varied.toml");
+    std::fs::write(
+        &scene,
+        "pattern = 'square-tri'\n[substrate]\nsize_um = [60, 60]\n[slider]\nsites = 'sites.csv'\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("out");
+    let out = bin()
+        .arg("export-lammps")
+        .arg("--scene")
+        .arg(&scene)
+        .args(["--line-deg", "0", "--load-mn", "0.05", "--out-dir"])
+        .arg(&out_dir)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("slider.sites")
+            && err.contains("sites.csv")
+            && err.contains("one sphere size per body"),
+        "{err}"
+    );
+    assert!(!out_dir.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn export_of_two_sphere_sizes_writes_each_bodys_diameter() {
     // No LAMMPS needed. Each substrate atom has the substrate's diameter, each slider atom the

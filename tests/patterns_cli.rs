@@ -53,6 +53,67 @@ fn honeycomb_basis_and_site_file_give_identical_screen_rows() {
     assert_eq!(a, b);
 }
 
+/// A site file whose `diameter_um` column gives every sphere the same size, or leaves some cells
+/// empty (the body's `sphere_diameter_um`), screens byte-identically to the same sites without
+/// the column and `sphere_diameter_um` set; differing diameters change the rows.
+#[test]
+fn equal_site_diameters_screen_as_one_size() {
+    let dir = tmpdir("patterns-equal-diameters");
+    let basis = dir.join("basis.toml");
+    std::fs::write(
+        &basis,
+        "[substrate]\nsize_um = [120, 120]\n[slider]\nradius_um = 30\nsphere_diameter_um = 1.5\nlattice = { kind = 'honeycomb', spacing_um = 3.0 }\n",
+    )
+    .unwrap();
+    let sites = surrogate::SceneFile::read(&basis)
+        .unwrap()
+        .into_scene()
+        .unwrap()
+        .slider_sites_local();
+    let write = |name: &str, header: &str, cell: &dyn Fn(usize) -> &'static str| {
+        let mut csv = format!("{header}\n");
+        for (i, p) in sites.iter().enumerate() {
+            csv += &format!("{},{}{}\n", m_to_um(p[0]), m_to_um(p[1]), cell(i));
+        }
+        std::fs::write(dir.join(name), csv).unwrap();
+    };
+    write("plain.csv", "x_um,y_um", &|_| "");
+    write("equal.csv", "x_um,y_um,diameter_um", &|_| ",1.5");
+    write("mixed.csv", "x_um,y_um,diameter_um", &|i| {
+        if i % 3 == 0 {
+            ","
+        } else {
+            ",1.5"
+        }
+    });
+    write("varied.csv", "x_um,y_um,diameter_um", &|i| {
+        if i % 3 == 0 {
+            ",1.2"
+        } else {
+            ",1.5"
+        }
+    });
+    let scene = |name: &str, csv: &str, size: &str| {
+        let f = dir.join(name);
+        std::fs::write(
+            &f,
+            format!("[substrate]\nsize_um = [120, 120]\n[slider]\nradius_um = 30\n{size}sites = '{csv}'\n"),
+        )
+        .unwrap();
+        screen(&f)
+    };
+    let reference = scene("plain.toml", "plain.csv", "sphere_diameter_um = 1.5\n");
+    assert_eq!(reference.lines().count(), 7);
+    assert_eq!(reference, scene("equal.toml", "equal.csv", ""));
+    assert_eq!(
+        reference,
+        scene("mixed.toml", "mixed.csv", "sphere_diameter_um = 1.5\n")
+    );
+    let varied = scene("varied.toml", "varied.csv", "sphere_diameter_um = 1.5\n");
+    assert_eq!(varied.lines().count(), 7);
+    assert_ne!(reference, varied);
+}
+
 #[test]
 fn directional_candidates_are_written_and_run_on_their_own() {
     let dir = tmpdir("patterns-directional");

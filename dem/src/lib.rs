@@ -45,6 +45,29 @@ pub use system::{from_scene, Start, StartInfo, SystemSpec};
 use model::{ContactModel, Friction, HertzNormal, Mindlin, PressureSwitched};
 use surrogate::Scene;
 
+/// Refuses a scene whose site file gives per-site sphere sizes (a `diameter_um` column with
+/// differing values): the DEM tiers (and the LAMMPS export) hold one radius per body, and never
+/// silently use one size for spheres of several. The error names the field (`slider.sites` or
+/// `substrate.sites`) and the file. O(1).
+pub fn check_scene(scene: &Scene) -> Result<(), DemError> {
+    let g = &scene.geometry;
+    for (field, l) in [
+        ("slider.sites", &g.slider_sites),
+        ("substrate.sites", &g.substrate_sites),
+    ] {
+        if let Some(l) = l.as_ref().filter(|l| l.radii.is_some()) {
+            return Err(DemError::invalid(
+                field,
+                &l.path,
+                "its diameter_um column gives spheres of differing sizes: the DEM tiers \
+                 (equilibrate, slide, export-lammps) support one sphere size per body; \
+                 the surrogate tiers (screen, landscape, corrugation, friction) take per-site sizes",
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// A ready-to-run simulation with its provenance.
 pub struct Prepared {
     /// The engine at its start state.
@@ -156,6 +179,7 @@ pub fn prepare(
     start: Start,
     friction: Option<Friction>,
 ) -> Result<Prepared, DemError> {
+    check_scene(scene)?;
     if !(params.load.is_finite() && params.load > 0.0) {
         return Err(DemError::invalid(
             "load_mN",

@@ -12,6 +12,9 @@ pub struct ContactMapData {
     pub title: String,
     /// Sphere radius (µm).
     pub sphere_radius_um: f64,
+    /// Per-sphere radii (µm) of the slider and the substrate spheres when a body has per-site
+    /// sizes (drawn each at its own size); empty: every sphere has `sphere_radius_um`.
+    pub radii_um: [Vec<f64>; 2],
     /// Slider sphere centres (µm, substrate frame).
     pub slider_um: Vec<[f64; 2]>,
     /// Substrate sphere centres (µm).
@@ -77,20 +80,30 @@ pub fn contact_map(path: &Path, data: &ContactMapData) -> Result<()> {
             .draw()
             .map_err(perr("contact map axes"))?;
         let inside = |p: &[f64; 2]| xr.contains(&p[0]) && yr.contains(&p[1]);
+        // each sphere's own radius (px) where the body has per-site sizes
+        let px = |body: usize, i: usize| match data.radii_um[body].get(i) {
+            Some(r) => ((r * px_per_um).round() as i32).max(1),
+            None => rad_px,
+        };
         chart
             .draw_series(
                 data.substrate_um
                     .iter()
-                    .filter(|p| inside(p))
-                    .map(|p| Circle::new((p[0], p[1]), rad_px, RGBColor(215, 215, 215).filled())),
+                    .enumerate()
+                    .filter(|(_, p)| inside(p))
+                    .map(|(i, p)| {
+                        Circle::new((p[0], p[1]), px(1, i), RGBColor(215, 215, 215).filled())
+                    }),
             )
             .map_err(perr("substrate"))?;
         chart
-            .draw_series(
-                data.slider_um.iter().map(|p| {
-                    Circle::new((p[0], p[1]), rad_px, RGBColor(70, 110, 200).stroke_width(1))
-                }),
-            )
+            .draw_series(data.slider_um.iter().enumerate().map(|(i, p)| {
+                Circle::new(
+                    (p[0], p[1]),
+                    px(0, i),
+                    RGBColor(70, 110, 200).stroke_width(1),
+                )
+            }))
             .map_err(perr("slider"))?
             .label("slider sphere")
             .legend(|(x, y)| Circle::new((x + 10, y), 6, RGBColor(70, 110, 200).stroke_width(1)));

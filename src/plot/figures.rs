@@ -72,6 +72,8 @@ pub fn contact_map_png(path: &Path, scene: &Scene, load: f64, eq: &Equilibrium) 
             eq.failed_count()
         ),
         sphere_radius_um: m_to_um(scene.sphere_radius),
+        radii_um: [scene.slider_radii(), scene.substrate_radii()]
+            .map(|r| r.unwrap_or_default().iter().map(|&v| m_to_um(v)).collect()),
         slider_um: slider.iter().map(|&p| um(p)).collect(),
         substrate_um: scene
             .substrate_spheres()

@@ -29,13 +29,15 @@ pub struct StartInfo {
 }
 
 /// Lays out the particles of `scene` (at its own θ and offset) for `params` (load, α, travel,
-/// reductions), with the slider's and the substrate's own sphere radii (one per body; the
-/// scene refuses per-site sizes). Cost: one surrogate solve, O(N log N).
+/// reductions), with the slider's and the substrate's own sphere radii (one per body; a scene
+/// with per-site sizes is refused, [`crate::check_scene`]). Cost: one surrogate solve,
+/// O(N log N).
 pub fn from_scene(
     scene: &Scene,
     params: &SimParams,
     start: Start,
 ) -> Result<(SystemSpec, StartInfo), DemError> {
+    crate::check_scene(scene)?;
     let solver = Solver::new(scene)?;
     let eq = solver.solve(
         Pose {

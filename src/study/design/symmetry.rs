@@ -181,7 +181,8 @@ fn combine(s: &LatticeSymmetry, b: &LatticeSymmetry) -> PairSymmetry {
 impl PairSymmetry {
     /// The symmetry of `scene`'s actual geometry (see the module docs): [`PairSymmetry::of`]
     /// for plain Bravais lattices cut to a disc; else the slider's finite site set and the
-    /// substrate's lattice with its basis. A substrate site file: not derived (full range).
+    /// substrate's lattice with its basis. A substrate site file, or a slider site file with per-site
+    /// sizes: not derived (full range).
     /// Cost O(N_slider × candidate mirrors).
     pub fn of_scene(scene: &Scene) -> PairSymmetry {
         let g = &scene.geometry;
@@ -201,6 +202,20 @@ impl PairSymmetry {
                 alpha_period_deg: 360.0,
                 not_derived: Some(format!(
                     "the substrate comes from the site file `{}`",
+                    l.path
+                )),
+            };
+        }
+        if let Some(l) = g.slider_sites.as_ref().filter(|l| l.radii.is_some()) {
+            // spheres of different sizes are not interchangeable: no cut rather than a wrong one
+            return PairSymmetry {
+                slider_order: 1,
+                substrate_order: 1,
+                period_deg: 360.0,
+                mirror_deg: None,
+                alpha_period_deg: 360.0,
+                not_derived: Some(format!(
+                    "the slider's spheres differ in size (per-site diameters of `{}`)",
                     l.path
                 )),
             };
@@ -565,6 +580,32 @@ mod geometry_tests {
         assert!(s.not_derived.is_some() && s.contains(-75.0) && s.contains(300.0));
         assert!(s.describe().contains("full θ range"), "{}", s.describe());
         assert!(!s.describe().contains("screened"), "{}", s.describe());
+        // a slider site file of a plus-shaped pattern: order 4 with equal diameters; with one
+        // larger arm sphere (per-site sizes) the symmetry is not derived (no cut)
+        let sl = |name: &str, d: [&str; 2]| {
+            let f = dir.join(name);
+            let mut text = String::from("x_um,y_um,diameter_um\n");
+            for (k, (x, y)) in [(0, 0), (6, 0), (0, 6), (-6, 0), (0, -6)]
+                .iter()
+                .enumerate()
+            {
+                text += &format!("{x},{y},{}\n", d[usize::from(k == 1)]);
+            }
+            std::fs::write(&f, text).unwrap();
+            scene(&format!(
+                "pattern = 'square-square'\n[substrate]\nsize_um = [40, 40]\n[slider]\nsites = '{}'\n",
+                f.display()
+            ))
+        };
+        let s = PairSymmetry::of_scene(&sl("equal.csv", ["3", "3"]));
+        assert_eq!((s.slider_order, s.not_derived.is_none()), (4, true));
+        let s = PairSymmetry::of_scene(&sl("sizes.csv", ["3", "4"]));
+        assert!(
+            s.not_derived
+                .as_deref()
+                .is_some_and(|w| w.contains("differ in size")),
+            "{s:?}"
+        );
     }
 
     /// The θ lists that leave part of the domain out are found, with the part named.

@@ -73,7 +73,6 @@ pub(crate) fn solve_samples(
     params: &FrictionParams,
 ) -> Vec<Result<Vec<Sample>, SceneError>> {
     let scene = solver.scene();
-    let k = scene.hertz().k();
     let kt = solver.tilt_stiffness_at(theta);
     let coat = scene.coating;
     let sub = solver.substrate();
@@ -110,7 +109,7 @@ pub(crate) fn solve_samples(
                 } else {
                     coat.mu1
                 };
-                smp.v += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
+                smp.v += solver.contact_energy(c);
                 smp.f_pull -= c.force_n * en;
                 smp.f_perp += c.force_n * (n[1] * e[0] - n[0] * e[1]);
                 smp.coating += mu * c.force_n * (1.0 - en * en).max(0.0).sqrt();

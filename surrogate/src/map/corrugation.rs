@@ -138,7 +138,6 @@ pub fn path_profile(
         ],
         "distance_um",
     )?;
-    let k = scene.hertz().k();
     let sub = solver.substrate();
     let path = StraightPath {
         theta,
@@ -153,7 +152,7 @@ pub fn path_profile(
         for c in &eq.contacts {
             let n = c.normal(sub[c.substrate as usize]);
             f -= c.force_n * (n[0] * e[0] + n[1] * e[1]);
-            u += 0.4 * k * c.overlap * c.overlap * c.overlap.sqrt();
+            u += solver.contact_energy(c);
         }
         progress();
         (eq.z, f, u, eq.contact_count() as u32)

@@ -34,7 +34,7 @@ pub fn check_slider_stays_on_substrate(
     extent: [[f64; 2]; 2],
     field: &str,
 ) -> Result<(), SceneError> {
-    let r = scene.slider.radius + scene.slider_sphere_radius();
+    let r = scene.slider.radius + scene.max_slider_sphere_radius();
     let [lx, ly] = scene.substrate.size;
     let o = scene.slider.offset;
     let x_lo = o[0] + extent[0][0] - r;

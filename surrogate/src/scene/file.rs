@@ -573,6 +573,13 @@ impl SceneFile {
         let sl = r_sl.unwrap_or(base);
         s.sphere_radius = sb;
         s.geometry.slider_sphere_radius = (sl != sb).then_some(sl);
+        // per-site sizes: empty diameter_um cells take the body's size
+        if let Some(l) = &mut s.geometry.slider_sites {
+            l.resolve_sizes(sl, "slider.sites")?;
+        }
+        if let Some(l) = &mut s.geometry.substrate_sites {
+            l.resolve_sizes(sb, "substrate.sites")?;
+        }
         Ok(())
     }
 }

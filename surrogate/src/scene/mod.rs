@@ -8,6 +8,8 @@ mod mount;
 mod pattern;
 #[allow(clippy::module_inception)]
 mod scene;
+mod sites;
+mod sizes;
 mod to_file;
 
 pub use file::{
@@ -16,8 +18,7 @@ pub use file::{
 pub use lattice::Lattice;
 pub use material::{Coating, Material};
 pub use mount::{rotate_tilt_stiffness, Mount, STUDY_K1};
-pub use pattern::{
-    check_basis, min_site_distance, rebased, sites_in_outline, Geometry, Outline, SiteList,
-};
+pub use pattern::{check_basis, min_site_distance, rebased, sites_in_outline, Geometry, Outline};
 pub use scene::{lattice_name, Scene, SliderSpec, SubstrateSpec, PATTERNS};
+pub use sites::SiteList;
 pub use to_file::scene_file;

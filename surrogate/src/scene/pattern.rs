@@ -1,8 +1,9 @@
 //! Pattern geometry beyond a Bravais lattice cut to a disc: lattices with a basis, slider
-//! outlines (disc, rectangle, polygon), site lists read from files, and a slider sphere size
-//! other than the substrate's. [`Geometry`] holds what a [`super::Scene`] adds to its lattices;
+//! outlines (disc, rectangle, polygon), site lists read from files ([`SiteList`], in
+//! `sites.rs`), and a slider sphere size other than the substrate's. [`Geometry`] holds what a [`super::Scene`] adds to its lattices;
 //! its default is the plain disc-of-a-Bravais-lattice of the presets.
 
+use super::sites::SiteList;
 use super::Lattice;
 use crate::error::SceneError;
 use crate::units::{m_to_um, um_to_m};
@@ -251,182 +252,6 @@ fn edge_distance(v: &[[f64; 2]], p: [f64; 2]) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-/// Sphere sites read from a site file (m): slider sites relative to the slider centre,
-/// substrate sites relative to the substrate centre, in file order.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct SiteList {
-    /// The file the sites came from (as given, for records and messages).
-    pub path: String,
-    /// Sphere centres (m).
-    pub sites: Vec<[f64; 2]>,
-    /// The sphere diameter (m) the file's `diameter_um` column gives, if it has one.
-    pub diameter: Option<f64>,
-    /// File line of each site (for messages; not recorded).
-    #[serde(skip)]
-    pub lines: Vec<usize>,
-}
-
-impl SiteList {
-    /// Parses a site file: a header line naming the columns `x_um,y_um[,diameter_um]` (any
-    /// order; `#` comments and blank lines skipped), then one sphere per line. Errors name the
-    /// file, the line and the column (missing column, not a number, NaN/inf, non-positive
-    /// diameter, overlapping spheres). `field` names the scene field (`slider.sites`).
-    /// Coordinates are read onto the 1e-9 µm grid (`round(x·10⁹)/10⁹` µm), as the sites of a
-    /// lattice with a basis: writing those sites to 9 or more decimals reproduces them exactly.
-    /// Per-site diameters must all be equal (one sphere size per body). O(N log N).
-    pub fn parse(text: &str, path: &str, field: &str) -> Result<SiteList, SceneError> {
-        let err = |line: usize, why: String| {
-            SceneError::invalid(field, format!("{path} line {line}"), &why)
-        };
-        let mut lines = text
-            .lines()
-            .enumerate()
-            .map(|(i, l)| (i + 1, l.trim()))
-            .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-        let (hl, header) = lines.next().ok_or_else(|| {
-            err(
-                1,
-                "empty site file: needs a header `x_um,y_um[,diameter_um]` and one line per sphere"
-                    .into(),
-            )
-        })?;
-        let cols: Vec<&str> = header.split(',').map(str::trim).collect();
-        let find = |name: &str| cols.iter().position(|c| *c == name);
-        let (ix, iy) = match (find("x_um"), find("y_um")) {
-            (Some(x), Some(y)) => (x, y),
-            _ => {
-                return Err(err(
-                    hl,
-                    format!(
-                    "header `{header}` must name the columns x_um and y_um (optional diameter_um)"
-                ),
-                ))
-            }
-        };
-        let id = find("diameter_um");
-        if let Some(c) = cols
-            .iter()
-            .find(|c| !["x_um", "y_um", "diameter_um"].contains(c))
-        {
-            return Err(err(
-                hl,
-                format!("unknown column `{c}` (expected x_um, y_um, diameter_um)"),
-            ));
-        }
-        let mut sites = Vec::new();
-        let mut lines_of = Vec::new();
-        let mut diameter: Option<(f64, usize)> = None;
-        for (ln, l) in lines {
-            let f: Vec<&str> = l.split(',').map(str::trim).collect();
-            let num = |i: usize, name: &str| -> Result<f64, SceneError> {
-                let s = f
-                    .get(i)
-                    .filter(|s| !s.is_empty())
-                    .ok_or_else(|| err(ln, format!("missing column {name}")))?;
-                let v: f64 = s
-                    .parse()
-                    .map_err(|_| err(ln, format!("{name} = `{s}` is not a number")))?;
-                if !v.is_finite() {
-                    return Err(err(ln, format!("{name} = {s} is not a finite number")));
-                }
-                Ok(v)
-            };
-            let (x, y) = (num(ix, "x_um")?, num(iy, "y_um")?);
-            if let Some(i) = id {
-                let d = num(i, "diameter_um")?;
-                if d <= 0.0 {
-                    return Err(err(ln, format!("diameter_um = {d} must be positive")));
-                }
-                match diameter {
-                    None => diameter = Some((d, ln)),
-                    Some((d0, l0)) if d0 != d => {
-                        return Err(err(
-                            ln,
-                            format!(
-                                "diameter_um = {d} differs from {d0} on line {l0}: one sphere size per body is supported (per-site sizes are not)"
-                            ),
-                        ))
-                    }
-                    _ => {}
-                }
-            }
-            if f.len() > cols.len() {
-                return Err(err(
-                    ln,
-                    format!("{} columns, the header names {}", f.len(), cols.len()),
-                ));
-            }
-            sites.push([um_to_m(snap_um(x)), um_to_m(snap_um(y))]);
-            lines_of.push(ln);
-        }
-        if sites.is_empty() {
-            return Err(err(hl, "no sphere: the site file has only a header".into()));
-        }
-        let list = SiteList {
-            path: path.to_string(),
-            sites,
-            diameter: diameter.map(|(d, _)| um_to_m(d)),
-            lines: lines_of,
-        };
-        if let Some(d) = list.diameter {
-            list.check_overlap(d, field)?;
-        }
-        Ok(list)
-    }
-
-    /// Reads and parses a site file (see [`SiteList::parse`]); refuses files over 50 MB.
-    pub fn read(path: &std::path::Path, field: &str) -> Result<SiteList, SceneError> {
-        use std::io::Read;
-        let shown = path.display().to_string();
-        let io = |e: String| SceneError::invalid(field, &shown, &format!("cannot read: {e}"));
-        let f = std::fs::File::open(path).map_err(|e| io(e.to_string()))?;
-        let mut bytes = Vec::new();
-        f.take(50_000_001)
-            .read_to_end(&mut bytes)
-            .map_err(|e| io(e.to_string()))?;
-        if bytes.len() > 50_000_000 {
-            return Err(io("larger than 50 MB: not a site file".into()));
-        }
-        let text = String::from_utf8(bytes).map_err(|_| io("not UTF-8 text".into()))?;
-        Self::parse(&text, &shown, field)
-    }
-
-    /// Checks no two spheres of diameter `d` (m) overlap (centre distance < d, relative 1e-9);
-    /// the error names both file lines. Sweep over x: O(N log N + close pairs).
-    pub fn check_overlap(&self, d: f64, field: &str) -> Result<(), SceneError> {
-        let line = |i: usize| self.lines.get(i).copied().unwrap_or(i + 1);
-        let mut order: Vec<usize> = (0..self.sites.len()).collect();
-        order.sort_by(|&a, &b| self.sites[a][0].total_cmp(&self.sites[b][0]));
-        let d2 = d * d * (1.0 - 1e-9);
-        for (k, &i) in order.iter().enumerate() {
-            let p = self.sites[i];
-            for &j in &order[k + 1..] {
-                let q = self.sites[j];
-                if q[0] - p[0] >= d {
-                    break;
-                }
-                let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-                if dx * dx + dy * dy < d2 {
-                    let (a, b) = (i.min(j), i.max(j));
-                    let um = |v: [f64; 2]| [v[0] * 1e6, v[1] * 1e6];
-                    return Err(SceneError::invalid(
-                        field,
-                        format!("{} lines {} and {}", self.path, line(a), line(b)),
-                        &format!(
-                            "spheres at {:?} and {:?} µm overlap: centre distance {:.6} µm < sphere diameter {} µm",
-                            um(self.sites[a]),
-                            um(self.sites[b]),
-                            dx.hypot(dy) * 1e6,
-                            d * 1e6
-                        ),
-                    ));
-                }
-            }
-        }
-        Ok(())
-    }
-}
-
 /// What a scene adds to its two Bravais lattices. The default (empty bases, a disc outline, no
 /// site files, one sphere size) is the presets' geometry.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
@@ -470,7 +295,7 @@ impl Geometry {
 }
 
 /// `x` (µm) on the 1e-9 µm grid: `round(x·10⁹)/10⁹`, the double nearest to its 9-decimal text.
-fn snap_um(x: f64) -> f64 {
+pub(super) fn snap_um(x: f64) -> f64 {
     (x * 1e9).round() / 1e9
 }
 

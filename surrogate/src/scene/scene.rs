@@ -170,14 +170,12 @@ impl Scene {
                 "must be a non-negative number",
             ));
         }
-        if sh >= self.sphere_radius.min(self.slider_sphere_radius()) {
+        let r_min = self.min_sphere_radius();
+        if sh >= r_min {
             return Err(SceneError::invalid(
                 "substrate.sigma_h_um",
                 sh * um,
-                &format!(
-                    "must be smaller than the sphere radius {} µm",
-                    self.sphere_radius.min(self.slider_sphere_radius()) * um
-                ),
+                &format!("must be smaller than the sphere radius {} µm", r_min * um),
             ));
         }
         self.slider.mount.validate("slider.tilt")?;
@@ -264,7 +262,9 @@ impl Scene {
     }
 
     /// Centre distance (m) at which a slider and a substrate sphere touch: `R_slider + R_substrate`
-    /// (`2R` for equal spheres, bit for bit).
+    /// (`2R` for equal spheres, bit for bit). With per-site sizes these are the bodies'
+    /// reference radii; a pair (i, j) touches at `r_i + r_j` ([`Scene::max_contact_distance`]
+    /// bounds them).
     pub fn contact_distance(&self) -> f64 {
         self.slider_sphere_radius() + self.sphere_radius
     }
@@ -321,11 +321,36 @@ impl Scene {
                 "substrate.lattice.basis_um",
             )?;
         }
-        if let Some(l) = &g.slider_sites {
-            l.check_overlap(d_sl, "slider.sites")?;
-        }
-        if let Some(l) = &g.substrate_sites {
-            l.check_overlap(d_sb, "substrate.sites")?;
+        for (l, d, field) in [
+            (&g.slider_sites, d_sl, "slider.sites"),
+            (&g.substrate_sites, d_sb, "substrate.sites"),
+        ] {
+            match l {
+                Some(l) if l.radii.is_some() => {
+                    if l.radii.as_ref().map(Vec::len) != Some(l.sites.len()) {
+                        return Err(SceneError::invalid(
+                            field,
+                            &l.path,
+                            "needs one radius per site",
+                        ));
+                    }
+                    if let Some(r) = l
+                        .radii
+                        .iter()
+                        .flatten()
+                        .find(|r| !(r.is_finite() && **r > 0.0))
+                    {
+                        return Err(SceneError::invalid(
+                            field,
+                            &l.path,
+                            &format!("diameter_um = {} must be a positive number", 2e6 * r),
+                        ));
+                    }
+                    l.check_overlap_sized(field)?
+                }
+                Some(l) => l.check_overlap(d, field)?,
+                None => {}
+            }
         }
         if !g.is_plain() && self.slider_sites_local().is_empty() {
             return Err(SceneError::invalid(
@@ -356,7 +381,8 @@ impl Scene {
 
     /// Substrate sphere centres `[x, y, h]` (m): lattice sites in the rectangle, with heights
     /// `h` uniform in `[-σ_h, σ_h]` from a ChaCha8 stream seeded by `substrate.seed` (all zero
-    /// when `σ_h = 0`).
+    /// when `σ_h = 0`). With per-site sizes a sphere of radius r_j sits with its bottom on the
+    /// substrate plane: its centre is `r_j − R` higher (R = `sphere_radius`).
     pub fn substrate_spheres(&self) -> Vec<[f64; 3]> {
         let sites = match &self.geometry.substrate_sites {
             Some(l) => l.sites.clone(),
@@ -369,7 +395,7 @@ impl Scene {
         };
         let sh = self.substrate.sigma_h;
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(self.substrate.seed);
-        sites
+        let mut out: Vec<[f64; 3]> = sites
             .into_iter()
             .map(|p| {
                 let h = if sh > 0.0 {
@@ -379,7 +405,13 @@ impl Scene {
                 };
                 [p[0], p[1], h]
             })
-            .collect()
+            .collect();
+        if let Some(radii) = self.substrate_radii() {
+            for (p, r) in out.iter_mut().zip(radii) {
+                p[2] += r - self.sphere_radius;
+            }
+        }
+        out
     }
 }
 

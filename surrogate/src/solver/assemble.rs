@@ -1,7 +1,7 @@
 //! Turns a converged state (z, tilts, deflections) into an [`Equilibrium`] with its contact list.
 
 use super::ctx::Ctx;
-use super::law::{pair_response, BodyPair};
+use super::law::{BodyPair, Law};
 use super::{ContactInfo, Equilibrium, Model, PairSet};
 
 /// Builds the [`Equilibrium`] from the body state `q = [ζ, L·t_x, L·t_y]` (z = z_ref + ζ):
@@ -11,10 +11,10 @@ use super::{ContactInfo, Equilibrium, Model, PairSet};
 /// centre `M_c = [Σ F_z·(y − y_c), −Σ F_z·(x − x_c)]` (about the x and y axes). `defl(i)` is the upward
 /// deflection (m) of slider sphere i relative to the rigid body.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn assemble(
+pub(crate) fn assemble<L: Law>(
     ctx: &Ctx,
     ps: &PairSet,
-    bp: &[BodyPair],
+    bp: &[BodyPair<L>],
     zref: f64,
     model: Model,
     load: f64,
@@ -22,7 +22,7 @@ pub(crate) fn assemble(
     defl: impl Fn(u32) -> f64,
     iterations: usize,
 ) -> Equilibrium {
-    let k = ctx.hertz.k();
+    let (k, two_r) = (ctx.hertz.k(), ctx.two_r);
     let mut contacts = Vec::new();
     let mut p_max: f64 = 0.0;
     let mut fsum = 0.0;
@@ -30,14 +30,15 @@ pub(crate) fn assemble(
     for (p, b) in ps.pairs.iter().zip(bp) {
         let w = defl(p.slider);
         let dz = q[0] + q[1] * b.g[0] + q[2] * b.g[1] + w - b.c;
-        let r = pair_response(k, ctx.two_r, b.r2, b.ut, dz);
+        let r = b.response(k, two_r, dz);
         if r.fz <= 0.0 {
             continue;
         }
         let arm = ps.arm(p.slider);
         let zs = p.h + b.ut + dz;
-        let fnorm = ctx.hertz.force(r.delta);
-        let p0 = ctx.hertz.p0(r.delta);
+        let hertz = ctx.pair_hertz(p.slider, p.substrate);
+        let fnorm = hertz.force(r.delta);
+        let p0 = hertz.p0(r.delta);
         p_max = p_max.max(p0);
         fsum += r.fz;
         mom[0] += r.fz * arm[1];

@@ -11,6 +11,7 @@
 //! `RigidTilt` in [`Equilibrium::model`].
 
 use super::ctx::Ctx;
+use super::law::Law;
 use super::rigid_tilt::{assemble_tilt, max_lever, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, PairSet};
@@ -27,10 +28,10 @@ pub(crate) fn moment_negligible(ctx: &Ctx, load: f64, m: [f64; 2]) -> bool {
 /// `ps` (shared across loads). Cost: one rigid-z solve and its O(P) assembly (which sums the
 /// contact moment); where it escalates, plus one O(P) pass selecting the pairs near contact, the
 /// tilt Newton on them (typically 3–5 iterations of O(few hundred)) and a second assembly.
-pub(crate) fn solve_auto(
+pub(crate) fn solve_auto<L: Law>(
     ctx: &Ctx,
     ps: &PairSet,
-    rz: &RigidZ,
+    rz: &RigidZ<L>,
     load: f64,
 ) -> Result<Equilibrium, SceneError> {
     let (zeta, iters) = rz.zr.solve(load, ctx.hertz, ctx.params)?;

@@ -7,7 +7,7 @@
 
 use super::assemble::assemble;
 use super::ctx::Ctx;
-use super::law::{body_pairs, pair_response, BodyPair};
+use super::law::{body_pairs, BodyPair, Law};
 use super::rigid_tilt::rigid_tilt_state;
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
@@ -23,9 +23,11 @@ use faer::{Col, Side};
 /// `u_j = q·g_i + w_i − h_j` and the mount's `K_q = K_t/L²`, convex; its Hessian is an arrowhead
 /// (diagonal w-block, dense nq×nq corner, nq dense coupling rows), factored with faer's sparse
 /// Cholesky (AMD ordering, no fill-in beyond the arrow).
-struct System<'a> {
-    ctx: &'a Ctx<'a>,
-    tp: Vec<BodyPair>,
+struct System<L> {
+    /// The shared Hertz prefactor and contact distance (pairs with their own law ignore them).
+    k: f64,
+    two_r: f64,
+    tp: Vec<BodyPair<L>>,
     groups: Vec<(u32, std::ops::Range<usize>)>,
     load: f64,
     kz: f64,
@@ -43,7 +45,7 @@ struct State {
     hqq: [[f64; 3]; 3],
 }
 
-impl System<'_> {
+impl<L: Law> System<L> {
     fn n(&self) -> usize {
         self.groups.len()
     }
@@ -59,7 +61,6 @@ impl System<'_> {
     }
 
     fn eval(&self, x: &[f64]) -> State {
-        let k = self.ctx.hertz.k();
         let n = self.n();
         let nq = self.nq;
         let q = self.q(x);
@@ -90,7 +91,7 @@ impl System<'_> {
             let mut f = 0.0;
             let mut s = 0.0;
             for p in &self.tp[range.clone()] {
-                let r = pair_response(k, self.ctx.two_r, p.r2, p.ut, base - p.c);
+                let r = p.response(self.k, self.two_r, base - p.c);
                 pi += r.phi;
                 f += r.fz;
                 s += r.s.max(0.0);
@@ -149,22 +150,23 @@ impl System<'_> {
 /// `moment_rtol`·W·L and every sphere's spring balance to `force_rtol`·W. Cost per iteration:
 /// O(P) assembly plus a sparse Cholesky of n + 3 unknowns (n + 1 locked; n slider spheres with
 /// candidate pairs), i.e. O(n).
-pub(crate) fn solve_compliant(
+pub(crate) fn solve_compliant<L: Law>(
     ctx: &Ctx,
     ps: &PairSet,
     load: f64,
 ) -> Result<Equilibrium, SceneError> {
-    let (bp, zref) = body_pairs(ctx, ps);
+    let (bp, zref) = body_pairs::<L>(ctx, ps);
     let (q0, it0) = if ctx.tilts {
         rigid_tilt_state(ctx, ps, &bp, load)?
     } else {
-        let (z, it) =
-            ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz).solve(load, ctx.hertz, ctx.params)?;
+        let (z, it) = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz.k())
+            .solve(load, ctx.hertz, ctx.params)?;
         ([z, 0.0, 0.0], it)
     };
     let nq = if ctx.tilts { 3 } else { 1 };
     let sys = System {
-        ctx,
+        k: ctx.hertz.k(),
+        two_r: ctx.two_r,
         tp: bp,
         groups: ps.groups(),
         load,

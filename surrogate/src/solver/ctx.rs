@@ -3,13 +3,64 @@
 
 use super::SolverParams;
 use crate::contact::Hertz;
-use crate::scene::Coating;
+use crate::scene::{Coating, Scene};
+
+/// Per-sphere radii of a scene with per-site sizes (the slow path; `None` in [`Ctx`] for one
+/// size per body). Geometry: see [`crate::scene::SiteList`].
+pub(crate) struct Sizes {
+    /// Radius (m) of each slider sphere (slider order).
+    pub slider: Vec<f64>,
+    /// Radius (m) of each substrate sphere (substrate order).
+    pub substrate: Vec<f64>,
+    /// The slider's reference radius R_sl (m): a slider sphere of radius r_i hangs `r_i − R_sl`
+    /// below the slider's reference centre plane.
+    pub r_sl: f64,
+    /// Effective modulus E* (Pa).
+    pub e_star: f64,
+}
+
+impl Sizes {
+    /// The per-sphere radii of `scene`, `None` without per-site sizes. O(N).
+    pub fn of(scene: &Scene, n_slider: usize, n_substrate: usize) -> Option<Sizes> {
+        if !scene.has_site_sizes() {
+            return None;
+        }
+        let fill = |r: Option<&[f64]>, n: usize, r0: f64| match r {
+            Some(r) => r.to_vec(),
+            None => vec![r0; n],
+        };
+        Some(Sizes {
+            slider: fill(scene.slider_radii(), n_slider, scene.slider_sphere_radius()),
+            substrate: fill(scene.substrate_radii(), n_substrate, scene.sphere_radius),
+            r_sl: scene.slider_sphere_radius(),
+            e_star: scene.material.e_star(),
+        })
+    }
+
+    /// Contact distance `r_i + r_j` (m) of slider sphere `i` and substrate sphere `j`.
+    #[inline]
+    pub fn distance(&self, i: u32, j: u32) -> f64 {
+        self.slider[i as usize] + self.substrate[j as usize]
+    }
+
+    /// Hertz law of the pair: `R_eff = r_i r_j/(r_i + r_j)`.
+    #[inline]
+    pub fn hertz(&self, i: u32, j: u32) -> Hertz {
+        let (a, b) = (self.slider[i as usize], self.substrate[j as usize]);
+        Hertz {
+            e_star: self.e_star,
+            r_eff: a * b / (a + b),
+        }
+    }
+}
 
 /// Everything a model needs besides the pairs: the contact law, the substrate, the knobs.
 pub(crate) struct Ctx<'a> {
     pub hertz: &'a Hertz,
-    /// Contact distance 2R (m).
+    /// Contact distance 2R (m); with per-site sizes the largest pair's `max r_i + max r_j`.
     pub two_r: f64,
+    /// Per-sphere radii when the scene has per-site sizes (`None`: one size per body).
+    pub sizes: Option<&'a Sizes>,
     pub coating: &'a Coating,
     /// Substrate sphere centres `[x, y, h]` (m).
     pub substrate: &'a [[f64; 3]],
@@ -24,6 +75,16 @@ pub(crate) struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
+    /// Hertz law of slider sphere `i` on substrate sphere `j` (the scene's one law without
+    /// per-site sizes). O(1).
+    #[inline]
+    pub fn pair_hertz(&self, i: u32, j: u32) -> Hertz {
+        match self.sizes {
+            None => *self.hertz,
+            Some(s) => s.hertz(i, j),
+        }
+    }
+
     /// The mount stiffness in the scaled tilt unknowns `q₁₂ = L·t`: `K_q = K_t / L²` (N/m), so
     /// that the stored energy is `½ q₁₂ᵀ K_q q₁₂ = ½ tᵀ K_t t`.
     pub fn kq(&self) -> [[f64; 2]; 2] {

@@ -7,7 +7,7 @@
 
 use super::assemble::assemble;
 use super::ctx::Ctx;
-use super::law::{body_pairs, pair_response, BodyPair};
+use super::law::{body_pairs, BodyPair, Law};
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
 use crate::error::SceneError;
@@ -18,7 +18,12 @@ use faer::{Col, Mat, Side};
 /// `½ tᵀ K_t t`, `K_q = K_t/L²`), its gradient
 /// `[W − ΣF_z, −ΣF_z gx + (K_q q₁₂)₀, −ΣF_z gy + (K_q q₁₂)₁]` (N) and Hessian
 /// `Σ s_j v_j v_jᵀ + diag(0, K_q)` (N/m), `v_j = [1, g_j]`. Π is convex wherever every s_j ≥ 0.
-fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+fn eval<L: Law>(
+    ctx: &Ctx,
+    tp: &[BodyPair<L>],
+    load: f64,
+    q: [f64; 3],
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
     let k = ctx.hertz.k();
     let kq = ctx.kq();
     let kq1 = [
@@ -30,7 +35,7 @@ fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [
     let mut h = [[0.0; 3], [0.0, kq[0][0], 0.0], [0.0, kq[1][0], kq[1][1]]];
     for p in tp {
         let dz = q[0] + q[1] * p.g[0] + q[2] * p.g[1] - p.c;
-        let r = pair_response(k, ctx.two_r, p.r2, p.ut, dz);
+        let r = p.response(k, ctx.two_r, dz);
         if r.fz == 0.0 && r.s == 0.0 {
             continue;
         }
@@ -62,9 +67,9 @@ fn eval(ctx: &Ctx, tp: &[BodyPair], load: f64, q: [f64; 3]) -> (f64, [f64; 3], [
 /// stop it, and a balanced but undetermined tilt stays at its start value. If the tilt grows
 /// until the rim drops by more than a sphere diameter the load point lies outside the support
 /// (e.g. slider hanging over the substrate edge) and the solve fails with `NoEquilibrium`.
-pub(crate) fn tilt_newton(
+pub(crate) fn tilt_newton<L: Law>(
     ctx: &Ctx,
-    tp: &[BodyPair],
+    tp: &[BodyPair<L>],
     load: f64,
     q0: [f64; 3],
 ) -> Result<([f64; 3], usize, bool), SceneError> {
@@ -153,21 +158,21 @@ pub(crate) fn tilt_newton(
 
 /// Rigid-tilt equilibrium: rigid-z start, then [`tilt_from`]. Cost: one rigid-z solve plus
 /// ~2–30 Newton iterations of O(P) each (P candidate pairs; 1–3 with the study's K1 springs).
-pub(crate) fn solve_rigid_tilt(
+pub(crate) fn solve_rigid_tilt<L: Law>(
     ctx: &Ctx,
     ps: &PairSet,
     load: f64,
 ) -> Result<Equilibrium, SceneError> {
-    let (bp, zref) = body_pairs(ctx, ps);
+    let (bp, zref) = body_pairs::<L>(ctx, ps);
     let (q, iters) = rigid_tilt_state(ctx, ps, &bp, load)?;
     Ok(assemble_tilt(ctx, ps, &bp, zref, load, q, iters))
 }
 
 /// The [`Equilibrium`] of a converged rigid-tilt state.
-pub(crate) fn assemble_tilt(
+pub(crate) fn assemble_tilt<L: Law>(
     ctx: &Ctx,
     ps: &PairSet,
-    bp: &[BodyPair],
+    bp: &[BodyPair<L>],
     zref: f64,
     load: f64,
     q: [f64; 3],
@@ -177,13 +182,13 @@ pub(crate) fn assemble_tilt(
 }
 
 /// Converged `[ζ, L·t_x, L·t_y]` and iterations, from the rigid-z start.
-pub(crate) fn rigid_tilt_state(
+pub(crate) fn rigid_tilt_state<L: Law>(
     ctx: &Ctx,
     ps: &PairSet,
-    bp: &[BodyPair],
+    bp: &[BodyPair<L>],
     load: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
-    let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
+    let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz.k());
     let (z0, it0) = zr.solve(load, ctx.hertz, ctx.params)?;
     let near = NearSet::new(bp, z0, max_lever(ctx, ps));
     let (q, it1) = tilt_from(ctx, bp, &near, load, z0)?;
@@ -194,9 +199,9 @@ pub(crate) fn rigid_tilt_state(
 /// above `floor = ζ₀ − band`, `band` = [`NEAR_BAND`]·(−ζ₀) (−ζ₀ is the deepest rigid-z overlap) —
 /// typically a few hundred of the ≈ 10⁴ candidate pairs, and a superset of the pairs touching at
 /// ζ₀. Built in one O(P) pass.
-pub(crate) struct NearSet {
+pub(crate) struct NearSet<L> {
     /// The pairs with c > `floor`, in pair order.
-    pub pairs: Vec<BodyPair>,
+    pub pairs: Vec<BodyPair<L>>,
     /// ζ₀ − band (m).
     floor: f64,
     /// Bound on |g| = |arm|/L over every pair.
@@ -205,13 +210,13 @@ pub(crate) struct NearSet {
     complete: bool,
 }
 
-impl NearSet {
+impl<L: Law> NearSet<L> {
     /// The working set of `bp` around the rigid-z state `z0` (m); `gmax` bounds |g| over every
     /// pair ([`max_lever`]).
-    pub fn new(bp: &[BodyPair], z0: f64, gmax: f64) -> NearSet {
+    pub fn new(bp: &[BodyPair<L>], z0: f64, gmax: f64) -> NearSet<L> {
         let band = NEAR_BAND * (-z0).max(0.0);
         let floor = z0 - band;
-        let pairs: Vec<BodyPair> = bp.iter().filter(|p| p.c > floor).copied().collect();
+        let pairs: Vec<BodyPair<L>> = bp.iter().filter(|p| p.c > floor).copied().collect();
         NearSet {
             complete: pairs.len() == bp.len() || band == 0.0,
             pairs,
@@ -222,7 +227,7 @@ impl NearSet {
 
     /// Whether a pair of `bp` left out of the set touches at state `q`: O(1) when the bound
     /// `ζ − |q₁₂|·max|g| > floor` rules it out, else one O(P) pass.
-    fn misses_a_contact(&self, bp: &[BodyPair], q: [f64; 3]) -> bool {
+    fn misses_a_contact(&self, bp: &[BodyPair<L>], q: [f64; 3]) -> bool {
         if self.complete || q[0] - (q[1] * q[1] + q[2] * q[2]).sqrt() * self.gmax > self.floor {
             return false;
         }
@@ -241,10 +246,10 @@ impl NearSet {
 /// free slider may tip further than the set reaches), Newton is rerun on all pairs from there.
 /// So the result is the all-pairs equilibrium either way; the set only saves time (each
 /// iteration costs O(set) instead of O(P)).
-pub(crate) fn tilt_from(
+pub(crate) fn tilt_from<L: Law>(
     ctx: &Ctx,
-    bp: &[BodyPair],
-    near: &NearSet,
+    bp: &[BodyPair<L>],
+    near: &NearSet<L>,
     load: f64,
     z0: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
@@ -265,7 +270,7 @@ pub(crate) fn tilt_from(
     if force_ok {
         return Ok((q, it1));
     }
-    let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r, ctx.hertz);
+    let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r, ctx.hertz.k());
     let (z, it2) = zr.solve(load, ctx.hertz, ctx.params)?;
     Ok(([z, q[1], q[2]], it1 + it2))
 }

@@ -3,24 +3,24 @@
 
 use super::assemble::assemble;
 use super::ctx::Ctx;
-use super::law::{body_pairs, BodyPair};
+use super::law::{body_pairs, BodyPair, Law};
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
 use crate::error::SceneError;
 
 /// The 1-D problem of a pair set at zero tilt. Build once per θ, solve for every load.
 /// O(P log P).
-pub(crate) struct RigidZ {
-    pub bp: Vec<BodyPair>,
+pub(crate) struct RigidZ<L> {
+    pub bp: Vec<BodyPair<L>>,
     pub zref: f64,
     pub zr: ZRoot,
 }
 
-impl RigidZ {
+impl<L: Law> RigidZ<L> {
     /// Prepares the pairs of `ps`.
-    pub fn new(ctx: &Ctx, ps: &PairSet) -> RigidZ {
-        let (bp, zref) = body_pairs(ctx, ps);
-        let zr = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz);
+    pub fn new(ctx: &Ctx, ps: &PairSet) -> RigidZ<L> {
+        let (bp, zref) = body_pairs::<L>(ctx, ps);
+        let zr = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz.k());
         RigidZ { bp, zref, zr }
     }
 

@@ -2,13 +2,15 @@
 
 use super::auto::solve_auto;
 use super::compliant::solve_compliant;
-use super::ctx::Ctx;
+use super::ctx::{Ctx, Sizes};
+use super::law::{Law, Own, Shared};
 use super::rigid_tilt::{assemble_tilt, max_lever, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
 use crate::contact::{BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz};
 use crate::error::SceneError;
 use crate::scene::{rotate_tilt_stiffness, Scene};
+use crate::solver::ContactInfo;
 
 /// Lateral pose of the slider: rotation θ (rad) and in-plane shift (m) of its centre from the
 /// scene's offset.
@@ -40,6 +42,11 @@ pub struct Solver {
     grid: GridSearch,
     bvh: BvhSearch,
     local: Vec<[f64; 2]>,
+    /// Per-sphere radii when the scene has per-site sizes (`None`: one size per body, the fast
+    /// path: one Hertz law and one contact distance for every pair).
+    sizes: Option<Sizes>,
+    /// Lateral reach (m) of the candidate search: the largest pair's contact distance.
+    reach: f64,
     /// Principal rotational stiffnesses of the mount about the slider's own axes (N·m/rad).
     mount_k: [f64; 2],
     /// Numerical knobs.
@@ -50,13 +57,15 @@ pub struct Solver {
 
 impl Solver {
     /// Validates `scene`, indexes its substrate spheres (grid O(N), BVH O(N log N)) and
-    /// generates the slider's sites.
+    /// generates the slider's sites (and, with per-site sizes, every sphere's radius).
     pub fn new(scene: &Scene) -> Result<Solver, SceneError> {
         scene.validate()?;
         let spheres = scene.substrate_spheres();
-        let reach = scene.contact_distance();
+        let reach = scene.max_contact_distance();
         let local = scene.slider_sites_local();
         Ok(Solver {
+            sizes: Sizes::of(scene, local.len(), spheres.len()),
+            reach,
             mount_k: scene.slider.mount.principal_tilt_stiffness(&local),
             scene: scene.clone(),
             hertz: scene.hertz(),
@@ -138,6 +147,15 @@ impl Solver {
         self.pairs_within(pose, 0.0)
     }
 
+    /// Elastic energy Φ = 0.4 k δ^{5/2} (J) stored in contact `c` (k of its pair). O(1).
+    pub fn contact_energy(&self, c: &ContactInfo) -> f64 {
+        let k = match &self.sizes {
+            None => self.hertz.k(),
+            Some(s) => s.hertz(c.slider, c.substrate).k(),
+        };
+        0.4 * k * c.overlap * c.overlap * c.overlap.sqrt()
+    }
+
     /// Candidate pairs of the slider at `pose` with lateral distance < 2R + `extra` (m): a
     /// superset of the pairs of every pose with the same θ whose shift lies within `extra` of
     /// `pose.shift`. Turn it into the pairs of such a pose with [`Solver::pairs_from`] (a path
@@ -145,11 +163,16 @@ impl Solver {
     pub fn pairs_within(&self, pose: Pose, extra: f64) -> PairSet {
         let (slider_xy, centre) = self.slider_xy_at(pose);
         let mut pairs = Vec::with_capacity(slider_xy.len() * 3);
-        self.candidate_search().pairs(
-            &slider_xy,
-            self.scene.contact_distance() + extra.max(0.0),
-            &mut pairs,
-        );
+        let extra = extra.max(0.0);
+        self.candidate_search()
+            .pairs(&slider_xy, self.reach + extra, &mut pairs);
+        if let Some(s) = &self.sizes {
+            // each pair's own reach r_i + r_j (+ extra)
+            pairs.retain(|c| {
+                let d = s.distance(c.slider, c.substrate) + extra;
+                c.r2 < d * d
+            });
+        }
         PairSet {
             slider_xy,
             centre,
@@ -164,7 +187,7 @@ impl Solver {
     /// O(pairs of `near`).
     pub fn pairs_from(&self, near: &PairSet, pose: Pose) -> PairSet {
         let (slider_xy, centre) = self.slider_xy_at(pose);
-        let reach = self.scene.contact_distance();
+        let reach = self.reach;
         let r2max = reach * reach;
         let pairs = near
             .pairs
@@ -175,7 +198,11 @@ impl Solver {
                 let dx = q[0] - p[0];
                 let dy = q[1] - p[1];
                 let r2 = dx * dx + dy * dy;
-                (r2 < r2max).then_some(CandidatePair { r2, ..*c })
+                let max = match &self.sizes {
+                    None => r2max,
+                    Some(s) => s.distance(c.slider, c.substrate).powi(2),
+                };
+                (r2 < max).then_some(CandidatePair { r2, ..*c })
             })
             .collect();
         PairSet {
@@ -195,7 +222,8 @@ impl Solver {
     fn ctx(&self, theta: f64) -> Ctx<'_> {
         Ctx {
             hertz: &self.hertz,
-            two_r: self.scene.contact_distance(),
+            two_r: self.reach,
+            sizes: self.sizes.as_ref(),
             coating: &self.scene.coating,
             substrate: &self.substrate,
             params: &self.params,
@@ -203,7 +231,7 @@ impl Solver {
                 .scene
                 .slider
                 .radius
-                .max(self.scene.slider_sphere_radius()),
+                .max(self.scene.max_slider_sphere_radius()),
             tilts: self.scene.slider.mount.tilts(),
             kt: self.tilt_stiffness_at(theta),
         }
@@ -229,11 +257,9 @@ impl Solver {
         check_load(load)?;
         self.check_model(model)?;
         let ctx = self.ctx(ps.theta);
-        match model {
-            Model::Auto => solve_auto(&ctx, ps, &RigidZ::new(&ctx, ps), load),
-            Model::RigidZ => RigidZ::new(&ctx, ps).solve(&ctx, ps, load),
-            Model::RigidTilt => solve_rigid_tilt(&ctx, ps, load),
-            Model::Compliant => solve_compliant(&ctx, ps, load),
+        match ctx.sizes {
+            None => solve_one::<Shared>(&ctx, ps, load, model),
+            Some(_) => solve_one::<Own>(&ctx, ps, load, model),
         }
     }
 
@@ -262,31 +288,58 @@ impl Solver {
         }
         let ctx = self.ctx(ps.theta);
         match model {
-            Model::Auto | Model::RigidZ | Model::RigidTilt => {
-                let rz = RigidZ::new(&ctx, ps);
-                loads
-                    .iter()
-                    .map(|&w| {
-                        check_load(w)?;
-                        match model {
-                            Model::Auto => solve_auto(&ctx, ps, &rz, w),
-                            Model::RigidZ => rz.solve(&ctx, ps, w),
-                            _ => {
-                                let (z0, it0) = rz.zr.solve(w, ctx.hertz, ctx.params)?;
-                                let near = NearSet::new(&rz.bp, z0, max_lever(&ctx, ps));
-                                let (q, it1) = tilt_from(&ctx, &rz.bp, &near, w, z0)?;
-                                Ok(assemble_tilt(&ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
-                            }
-                        }
-                    })
-                    .collect()
-            }
+            Model::Auto | Model::RigidZ | Model::RigidTilt => match ctx.sizes {
+                None => solve_many::<Shared>(&ctx, ps, loads, model),
+                Some(_) => solve_many::<Own>(&ctx, ps, loads, model),
+            },
             Model::Compliant => loads
                 .iter()
                 .map(|&w| self.solve_pairs(ps, w, model))
                 .collect(),
         }
     }
+}
+
+/// One load with the pair law `L` (see [`Solver::solve_pairs`]).
+fn solve_one<L: Law>(
+    ctx: &Ctx,
+    ps: &PairSet,
+    load: f64,
+    model: Model,
+) -> Result<Equilibrium, SceneError> {
+    match model {
+        Model::Auto => solve_auto(ctx, ps, &RigidZ::<L>::new(ctx, ps), load),
+        Model::RigidZ => RigidZ::<L>::new(ctx, ps).solve(ctx, ps, load),
+        Model::RigidTilt => solve_rigid_tilt::<L>(ctx, ps, load),
+        Model::Compliant => solve_compliant::<L>(ctx, ps, load),
+    }
+}
+
+/// Several loads sharing one rigid-z problem with the pair law `L` (auto, rigid-z, rigid-tilt;
+/// see [`Solver::solve_loads_pairs`]).
+fn solve_many<L: Law>(
+    ctx: &Ctx,
+    ps: &PairSet,
+    loads: &[f64],
+    model: Model,
+) -> Vec<Result<Equilibrium, SceneError>> {
+    let rz = RigidZ::<L>::new(ctx, ps);
+    loads
+        .iter()
+        .map(|&w| {
+            check_load(w)?;
+            match model {
+                Model::Auto => solve_auto(ctx, ps, &rz, w),
+                Model::RigidZ => rz.solve(ctx, ps, w),
+                _ => {
+                    let (z0, it0) = rz.zr.solve(w, ctx.hertz, ctx.params)?;
+                    let near = NearSet::new(&rz.bp, z0, max_lever(ctx, ps));
+                    let (q, it1) = tilt_from(ctx, &rz.bp, &near, w, z0)?;
+                    Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
+                }
+            }
+        })
+        .collect()
 }
 
 fn check_load(load: f64) -> Result<(), SceneError> {

@@ -1,7 +1,7 @@
 //! [`ZRoot`]: the safeguarded 1-D Newton root find of ΣF_z(ζ) = W at fixed tilt, shared by the
 //! rigid-z model and the final force-balance polish of the rigid-tilt model.
 
-use super::law::{pair_response, BodyPair};
+use super::law::{pair_response, BodyPair, Law};
 use super::SolverParams;
 use crate::contact::Hertz;
 use crate::error::SceneError;
@@ -9,49 +9,98 @@ use crate::error::SceneError;
 /// The pairs of one pair set at fixed tilt, prepared for the root find. Build once per pair set
 /// (and tilt), solve for many loads.
 pub(crate) struct ZRoot {
-    /// `(c, r2, u_t)`: touch height relative to z_ref (m), lateral distance² (m²), touch gap (m),
-    /// in pair order (unsorted).
-    all: Vec<(f64, f64, f64)>,
+    /// The pairs, in pair order (unsorted).
+    rows: Rows,
     /// Highest touch height (m): the top of the first bracket.
     c_max: f64,
+    /// The one Hertz prefactor and contact distance of every pair (one size per body).
     k: f64,
     two_r: f64,
 }
 
+/// The pairs of a [`ZRoot`]: `(c, r2, u_t)` — touch height relative to z_ref (m), lateral
+/// distance² (m²), touch gap (m) — when every pair shares one law (the fast path), plus the
+/// pair's own Hertz prefactor and contact distance `(k, d)` with per-site sizes.
+enum Rows {
+    Uniform(Vec<(f64, f64, f64)>),
+    Sized(Vec<(f64, f64, f64, f64, f64)>),
+}
+
+/// One pair row: its touch height and its vertical response at ζ (with the shared `k`, `d`
+/// unless it carries its own).
+trait Row: Copy {
+    fn c(&self) -> f64;
+    fn response(&self, k: f64, d: f64, zeta: f64) -> super::law::PairResponse;
+}
+
+impl Row for (f64, f64, f64) {
+    #[inline]
+    fn c(&self) -> f64 {
+        self.0
+    }
+    #[inline]
+    fn response(&self, k: f64, d: f64, zeta: f64) -> super::law::PairResponse {
+        pair_response(k, d, self.1, self.2, zeta - self.0)
+    }
+}
+
+impl Row for (f64, f64, f64, f64, f64) {
+    #[inline]
+    fn c(&self) -> f64 {
+        self.0
+    }
+    #[inline]
+    fn response(&self, _: f64, _: f64, zeta: f64) -> super::law::PairResponse {
+        pair_response(self.3, self.4, self.1, self.2, zeta - self.0)
+    }
+}
+
 /// The pairs of `all` that touch below ζ = `floor`, sorted by touch height, descending, so the
 /// pairs active at any ζ ≥ `floor` are a prefix. O(P + A log A) for A selected pairs.
-fn select(all: &[(f64, f64, f64)], floor: f64, act: &mut Vec<(f64, f64, f64)>) {
+fn select<R: Row>(all: &[R], floor: f64, act: &mut Vec<R>) {
     act.clear();
-    act.extend(all.iter().copied().filter(|p| p.0 > floor));
-    act.sort_by(|a, b| b.0.total_cmp(&a.0));
+    act.extend(all.iter().copied().filter(|p| p.c() > floor));
+    act.sort_by(|a, b| b.c().total_cmp(&a.c()));
 }
 
 impl ZRoot {
-    /// Takes the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m). O(P).
-    pub fn new(pairs: &[BodyPair], q12: [f64; 2], two_r: f64, hertz: &Hertz) -> ZRoot {
-        let all: Vec<(f64, f64, f64)> = pairs
-            .iter()
-            .map(|p| (p.c - q12[0] * p.g[0] - q12[1] * p.g[1], p.r2, p.ut))
-            .collect();
-        let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+    /// Takes the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m); every pair has the Hertz
+    /// prefactor `k` and the contact distance `two_r` (m) unless it carries its own. O(P).
+    pub fn new<L: Law>(pairs: &[BodyPair<L>], q12: [f64; 2], two_r: f64, k: f64) -> ZRoot {
+        let c = |p: &BodyPair<L>| p.c - q12[0] * p.g[0] - q12[1] * p.g[1];
+        let (rows, c_max) = if L::SIZED {
+            let all: Vec<_> = pairs
+                .iter()
+                .map(|p| {
+                    let (k, d) = p.law.kd(k, two_r);
+                    (c(p), p.r2, p.ut, k, d)
+                })
+                .collect();
+            let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+            (Rows::Sized(all), c_max)
+        } else {
+            let all: Vec<_> = pairs.iter().map(|p| (c(p), p.r2, p.ut)).collect();
+            let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+            (Rows::Uniform(all), c_max)
+        };
         ZRoot {
-            all,
+            rows,
             c_max,
-            k: hertz.k(),
+            k,
             two_r,
         }
     }
 
     /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m) over `act` (sorted, descending, as from
     /// [`select`]). O(active pairs).
-    fn eval(&self, act: &[(f64, f64, f64)], zeta: f64) -> (f64, f64) {
+    fn eval<R: Row>(&self, act: &[R], zeta: f64) -> (f64, f64) {
         let mut f = 0.0;
         let mut df = 0.0;
-        for &(c, r2, ut) in act {
-            if c <= zeta {
+        for p in act {
+            if p.c() <= zeta {
                 break;
             }
-            let r = pair_response(self.k, self.two_r, r2, ut, zeta - c);
+            let r = p.response(self.k, self.two_r, zeta);
             f += r.fz;
             df -= r.s;
         }
@@ -71,7 +120,21 @@ impl ZRoot {
         hertz: &Hertz,
         params: &SolverParams,
     ) -> Result<(f64, usize), SceneError> {
-        if self.all.is_empty() {
+        match &self.rows {
+            Rows::Uniform(all) => self.solve_rows(all, load, hertz, params),
+            Rows::Sized(all) => self.solve_rows(all, load, hertz, params),
+        }
+    }
+
+    /// [`ZRoot::solve`] over one kind of rows.
+    fn solve_rows<R: Row>(
+        &self,
+        all: &[R],
+        load: f64,
+        hertz: &Hertz,
+        params: &SolverParams,
+    ) -> Result<(f64, usize), SceneError> {
+        if all.is_empty() {
             return Err(SceneError::NoEquilibrium(
                 "no substrate sphere lies under any slider sphere (slider off the substrate?)"
                     .into(),
@@ -86,7 +149,7 @@ impl ZRoot {
         let mut iters = 0;
         let mut act = Vec::new();
         loop {
-            select(&self.all, z_lo, &mut act);
+            select(all, z_lo, &mut act);
             let (f, _) = self.eval(&act, z_lo);
             if f >= load {
                 break;
