@@ -115,7 +115,17 @@ pub fn design(
         } else {
             0.0
         };
-        let mut pr = pattern(ds, p, store, progress, Some(floor))?;
+        let search = Search::Robust {
+            floor_mn: floor,
+            // across many patterns only each one's best counts (without the DEM, which
+            // confirms each pattern's top designs)
+            keep: if cross && p.no_dem {
+                1
+            } else {
+                p.confirm.max(3)
+            },
+        };
+        let mut pr = pattern(ds, p, store, progress, search)?;
         pr.robust_floor_mn = floor;
         if let Some(c) = pr.ranking.first().filter(|c| c.score.exact) {
             best_robust.push(c.score.superlubric_to_mn);
@@ -224,7 +234,7 @@ fn robust_order(
     ));
     let mut firsts: Vec<(usize, Option<Candidate>)> = Vec::new();
     for (i, ds) in scenes.iter().enumerate() {
-        let pr = pattern(ds, p, store, progress, None)?;
+        let pr = pattern(ds, p, store, progress, Search::Nominal)?;
         firsts.push((
             i,
             pr.ranking.into_iter().next().map(|mut c| {
@@ -243,14 +253,23 @@ fn robust_order(
     Ok((firsts.into_iter().map(|(i, _)| i).collect(), true))
 }
 
-/// Stages 1–5 for one pattern; `floor`: the robust search's floor (mN, [`robust_order`];
-/// `None`: no robust search, the nominal limits only).
+/// How [`pattern`] searches the tolerance box.
+#[derive(Debug, Clone, Copy)]
+enum Search {
+    /// No robust search: the nominal limits only (the first pass of [`robust_order`]).
+    Nominal,
+    /// The robust search ([`robust::robust_stage`]) above `floor_mn` (mN; 0: none), until the
+    /// best `keep` designs of the pattern are exact.
+    Robust { floor_mn: f64, keep: usize },
+}
+
+/// Stages 1–5 for one pattern, searching the tolerance box as `search` says.
 fn pattern(
     ds: &DesignScene,
     p: &DesignParams,
     store: &Store,
     progress: &dyn Progress,
-    floor: Option<f64>,
+    search: Search,
 ) -> Result<PatternResult> {
     let name = &ds.name;
     let (thetas_deg, sym) = cut(ds, p)?;
@@ -311,8 +330,10 @@ fn pattern(
     let mut stop = "every level evaluated".to_string();
     let mut solver: Option<Solver> = None;
     let bx = tolerance_box(p);
-    let robust = !bx.is_point() && floor.is_some();
-    let floor_mn = floor.unwrap_or(0.0);
+    let (robust, floor_mn, keep) = match search {
+        Search::Nominal => (false, 0.0, 0),
+        Search::Robust { floor_mn, keep } => (!bx.is_point(), floor_mn, keep),
+    };
     let limit = LimitParams {
         loads: p.loads.clone(),
         mu_superlubric: p.mu_superlubric,
@@ -415,6 +436,7 @@ fn pattern(
                 store,
                 progress,
                 floor_mn,
+                keep,
             )?;
         }
         best = ranking

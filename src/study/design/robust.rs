@@ -268,9 +268,12 @@ fn count(p: &DesignParams, mn: f64) -> usize {
 
 /// Stage 4b on every candidate so far (`ranking`, all levels): refines best first (module
 /// docs), writes the robust limits, windows and verdicts into the scores, and stores the
-/// searches. A candidate whose nominal limit is at most `floor_mn` (mN; 0: none) is not
-/// searched: it keeps its nominal limit as an upper bound (`exact: false`, windows unknown),
-/// since it cannot exceed the robust limits of the patterns that set the floor ([`super::design`]).
+/// searches; `keep` (at least 1): how many of the best designs must be exact (`max(confirm, 3)`
+/// for one pattern). A candidate whose nominal limit is at most `floor_mn` (mN; 0: none) is not
+/// searched, and one whose bound falls to it is searched no further: it keeps an upper bound
+/// (`exact: false`, windows unknown), since it cannot exceed the robust limits of the patterns
+/// that set the floor ([`super::design`]).
+#[allow(clippy::too_many_arguments)]
 pub fn robust_stage(
     ds: &DesignScene,
     ranking: &mut [Candidate],
@@ -279,8 +282,9 @@ pub fn robust_stage(
     store: &Store,
     progress: &dyn Progress,
     floor_mn: f64,
+    keep: usize,
 ) -> Result<()> {
-    let keep = p.confirm.max(3);
+    let keep = keep.max(1);
     ranking.sort_by(rank::compare);
     searches.begin_level(ranking);
     let todo: Vec<usize> = (0..ranking.len())

@@ -76,6 +76,72 @@ fn directional_candidates_have_contact_lines_along_their_row() {
     }
 }
 
+/// The same candidates checked on the contacts themselves, not on the moiré estimate that made
+/// them: at θ = 0 and 1.4 mN the equilibrium's contact points, Fourier-analysed
+/// (S(k) = |Σ exp(i k·r)|² over the contacts, k over every direction and over wavelengths from
+/// 1.5 slider lattice periods to 60 µm more), peak at k across the stated direction: the
+/// contacts form lines along the commensurate row. (The peak's wavelength, 11–62 µm here, is
+/// not the index's first-shell `contact_line_spacing_um`: docs/commands/patterns.md.)
+#[test]
+fn directional_candidates_make_contact_lines_along_their_row_at_equilibrium() {
+    use surrogate::solver::{Model, Pose, Solver};
+    let scene = Scene::preset("square-tri").unwrap();
+    let cands = candidates(&scene, &params("directional")).unwrap();
+    assert!(cands.len() >= 3, "{}", cands.len());
+    for c in &cands {
+        let m = c.commensurate.as_ref().unwrap();
+        let mut s = scene.clone();
+        s.slider.lattice = c.lattice;
+        let eq = Solver::new(&s)
+            .unwrap()
+            .solve(
+                Pose {
+                    theta: 0.0,
+                    shift: [0.0, 0.0],
+                },
+                surrogate::units::mn_to_n(1.4),
+                Model::Auto,
+            )
+            .unwrap();
+        let pts: Vec<[f64; 2]> = eq
+            .contacts
+            .iter()
+            .map(|k| [k.point[0], k.point[1]])
+            .collect();
+        assert!(pts.len() >= 20, "{c:?}: {} contacts", pts.len());
+        // the strongest Fourier component of the contact positions longer than the slider's
+        // own lattice periods (whose reciprocal vectors every set of sites shares)
+        let l_min = 1.5
+            * c.lattice.a1[0]
+                .hypot(c.lattice.a1[1])
+                .max(c.lattice.a2[0].hypot(c.lattice.a2[1]));
+        let mut peak = (0.0f64, 0.0f64, 0.0f64); // (S, direction of k in degrees, wavelength m)
+        for ia in 0..360 {
+            let phi = deg_to_rad(ia as f64 * 0.5);
+            for il in 0..=300 {
+                let lambda = l_min + um_to_m(0.2 * il as f64);
+                let (kx, ky) = (2.0 * PI / lambda * phi.cos(), 2.0 * PI / lambda * phi.sin());
+                let (re, im) = pts.iter().fold((0.0, 0.0), |(re, im), p| {
+                    let a = kx * p[0] + ky * p[1];
+                    (re + a.cos(), im + a.sin())
+                });
+                let sk = re * re + im * im;
+                if sk > peak.0 {
+                    peak = (sk, ia as f64 * 0.5, lambda);
+                }
+            }
+        }
+        // k across the row: the lines run along it
+        let across = (peak.1 - (m.direction_deg + 90.0)).rem_euclid(180.0);
+        assert!(
+            across.min(180.0 - across) <= 2.0,
+            "{c:?}: peak k at {}° (row at {}°)",
+            peak.1,
+            m.direction_deg
+        );
+    }
+}
+
 /// The pre-screen order: lubric, then directional, then interlocked, then unclassified;
 /// index order within a class.
 #[test]
