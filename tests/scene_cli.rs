@@ -197,3 +197,78 @@ fn every_command_reports_the_edge_overhang() {
     }
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// The geometry flags describe the same scene as the scene-file fields they stand for: a
+/// honeycomb pad with its own sphere size, and a site file, give the screen rows of the
+/// equivalent scene file (up to the file-name column); bad values name the flag or the field.
+#[test]
+fn geometry_flags_give_the_scene_files_rows() {
+    let dir = common::tmpdir("scene-geometry-flags");
+    let screen = |args: &[&str]| -> String {
+        let out = common::bin()
+            .current_dir(&dir)
+            .args(["screen", "--theta", "0,7", "--load-mn", "0.35,1.4"])
+            .args(args)
+            .output()
+            .unwrap();
+        common::assert_ok(&out);
+        String::from_utf8(out.stdout).unwrap()
+    };
+    std::fs::write(
+        dir.join("pad.toml"),
+        "[slider]\nlattice = { kind = 'honeycomb', spacing_um = 4.5 }\noutline = { kind = 'rectangle', size_um = [120, 80] }\nsphere_diameter_um = 2.5\n[substrate]\nsphere_diameter_um = 3.0\n",
+    )
+    .unwrap();
+    let file = screen(&["--scene", "pad.toml"]);
+    let flags = screen(&[
+        "--slider-lattice",
+        "honeycomb:4.5",
+        "--outline",
+        "rectangle:120x80",
+        "--slider-sphere-diameter-um",
+        "2.5",
+        "--substrate-sphere-diameter-um",
+        "3",
+    ]);
+    assert_eq!(file, flags);
+    assert!(file.lines().count() == 5, "{file}");
+    // a site file by flag, and over a scene file's lattice (the flag replaces it)
+    std::fs::write(
+        dir.join("s.csv"),
+        "x_um,y_um\n0,0\n3,0\n-3,0\n0,3\n0,-3\n3,3\n-3,-3\n3,-3\n-3,3\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("sites.toml"), "[slider]\nsites = 's.csv'\n").unwrap();
+    let file = screen(&["--scene", "sites.toml"]);
+    assert_eq!(file, screen(&["--slider-sites", "s.csv"]));
+    assert_eq!(
+        file,
+        screen(&[
+            "--scene",
+            "pad.toml",
+            "--slider-sites",
+            "s.csv",
+            "--slider-sphere-diameter-um",
+            "3",
+            "--substrate-sphere-diameter-um",
+            "3",
+        ])
+    );
+    let fails = |args: &[&str], what: &str| {
+        let mut a = vec!["screen", "--theta", "0"];
+        a.extend_from_slice(args);
+        common::fails_naming(&a, what);
+    };
+    fails(&["--slider-lattice", "hexagonal:3"], "--slider-lattice");
+    fails(&["--slider-lattice", "rectangular:3"], "--slider-lattice");
+    fails(&["--slider-lattice", "square:x"], "--slider-lattice");
+    fails(&["--slider-lattice", "square:1"], "slider.lattice");
+    fails(&["--outline", "rectangle:120"], "--outline");
+    fails(&["--outline", "polygon:2.5:90"], "--outline");
+    fails(
+        &["--slider-sphere-diameter-um", "0"],
+        "slider.sphere_diameter_um",
+    );
+    fails(&["--slider-sites", "/nonexistent/s.csv"], "slider.sites");
+    std::fs::remove_dir_all(&dir).ok();
+}

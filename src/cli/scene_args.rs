@@ -59,6 +59,32 @@ pub struct SceneOverrides {
     /// Anti-tilt spring stiffness K1 in N/m of `--tilt springs` (study: 1e6).
     #[arg(long = "tilt-k1-n-m", value_name = "N_M", allow_hyphen_values = true)]
     pub tilt_k1_n_m: Option<f64>,
+    /// Slider lattice, `KIND:SPACING_UM`: `triangular:3`, `square:3`, `honeycomb:4.5`,
+    /// `kagome:6` (the lattice constant s in µm; honeycomb and kagome: of their triangular
+    /// lattice, with their built-in basis, nearest neighbours s/√3 and s/2 apart) or
+    /// `rectangular:3x2.6` (x and y spacings in µm); replaces a scene file's `slider.lattice`
+    /// or `slider.sites`. A basis of your own or an oblique lattice: the scene file.
+    #[arg(long, value_name = "KIND:SPACING_UM")]
+    pub slider_lattice: Option<String>,
+    /// Slider outline: `disc:R` (radius in µm), `rectangle:WxH` (sides in µm) or
+    /// `polygon:N:R` (N sides, circumradius in µm, a vertex on +x); replaces the disc of
+    /// `--slider-radius-um`. Arbitrary vertices: the scene file (`slider.outline`).
+    #[arg(long, value_name = "SPEC")]
+    pub outline: Option<String>,
+    /// Slider site file (imaged pattern): CSV `x_um,y_um[,diameter_um]` relative to the slider
+    /// centre, path relative to the working directory; replaces the slider lattice.
+    #[arg(long, value_name = "FILE.csv")]
+    pub slider_sites: Option<PathBuf>,
+    /// Substrate site file: CSV `x_um,y_um[,diameter_um]` relative to the substrate centre;
+    /// replaces the substrate lattice.
+    #[arg(long, value_name = "FILE.csv")]
+    pub substrate_sites: Option<PathBuf>,
+    /// Slider sphere diameter in µm (study: 3; the substrate keeps its own).
+    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
+    pub slider_sphere_diameter_um: Option<f64>,
+    /// Substrate sphere diameter in µm (study: 3).
+    #[arg(long, value_name = "UM", allow_hyphen_values = true)]
+    pub substrate_sphere_diameter_um: Option<f64>,
 }
 
 impl SceneOverrides {
@@ -84,7 +110,87 @@ impl SceneOverrides {
         push("--offset-um", self.offset_um.clone());
         push("--tilt", self.tilt.clone());
         push("--tilt-k1-n-m", self.tilt_k1_n_m.map(|x| x.to_string()));
+        push("--slider-lattice", self.slider_lattice.clone());
+        push("--outline", self.outline.clone());
+        let path = |p: &Option<PathBuf>| p.as_ref().map(|p| p.display().to_string());
+        push("--slider-sites", path(&self.slider_sites));
+        push("--substrate-sites", path(&self.substrate_sites));
+        push(
+            "--slider-sphere-diameter-um",
+            self.slider_sphere_diameter_um.map(|x| x.to_string()),
+        );
+        push(
+            "--substrate-sphere-diameter-um",
+            self.substrate_sphere_diameter_um.map(|x| x.to_string()),
+        );
         v
+    }
+
+    /// The lattice of `--slider-lattice` (see its help). Errors name the flag.
+    fn lattice(spec: &str) -> Result<surrogate::scene::LatticeFile> {
+        let flag = "--slider-lattice";
+        let Some((kind, spacing)) = spec.split_once(':') else {
+            bail!("`{flag}`: `{spec}` must be KIND:SPACING_UM, e.g. honeycomb:4.5 or rectangular:3x2.6");
+        };
+        let num = |t: &str| -> Result<f64> {
+            t.trim()
+                .parse()
+                .with_context(|| format!("`{flag}`: `{t}` is not a number (µm)"))
+        };
+        let mut l = surrogate::scene::LatticeFile {
+            kind: kind.trim().to_string(),
+            ..Default::default()
+        };
+        match l.kind.as_str() {
+            "triangular" | "square" | "honeycomb" | "kagome" => {
+                l.spacing_um = Some(num(spacing)?);
+            }
+            "rectangular" => {
+                let Some((x, y)) = spacing.split_once(['x', 'X']) else {
+                    bail!("`{flag}`: a rectangular lattice needs two spacings, e.g. rectangular:3x2.6");
+                };
+                l.spacing_um = Some(num(x)?);
+                l.spacing_y_um = Some(num(y)?);
+            }
+            k => bail!(
+                "`{flag}`: unknown lattice kind `{k}` (triangular, square, honeycomb, kagome, rectangular; a basis or an oblique lattice: the scene file's slider.lattice)"
+            ),
+        }
+        Ok(l)
+    }
+
+    /// The outline of `--outline` (see its help). Errors name the flag.
+    fn outline(spec: &str) -> Result<surrogate::scene::OutlineFile> {
+        let flag = "--outline";
+        let num = |t: &str| -> Result<f64> {
+            t.trim()
+                .parse()
+                .with_context(|| format!("`{flag}`: `{t}` is not a number (µm)"))
+        };
+        let parts: Vec<&str> = spec.split(':').collect();
+        let mut o = surrogate::scene::OutlineFile {
+            kind: parts[0].trim().to_string(),
+            ..Default::default()
+        };
+        match (o.kind.as_str(), &parts[1..]) {
+            ("disc", [r]) => o.radius_um = Some(num(r)?),
+            ("rectangle", [wh]) => {
+                let Some((w, h)) = wh.split_once(['x', 'X']) else {
+                    bail!("`{flag}`: `{spec}`: a rectangle is rectangle:WxH, e.g. rectangle:120x80");
+                };
+                o.size_um = Some([num(w)?, num(h)?]);
+            }
+            ("polygon", [n, r]) => {
+                o.sides = Some(n.trim().parse().with_context(|| {
+                    format!("`{flag}`: `{n}` is not a whole number of sides")
+                })?);
+                o.radius_um = Some(num(r)?);
+            }
+            _ => bail!(
+                "`{flag}`: `{spec}` must be disc:R, rectangle:WxH or polygon:N:R (µm); arbitrary vertices: the scene file's slider.outline"
+            ),
+        }
+        Ok(o)
     }
 }
 
@@ -143,7 +249,34 @@ impl SceneArgs {
             }
             o.slider.offset_um = Some([v[0], v[1]]);
         }
-        Ok(f.merge(&o))
+        let ov = &self.overrides;
+        if let Some(l) = &ov.slider_lattice {
+            o.slider.lattice = Some(SceneOverrides::lattice(l)?);
+        }
+        if let Some(x) = &ov.outline {
+            o.slider.outline = Some(SceneOverrides::outline(x)?);
+        }
+        let path = |p: &PathBuf| p.display().to_string();
+        o.slider.sites = ov.slider_sites.as_ref().map(path);
+        o.substrate.sites = ov.substrate_sites.as_ref().map(path);
+        o.slider.sphere_diameter_um = ov.slider_sphere_diameter_um;
+        o.substrate.sphere_diameter_um = ov.substrate_sphere_diameter_um;
+        let mut m = f.merge(&o);
+        // a lattice flag replaces the file's site list and the other way round
+        if ov.slider_lattice.is_some() {
+            m.slider.sites = None;
+        }
+        if ov.slider_sites.is_some() {
+            // the sites are the slider: the file's lattice and outline go
+            m.slider.lattice = None;
+            if ov.outline.is_none() {
+                m.slider.outline = None;
+            }
+        }
+        if ov.substrate_sites.is_some() {
+            m.substrate.lattice = None;
+        }
+        Ok(m)
     }
 
     /// THE scene resolution of every command: preset ← scene file ← flags, with `theta_deg`

@@ -172,13 +172,18 @@ impl LatticeFile {
                 })
             }
         };
-        if let Some(sp) = self.spacing_um {
-            if !(sp.is_finite() && sp > 0.0) {
-                return Err(SceneError::invalid(
-                    &format!("{field}.spacing_um"),
-                    sp,
-                    "must be a positive number",
-                ));
+        for (name, v) in [
+            ("spacing_um", self.spacing_um),
+            ("spacing_y_um", self.spacing_y_um),
+        ] {
+            if let Some(sp) = v {
+                if !(sp.is_finite() && sp > 0.0) {
+                    return Err(SceneError::invalid(
+                        &format!("{field}.{name}"),
+                        sp,
+                        "must be a positive number",
+                    ));
+                }
             }
         }
         l.validate(field)?;

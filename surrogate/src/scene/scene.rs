@@ -321,6 +321,35 @@ impl Scene {
                 "substrate.lattice.basis_um",
             )?;
         }
+        // a Bravais lattice (no site file replacing it) closer than its spheres' diameter
+        for (l, basis, sites, d, field) in [
+            (
+                &self.slider.lattice,
+                &g.slider_basis,
+                &g.slider_sites,
+                d_sl,
+                "slider.lattice",
+            ),
+            (
+                &self.substrate.lattice,
+                &g.substrate_basis,
+                &g.substrate_sites,
+                d_sb,
+                "substrate.lattice",
+            ),
+        ] {
+            let s = l.min_spacing();
+            if basis.len() <= 1 && sites.is_none() && s < d * (1.0 - 1e-9) {
+                return Err(SceneError::invalid(
+                    field,
+                    format!("{:.6} µm nearest-site spacing", s * 1e6),
+                    &format!(
+                        "spheres of diameter {} µm on it overlap: give a spacing of at least the sphere diameter",
+                        d * 1e6
+                    ),
+                ));
+            }
+        }
         for (l, d, field) in [
             (&g.slider_sites, d_sl, "slider.sites"),
             (&g.substrate_sites, d_sb, "substrate.sites"),

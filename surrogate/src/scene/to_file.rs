@@ -217,7 +217,7 @@ mod tests {
         .unwrap();
         round_trips(&f.into_scene().unwrap());
         let f = SceneFile::from_toml(
-            "[slider]\nlattice = { kind = 'rectangular', spacing_um = 2.9, spacing_y_um = 3.3 }\n\
+            "[slider]\nlattice = { kind = 'rectangular', spacing_um = 3.05, spacing_y_um = 3.3 }\n\
              tilt_k1_N_m = 2.5e5\n[substrate]\nlattice = { kind = 'square', spacing_um = 3.1 }\n",
             "t",
         )
