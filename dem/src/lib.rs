@@ -45,25 +45,56 @@ pub use system::{from_scene, Start, StartInfo, SystemSpec};
 use model::{ContactModel, Friction, HertzNormal, Mindlin, PressureSwitched};
 use surrogate::Scene;
 
-/// Refuses a scene whose site file gives per-site sphere sizes (a `diameter_um` column with
-/// differing values): the DEM tiers (and the LAMMPS export) hold one radius per body, and never
-/// silently use one size for spheres of several. The error names the field (`slider.sites` or
-/// `substrate.sites`) and the file. O(1).
-pub fn check_scene(scene: &Scene) -> Result<(), DemError> {
+/// The site file (field name and path) of the first body of `scene` whose spheres differ in
+/// size, if any. O(1).
+fn sized_site_file(scene: &Scene) -> Option<(&'static str, &str)> {
     let g = &scene.geometry;
-    for (field, l) in [
+    [
         ("slider.sites", &g.slider_sites),
         ("substrate.sites", &g.substrate_sites),
-    ] {
-        if let Some(l) = l.as_ref().filter(|l| l.radii.is_some()) {
+    ]
+    .into_iter()
+    .find_map(|(field, l)| {
+        l.as_ref()
+            .filter(|l| l.radii.is_some())
+            .map(|l| (field, l.path.as_str()))
+    })
+}
+
+/// Refuses what the DEM engine cannot run for `scene` with `params`: per-site sphere sizes (a
+/// site file whose `diameter_um` column gives differing values) with the active set on. The
+/// engine takes each sphere's own radius and mass, but the active set moves every free slider
+/// sphere by one shared "common mode", exact only when they all have one mass; it must be off
+/// (`--no-active-set`). The error names the option, the field (`slider.sites` or
+/// `substrate.sites`) and the file. O(1).
+pub fn check_scene(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
+    if params.active_set {
+        if let Some((field, path)) = sized_site_file(scene) {
             return Err(DemError::invalid(
-                field,
-                &l.path,
-                "its diameter_um column gives spheres of differing sizes: the DEM tiers \
-                 (equilibrate, slide, export-lammps) support one sphere size per body; \
-                 the surrogate tiers (screen, landscape, corrugation, friction) take per-site sizes",
+                "active_set",
+                "on",
+                &format!(
+                    "{field} `{path}` gives spheres of differing sizes (diameter_um): the active \
+                     set moves the free slider spheres as one common mode of one mass; give \
+                     --no-active-set (every sphere integrated with its own mass)"
+                ),
             ));
         }
+    }
+    Ok(())
+}
+
+/// Refuses a scene with per-site sphere sizes for the LAMMPS export, which writes one diameter
+/// per body. The error names the field (`slider.sites` or `substrate.sites`) and the file. O(1).
+pub fn check_export_scene(scene: &Scene) -> Result<(), DemError> {
+    if let Some((field, path)) = sized_site_file(scene) {
+        return Err(DemError::invalid(
+            field,
+            path,
+            "its diameter_um column gives spheres of differing sizes: export-lammps supports \
+             one sphere size per body; equilibrate and slide (with --no-active-set) and the \
+             surrogate tiers take per-site sizes",
+        ));
     }
     Ok(())
 }
@@ -113,8 +144,31 @@ pub fn stability_input(
     p_ref: f64,
 ) -> StabilityInput {
     let m = contact_model(scene, params, None);
-    let m_slider = scene.material.sphere_mass(scene.slider_sphere_radius());
-    let m_substrate = scene.material.sphere_mass(scene.sphere_radius);
+    // with per-site sizes the lightest spheres and the stiffest pair (largest R_eff) bound
+    // the step
+    let (m_slider, m_substrate, r_eff) = if scene.has_site_sizes() {
+        let min =
+            |r: Option<&[f64]>, r0: f64| r.map_or(r0, |r| r.iter().copied().fold(r0, f64::min));
+        let (r_sl, r_sb) = (
+            scene.max_slider_sphere_radius(),
+            scene.max_contact_distance() - scene.max_slider_sphere_radius(),
+        );
+        (
+            scene
+                .material
+                .sphere_mass(min(scene.slider_radii(), f64::INFINITY)),
+            scene
+                .material
+                .sphere_mass(min(scene.substrate_radii(), scene.sphere_radius)),
+            r_sl * r_sb / (r_sl + r_sb),
+        )
+    } else {
+        (
+            scene.material.sphere_mass(scene.slider_sphere_radius()),
+            scene.material.sphere_mass(scene.sphere_radius),
+            m.normal.hertz.r_eff,
+        )
+    };
     let m_control = scene.material.sphere_mass(params.control_sphere_radius);
     StabilityInput {
         m_slider,
@@ -124,7 +178,7 @@ pub fn stability_input(
         n_contacts,
         e_star: m.normal.hertz.e_star,
         g_star: m.tangential.g_star,
-        r_eff: m.normal.hertz.r_eff,
+        r_eff,
         p_ref,
         tilt_omega2: tilt_omega2(scene, params, m_slider, m_control),
     }
@@ -179,7 +233,7 @@ pub fn prepare(
     start: Start,
     friction: Option<Friction>,
 ) -> Result<Prepared, DemError> {
-    check_scene(scene)?;
+    check_scene(scene, &params)?;
     if !(params.load.is_finite() && params.load > 0.0) {
         return Err(DemError::invalid(
             "load_mN",

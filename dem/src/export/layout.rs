@@ -253,6 +253,8 @@ mod tests {
             control_z: 2.9e-6,
             slider_sphere_radius: 1e-6,
             substrate_sphere_radius: 1.5e-6,
+            slider_radii: None,
+            substrate_radii: None,
             material: Material::default(),
             tilt_stiffness: None,
             disc: None,

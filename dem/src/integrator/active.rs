@@ -298,7 +298,7 @@ impl Sim {
     /// Rebuilds the candidate pair list from the global positions (keeps histories).
     fn rebuild(&mut self) {
         let s = &mut self.state;
-        let cutoff = self.spec.contact_distance() + self.params.skin;
+        let cutoff = self.spec.max_contact_distance() + self.params.skin;
         s.pairs = build_pairs(&s.sub_x, &self.sub_h, &s.sl_x, cutoff, &s.pairs);
         s.ref_sub.clone_from(&s.sub_x);
         s.ref_sl.clone_from(&s.sl_x);
@@ -333,6 +333,10 @@ impl Sim {
                 let a = s.sl_x[i as usize];
                 let b = s.sub_x[j as usize];
                 let d = [a[0] - b[0], a[1] - b[1], a[2] - self.sub_h[j as usize]];
+                let two_r = match &self.body.sizes {
+                    None => two_r,
+                    Some(z) => z.sl_r[i as usize] + z.sub_r[j as usize],
+                };
                 let gap = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() - two_r;
                 if gap < margin {
                     pairs.push(k as u32);
