@@ -84,21 +84,6 @@ pub fn check_scene(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
     Ok(())
 }
 
-/// Refuses a scene with per-site sphere sizes for the LAMMPS export, which writes one diameter
-/// per body. The error names the field (`slider.sites` or `substrate.sites`) and the file. O(1).
-pub fn check_export_scene(scene: &Scene) -> Result<(), DemError> {
-    if let Some((field, path)) = sized_site_file(scene) {
-        return Err(DemError::invalid(
-            field,
-            path,
-            "its diameter_um column gives spheres of differing sizes: export-lammps supports \
-             one sphere size per body; equilibrate and slide (with --no-active-set) and the \
-             surrogate tiers take per-site sizes",
-        ));
-    }
-    Ok(())
-}
-
 /// A ready-to-run simulation with its provenance.
 pub struct Prepared {
     /// The engine at its start state.
