@@ -329,13 +329,11 @@ fn a_run_on_a_resonant_mount_says_so() {
 }
 
 /// Per-site sphere sizes (a slider site file with 4 µm, 2 µm and 3 µm spheres) in the DEM
-/// tiers: equilibrate and slide (one run and a batch) refuse the active set before any work (no
-/// output written), naming `--no-active-set`, the field and the file (its common mode moves every
-/// free slider sphere with one mass); with `--no-active-set` each runs, equilibrate settling on
-/// the screen's contacts and P_max (2 %), its snapshots giving each sphere its own radius; and
-/// design's DEM stage runs with the active set off by itself (its runs record why).
+/// tiers: slide (one run and a batch) runs; equilibrate, from a gap, settles on the screen's
+/// contacts and P_max (2 %), its snapshots giving each sphere its own radius; and design's DEM
+/// stage confirms with the active set on (each slider sphere integrated, docs/physics.md).
 #[test]
-fn per_site_sizes_run_in_the_dem_tiers_without_the_active_set() {
+fn per_site_sizes_run_in_the_dem_tiers() {
     let d = tmpdir("per_site_sizes");
     std::fs::write(
         d.join("sites.csv"),
@@ -384,27 +382,15 @@ fn per_site_sizes_run_in_the_dem_tiers_without_the_active_set() {
     ]
     .concat();
     let equilibrate = ["equilibrate", "--scene", s, "--load-mn", "0.05", "--out", o];
-    for args in [&equilibrate[..], &slide, &slide_batch] {
-        fails_naming(args, "--no-active-set");
-        fails_naming(args, "slider.sites");
-        fails_naming(args, "sites.csv");
-    }
-    assert!(!csv_out.exists() && !batch.exists());
     for args in [&slide[..], &slide_batch] {
-        let out = bin().args(args).arg("--no-active-set").output().unwrap();
+        let out = bin().args(args).output().unwrap();
         assert_ok(&out);
     }
     assert!(csv_out.exists() && batch.exists());
     let (js, xyz) = (d.join("eq.json"), d.join("eq.xyz"));
     let out = bin()
         .args(equilibrate)
-        .args([
-            "--no-active-set",
-            "--equilibrate-us",
-            "3",
-            "--xyz-every",
-            "1000",
-        ])
+        .args(["--equilibrate-us", "3", "--xyz-every", "1000"])
         .args(["--start", "gap", "--gap-nm", "1"])
         .arg("--json")
         .arg(&js)
@@ -456,10 +442,7 @@ fn per_site_sizes_run_in_the_dem_tiers_without_the_active_set() {
     let dem = std::fs::read_to_string(design.join("dem.csv")).unwrap();
     assert!(dem.lines().count() > 1 && dem.contains(",ok,"), "{dem}");
     let run = json(&design.join("dem/varied_theta0_alpha0_W0.05/slide.json"));
-    assert_eq!(run["active_set"].as_bool(), Some(false), "{run}");
-    assert!(run
-        .to_string()
-        .contains("active set off (per-site sphere sizes"));
+    assert_eq!(run["active_set"].as_bool(), Some(true), "{run}");
     std::fs::remove_dir_all(&d).ok();
 }
 

@@ -120,21 +120,10 @@ fn csv(path: &Path) -> Vec<std::collections::HashMap<String, f64>> {
 /// in LAMMPS side by side; returns the LAMMPS log and the wall time of the LAMMPS run (s), once
 /// both have finished.
 fn run_side_by_side(lmp: &str, dir: &Path, args: &[&str]) -> (String, f64) {
-    run_side_by_side_with(lmp, dir, args, &[])
-}
-
-/// [`run_side_by_side`] with `rust_extra` flags for `superlube slide` alone.
-fn run_side_by_side_with(
-    lmp: &str,
-    dir: &Path,
-    args: &[&str],
-    rust_extra: &[&str],
-) -> (String, f64) {
     let t0 = std::time::Instant::now();
     let rust = bin()
         .arg("slide")
         .args(args)
-        .args(rust_extra)
         .arg("--out")
         .arg(dir.join("rust.csv"))
         .arg("--json")
@@ -899,7 +888,7 @@ fn lammps_and_the_rust_dem_agree_with_per_site_sizes() {
     ];
     let meta = export(&dir, &[&args[..], &["--dump-us", "0.05"]].concat());
     assert_eq!(meta["slider_radii_um"].as_array().unwrap().len(), 81);
-    let (log, _) = run_side_by_side_with(&lmp, &dir, &args, &["--no-active-set"]);
+    let (log, _) = run_side_by_side(&lmp, &dir, &args);
 
     let rows = csv(&dir.join("rust.csv"));
     let eq = rows

@@ -45,45 +45,6 @@ pub use system::{from_scene, Start, StartInfo, SystemSpec};
 use model::{ContactModel, Friction, HertzNormal, Mindlin, PressureSwitched};
 use surrogate::Scene;
 
-/// The site file (field name and path) of the first body of `scene` whose spheres differ in
-/// size, if any. O(1).
-fn sized_site_file(scene: &Scene) -> Option<(&'static str, &str)> {
-    let g = &scene.geometry;
-    [
-        ("slider.sites", &g.slider_sites),
-        ("substrate.sites", &g.substrate_sites),
-    ]
-    .into_iter()
-    .find_map(|(field, l)| {
-        l.as_ref()
-            .filter(|l| l.radii.is_some())
-            .map(|l| (field, l.path.as_str()))
-    })
-}
-
-/// Refuses what the DEM engine cannot run for `scene` with `params`: per-site sphere sizes (a
-/// site file whose `diameter_um` column gives differing values) with the active set on. The
-/// engine takes each sphere's own radius and mass, but the active set moves every free slider
-/// sphere by one shared "common mode", exact only when they all have one mass; it must be off
-/// (`--no-active-set`). The error names the option, the field (`slider.sites` or
-/// `substrate.sites`) and the file. O(1).
-pub fn check_scene(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
-    if params.active_set {
-        if let Some((field, path)) = sized_site_file(scene) {
-            return Err(DemError::invalid(
-                "active_set",
-                "on",
-                &format!(
-                    "{field} `{path}` gives spheres of differing sizes (diameter_um): the active \
-                     set moves the free slider spheres as one common mode of one mass; give \
-                     --no-active-set (every sphere integrated with its own mass)"
-                ),
-            ));
-        }
-    }
-    Ok(())
-}
-
 /// A ready-to-run simulation with its provenance.
 pub struct Prepared {
     /// The engine at its start state.
@@ -218,7 +179,6 @@ pub fn prepare(
     start: Start,
     friction: Option<Friction>,
 ) -> Result<Prepared, DemError> {
-    check_scene(scene, &params)?;
     if !(params.load.is_finite() && params.load > 0.0) {
         return Err(DemError::invalid(
             "load_mN",

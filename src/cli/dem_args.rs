@@ -258,7 +258,6 @@ impl DemArgs {
         }
         let sc = self.scene.resolve(thetas[0])?;
         let p = self.params(alphas[0], loads[0], protocol)?;
-        p.check_scene(&sc.scene)?;
         if protocol.slide_us > 0.0 {
             self.check_line(&sc.scene)?;
         }

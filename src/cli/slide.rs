@@ -157,7 +157,6 @@ fn run_batch_command(
                         }
                     }
                     let params = a.dem.params(al, w, &a.protocol)?;
-                    params.check_scene(&sc.scene)?;
                     jobs.push(SlideJob {
                         name: run_name(&sc.scene, &params),
                         scene: sc.scene,

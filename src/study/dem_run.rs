@@ -60,19 +60,6 @@ impl Default for ModelSpec {
     }
 }
 
-impl DemParams {
-    /// Refuses, before any work, what the engine cannot run for `scene` with these parameters
-    /// ([`dem::check_scene`]: per-site sphere sizes need `--no-active-set`). O(1).
-    pub fn check_scene(&self, scene: &Scene) -> Result<()> {
-        let sim = SimParams {
-            active_set: self.model.active_set,
-            ..self.sim.clone()
-        };
-        dem::check_scene(scene, &sim)?;
-        Ok(())
-    }
-}
-
 /// The reductions for `scene` and `sim` (pulling direction already set) per `spec`, with the
 /// reason ([`dem::choose_model`]; costs one surrogate solve and, for `auto` with sliding, the
 /// Prandtl–Tomlinson path of ~40 solves).
@@ -86,11 +73,6 @@ pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec) -> Result<ModelCh
     if !spec.active_set {
         c.active_set = false;
         c.reason.push_str("; active set off (--no-active-set)");
-    } else if scene.has_site_sizes() && c.active_set {
-        // the common mode of the free slider spheres takes one sphere mass
-        c.active_set = false;
-        c.reason
-            .push_str("; active set off (per-site sphere sizes: every sphere integrated)");
     }
     Ok(c)
 }

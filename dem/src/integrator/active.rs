@@ -352,6 +352,15 @@ impl Sim {
                 }
             }
         }
+        // per-site sizes: a body whose spheres differ in mass keeps every sphere integrated (the
+        // common mode of the free slider spheres and the ringing maps take one mass); the
+        // other body's spheres still leave the set
+        if self.spec.slider_radii.is_some() {
+            sl_on.fill(true);
+        }
+        if self.spec.substrate_radii.is_some() {
+            sub_on.fill(true);
+        }
         // slider spheres: deviations of the ringing ones, as of now
         let mut dev_sl: Vec<Option<[f64; 6]>> = vec![None; n];
         for (k, &i) in self.state.ringing.sl.iter().enumerate() {

@@ -38,7 +38,6 @@ pub fn from_scene(
     params: &SimParams,
     start: Start,
 ) -> Result<(SystemSpec, StartInfo), DemError> {
-    crate::check_scene(scene, params)?;
     let solver = Solver::new(scene)?;
     let eq = solver.solve(
         Pose {
