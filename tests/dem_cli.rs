@@ -328,12 +328,12 @@ fn a_run_on_a_resonant_mount_says_so() {
     assert_eq!(r_intact, r);
 }
 
-/// Per-site sphere sizes (a slider site file with 2 µm and 4 µm spheres) run in the surrogate
-/// tiers; the DEM tiers hold one radius per body and refuse them before any work (no output
-/// written), naming the field and the file, rather than silently using one size: equilibrate,
-/// slide (one run and a batch), and design unless it stops before the DEM (`--no-dem`).
+/// Per-site sphere sizes (a slider site file with 4 µm, 2 µm and 3 µm spheres) in the DEM
+/// tiers: slide (one run and a batch) runs; equilibrate, from a gap, settles on the screen's
+/// contacts and P_max (2 %), its snapshots giving each sphere its own radius; and design's DEM
+/// stage confirms with the active set on (each slider sphere integrated, docs/physics.md).
 #[test]
-fn per_site_sizes_are_refused_by_the_dem_tiers() {
+fn per_site_sizes_run_in_the_dem_tiers() {
     let d = tmpdir("per_site_sizes");
     std::fs::write(
         d.join("sites.csv"),
@@ -352,51 +352,97 @@ fn per_site_sizes_are_refused_by_the_dem_tiers() {
         .output()
         .unwrap();
     assert_ok(&out);
-    let csv_out = d.join("never.csv");
+    let mut r = csv::Reader::from_reader(&out.stdout[..]);
+    let h = r.headers().unwrap().clone();
+    let row = r.records().next().unwrap().unwrap();
+    let col = |k: &str| -> f64 { row[h.iter().position(|x| x == k).unwrap()].parse().unwrap() };
+    let (contacts, p_max) = (col("contacts"), col("p_max_GPa"));
+    let csv_out = d.join("run.csv");
     let o = csv_out.to_str().unwrap();
-    let batch = d.join("never");
+    let batch = d.join("batch");
     let b = batch.to_str().unwrap();
-    for args in [
-        &["equilibrate", "--scene", s, "--load-mn", "0.05", "--out", o][..],
-        &[
-            "slide",
-            "--scene",
-            s,
-            "--line-deg",
-            "0",
-            "--load-mn",
-            "0.05",
-            "--out",
-            o,
-        ][..],
-        &[
-            "slide",
-            "--scene",
-            s,
-            "--line-deg",
-            "0",
-            "--load-mn",
-            "0.05,0.1",
-            "--out-dir",
-            b,
-        ][..],
-    ] {
-        fails_naming(args, "slider.sites");
-        fails_naming(args, "sites.csv");
-    }
-    assert!(!csv_out.exists() && !batch.exists());
-    let design = d.join("design");
-    let args = [
-        "design",
-        "--scene",
-        s,
-        "--line-deg",
-        "0",
-        "--out-dir",
-        design.to_str().unwrap(),
+    let short = [
+        "--equilibrate-us",
+        "0.3",
+        "--relax-us",
+        "0.1",
+        "--slide-us",
+        "0.3",
     ];
-    fails_naming(&args, "slider.sites");
-    fails_naming(&args, "--no-dem");
+    let slide = [
+        &["slide", "--scene", s, "--line-deg", "0", "--out", o][..],
+        &["--load-mn", "0.05"],
+        &short,
+    ]
+    .concat();
+    let slide_batch = [
+        &["slide", "--scene", s, "--line-deg", "0", "--out-dir", b][..],
+        &["--load-mn", "0.05,0.1"],
+        &short,
+    ]
+    .concat();
+    let equilibrate = ["equilibrate", "--scene", s, "--load-mn", "0.05", "--out", o];
+    for args in [&slide[..], &slide_batch] {
+        let out = bin().args(args).output().unwrap();
+        assert_ok(&out);
+    }
+    assert!(csv_out.exists() && batch.exists());
+    let (js, xyz) = (d.join("eq.json"), d.join("eq.xyz"));
+    let out = bin()
+        .args(equilibrate)
+        .args(["--equilibrate-us", "3", "--xyz-every", "1000"])
+        .args(["--start", "gap", "--gap-nm", "1"])
+        .arg("--json")
+        .arg(&js)
+        .arg("--xyz")
+        .arg(&xyz)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let j = json(&js);
+    assert_eq!(j["contacts"].as_f64(), Some(contacts), "{j}");
+    let p = j["p_max_GPa"].as_f64().unwrap();
+    assert!(
+        (p / p_max - 1.0).abs() < 0.02,
+        "DEM P_max {p} vs screen {p_max} GPa"
+    );
+    let text = std::fs::read_to_string(&xyz).unwrap();
+    let frame: Vec<f64> = text
+        .lines()
+        .filter(|l| l.starts_with("S "))
+        .take(4)
+        .map(|l| l.split_whitespace().nth(4).unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(frame, [2.0, 1.0, 1.0, 1.5]);
+    let design = d.join("design");
+    let out = bin()
+        .args([
+            "design",
+            "--scene",
+            s,
+            "--line-deg",
+            "0",
+            "--theta",
+            "0:10:10",
+        ])
+        .args(["--load-mn", "0.05", "--p-crit-gpa", "20", "--confirm", "1"])
+        .args(["--dem-equilibrate-us", "0.3", "--dem-relax-us", "0.1"])
+        .args([
+            "--dem-slide-us",
+            "0.3",
+            "--dem-speed-m-s",
+            "1",
+            "--no-protocol-check",
+        ])
+        .arg("--out-dir")
+        .arg(&design)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let dem = std::fs::read_to_string(design.join("dem.csv")).unwrap();
+    assert!(dem.lines().count() > 1 && dem.contains(",ok,"), "{dem}");
+    let run = json(&design.join("dem/varied_theta0_alpha0_W0.05/slide.json"));
+    assert_eq!(run["active_set"].as_bool(), Some(true), "{run}");
     std::fs::remove_dir_all(&d).ok();
 }
 

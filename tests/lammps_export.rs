@@ -760,15 +760,17 @@ fn data_diameters(path: &Path) -> Vec<(u32, f64)> {
         .collect()
 }
 
-/// Per-site sphere sizes (a slider site file with 2 µm and 4 µm spheres): `export-lammps`
-/// refuses the scene before writing anything, naming the field and the file (the DEM tiers hold
-/// one radius per body; each atom's own diameter is not exported yet).
+/// Per-site sphere sizes (a slider site file with 4 µm, 2 µm, 2 µm and 3 µm spheres; no LAMMPS
+/// needed): `export-lammps` writes each slider atom's own diameter (the substrate's stays 3 µm)
+/// and export.json each one's radius; slider sphere i's two control spheres sit its anchor
+/// offset R − r_i higher (so its ties keep their rest lengths); the deck damps each sphere with
+/// its own mass and takes P_max per (slider size, substrate size) class.
 #[test]
-fn export_of_per_site_sizes_is_refused_naming_the_site_file() {
+fn export_of_per_site_sizes_writes_each_atoms_diameter() {
     let dir = tmpdir("per-site-sizes");
     std::fs::write(
         dir.join("sites.csv"),
-        "x_um,y_um,diameter_um\n0,0,4\n9,0,2\n",
+        "x_um,y_um,diameter_um\n0,0,4\n9,0,2\n0,9,2\n-9,0,\n",
     )
     .unwrap();
     let scene = dir.join("varied.toml");
@@ -778,23 +780,163 @@ fn export_of_per_site_sizes_is_refused_naming_the_site_file() {
     )
     .unwrap();
     let out_dir = dir.join("out");
+    let s = scene.to_str().unwrap();
+    let meta = export(
+        &out_dir,
+        &[
+            "--scene",
+            s,
+            "--line-deg",
+            "0",
+            "--load-mn",
+            "0.05",
+            "--slide-us",
+            "10",
+        ],
+    );
+    let radii: Vec<f64> = meta["slider_radii_um"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(radii, [2.0, 1.0, 1.0, 1.5]);
+    let diameters = data_diameters(&out_dir.join("scene.data"));
+    let of = |t: u32| -> Vec<f64> {
+        diameters
+            .iter()
+            .filter(|(k, _)| *k == t)
+            .map(|(_, d)| *d)
+            .collect()
+    };
+    assert_eq!(of(2), [4.0, 2.0, 2.0, 3.0]);
+    assert!(of(1).iter().all(|&d| d == 3.0) && !of(1).is_empty());
+    // lateral control sphere i at the layer's height plus R − r_i
+    let lateral: Vec<f64> = data_atoms(&out_dir.join("scene.data"))
+        .iter()
+        .filter(|a| a.1 == 4)
+        .map(|a| a.2[2])
+        .collect();
+    for (z, r) in lateral.iter().zip(&radii) {
+        let want = lateral[3] + (1.5 - r);
+        assert!((z - want).abs() < 1e-9, "lateral control z {z} vs {want}");
+    }
+    let deck = std::fs::read_to_string(out_dir.join("in.superlube.lmp")).unwrap();
+    assert!(deck.contains("fix             dsl slider addforce v_dslx v_dsly v_dslz"));
+    assert!(
+        deck.contains("group           pc2_0 union sl2 sb0"),
+        "three slider sizes"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Per-site sizes through LAMMPS (≈ 11 s of `lmp`): a 15 µm square-lattice slider from a site
+/// file whose spheres alternate between 3 µm and 2.998 µm (both sizes in contact), the
+/// protocol of the two-size cross-check. Equilibrium contacts equal and P_max within 0.5 %
+/// (measured: 10⁻⁵), the spring force while it loads up within 0.5 %, friction within 5 %
+/// (measured 10⁻⁴), and `lammps-check` (each pair's own radii from export.json) agrees with
+/// the deck's own time series at every common frame.
+#[test]
+fn lammps_and_the_rust_dem_agree_with_per_site_sizes() {
+    let Some(lmp) = lmp() else { return };
+    let dir = tmpdir("cross-sites");
+    let mut csv_text = String::from("x_um,y_um,diameter_um\n");
+    for i in -5i32..=5 {
+        for j in -5i32..=5 {
+            if i * i + j * j <= 25 {
+                let d = if (i + j) % 2 != 0 { "2.998" } else { "" };
+                csv_text.push_str(&format!("{},{},{d}\n", 3 * i, 3 * j));
+            }
+        }
+    }
+    std::fs::write(dir.join("sq.csv"), csv_text).unwrap();
+    let scene = dir.join("sq.toml");
+    std::fs::write(
+        &scene,
+        "pattern = 'square-tri'\n[substrate]\nsize_um = [66, 54]\n[slider]\nsites = 'sq.csv'\n",
+    )
+    .unwrap();
+    let args = [
+        "--scene",
+        scene.to_str().unwrap(),
+        "--tilt",
+        "locked",
+        "--theta",
+        "0",
+        "--line-deg",
+        "0",
+        "--alpha",
+        "90",
+        "--load-mn",
+        "0.05",
+        "--mu",
+        "0.5",
+        "--p-crit-gpa",
+        "2",
+        "--equilibrate-us",
+        "0.5",
+        "--relax-us",
+        "0.2",
+        "--slide-us",
+        "2.5",
+        "--speed-m-s",
+        "1",
+        "--dt-us",
+        "2e-5",
+        "--sample-us",
+        "0.05",
+    ];
+    let meta = export(&dir, &[&args[..], &["--dump-us", "0.05"]].concat());
+    assert_eq!(meta["slider_radii_um"].as_array().unwrap().len(), 81);
+    let (log, _) = run_side_by_side(&lmp, &dir, &args);
+
+    let rows = csv(&dir.join("rust.csv"));
+    let eq = rows
+        .iter()
+        .find(|r| (r["t_us"] - 0.5).abs() < 1e-9)
+        .expect("rust sample at 0.5 µs");
+    let l = result(&log, "equilibrate");
+    assert_eq!(l["contacts"], eq["contacts"], "equilibrium contacts");
+    let (pl, pr) = (l["p_max_GPa"], eq["p_max_GPa"]);
+    assert!(
+        (pl - pr).abs() < 0.005 * pr,
+        "P_max LAMMPS {pl} vs Rust {pr} GPa"
+    );
+    assert!(
+        (l["z_um"] - eq["z_um"]).abs() < 1e-6,
+        "z {} vs {}",
+        l["z_um"],
+        eq["z_um"]
+    );
+    let lrows = csv(&dir.join("timeseries.csv"));
+    assert_ramp_agrees(&rows, &lrows, 5);
+    let fr = json(&dir.join("rust.json"))["friction_mN"]
+        .as_f64()
+        .unwrap();
+    let fl = deck_friction(&log);
+    eprintln!("per-site sizes: P_max {pl} / {pr} GPa; friction LAMMPS {fl} / Rust {fr} mN");
+    assert!(fr > 0.3 * 0.5 * 0.05, "the slider must slide: {fr} mN");
+    assert!(
+        (fl - fr).abs() < 0.05 * fr,
+        "friction LAMMPS {fl} vs Rust {fr} mN"
+    );
     let out = bin()
-        .arg("export-lammps")
-        .arg("--scene")
-        .arg(&scene)
-        .args(["--line-deg", "0", "--load-mn", "0.05", "--out-dir"])
-        .arg(&out_dir)
+        .arg("lammps-check")
+        .arg(dir.join("contacts.dump"))
+        .arg("--out")
+        .arg(dir.join("check.csv"))
         .output()
         .unwrap();
-    assert!(!out.status.success());
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains("slider.sites")
-            && err.contains("sites.csv")
-            && err.contains("one sphere size per body"),
-        "{err}"
-    );
-    assert!(!out_dir.exists());
+    assert_ok("lammps-check", &out);
+    let dt = meta["dt_us"].as_f64().unwrap();
+    let mut matched = 0;
+    for f in &csv(&dir.join("check.csv")) {
+        let t = f["step"] * dt;
+        if frame_matches(f, t, &lrows) {
+            matched += 1;
+        }
+    }
+    assert!(matched >= 60, "{matched} frames matched the time series");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

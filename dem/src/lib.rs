@@ -45,29 +45,6 @@ pub use system::{from_scene, Start, StartInfo, SystemSpec};
 use model::{ContactModel, Friction, HertzNormal, Mindlin, PressureSwitched};
 use surrogate::Scene;
 
-/// Refuses a scene whose site file gives per-site sphere sizes (a `diameter_um` column with
-/// differing values): the DEM tiers (and the LAMMPS export) hold one radius per body, and never
-/// silently use one size for spheres of several. The error names the field (`slider.sites` or
-/// `substrate.sites`) and the file. O(1).
-pub fn check_scene(scene: &Scene) -> Result<(), DemError> {
-    let g = &scene.geometry;
-    for (field, l) in [
-        ("slider.sites", &g.slider_sites),
-        ("substrate.sites", &g.substrate_sites),
-    ] {
-        if let Some(l) = l.as_ref().filter(|l| l.radii.is_some()) {
-            return Err(DemError::invalid(
-                field,
-                &l.path,
-                "its diameter_um column gives spheres of differing sizes: the DEM tiers \
-                 (equilibrate, slide, export-lammps) support one sphere size per body; \
-                 the surrogate tiers (screen, landscape, corrugation, friction) take per-site sizes",
-            ));
-        }
-    }
-    Ok(())
-}
-
 /// A ready-to-run simulation with its provenance.
 pub struct Prepared {
     /// The engine at its start state.
@@ -113,8 +90,31 @@ pub fn stability_input(
     p_ref: f64,
 ) -> StabilityInput {
     let m = contact_model(scene, params, None);
-    let m_slider = scene.material.sphere_mass(scene.slider_sphere_radius());
-    let m_substrate = scene.material.sphere_mass(scene.sphere_radius);
+    // with per-site sizes the lightest spheres and the stiffest pair (largest R_eff) bound
+    // the step
+    let (m_slider, m_substrate, r_eff) = if scene.has_site_sizes() {
+        let min =
+            |r: Option<&[f64]>, r0: f64| r.map_or(r0, |r| r.iter().copied().fold(r0, f64::min));
+        let (r_sl, r_sb) = (
+            scene.max_slider_sphere_radius(),
+            scene.max_contact_distance() - scene.max_slider_sphere_radius(),
+        );
+        (
+            scene
+                .material
+                .sphere_mass(min(scene.slider_radii(), f64::INFINITY)),
+            scene
+                .material
+                .sphere_mass(min(scene.substrate_radii(), scene.sphere_radius)),
+            r_sl * r_sb / (r_sl + r_sb),
+        )
+    } else {
+        (
+            scene.material.sphere_mass(scene.slider_sphere_radius()),
+            scene.material.sphere_mass(scene.sphere_radius),
+            m.normal.hertz.r_eff,
+        )
+    };
     let m_control = scene.material.sphere_mass(params.control_sphere_radius);
     StabilityInput {
         m_slider,
@@ -124,7 +124,7 @@ pub fn stability_input(
         n_contacts,
         e_star: m.normal.hertz.e_star,
         g_star: m.tangential.g_star,
-        r_eff: m.normal.hertz.r_eff,
+        r_eff,
         p_ref,
         tilt_omega2: tilt_omega2(scene, params, m_slider, m_control),
     }
@@ -179,7 +179,6 @@ pub fn prepare(
     start: Start,
     friction: Option<Friction>,
 ) -> Result<Prepared, DemError> {
-    check_scene(scene)?;
     if !(params.load.is_finite() && params.load > 0.0) {
         return Err(DemError::invalid(
             "load_mN",

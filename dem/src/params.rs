@@ -114,6 +114,8 @@ pub struct SimParams {
     /// contact; the rest follow their rest state (substrate: tether site; slider: its site on
     /// the control layer plus the common relative motion of all free slider spheres) plus, while
     /// they ring down after a contact, an exactly propagated deviation. See `docs/validation/dem-engine.md`.
+    /// With per-site sphere sizes every sphere of a body whose sizes differ stays in the set (the
+    /// common mode and the ringing maps take one mass).
     pub active_set: bool,
     /// Activation margin (m): a slider–substrate pair is integrated while its gap
     /// (centre distance − 2R) is below this; the set is re-evaluated as soon as some particle

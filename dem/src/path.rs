@@ -18,7 +18,7 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
     let lat = scene.substrate.lattice;
     let norm = |a: [f64; 2]| (a[0] * a[0] + a[1] * a[1]).sqrt();
     let drift = norm(lat.a1).max(norm(lat.a2));
-    let reach = scene.slider.radius + scene.slider_sphere_radius() + drift;
+    let reach = scene.slider.radius + scene.max_slider_sphere_radius() + drift;
     let half = [0.5 * scene.substrate.size[0], 0.5 * scene.substrate.size[1]];
     let lim = [half[0] - reach, half[1] - reach];
     let c0 = scene.slider.offset;
@@ -62,7 +62,7 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
         travel * um,
         params.alpha.to_degrees(),
         scene.slider.radius * um,
-        scene.slider_sphere_radius() * um,
+        scene.max_slider_sphere_radius() * um,
         drift * um,
         o * um,
         scene.substrate.size[0] * um,

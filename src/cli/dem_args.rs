@@ -257,7 +257,6 @@ impl DemArgs {
             }
         }
         let sc = self.scene.resolve(thetas[0])?;
-        dem::check_scene(&sc.scene)?;
         let p = self.params(alphas[0], loads[0], protocol)?;
         if protocol.slide_us > 0.0 {
             self.check_line(&sc.scene)?;

@@ -540,12 +540,6 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
     };
     let scenes = scenes(a)?;
     for s in &scenes {
-        if !a.no_dem {
-            // the DEM confirmation takes one sphere size per body
-            dem::check_scene(&s.scene).map_err(|e| {
-                anyhow::anyhow!("{e} (give --no-dem to stop before the DEM confirmation)")
-            })?;
-        }
         let (_, sym) = cut(s, &params)?;
         let (lo, hi, _) = sym.domain();
         if 2.0 * params.theta_tol_deg >= hi - lo {

@@ -108,7 +108,6 @@ pub fn run(a: Args) -> Result<()> {
     }
     scene.slider.theta = deg_to_rad(theta);
     scene.validate()?;
-    dem::check_scene(&scene)?;
     super::checks::line_for(&scene, line_given)?;
     if let Some(w) = scene.edge_warning() {
         eprintln!("warning: {w}");

@@ -147,7 +147,6 @@ fn run_batch_command(
                         sa.overrides.seed = seed;
                     }
                     let sc = sa.resolve(t)?;
-                    dem::check_scene(&sc.scene)?;
                     a.dem.check_line(&sc.scene)?;
                     if seeds.len() > 1 && sc.scene.substrate.sigma_h == 0.0 {
                         bail!("`--seeds`: σ_h = 0, so every seed gives the same substrate (and the same run); give `--sigma-h-um` (e.g. 0.002) or a single seed");

@@ -134,7 +134,7 @@ pub type FrameSink<'a> = dyn FnMut(&FrameReport, &[FailedContact]) -> Result<(),
 /// Reads the dump `input` (named `name` in errors) of an export described by `meta`, calls
 /// `on_frame` with each frame's report and its contacts above P_crit (sorted by slider, then
 /// substrate index), and returns the summary. p0 = (2E*/π)√(δ/R_eff), δ = R_sl + R_sb −
-/// distance.
+/// distance (each pair's own radii and R_eff with per-site sizes).
 /// Memory: one frame plus the set of distinct failed pairs.
 pub fn check_dump<R: BufRead>(
     input: R,
@@ -150,6 +150,8 @@ pub fn check_dump<R: BufRead>(
         ));
     }
     let two_r = meta.contact_distance_um();
+    // per-site sizes: each pair's own contact distance and R_eff
+    let sized = meta.slider_radii_um.is_some() || meta.substrate_radii_um.is_some();
     let pref = 2.0 * meta.e_star_gpa / std::f64::consts::PI;
     let ids = &meta.ids;
     let mut s = CheckSummary {
@@ -199,11 +201,19 @@ pub fn check_dump<R: BufRead>(
                     ),
                 ));
             };
+            let (two_r, r_eff) = if sized {
+                meta.pair_um(
+                    (sl - ids.slider.first) as usize,
+                    (sb - ids.substrate.first) as usize,
+                )
+            } else {
+                (two_r, meta.r_eff_um)
+            };
             let delta = two_r - p.dist;
             if delta <= 0.0 {
                 continue;
             }
-            let p0 = pref * (delta / meta.r_eff_um).sqrt();
+            let p0 = pref * (delta / r_eff).sqrt();
             r.contacts += 1;
             r.p_max_gpa = r.p_max_gpa.max(p0);
             if p0 > meta.p_crit_gpa {

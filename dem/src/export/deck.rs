@@ -123,6 +123,9 @@ pub struct DeckInputs {
     pub support0: [f64; 2],
     /// Atom ID of the support.
     pub support_id: u64,
+    /// Per-site sphere sizes (then `contact_distance` is the largest radius sum, for the
+    /// communication cutoff); `None`: one size per body.
+    pub sizes: Option<super::deck_sizes::DeckSizes>,
 }
 
 /// A number as LAMMPS reads it: the shortest text that round-trips (`1e-5`, `0.1`, `1e8`).
@@ -286,6 +289,10 @@ pub fn render(d: &DeckInputs) -> String {
         N(d.k_substrate)
     );
     match d.viscous {
+        Some(v) if d.sizes.is_some() => {
+            let z = d.sizes.as_ref().unwrap();
+            super::deck_sizes::viscous(&mut s, z, v.gamma_sphere * v.control_ratio, v.relative);
+        }
         Some(v) => {
             w!("# 0 K Langevin-equivalent damping F = -m v / tau (gamma = m/tau per type)");
             let sub = match v.substrate_ratio {
@@ -357,14 +364,28 @@ pub fn render(d: &DeckInputs) -> String {
     w!("compute         dsum all reduce sum c_cpl");
     w!("compute         dave all reduce ave c_cpl");
     w!("variable        contacts equal round(c_dsum/(c_dave+(c_dave==0)))");
-    w!(
-        "variable        pmax_GPa equal (c_dsum>0)*{}*sqrt((c_dmin<{c})*({c}-c_dmin)/{})",
-        N(d.p0_prefactor_gpa),
-        N(d.r_eff),
-        c = N(d.contact_distance)
-    );
+    match &d.sizes {
+        None => {
+            w!(
+                "variable        pmax_GPa equal (c_dsum>0)*{}*sqrt((c_dmin<{c})*({c}-c_dmin)/{})",
+                N(d.p0_prefactor_gpa),
+                N(d.r_eff),
+                c = N(d.contact_distance)
+            );
+        }
+        Some(z) => super::deck_sizes::p_max(&mut s, z, d.p0_prefactor_gpa),
+    }
     w!("variable        t_us equal time");
-    w!("variable        z_um equal xcm(slider,z)");
+    match &d.sizes {
+        None => w!("variable        z_um equal xcm(slider,z)"),
+        Some(z) => {
+            w!("# per-site sizes: the slider's reference plane = its centre of mass less the mass-weighted R - r_i");
+            w!(
+                "variable        z_um equal xcm(slider,z)-({})",
+                N(z.z_offset)
+            );
+        }
+    }
     w!(
         "variable        sup_x_um equal (x[{id}]-{})*{ca}+(y[{id}]-{})*{sa}",
         N(d.support0[0]),

@@ -124,8 +124,10 @@ fn sign(v: f64) -> i32 {
 /// Lays out `spec` (sites and start heights from [`crate::from_scene`]) with `local` the slider
 /// sites relative to the disc centre in the slider's own frame (`Scene::slider_sites_local`, same
 /// order), `params` (control-sphere radius, support lead, α) and the axial tie length (m).
-/// Each substrate and slider atom has its body's sphere diameter (LAMMPS `granular` takes
-/// per-atom radii: R_eff and the contact distance of a pair come from its two atoms).
+/// Each substrate and slider atom has its own sphere diameter: its body's, or its site's with
+/// per-site sizes (LAMMPS `granular` takes per-atom radii: R_eff and the contact distance of a
+/// pair come from its two atoms; the mass from the diameter and the density); slider sphere i's
+/// two control spheres then sit its anchor offset `R − r_i` higher.
 /// The two control sub-layers have half the material density each, so the control layer has
 /// the Rust engine's mass `n·m_control`. O(N).
 pub fn layout(
@@ -138,7 +140,6 @@ pub fn layout(
     assert_eq!(local.len(), n, "local sites must match the slider sites");
     let rho = spec.material.density;
     let d_sb = 2.0 * spec.substrate_sphere_radius;
-    let d_sl = 2.0 * spec.slider_sphere_radius;
     let dc = 2.0 * params.control_sphere_radius;
     let mut atoms = Vec::with_capacity(spec.substrate.len() + 3 * n + 1);
     let mut id = 0u64;
@@ -155,30 +156,46 @@ pub fn layout(
         id
     };
     let sub_first = 1;
-    for p in &spec.substrate {
-        push(TYPE_SUBSTRATE, *p, d_sb, rho, 0);
+    for (j, p) in spec.substrate.iter().enumerate() {
+        let d = match &spec.substrate_radii {
+            None => d_sb,
+            Some(r) => 2.0 * r[j],
+        };
+        push(TYPE_SUBSTRATE, *p, d, rho, 0);
     }
     let sl_first = sub_first + spec.substrate.len() as u64;
-    for (s, z) in spec.slider_sites.iter().zip(&spec.slider_z) {
-        push(TYPE_SLIDER, [s[0], s[1], *z], d_sl, rho, 0);
+    for (i, (s, z)) in spec.slider_sites.iter().zip(&spec.slider_z).enumerate() {
+        push(
+            TYPE_SLIDER,
+            [s[0], s[1], *z],
+            2.0 * spec.slider_radius(i),
+            rho,
+            0,
+        );
     }
     let quadrant = |q: &[f64; 2]| (1 + (sign(q[0]) + 1) + 3 * (sign(q[1]) + 1)) as u32;
     let zc = spec.control_z;
+    // with per-site sizes slider sphere i's ties (and so its two control spheres) sit its
+    // anchor offset R − r_i higher: the ties keep their rest lengths
+    let dz = |i: usize| match &spec.slider_radii {
+        None => 0.0,
+        Some(r) => spec.slider_sphere_radius - r[i],
+    };
     let ax_first = sl_first + n as u64;
-    for (s, q) in spec.slider_sites.iter().zip(local) {
+    for (i, (s, q)) in spec.slider_sites.iter().zip(local).enumerate() {
         push(
             TYPE_CONTROL_AXIAL,
-            [s[0], s[1], zc + tie_length],
+            [s[0], s[1], zc + dz(i) + tie_length],
             dc,
             0.5 * rho,
             quadrant(q),
         );
     }
     let lat_first = ax_first + n as u64;
-    for (s, q) in spec.slider_sites.iter().zip(local) {
+    for (i, (s, q)) in spec.slider_sites.iter().zip(local).enumerate() {
         push(
             TYPE_CONTROL_LATERAL,
-            [s[0], s[1], zc],
+            [s[0], s[1], zc + dz(i)],
             dc,
             0.5 * rho,
             quadrant(q),
@@ -253,6 +270,8 @@ mod tests {
             control_z: 2.9e-6,
             slider_sphere_radius: 1e-6,
             substrate_sphere_radius: 1.5e-6,
+            slider_radii: None,
+            substrate_radii: None,
             material: Material::default(),
             tilt_stiffness: None,
             disc: None,

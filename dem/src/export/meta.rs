@@ -99,6 +99,12 @@ pub struct ExportMeta {
     /// sphere size.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub slider_sphere_radius_um: Option<f64>,
+    /// Per-site sizes: each slider atom's radius (µm), in atom-ID order; absent without them.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub slider_radii_um: Option<Vec<f64>>,
+    /// Per-site sizes: each substrate atom's radius (µm), in atom-ID order.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub substrate_radii_um: Option<Vec<f64>>,
     /// Effective modulus E* of a sphere pair (GPa).
     #[serde(rename = "e_star_GPa")]
     pub e_star_gpa: f64,
@@ -123,5 +129,24 @@ impl ExportMeta {
         self.slider_sphere_radius_um
             .unwrap_or(self.sphere_radius_um)
             + self.sphere_radius_um
+    }
+
+    /// Contact distance (µm) and R_eff (µm) of slider atom index `i` and substrate atom index
+    /// `j` (0-based within their ranges): their own radii with per-site sizes, else
+    /// [`ExportMeta::contact_distance_um`] and `r_eff_um`. O(1).
+    pub fn pair_um(&self, i: usize, j: usize) -> (f64, f64) {
+        if self.slider_radii_um.is_none() && self.substrate_radii_um.is_none() {
+            return (self.contact_distance_um(), self.r_eff_um);
+        }
+        let a = self.slider_radii_um.as_ref().map_or(
+            self.slider_sphere_radius_um
+                .unwrap_or(self.sphere_radius_um),
+            |r| r[i],
+        );
+        let b = self
+            .substrate_radii_um
+            .as_ref()
+            .map_or(self.sphere_radius_um, |r| r[j]);
+        (a + b, a * b / (a + b))
     }
 }

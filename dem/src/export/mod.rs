@@ -22,6 +22,7 @@ pub mod check;
 pub mod damping;
 pub mod data_file;
 pub mod deck;
+pub mod deck_sizes;
 pub mod dump;
 pub mod layout;
 pub mod meta;
@@ -230,6 +231,33 @@ pub fn export_lammps(
     if let Some(w) = scene.edge_warning() {
         header.push(format!("warning: {w}"));
     }
+    let spec = &sim.spec;
+    let sizes = spec.has_sizes().then(|| {
+        let n_sl = spec.slider_sites.len();
+        let masses: Vec<f64> = (0..n_sl)
+            .map(|i| spec.material.sphere_mass(spec.slider_radius(i)))
+            .collect();
+        let z_offset = (0..n_sl)
+            .map(|i| masses[i] * (spec.slider_sphere_radius - spec.slider_radius(i)))
+            .sum::<f64>()
+            / masses.iter().sum::<f64>();
+        header.push(format!(
+            "spheres: per-site sizes (each atom its own diameter and mass; {} slider, {} substrate diameters)",
+            n_sl, spec.substrate.len()
+        ));
+        deck_sizes::DeckSizes {
+            slider_diameters: deck_sizes::distinct(
+                (0..n_sl).map(|i| micro::len(2.0 * spec.slider_radius(i))),
+            ),
+            substrate_diameters: deck_sizes::distinct(
+                (0..spec.substrate.len()).map(|j| micro::len(2.0 * spec.substrate_radius(j))),
+            ),
+            z_offset: micro::len(z_offset),
+            tau: (p.damping_time.is_finite() && p.damping_time > 0.0)
+                .then(|| micro::time(p.damping_time)),
+            density: micro::density(spec.material.density),
+        }
+    });
     let window_start = (p.measure_from * ns as f64).round() as u64;
     let inputs = DeckInputs {
         header,
@@ -240,7 +268,7 @@ pub fn export_lammps(
         poisson: scene.material.poisson,
         damping,
         mu: opts.mu,
-        contact_distance: micro::len(sim.spec.contact_distance()),
+        contact_distance: micro::len(sim.spec.max_contact_distance()),
         r_eff: micro::len(hertz.r_eff),
         p0_prefactor_gpa: 2.0 * hertz.e_star / std::f64::consts::PI * 1e-9,
         skin: micro::len(p.skin),
@@ -259,6 +287,7 @@ pub fn export_lammps(
         speed: micro::velocity(p.support_speed),
         support0: [micro::len(lay.support[0]), micro::len(lay.support[1])],
         support_id: lay.ids.support.first,
+        sizes,
     };
     let deck = deck::render(&inputs);
     let title = format!(
@@ -292,6 +321,14 @@ pub fn export_lammps(
         p_crit_gpa: scene.coating.p_crit * 1e-9,
         sphere_radius_um: r_sb * um,
         slider_sphere_radius_um: (r_sl != r_sb).then_some(r_sl * um),
+        slider_radii_um: spec
+            .slider_radii
+            .as_ref()
+            .map(|r| r.iter().map(|v| v * um).collect()),
+        substrate_radii_um: spec
+            .substrate_radii
+            .as_ref()
+            .map(|r| r.iter().map(|v| v * um).collect()),
         e_star_gpa: hertz.e_star * 1e-9,
         r_eff_um: hertz.r_eff * um,
         dt_us: sim.dt * um,

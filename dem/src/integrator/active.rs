@@ -298,7 +298,7 @@ impl Sim {
     /// Rebuilds the candidate pair list from the global positions (keeps histories).
     fn rebuild(&mut self) {
         let s = &mut self.state;
-        let cutoff = self.spec.contact_distance() + self.params.skin;
+        let cutoff = self.spec.max_contact_distance() + self.params.skin;
         s.pairs = build_pairs(&s.sub_x, &self.sub_h, &s.sl_x, cutoff, &s.pairs);
         s.ref_sub.clone_from(&s.sub_x);
         s.ref_sl.clone_from(&s.sl_x);
@@ -333,6 +333,10 @@ impl Sim {
                 let a = s.sl_x[i as usize];
                 let b = s.sub_x[j as usize];
                 let d = [a[0] - b[0], a[1] - b[1], a[2] - self.sub_h[j as usize]];
+                let two_r = match &self.body.sizes {
+                    None => two_r,
+                    Some(z) => z.sl_r[i as usize] + z.sub_r[j as usize],
+                };
                 let gap = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() - two_r;
                 if gap < margin {
                     pairs.push(k as u32);
@@ -347,6 +351,15 @@ impl Sim {
                     }
                 }
             }
+        }
+        // per-site sizes: a body whose spheres differ in mass keeps every sphere integrated (the
+        // common mode of the free slider spheres and the ringing maps take one mass); the
+        // other body's spheres still leave the set
+        if self.spec.slider_radii.is_some() {
+            sl_on.fill(true);
+        }
+        if self.spec.substrate_radii.is_some() {
+            sub_on.fill(true);
         }
         // slider spheres: deviations of the ringing ones, as of now
         let mut dev_sl: Vec<Option<[f64; 6]>> = vec![None; n];

@@ -38,6 +38,40 @@ pub(crate) struct Body {
     pub g_all: [[f64; 3]; 3],
     /// Largest |x_i| and |y_i| (m).
     pub arm: [f64; 2],
+    /// Each sphere's own radius and mass when sizes differ ([`SystemSpec::has_sizes`]);
+    /// `None`: one size per body (`m_s`, `m_b`, `m_eff` hold, the one-size arithmetic).
+    pub sizes: Option<Sizes>,
+}
+
+/// Per-sphere data of a layout whose sphere sizes differ (both bodies filled, the one without
+/// a site file with its body's size). SI.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Sizes {
+    /// Slider sphere radii r_i (m).
+    pub sl_r: Vec<f64>,
+    /// Slider sphere masses `ρ 4/3 π r_i³` (kg).
+    pub sl_m: Vec<f64>,
+    /// Anchor offsets `R − r_i` (m): slider sphere i's z-spring is relaxed that far above the
+    /// body's reference anchor `g_i·q` (its top on the slider plate).
+    pub sl_dz: Vec<f64>,
+    /// Substrate sphere radii r_j (m).
+    pub sub_r: Vec<f64>,
+    /// Substrate sphere masses (kg).
+    pub sub_m: Vec<f64>,
+}
+
+impl Sizes {
+    /// The per-pair constants of slider sphere `i` and substrate sphere `j`: contact distance
+    /// `r_i + r_j` (m), `R_eff = r_i r_j/(r_i + r_j)` (m) and the reduced mass (kg). O(1).
+    #[inline]
+    pub fn pair(&self, i: usize, j: usize) -> (f64, f64, f64) {
+        let (a, b) = (self.sl_r[i], self.sub_r[j]);
+        (
+            a + b,
+            a * b / (a + b),
+            crate::model::reduced_mass(self.sl_m[i], self.sub_m[j]),
+        )
+    }
 }
 
 /// The tilt degrees of freedom of the control layer.
@@ -71,10 +105,29 @@ impl Body {
         let m_b = spec.substrate_sphere_mass();
         let m_c = spec.material.sphere_mass(params.control_sphere_radius);
         let m_cl = n as f64 * m_c;
-        let mz = if params.rigid_z {
-            m_cl + n as f64 * m_s
-        } else {
-            m_cl
+        let sizes = spec.has_sizes().then(|| {
+            let sl_r: Vec<f64> = (0..n).map(|i| spec.slider_radius(i)).collect();
+            let sub_r: Vec<f64> = (0..spec.substrate.len())
+                .map(|j| spec.substrate_radius(j))
+                .collect();
+            Sizes {
+                sl_m: sl_r.iter().map(|&r| spec.material.sphere_mass(r)).collect(),
+                sl_dz: sl_r
+                    .iter()
+                    .map(|&r| spec.slider_sphere_radius - r)
+                    .collect(),
+                sub_m: sub_r
+                    .iter()
+                    .map(|&r| spec.material.sphere_mass(r))
+                    .collect(),
+                sl_r,
+                sub_r,
+            }
+        });
+        let mz = match (&sizes, params.rigid_z) {
+            (Some(z), true) => m_cl + z.sl_m.iter().sum::<f64>(),
+            (None, true) => m_cl + n as f64 * m_s,
+            (_, false) => m_cl,
         };
         let mut g_all = [[0.0; 3]; 3];
         let mut arm = [0.0f64; 2];
@@ -91,9 +144,24 @@ impl Body {
         let unit = if params.rigid_z { m_c + m_s } else { m_c };
         let tilt = spec.tilt_stiffness.map(|k| {
             let mut m = [[0.0; 3]; 3];
-            for a in 0..3 {
-                for b in 0..3 {
-                    m[a][b] = unit * g_all[a][b];
+            match &sizes {
+                // each sphere moves with the layer in z with its own mass
+                Some(z) if params.rigid_z => {
+                    for (o, mi) in off.iter().zip(&z.sl_m) {
+                        let g = g_of(*o);
+                        for a in 0..3 {
+                            for b in 0..3 {
+                                m[a][b] += (m_c + mi) * g[a] * g[b];
+                            }
+                        }
+                    }
+                }
+                _ => {
+                    for a in 0..3 {
+                        for b in 0..3 {
+                            m[a][b] = unit * g_all[a][b];
+                        }
+                    }
                 }
             }
             Tilt {
@@ -113,6 +181,7 @@ impl Body {
             tilt,
             g_all,
             arm,
+            sizes,
         }
     }
 }

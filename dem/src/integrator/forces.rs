@@ -6,7 +6,7 @@
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
 
-use super::body::{dot3, g_of, mat_vec};
+use super::body::{dot3, g_of, mat_vec, Sizes};
 use super::kernel::{kick, kick_hm, spring_stretch, Index};
 use super::sim::Sim;
 use super::team::{Exec, Shards};
@@ -44,6 +44,10 @@ struct SliderPass<'a> {
     inv_tau: f64,
     dt: f64,
     hm: f64,
+    /// Half step h (s), for each sphere's own `h/m_i` with per-sphere sizes.
+    h: f64,
+    /// Each sphere's own radius, mass and anchor offset; `None`: one size per body.
+    sizes: Option<&'a Sizes>,
     chunk: usize,
 }
 
@@ -51,7 +55,7 @@ impl SliderPass<'_> {
     /// Forces and second half kick of slider chunk `c` (its spheres' `v`, `f` and its pairs'
     /// `hist`, `out`); returns the chunk's reaction on the control layer
     /// `[F_x, F_y, Q_z, Q_tx, Q_ty]` and the largest p0 of its pairs (Pa).
-    fn chunk(
+    fn chunk<const SIZED: bool>(
         &self,
         c: usize,
         v: &mut [[f64; 3]],
@@ -64,13 +68,21 @@ impl SliderPass<'_> {
         let mut part = [0.0f64; 6];
         for (l, (v, f)) in v.iter_mut().zip(f.iter_mut()).enumerate() {
             let a = a0 + l;
-            let o = self.off[self.ids[a] as usize];
+            let gi = self.ids[a] as usize;
+            let o = self.off[gi];
             let x = self.x[a];
+            // each sphere's own mass and anchor offset with per-sphere sizes
+            let (m, hm) = if SIZED {
+                let mi = self.sizes.unwrap().sl_m[gi];
+                (mi, self.h / mi)
+            } else {
+                (self.m_s, self.hm)
+            };
             // Implicit mount: v[2] still lacks this step's second contact half kick; the
             // contact law sees it predicted with the last contact force (at rest: 0, as
             // velocity-Verlet's half-step velocity).
             let vz = if self.implicit {
-                v[2] + self.hm * f[2]
+                v[2] + hm * f[2]
             } else {
                 v[2]
             };
@@ -86,7 +98,17 @@ impl SliderPass<'_> {
                 ];
                 let vr = [v[0] - vb[0], v[1] - vb[1], vz];
                 let hp = &mut hist[p - pbase];
-                let r = self.model.pair(d, vr, &mut hp.xi, self.m_eff, self.dt);
+                let r = if SIZED {
+                    // the pair's own contact distance, R_eff and reduced mass
+                    let z = self.sizes.unwrap();
+                    let (rs, r_eff, m_eff) = z.pair(gi, self.sub_ids[b] as usize);
+                    let mut model = *self.model;
+                    model.radius_sum = rs;
+                    model.normal.hertz.r_eff = r_eff;
+                    model.pair(d, vr, &mut hp.xi, m_eff, self.dt)
+                } else {
+                    self.model.pair(d, vr, &mut hp.xi, self.m_eff, self.dt)
+                };
                 hp.ever_failed |= r.failed;
                 part[5] = part[5].max(r.p0);
                 acc[0] += r.force[0];
@@ -102,22 +124,27 @@ impl SliderPass<'_> {
                     part[4] += acc[2] * g[2];
                 }
             }
-            let (m, it) = (self.m_s, self.inv_tau);
+            let it = self.inv_tau;
             let sx = self.kxy * (self.cx[0] + o[0] - x[0]);
             let sy = self.kxy * (self.cx[1] + o[1] - x[1]);
             acc[0] += sx - m * (v[0] - self.vref[0]) * it;
             acc[1] += sy - m * (v[1] - self.vref[1]) * it;
             part[0] -= sx;
             part[1] -= sy;
-            kick_hm(&mut v[0], acc[0], self.hm);
-            kick_hm(&mut v[1], acc[1], self.hm);
+            kick_hm(&mut v[0], acc[0], hm);
+            kick_hm(&mut v[1], acc[1], hm);
             if self.implicit {
-                kick_hm(&mut v[2], acc[2], self.hm);
+                kick_hm(&mut v[2], acc[2], hm);
             } else if !self.rigid {
                 let (az, vaz) = if self.tilting {
                     (dot3(g, self.q), dot3(g, self.qd))
                 } else {
                     (self.q[0], self.qd[0])
+                };
+                let az = if SIZED {
+                    az + self.sizes.unwrap().sl_dz[gi]
+                } else {
+                    az
                 };
                 let vrz = if self.rel { vaz } else { 0.0 };
                 let sz = self.kz * (az - x[2]);
@@ -127,7 +154,7 @@ impl SliderPass<'_> {
                     part[3] -= sz * g[1];
                     part[4] -= sz * g[2];
                 }
-                kick_hm(&mut v[2], acc[2], self.hm);
+                kick_hm(&mut v[2], acc[2], hm);
             }
             *f = acc;
         }
@@ -166,7 +193,12 @@ impl SliderPass<'_> {
                     parts.range(c, c + 1),
                 )
             };
-            part[0] = self.chunk(c, v, f, hist, out);
+            // one copy of the loop per case: the one-size path stays the one-size code
+            part[0] = if self.sizes.is_some() {
+                self.chunk::<true>(c, v, f, hist, out)
+            } else {
+                self.chunk::<false>(c, v, f, hist, out)
+            };
         });
     }
 }
@@ -180,6 +212,10 @@ pub(crate) struct SubstrateForce<'a> {
     m: f64,
     inv_tau: f64,
     hm: f64,
+    /// Half step h (s).
+    h: f64,
+    /// Each substrate sphere's own mass (kg) with per-sphere sizes.
+    masses: Option<&'a [f64]>,
 }
 
 impl<'a> SubstrateForce<'a> {
@@ -189,6 +225,7 @@ impl<'a> SubstrateForce<'a> {
         spec: &'a SystemSpec,
         params: &SimParams,
         m: f64,
+        masses: Option<&'a [f64]>,
         inv_tau: f64,
         h: f64,
     ) -> SubstrateForce<'a> {
@@ -200,6 +237,8 @@ impl<'a> SubstrateForce<'a> {
             m,
             inv_tau,
             hm: h / m,
+            h,
+            masses,
         }
     }
 
@@ -215,9 +254,32 @@ impl<'a> SubstrateForce<'a> {
         f: &mut [[f64; 2]],
         x: &[[f64; 2]],
     ) {
-        let (m, it) = (self.m, self.inv_tau);
+        match self.masses {
+            None => self.chunk_sized::<false>(b0, ids, out, v, f, x),
+            Some(_) => self.chunk_sized::<true>(b0, ids, out, v, f, x),
+        }
+    }
+
+    /// [`SubstrateForce::chunk_with`] with each sphere's own mass (`SIZED`) or the body's.
+    #[inline]
+    fn chunk_sized<const SIZED: bool>(
+        &self,
+        b0: usize,
+        ids: &[u32],
+        out: &[PairOut],
+        v: &mut [[f64; 2]],
+        f: &mut [[f64; 2]],
+        x: &[[f64; 2]],
+    ) {
+        let it = self.inv_tau;
         for (l, ((v, f), x)) in v.iter_mut().zip(f.iter_mut()).zip(x).enumerate() {
             let b = b0 + l;
+            let (m, hm) = if SIZED {
+                let mj = self.masses.unwrap()[ids[b] as usize];
+                (mj, self.h / mj)
+            } else {
+                (self.m, self.hm)
+            };
             let site = self.sites[ids[b] as usize];
             let mut acc = [
                 self.kt * (site[0] - x[0]) - m * v[0] * it,
@@ -228,8 +290,8 @@ impl<'a> SubstrateForce<'a> {
                 acc[0] -= o.force[0];
                 acc[1] -= o.force[1];
             }
-            kick_hm(&mut v[0], acc[0], self.hm);
-            kick_hm(&mut v[1], acc[1], self.hm);
+            kick_hm(&mut v[0], acc[0], hm);
+            kick_hm(&mut v[1], acc[1], hm);
             *f = acc;
         }
     }
@@ -294,6 +356,8 @@ impl Sim {
                 inv_tau,
                 dt: self.dt,
                 hm: h / self.body.m_s,
+                h,
+                sizes: self.body.sizes.as_ref(),
                 chunk: ch.sl,
             };
             if n_sl > 0 {
@@ -401,6 +465,7 @@ impl Sim {
             &self.spec,
             &self.params,
             self.body.m_b,
+            self.body.sizes.as_ref().map(|z| &z.sub_m[..]),
             inv_tau,
             h,
         );

@@ -57,6 +57,10 @@ pub(crate) struct Mount {
     drag: f64,
     /// Whether q has tilt components.
     tilting: bool,
+    /// With per-sphere sizes, each slider sphere's own `a_i = 2 m_i + γ` (kg), in global
+    /// order: its row `(2m_i + γ) ū_i − γ g_i·U = 2m_i ż_i + dt k_z (g_i·q + (R − r_i) − z_i)`
+    /// and its share `γ (2m_i/a_i) g_i g_iᵀ` of S. `None`: one mass (`a`).
+    a_each: Option<Vec<f64>>,
 }
 
 impl Mount {
@@ -92,6 +96,26 @@ impl Mount {
                 s[r][k] = 2.0 * m[r][k] + c * g_all[r][k] + 0.5 * dt * dt * kt[r][k];
             }
         }
+        let a_each = body.sizes.as_ref().map(|z| {
+            // S = 2M + Σ_i γ (2m_i/a_i) g_i g_iᵀ + (dt²/2) K_t
+            let mut g_w = [[0.0; 3]; 3];
+            let a_each: Vec<f64> = z.sl_m.iter().map(|mi| 2.0 * mi + gamma).collect();
+            for ((o, mi), ai) in body.off.iter().zip(&z.sl_m).zip(&a_each) {
+                let g = if tilting { g_of(*o) } else { [1.0, 0.0, 0.0] };
+                let w = gamma * 2.0 * mi / ai;
+                for r in 0..3 {
+                    for k in 0..3 {
+                        g_w[r][k] += w * g[r] * g[k];
+                    }
+                }
+            }
+            for r in 0..3 {
+                for k in 0..3 {
+                    s[r][k] = 2.0 * m[r][k] + g_w[r][k] + 0.5 * dt * dt * kt[r][k];
+                }
+            }
+            a_each
+        });
         let t = params.damping_time;
         let inv_tau = if t.is_finite() && t > 0.0 {
             1.0 / t
@@ -109,6 +133,7 @@ impl Mount {
             decay: (-h * inv_tau).exp(),
             drag: if rel { h * inv_tau } else { 0.0 },
             tilting,
+            a_each,
         }
     }
 
@@ -172,15 +197,33 @@ impl Mount {
         // active spheres: K_c(h), D(h); the sums Σ g (z − g·q) and Σ g rhs
         let a = &mut s.act;
         let (mut e_sum, mut r_sum) = ([0.0; 3], [0.0; 3]);
+        // with per-sphere sizes: each sphere's mass, a_i and anchor offset; r_sum then holds
+        // Σ g rhs/a_i (the one-mass path divides by a once, below)
+        let sized = body.sizes.as_ref().zip(mt.a_each.as_deref());
         for k in 0..a.sl.len() {
-            let g = mt.g(off[a.sl[k] as usize]);
+            let i = a.sl[k] as usize;
+            let g = mt.g(off[i]);
             let v = &mut a.sl_v[k][2];
-            *v = mt.damp(*v + hm * a.sl_f[k][2], dot3(g, qd_in));
-            let dz = a.sl_x[k][2] - dot3(g, q0);
-            let rhs = 2.0 * m_s * *v - dt * kz * dz;
-            for r in 0..3 {
-                e_sum[r] += g[r] * dz;
-                r_sum[r] += g[r] * rhs;
+            match sized {
+                None => {
+                    *v = mt.damp(*v + hm * a.sl_f[k][2], dot3(g, qd_in));
+                    let dz = a.sl_x[k][2] - dot3(g, q0);
+                    let rhs = 2.0 * m_s * *v - dt * kz * dz;
+                    for r in 0..3 {
+                        e_sum[r] += g[r] * dz;
+                        r_sum[r] += g[r] * rhs;
+                    }
+                }
+                Some((z, ae)) => {
+                    let mi = z.sl_m[i];
+                    *v = mt.damp(*v + h / mi * a.sl_f[k][2], dot3(g, qd_in));
+                    let dz = a.sl_x[k][2] - dot3(g, q0) - z.sl_dz[i];
+                    let rhs = (2.0 * mi * *v - dt * kz * dz) / ae[i];
+                    for r in 0..3 {
+                        e_sum[r] += g[r] * dz;
+                        r_sum[r] += g[r] * rhs;
+                    }
+                }
             }
         }
         // common mode of the free spheres (w relative, s absolute) and the ringing aggregate
@@ -204,7 +247,13 @@ impl Mount {
         let mut rhs = [0.0; 3];
         for r in 0..3 {
             let f = kz * (e_sum[r] + gw[r] + dz_mid[r]) - ktq[r] - if r == 0 { load } else { 0.0 };
-            rhs[r] = 2.0 * mqd[r] + dt * f + mt.gamma / mt.a * (r_sum[r] + gr[r]);
+            rhs[r] = 2.0 * mqd[r]
+                + dt * f
+                + match sized {
+                    None => mt.gamma / mt.a * (r_sum[r] + gr[r]),
+                    // no free spheres (the active set is off with per-sphere sizes)
+                    Some(_) => mt.gamma * r_sum[r],
+                };
         }
         let u = mt.mask(mat_vec(&mt.s_inv, mt.mask(rhs)));
         let mut qd1 = [0.0; 3];
@@ -214,10 +263,19 @@ impl Mount {
         // back-substitution: spheres, common mode, aggregate; then D(h)
         let a = &mut s.act;
         for k in 0..a.sl.len() {
-            let g = mt.g(off[a.sl[k] as usize]);
+            let i = a.sl[k] as usize;
+            let g = mt.g(off[i]);
             let (x, v) = (&mut a.sl_x[k][2], &mut a.sl_v[k][2]);
-            let rhs = 2.0 * m_s * *v - dt * kz * (*x - dot3(g, q0));
-            let ub = (rhs + mt.gamma * dot3(g, u)) / mt.a;
+            let ub = match sized {
+                None => {
+                    let rhs = 2.0 * m_s * *v - dt * kz * (*x - dot3(g, q0));
+                    (rhs + mt.gamma * dot3(g, u)) / mt.a
+                }
+                Some((z, ae)) => {
+                    let rhs = 2.0 * z.sl_m[i] * *v - dt * kz * (*x - dot3(g, q0) - z.sl_dz[i]);
+                    (rhs + mt.gamma * dot3(g, u)) / ae[i]
+                }
+            };
             *x += dt * ub;
             *v = mt.damp(2.0 * ub - *v, dot3(g, qd1));
         }

@@ -60,6 +60,10 @@ impl Sim {
                 zsum += s.common.dz[0];
             }
         }
+        if let Some(z) = &self.body.sizes {
+            // the body's reference height: each centre less its anchor offset R − r_i
+            zsum -= z.sl_dz.iter().sum::<f64>();
+        }
         o.z = zsum / s.sl_x.len() as f64;
         let (sa, ca) = self.params.alpha.sin_cos();
         if s.spring_on {
@@ -95,11 +99,14 @@ impl Sim {
         let rigid = p.rigid_z;
         let a = &s.act;
         let mut e = 0.0;
-        for v in &a.sub_v {
-            e += 0.5 * self.body.m_b * (v[0] * v[0] + v[1] * v[1]);
+        let sizes = self.body.sizes.as_ref();
+        for (v, j) in a.sub_v.iter().zip(&a.sub) {
+            let mb = sizes.map_or(self.body.m_b, |z| z.sub_m[*j as usize]);
+            e += 0.5 * mb * (v[0] * v[0] + v[1] * v[1]);
         }
-        for v in &a.sl_v {
+        for (v, i) in a.sl_v.iter().zip(&a.sl) {
             let vz = if rigid { 0.0 } else { v[2] * v[2] };
+            let m = sizes.map_or(m, |z| z.sl_m[*i as usize]);
             e += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + vz);
         }
         let q = self.q();
@@ -245,13 +252,19 @@ impl Sim {
         // A slider sphere torn from its control-layer site by more than its radius, or a
         // slider below the substrate plane, means the integration has blown up (the overlap
         // bound alone misses spheres that jumped clean through the substrate).
-        let r = self.spec.slider_sphere_radius;
+        let sizes = self.body.sizes.as_ref();
+        let r_ref = self.spec.slider_sphere_radius;
         let q = self.q();
         let tilting = self.body.tilt.is_some();
         for (k, x) in a.sl_x.iter().enumerate() {
             let i = a.sl[k] as usize;
             let o = self.body.off[i];
             let az = if tilting { dot3(g_of(o), q) } else { q[0] };
+            // each sphere's own anchor offset and radius with per-sphere sizes
+            let (az, r) = match sizes {
+                None => (az, r_ref),
+                Some(z) => (az + z.sl_dz[i], z.sl_r[i]),
+            };
             let d = [
                 x[0] - s.cl_x[0] - o[0],
                 x[1] - s.cl_x[1] - o[1],
@@ -280,7 +293,7 @@ impl Sim {
             c.w[0].abs() + c.w[1].abs() * ay + c.w[2].abs() * ax
         };
         let m = (c.u[0] * c.u[0] + c.u[1] * c.u[1] + z * z).sqrt() + ring;
-        if self.idx.n_in > 0 && (m.is_nan() || m > r) {
+        if self.idx.n_in > 0 && (m.is_nan() || m > r_ref) {
             return Err(self.unstable(format!(
                 "free slider spheres displaced up to {:.4e} µm from their control-layer sites (bound: one radius)",
                 m * 1e6
@@ -291,10 +304,14 @@ impl Sim {
         }
         // relative to the smaller sphere when the two bodies' sizes differ
         let bound = self.params.overlap_bound
-            * self
-                .spec
-                .slider_sphere_radius
-                .min(self.spec.substrate_sphere_radius);
+            * match sizes {
+                None => self
+                    .spec
+                    .slider_sphere_radius
+                    .min(self.spec.substrate_sphere_radius),
+                // the smallest sphere of either body
+                Some(_) => self.spec.min_radius(),
+            };
         let m = a.out.iter().map(|o| o.delta).fold(0.0, f64::max);
         if m > bound {
             return Err(self.unstable(format!(

@@ -32,7 +32,8 @@ pub struct Observables {
     pub p_max_peak: f64,
     /// Largest overlap (m).
     pub max_overlap: f64,
-    /// Mean z of the slider sphere centres (m).
+    /// Mean z of the slider sphere centres (m); with per-sphere sizes, of their reference
+    /// heights `z_i − (R − r_i)` (the body's reference centre plane).
     pub z: f64,
     /// Σ vertical contact force on the slider (N).
     pub contact_fz: f64,

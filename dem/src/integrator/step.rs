@@ -219,10 +219,12 @@ impl Sim {
             &self.spec,
             &self.params,
             self.body.m_b,
+            self.body.sizes.as_ref().map(|z| &z.sub_m[..]),
             inv_tau,
             h,
         );
         let dt = self.dt;
+        let sizes = self.body.sizes.as_ref();
         let hm = h / self.body.m_s;
         let hm_b = h / self.body.m_b;
         let rigid = self.params.rigid_z;
@@ -266,7 +268,38 @@ impl Sim {
             // largest squared displacement; the plain sum only flags a non-finite value (two
             // independent accumulators, no NaN-aware max in the loop's dependency chain)
             let (mut d2, mut sum) = (0.0f64, 0.0f64);
-            for ((((x, v), f), x0), &i) in x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0).zip(ids) {
+            let it = x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0).zip(ids);
+            if let Some(z) = sizes {
+                // each sphere's own mass and anchor offset (the loop below, per sphere)
+                for ((((x, v), f), x0), &i) in it {
+                    let hm = h / z.sl_m[i as usize];
+                    kick_hm(&mut v[0], f[0], hm);
+                    kick_hm(&mut v[1], f[1], hm);
+                    x[0] += dt * v[0];
+                    x[1] += dt * v[1];
+                    if rigid {
+                        let g = if tilting {
+                            g_of(off[i as usize])
+                        } else {
+                            [1.0, 0.0, 0.0]
+                        };
+                        x[2] = dot3(g, q) + z.sl_dz[i as usize];
+                        v[2] = dot3(g, qd);
+                    } else if !implicit {
+                        kick_hm(&mut v[2], f[2], hm);
+                        x[2] += dt * v[2];
+                    }
+                    let d = [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]];
+                    let m = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                    sum += m;
+                    if m > d2 {
+                        d2 = m;
+                    }
+                }
+                slot[0] = if sum.is_finite() { d2 } else { f64::NAN };
+                return;
+            }
+            for ((((x, v), f), x0), &i) in it {
                 kick_hm(&mut v[0], f[0], hm);
                 kick_hm(&mut v[1], f[1], hm);
                 x[0] += dt * v[0];
@@ -309,12 +342,30 @@ impl Sim {
                 sf.chunk_with(a, sub_ids, out, v, f, x);
             }
             let (mut d2, mut sum) = (0.0f64, 0.0f64);
-            for (((x, v), f), x0) in x
+            let it = x
                 .iter_mut()
                 .zip(v.iter_mut())
                 .zip(f.iter())
-                .zip(&sub_x0[a..])
-            {
+                .zip(&sub_x0[a..]);
+            if let Some(z) = sizes {
+                // each sphere's own mass (the loop below, per sphere)
+                for ((((x, v), f), x0), &j) in it.zip(&sub_ids[a..]) {
+                    let hm_b = h / z.sub_m[j as usize];
+                    kick_hm(&mut v[0], f[0], hm_b);
+                    kick_hm(&mut v[1], f[1], hm_b);
+                    x[0] += dt * v[0];
+                    x[1] += dt * v[1];
+                    let d = [x[0] - x0[0], x[1] - x0[1]];
+                    let m = d[0] * d[0] + d[1] * d[1];
+                    sum += m;
+                    if m > d2 {
+                        d2 = m;
+                    }
+                }
+                slot[0] = if sum.is_finite() { d2 } else { f64::NAN };
+                return;
+            }
+            for (((x, v), f), x0) in it {
                 kick_hm(&mut v[0], f[0], hm_b);
                 kick_hm(&mut v[1], f[1], hm_b);
                 x[0] += dt * v[0];
@@ -409,6 +460,8 @@ mod tests {
             control_z: 1e-6,
             slider_sphere_radius: scene.sphere_radius,
             substrate_sphere_radius: scene.sphere_radius,
+            slider_radii: None,
+            substrate_radii: None,
             material: scene.material,
             tilt_stiffness: None,
             disc: None,

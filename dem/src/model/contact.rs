@@ -49,8 +49,9 @@ pub fn reduced_mass(m1: f64, m2: f64) -> f64 {
 impl ContactModel {
     /// Evaluates the pair with centre difference `d = x1 − x2` (m), relative velocity
     /// `v = v1 − v2` (m/s), tangential history `xi` (updated in place; reset when apart),
-    /// pair effective mass `m_eff` (kg) and step `dt` (s). Cost O(1), ~3 sqrt.
-    #[inline]
+    /// pair effective mass `m_eff` (kg) and step `dt` (s). Cost O(1), ~3 sqrt. Always inlined:
+    /// the force pass calls it from its one-size and its per-sphere-size loops.
+    #[inline(always)]
     pub fn pair(
         &self,
         d: [f64; 3],

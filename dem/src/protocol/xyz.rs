@@ -35,7 +35,7 @@ pub fn prepare_file(path: &Path, sim: &Sim) -> std::io::Result<()> {
 
 /// Appends one frame of every substrate sphere (species `B`), slider sphere (`S`), control
 /// layer centre (`C`) and support (`P`) to `path` and returns the bytes written. Columns:
-/// species, x, y, z (µm), radius (µm), failed (1 if any contact of the sphere has a failed
+/// species, x, y, z (µm), radius (µm, each sphere's own), failed (1 if any contact of the sphere has a failed
 /// coating now). Comment line holds `Time=` (µs). O(N + P).
 pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<u64> {
     let s = &sim.state;
@@ -49,7 +49,13 @@ pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<u64> {
         "{n}\nProperties=species:S:1:pos:R:3:radius:R:1:failed:I:1 Time={:.6} pbc=\"F F F\"\n",
         s.t * 1e6
     ));
+    let spec = &sim.spec;
     for (j, x) in snap.substrate.iter().enumerate() {
+        // each sphere's own radius with per-site sizes
+        let rb = match &spec.substrate_radii {
+            None => rb,
+            Some(r) => r[j] * um,
+        };
         b.push_str(&format!(
             "B {:.6} {:.6} {:.6} {rb} {}\n",
             x[0] * um,
@@ -59,6 +65,10 @@ pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<u64> {
         ));
     }
     for (i, x) in snap.slider.iter().enumerate() {
+        let r = match &spec.slider_radii {
+            None => r,
+            Some(ri) => ri[i] * um,
+        };
         b.push_str(&format!(
             "S {:.6} {:.6} {:.6} {r} {}\n",
             x[0] * um,

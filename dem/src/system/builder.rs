@@ -29,15 +29,15 @@ pub struct StartInfo {
 }
 
 /// Lays out the particles of `scene` (at its own θ and offset) for `params` (load, α, travel,
-/// reductions), with the slider's and the substrate's own sphere radii (one per body; a scene
-/// with per-site sizes is refused, [`crate::check_scene`]). Cost: one surrogate solve,
-/// O(N log N).
+/// reductions), with the slider's and the substrate's own sphere radii: one per body, or each
+/// sphere's own where a site file gives per-site sizes (`SystemSpec::slider_radii`,
+/// `substrate_radii`; slider sphere i starts `R − r_i` above the body's reference height, its
+/// top on the slider plate). Cost: one surrogate solve, O(N log N).
 pub fn from_scene(
     scene: &Scene,
     params: &SimParams,
     start: Start,
 ) -> Result<(SystemSpec, StartInfo), DemError> {
-    crate::check_scene(scene)?;
     let solver = Solver::new(scene)?;
     let eq = solver.solve(
         Pose {
@@ -50,6 +50,7 @@ pub fn from_scene(
     let sites = scene.slider_sites();
     let n = sites.len();
     let mut sub = scene.substrate_spheres();
+    let mut sub_radii = scene.substrate_radii().map(|r| r.to_vec());
     let all = sub.len();
     if params.prune_substrate {
         let c = scene.slider.offset;
@@ -58,9 +59,17 @@ pub fn from_scene(
             c[0] + travel * params.alpha.cos(),
             c[1] + travel * params.alpha.sin(),
         ];
-        let reach = scene.slider.radius + scene.contact_distance() + params.prune_margin;
-        sub.retain(|p| seg_dist2([p[0], p[1]], c, e) <= reach * reach);
+        let reach = scene.slider.radius + scene.max_contact_distance() + params.prune_margin;
+        let keep = |p: &[f64; 3]| seg_dist2([p[0], p[1]], c, e) <= reach * reach;
+        if let Some(r) = &mut sub_radii {
+            let mut it = sub.iter();
+            r.retain(|_| keep(it.next().unwrap()));
+        }
+        sub.retain(keep);
     }
+    // slider sphere i's anchor offset R − r_i (none for one size)
+    let r_ref = scene.slider_sphere_radius();
+    let slider_radii = scene.slider_radii().map(|r| r.to_vec());
     let pruned = all - sub.len();
     let (slider_z, control_z) = match start {
         Start::Surrogate => {
@@ -82,11 +91,30 @@ pub fn from_scene(
             }
             (z, zc)
         }
+        Start::Gap(g) if scene.has_site_sizes() => {
+            // the reference height whose lowest sphere bottom (R − 2 r_max below it) clears
+            // the highest substrate top by g
+            let top = sub
+                .iter()
+                .enumerate()
+                .map(|(j, p)| p[2] + sub_radii.as_ref().map_or(scene.sphere_radius, |r| r[j]))
+                .fold(f64::NEG_INFINITY, f64::max);
+            let z0 = top + 2.0 * scene.max_slider_sphere_radius() - r_ref + g;
+            (vec![z0; n], z0)
+        }
         Start::Gap(g) => {
             let ztop = sub.iter().map(|p| p[2]).fold(f64::NEG_INFINITY, f64::max);
             let z0 = ztop + scene.contact_distance() + g;
             (vec![z0; n], z0)
         }
+    };
+    let slider_z = match &slider_radii {
+        Some(r) => slider_z
+            .iter()
+            .zip(r)
+            .map(|(z, ri)| z + (r_ref - ri))
+            .collect(),
+        None => slider_z,
     };
     Ok((
         SystemSpec {
@@ -96,6 +124,8 @@ pub fn from_scene(
             control_z,
             slider_sphere_radius: scene.slider_sphere_radius(),
             substrate_sphere_radius: scene.sphere_radius,
+            slider_radii,
+            substrate_radii: sub_radii,
             material: scene.material,
             tilt_stiffness: scene
                 .slider

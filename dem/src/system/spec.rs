@@ -21,6 +21,15 @@ pub struct SystemSpec {
     /// Radius of every substrate sphere (m); may differ from the slider's (the contact law
     /// then takes `R_eff = R_sl R_sb/(R_sl + R_sb)` and the contact distance `R_sl + R_sb`).
     pub substrate_sphere_radius: f64,
+    /// Per-sphere radii (m) of the slider spheres (in `slider_sites` order) when a site file
+    /// gives them differing sizes; `None`: every one has `slider_sphere_radius` (the one-size
+    /// arithmetic, untouched). Slider sphere i's spring anchor then sits `R − r_i` above the
+    /// body's reference anchor (its top on the slider plate; R = `slider_sphere_radius`).
+    pub slider_radii: Option<Vec<f64>>,
+    /// Per-sphere radii (m) of the substrate spheres (in `substrate` order) when they differ;
+    /// `None`: every one has `substrate_sphere_radius`. Their heights in `substrate` already
+    /// include the offset `r_j − R` (bottom on the substrate plane).
+    pub substrate_radii: Option<Vec<f64>>,
     /// Material (density for the masses, elastic constants for the contact model).
     pub material: Material,
     /// Rotational stiffness `K_t` (N·m/rad, lab frame, on `[t_x, t_y]`) of the slider mount when
@@ -49,6 +58,58 @@ impl SystemSpec {
     pub fn contact_distance(&self) -> f64 {
         self.slider_sphere_radius + self.substrate_sphere_radius
     }
+    /// Whether either body has per-sphere sizes (`slider_radii` or `substrate_radii`).
+    pub fn has_sizes(&self) -> bool {
+        self.slider_radii.is_some() || self.substrate_radii.is_some()
+    }
+    /// Radius (m) of slider sphere `i`. O(1).
+    pub fn slider_radius(&self, i: usize) -> f64 {
+        self.slider_radii
+            .as_ref()
+            .map_or(self.slider_sphere_radius, |r| r[i])
+    }
+    /// Radius (m) of substrate sphere `j`. O(1).
+    pub fn substrate_radius(&self, j: usize) -> f64 {
+        self.substrate_radii
+            .as_ref()
+            .map_or(self.substrate_sphere_radius, |r| r[j])
+    }
+    /// Largest slider sphere radius (m) (`slider_sphere_radius` for one size). O(N).
+    pub fn max_slider_radius(&self) -> f64 {
+        self.slider_radii
+            .as_ref()
+            .map_or(self.slider_sphere_radius, |r| {
+                r.iter().copied().fold(0.0, f64::max)
+            })
+    }
+    /// Largest substrate sphere radius (m). O(N).
+    pub fn max_substrate_radius(&self) -> f64 {
+        self.substrate_radii
+            .as_ref()
+            .map_or(self.substrate_sphere_radius, |r| {
+                r.iter().copied().fold(0.0, f64::max)
+            })
+    }
+    /// Smallest sphere radius (m) of either body. O(N).
+    pub fn min_radius(&self) -> f64 {
+        let mut m = self.slider_sphere_radius.min(self.substrate_sphere_radius);
+        for r in [&self.slider_radii, &self.substrate_radii]
+            .into_iter()
+            .flatten()
+        {
+            m = r.iter().copied().fold(m, f64::min);
+        }
+        m
+    }
+    /// Largest centre distance (m) at which any slider–substrate pair touches,
+    /// `max r_i + max r_j` ([`SystemSpec::contact_distance`], bit for bit, for one size per
+    /// body): the candidate-list cutoff. O(N).
+    pub fn max_contact_distance(&self) -> f64 {
+        if !self.has_sizes() {
+            return self.contact_distance();
+        }
+        self.max_slider_radius() + self.max_substrate_radius()
+    }
     /// Total particle count: substrate + slider + control-layer spheres + 1 support.
     pub fn particle_count(&self) -> usize {
         self.substrate.len() + 2 * self.slider_sites.len() + 1
@@ -59,7 +120,7 @@ impl SystemSpec {
     pub fn overhang_at(&self, centre: [f64; 2]) -> Option<f64> {
         let (_, r) = self.disc?;
         let [lx, ly] = self.substrate_size?;
-        let reach = r + self.slider_sphere_radius;
+        let reach = r + self.max_slider_radius();
         Some((centre[0].abs() + reach - 0.5 * lx).max(centre[1].abs() + reach - 0.5 * ly))
     }
 }
