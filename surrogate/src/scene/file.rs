@@ -475,6 +475,7 @@ impl SceneFile {
             }
         }
         s.validate()?;
+        s.check_lattice_spacing()?;
         Ok(s)
     }
 

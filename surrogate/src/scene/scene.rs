@@ -298,30 +298,14 @@ impl Scene {
         }
     }
 
-    /// Checks the added geometry: outline, bases (no overlapping spheres), site files (no
-    /// overlapping spheres, sizes consistent), a slider with at least one sphere. O(N_slider).
-    fn validate_geometry(&self) -> Result<(), SceneError> {
+    /// Checks that a Bravais lattice (no basis, no site file replacing it) keeps its spheres
+    /// apart: nearest sites at least one sphere diameter apart (relative 1e-9), for user scenes
+    /// ([`crate::SceneFile::into_scene`]; a test may build denser rails on purpose). Errors
+    /// name `slider.lattice` / `substrate.lattice`. O(1).
+    pub fn check_lattice_spacing(&self) -> Result<(), SceneError> {
         let g = &self.geometry;
-        g.outline.validate("slider.outline")?;
         let d_sl = 2.0 * self.slider_sphere_radius();
         let d_sb = 2.0 * self.sphere_radius;
-        if g.slider_basis.len() > 1 {
-            pattern::check_basis(
-                &self.slider.lattice,
-                &g.slider_basis,
-                d_sl,
-                "slider.lattice.basis_um",
-            )?;
-        }
-        if g.substrate_basis.len() > 1 {
-            pattern::check_basis(
-                &self.substrate.lattice,
-                &g.substrate_basis,
-                d_sb,
-                "substrate.lattice.basis_um",
-            )?;
-        }
-        // a Bravais lattice (no site file replacing it) closer than its spheres' diameter
         for (l, basis, sites, d, field) in [
             (
                 &self.slider.lattice,
@@ -349,6 +333,32 @@ impl Scene {
                     ),
                 ));
             }
+        }
+        Ok(())
+    }
+
+    /// Checks the added geometry: outline, bases (no overlapping spheres), site files (no
+    /// overlapping spheres, sizes consistent), a slider with at least one sphere. O(N_slider).
+    fn validate_geometry(&self) -> Result<(), SceneError> {
+        let g = &self.geometry;
+        g.outline.validate("slider.outline")?;
+        let d_sl = 2.0 * self.slider_sphere_radius();
+        let d_sb = 2.0 * self.sphere_radius;
+        if g.slider_basis.len() > 1 {
+            pattern::check_basis(
+                &self.slider.lattice,
+                &g.slider_basis,
+                d_sl,
+                "slider.lattice.basis_um",
+            )?;
+        }
+        if g.substrate_basis.len() > 1 {
+            pattern::check_basis(
+                &self.substrate.lattice,
+                &g.substrate_basis,
+                d_sb,
+                "substrate.lattice.basis_um",
+            )?;
         }
         for (l, d, field) in [
             (&g.slider_sites, d_sl, "slider.sites"),
