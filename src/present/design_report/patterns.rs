@@ -307,32 +307,32 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
         v
     };
     let robust = |r: &PatternRow| r.superlubric_to_mN;
-    // with many patterns only the best are searched over their tolerance boxes (`robust_exact`):
-    // the others' `superlubric_to_mN` is an upper bound, so the curves show the nominal limit
-    // and the searched robust limits as markers
-    if rows.iter().any(|r| !r.robust_exact) {
-        let nominal = |r: &PatternRow| r.superlubric_to_nominal_mN;
-        let searched = Curve {
-            name: "robust limit (searched: the best patterns)".into(),
-            points: points(&|i| rows[i].robust_exact, robust),
-            colour: Colour::Palette(0),
-            style: Style::Markers,
-        };
-        let mut curves = match varying.get(1) {
-            Some(s) if s.distinct().len() <= MAX_SERIES => {
-                let d = s.distinct();
-                let n = d.len();
-                d.iter()
-                    .enumerate()
-                    .map(|(k, &v)| Curve {
-                        name: format!("nominal limit, {} = {}{}", s.short, fmt_g(v, 4), s.unit),
-                        points: points(&|i| round6(s.values[i]) == v, nominal),
-                        colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
-                        style: Style::Line,
-                    })
-                    .collect()
-            }
-            _ => vec![Curve {
+    let nominal = |r: &PatternRow| r.superlubric_to_nominal_mN;
+    // one curve of `limit` per value of a second varying parameter, if it has few values
+    let series = |limit: fn(&PatternRow) -> f64, prefix: &str, style: Style| {
+        let s = varying
+            .get(1)
+            .filter(|s| s.distinct().len() <= MAX_SERIES)?;
+        let d = s.distinct();
+        let n = d.len();
+        Some(
+            d.iter()
+                .enumerate()
+                .map(|(k, &v)| Curve {
+                    name: format!("{prefix}{} = {}{}", s.short, fmt_g(v, 4), s.unit),
+                    points: points(&|i| round6(s.values[i]) == v, limit),
+                    colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
+                    style,
+                })
+                .collect::<Vec<Curve>>(),
+        )
+    };
+    let curves = if rows.iter().any(|r| !r.robust_exact) {
+        // with many patterns only the best are searched over their tolerance boxes
+        // (`robust_exact`): the others' `superlubric_to_mN` is an upper bound, so the curves
+        // show the nominal limit and the searched robust limits as markers
+        let mut c = series(nominal, "nominal limit, ", Style::Line).unwrap_or_else(|| {
+            vec![Curve {
                 name: "nominal limit (θ, α exact)".into(),
                 points: points(&|_| true, nominal),
                 colour: Colour::Palette(1),
@@ -341,20 +341,17 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
                 } else {
                     Style::Markers
                 },
-            }],
-        };
-        curves.push(searched);
-        return Chart {
-            title: "superlubric limit of each pattern's best design".into(),
-            x_label: x.label.into(),
-            y_label: "superlubric to (mN)".into(),
-            curves,
-            hlines: vec![],
-            log_y: false,
-        };
-    }
-    let curves = match varying.get(1) {
-        None => vec![
+            }]
+        });
+        c.push(Curve {
+            name: "robust limit (searched: the best patterns)".into(),
+            points: points(&|i| rows[i].robust_exact, robust),
+            colour: Colour::Palette(0),
+            style: Style::Markers,
+        });
+        c
+    } else if varying.len() < 2 {
+        vec![
             Curve {
                 name: "robust limit (over the tolerance box)".into(),
                 points: points(&|_| true, robust),
@@ -367,7 +364,7 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
             },
             Curve {
                 name: "nominal limit (θ, α exact)".into(),
-                points: points(&|_| true, |r| r.superlubric_to_nominal_mN),
+                points: points(&|_| true, nominal),
                 colour: Colour::Palette(1),
                 style: if varying.is_empty() {
                     Style::Markers
@@ -375,26 +372,16 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
                     Style::Line
                 },
             },
-        ],
-        Some(s) if s.distinct().len() <= MAX_SERIES => {
-            let d = s.distinct();
-            let n = d.len();
-            d.iter()
-                .enumerate()
-                .map(|(k, &v)| Curve {
-                    name: format!("{} = {}{}", s.short, fmt_g(v, 4), s.unit),
-                    points: points(&|i| round6(s.values[i]) == v, robust),
-                    colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
-                    style: Style::LinePoints,
-                })
-                .collect()
-        }
-        Some(_) => vec![Curve {
-            name: "robust limit, one marker per pattern".into(),
-            points: points(&|_| true, robust),
-            colour: Colour::Palette(0),
-            style: Style::Markers,
-        }],
+        ]
+    } else {
+        series(robust, "", Style::LinePoints).unwrap_or_else(|| {
+            vec![Curve {
+                name: "robust limit, one marker per pattern".into(),
+                points: points(&|_| true, robust),
+                colour: Colour::Palette(0),
+                style: Style::Markers,
+            }]
+        })
     };
     Chart {
         title: "superlubric limit of each pattern's best design".into(),
