@@ -176,44 +176,67 @@ impl SiteList {
 
     /// Checks no two spheres of per-site radii `radii` overlap: centre distance < r_i + r_j
     /// (relative 1e-9); the error names both file lines and both diameters. Sweep over x with
-    /// the largest diameter as the window: O(N log N + close pairs).
+    /// the largest diameter as the window ([`SiteList::first_overlap`]): O(N log N + close
+    /// pairs).
     pub fn check_overlap_sized(&self, field: &str) -> Result<(), SceneError> {
         let Some(radii) = &self.radii else {
             return Ok(());
         };
-        let line = |i: usize| self.lines.get(i).copied().unwrap_or(i + 1);
+        let dmax = 2.0 * radii.iter().copied().fold(0.0, f64::max);
+        match self.first_overlap(|i| radii[i], dmax) {
+            None => Ok(()),
+            Some((a, b, dist)) => Err(self.overlap_error(
+                field,
+                a,
+                b,
+                &format!(
+                    "spheres at {:?} µm (diameter {} µm) and {:?} µm (diameter {} µm) overlap: centre distance {:.6} µm < radius sum {} µm",
+                    um2(self.sites[a]),
+                    2e6 * radii[a],
+                    um2(self.sites[b]),
+                    2e6 * radii[b],
+                    dist * 1e6,
+                    (radii[a] + radii[b]) * 1e6
+                ),
+            )),
+        }
+    }
+
+    /// The first overlapping pair (a < b, centre distance) of spheres of radius `radius(i)`
+    /// (m): centre distance < r_a + r_b (relative 1e-9), by a sweep over x whose window
+    /// `window` (m) is at least the largest radius sum. O(N log N + close pairs).
+    fn first_overlap(
+        &self,
+        radius: impl Fn(usize) -> f64,
+        window: f64,
+    ) -> Option<(usize, usize, f64)> {
         let mut order: Vec<usize> = (0..self.sites.len()).collect();
         order.sort_by(|&a, &b| self.sites[a][0].total_cmp(&self.sites[b][0]));
-        let dmax = 2.0 * radii.iter().copied().fold(0.0, f64::max);
         for (k, &i) in order.iter().enumerate() {
             let p = self.sites[i];
             for &j in &order[k + 1..] {
                 let q = self.sites[j];
-                if q[0] - p[0] >= dmax {
+                if q[0] - p[0] >= window {
                     break;
                 }
                 let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-                let sum = radii[i] + radii[j];
+                let sum = radius(i) + radius(j);
                 if dx * dx + dy * dy < sum * sum * (1.0 - 1e-9) {
-                    let (a, b) = (i.min(j), i.max(j));
-                    let um = |v: [f64; 2]| [v[0] * 1e6, v[1] * 1e6];
-                    return Err(SceneError::invalid(
-                        field,
-                        format!("{} lines {} and {}", self.path, line(a), line(b)),
-                        &format!(
-                            "spheres at {:?} µm (diameter {} µm) and {:?} µm (diameter {} µm) overlap: centre distance {:.6} µm < radius sum {} µm",
-                            um(self.sites[a]),
-                            2e6 * radii[a],
-                            um(self.sites[b]),
-                            2e6 * radii[b],
-                            dx.hypot(dy) * 1e6,
-                            sum * 1e6
-                        ),
-                    ));
+                    return Some((i.min(j), i.max(j), dx.hypot(dy)));
                 }
             }
         }
-        Ok(())
+        None
+    }
+
+    /// The error of overlapping sites `a` and `b` (their file lines), `why` in words.
+    fn overlap_error(&self, field: &str, a: usize, b: usize, why: &str) -> SceneError {
+        let line = |i: usize| self.lines.get(i).copied().unwrap_or(i + 1);
+        SceneError::invalid(
+            field,
+            format!("{} lines {} and {}", self.path, line(a), line(b)),
+            why,
+        )
     }
 
     /// Reads and parses a site file (see [`SiteList::parse`]); refuses files over 50 MB.
@@ -234,37 +257,28 @@ impl SiteList {
     }
 
     /// Checks no two spheres of diameter `d` (m) overlap (centre distance < d, relative 1e-9);
-    /// the error names both file lines. Sweep over x: O(N log N + close pairs).
+    /// the error names both file lines. Sweep over x ([`SiteList::first_overlap`]):
+    /// O(N log N + close pairs).
     pub fn check_overlap(&self, d: f64, field: &str) -> Result<(), SceneError> {
-        let line = |i: usize| self.lines.get(i).copied().unwrap_or(i + 1);
-        let mut order: Vec<usize> = (0..self.sites.len()).collect();
-        order.sort_by(|&a, &b| self.sites[a][0].total_cmp(&self.sites[b][0]));
-        let d2 = d * d * (1.0 - 1e-9);
-        for (k, &i) in order.iter().enumerate() {
-            let p = self.sites[i];
-            for &j in &order[k + 1..] {
-                let q = self.sites[j];
-                if q[0] - p[0] >= d {
-                    break;
-                }
-                let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-                if dx * dx + dy * dy < d2 {
-                    let (a, b) = (i.min(j), i.max(j));
-                    let um = |v: [f64; 2]| [v[0] * 1e6, v[1] * 1e6];
-                    return Err(SceneError::invalid(
-                        field,
-                        format!("{} lines {} and {}", self.path, line(a), line(b)),
-                        &format!(
-                            "spheres at {:?} and {:?} µm overlap: centre distance {:.6} µm < sphere diameter {} µm",
-                            um(self.sites[a]),
-                            um(self.sites[b]),
-                            dx.hypot(dy) * 1e6,
-                            d * 1e6
-                        ),
-                    ));
-                }
-            }
+        match self.first_overlap(|_| 0.5 * d, d) {
+            None => Ok(()),
+            Some((a, b, dist)) => Err(self.overlap_error(
+                field,
+                a,
+                b,
+                &format!(
+                    "spheres at {:?} and {:?} µm overlap: centre distance {:.6} µm < sphere diameter {} µm",
+                    um2(self.sites[a]),
+                    um2(self.sites[b]),
+                    dist * 1e6,
+                    d * 1e6
+                ),
+            )),
         }
-        Ok(())
     }
+}
+
+/// A position (m) in µm.
+fn um2(v: [f64; 2]) -> [f64; 2] {
+    [v[0] * 1e6, v[1] * 1e6]
 }
