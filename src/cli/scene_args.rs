@@ -132,11 +132,7 @@ impl SceneOverrides {
         let Some((kind, spacing)) = spec.split_once(':') else {
             bail!("`{flag}`: `{spec}` must be KIND:SPACING_UM, e.g. honeycomb:4.5 or rectangular:3x2.6");
         };
-        let num = |t: &str| -> Result<f64> {
-            t.trim()
-                .parse()
-                .with_context(|| format!("`{flag}`: `{t}` is not a number (µm)"))
-        };
+        let num = |t: &str| um_number(flag, t);
         let mut l = surrogate::scene::LatticeFile {
             kind: kind.trim().to_string(),
             ..Default::default()
@@ -162,11 +158,7 @@ impl SceneOverrides {
     /// The outline of `--outline` (see its help). Errors name the flag.
     fn outline(spec: &str) -> Result<surrogate::scene::OutlineFile> {
         let flag = "--outline";
-        let num = |t: &str| -> Result<f64> {
-            t.trim()
-                .parse()
-                .with_context(|| format!("`{flag}`: `{t}` is not a number (µm)"))
-        };
+        let num = |t: &str| um_number(flag, t);
         let parts: Vec<&str> = spec.split(':').collect();
         let mut o = surrogate::scene::OutlineFile {
             kind: parts[0].trim().to_string(),
@@ -235,11 +227,7 @@ impl SceneArgs {
             if parts.len() != 2 {
                 bail!("`--substrate-um`: `{s}` must be LXxLY, e.g. 364x270");
             }
-            let num = |t: &str| -> Result<f64> {
-                t.trim()
-                    .parse()
-                    .with_context(|| format!("`--substrate-um`: `{t}` is not a number"))
-            };
+            let num = |t: &str| um_number("--substrate-um", t);
             o.substrate.size_um = Some([num(parts[0])?, num(parts[1])?]);
         }
         if let Some(s) = &self.overrides.offset_um {
@@ -298,4 +286,11 @@ impl SceneArgs {
             scene,
         })
     }
+}
+
+/// The length (µm) written `t` in flag `flag`; the error names the flag.
+fn um_number(flag: &str, t: &str) -> Result<f64> {
+    t.trim()
+        .parse()
+        .with_context(|| format!("`{flag}`: `{t}` is not a number (µm)"))
 }
