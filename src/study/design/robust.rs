@@ -261,6 +261,15 @@ pub(super) fn level_reach(
     }
 }
 
+/// Marks `c` as never refined over the box: its nominal limit is its bound (`exact: false`),
+/// its windows and corner estimates unknown.
+fn unsearched(c: &mut Candidate) {
+    c.corners = Vec::new();
+    c.score.exact = false;
+    c.score.theta_window_deg = None;
+    c.score.direction_window_deg = None;
+}
+
 /// The loads (count) up to `mn`.
 fn count(p: &DesignParams, mn: f64) -> usize {
     p.loads.iter().filter(|&&w| label(n_to_mn(w)) <= mn).count()
@@ -293,10 +302,7 @@ pub fn robust_stage(
     // at or below the floor: upper bounds, never searched
     for c in ranking.iter_mut() {
         if c.score.nominal_to_mn > 0.0 && c.score.nominal_to_mn <= floor_mn {
-            c.score.exact = false;
-            c.score.theta_window_deg = None;
-            c.score.direction_window_deg = None;
-            c.corners = Vec::new();
+            unsearched(c);
         }
     }
     if todo.is_empty() {
@@ -445,13 +451,7 @@ pub fn robust_stage(
                     .map(|(_, v)| v.clone());
                 c.corners = corner_estimates(&searches.bx, s);
             }
-            None => {
-                // never refined: its nominal limit is its bound, its windows unknown
-                c.corners = Vec::new();
-                c.score.exact = false;
-                c.score.theta_window_deg = None;
-                c.score.direction_window_deg = None;
-            }
+            None => unsearched(c),
         }
     }
     progress.finish();
