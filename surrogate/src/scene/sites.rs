@@ -176,7 +176,7 @@ impl SiteList {
 
     /// Checks no two spheres of per-site radii `radii` overlap: centre distance < r_i + r_j
     /// (relative 1e-9); the error names both file lines and both diameters. Sweep over x with
-    /// the largest diameter as the window ([`SiteList::first_overlap`]): O(N log N + close
+    /// the largest diameter as the window (`first_overlap`): O(N log N + close
     /// pairs).
     pub fn check_overlap_sized(&self, field: &str) -> Result<(), SceneError> {
         let Some(radii) = &self.radii else {
@@ -257,7 +257,7 @@ impl SiteList {
     }
 
     /// Checks no two spheres of diameter `d` (m) overlap (centre distance < d, relative 1e-9);
-    /// the error names both file lines. Sweep over x ([`SiteList::first_overlap`]):
+    /// the error names both file lines. Sweep over x (`first_overlap`):
     /// O(N log N + close pairs).
     pub fn check_overlap(&self, d: f64, field: &str) -> Result<(), SceneError> {
         match self.first_overlap(|_| 0.5 * d, d) {
