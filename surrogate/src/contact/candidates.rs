@@ -70,6 +70,51 @@ impl GridSearch {
     }
 }
 
+impl GridSearch {
+    /// Appends every pair whose lateral distance is below `reach` (m) somewhere on the straight
+    /// move of each slider sphere from `p − half` to `p + half` (`p` in `slider_xy`, `half` in
+    /// m): the pairs of every pose of a straight stretch of path, from one scan of the cells
+    /// around each sphere's swept capsule (a third of the disc search's cells for a 3 µm
+    /// stretch). `r2` is the lateral distance² at `p`. Slider order, then substrate index order.
+    pub fn pairs_swept(
+        &self,
+        slider_xy: &[[f64; 2]],
+        half: [f64; 2],
+        reach: f64,
+        out: &mut Vec<CandidatePair>,
+    ) {
+        let h2 = half[0] * half[0] + half[1] * half[1];
+        let r2max = reach * reach * (1.0 + 1e-9);
+        let ext = [half[0].abs() + reach, half[1].abs() + reach];
+        let mut local: Vec<CandidatePair> = Vec::with_capacity(32);
+        for (si, p) in slider_xy.iter().enumerate() {
+            local.clear();
+            let lo = [p[0] - ext[0], p[1] - ext[1]];
+            let hi = [p[0] + ext[0], p[1] + ext[1]];
+            self.cells.for_in_box(lo, hi, |k| {
+                let q = self.spheres[k as usize];
+                let v = [q[0] - p[0], q[1] - p[1]];
+                let t = if h2 > 0.0 {
+                    ((v[0] * half[0] + v[1] * half[1]) / h2).clamp(-1.0, 1.0)
+                } else {
+                    0.0
+                };
+                let w = [v[0] - t * half[0], v[1] - t * half[1]];
+                if w[0] * w[0] + w[1] * w[1] < r2max {
+                    local.push(CandidatePair {
+                        slider: si as u32,
+                        substrate: k,
+                        r2: v[0] * v[0] + v[1] * v[1],
+                        h: q[2],
+                    });
+                }
+            });
+            local.sort_unstable_by_key(|c| c.substrate);
+            out.extend_from_slice(&local);
+        }
+    }
+}
+
 impl CandidateSearch for GridSearch {
     fn pairs(&self, slider_xy: &[[f64; 2]], reach: f64, out: &mut Vec<CandidatePair>) {
         let r2max = reach * reach;

@@ -84,6 +84,38 @@ impl CellList {
         }
     }
 
+    /// Calls `f(index)` for every binned point in the cells that meet the box `[lo, hi]` (m),
+    /// row by row, in binning order within a cell (a superset of the points inside the box).
+    pub fn for_in_box(&self, lo: [f64; 2], hi: [f64; 2], mut f: impl FnMut(u32)) {
+        // cell coordinates clamped to the grid (truncation is the floor once clamped at 0)
+        let cell = |v: f64, o: f64, n: usize| -> Option<usize> {
+            let x = (v - o) / self.cell;
+            if !x.is_finite() {
+                return None;
+            }
+            Some(if x <= 0.0 { 0 } else { (x as usize).min(n - 1) })
+        };
+        if hi[0] < self.origin[0] || hi[1] < self.origin[1] {
+            return;
+        }
+        let (Some(i0), Some(i1), Some(j0), Some(j1)) = (
+            cell(lo[0], self.origin[0], self.nx),
+            cell(hi[0], self.origin[0], self.nx),
+            cell(lo[1], self.origin[1], self.ny),
+            cell(hi[1], self.origin[1], self.ny),
+        ) else {
+            return;
+        };
+        for j in j0..=j1 {
+            for i in i0..=i1 {
+                let c = j as usize * self.nx + i as usize;
+                for &n in &self.items[self.start[c] as usize..self.start[c + 1] as usize] {
+                    f(n);
+                }
+            }
+        }
+    }
+
     /// Cell size (m).
     pub fn cell(&self) -> f64 {
         self.cell

@@ -69,8 +69,14 @@ impl Lin<'_> {
     fn at(&self, x: f64) -> f64 {
         let n = self.y.len() - 1;
         let t = x / self.h;
-        let fl = t.floor();
-        let i = (fl as i64).rem_euclid(n as i64) as usize;
+        // floor and wrap, the cheap way on the common case 0 ≤ t < n (same values)
+        let (fl, i) = if (0.0..n as f64).contains(&t) {
+            let i = t as usize;
+            (i as f64, i)
+        } else {
+            let fl = t.floor();
+            (fl, (fl as i64).rem_euclid(n as i64) as usize)
+        };
         let w = t - fl;
         self.y[i] + w * (self.y[i + 1] - self.y[i])
     }

@@ -1,9 +1,29 @@
 //! [`Solver::solve_along`]: equilibria at the samples of a straight path, sharing candidate
-//! searches.
+//! searches and pair lists ([`super::path_pairs::PathChunk`]; `docs/validation/path-solve.md`).
 
-use super::{Equilibrium, Model, Pose, Solver};
+use super::path_pairs::PathChunk;
+use super::{Equilibrium, Model, Solver, Warm};
 use crate::error::SceneError;
 use rayon::prelude::*;
+
+/// Sub-chunks (of `StraightPath::segment` each) sharing one candidate search: a chunk of path
+/// runs one search and is solved by one thread (speed only; results are identical for any value).
+const CHUNK_SEGMENTS: usize = 12;
+
+/// The pair list's floor sits this many single-contact overlaps `δ(W_max)` below the highest
+/// touch height (the z root's first bracket reaches one below it): speed only, a sample that
+/// needs more is solved on every pair and the floor lowered (`docs/validation/path-solve.md`).
+const BAND_OVERLAPS: f64 = 1.5;
+
+/// After its first sample (a cold start), a chunk raises its floor to this many of the deepest
+/// load's z-root depths below the top: the warm-started z root brackets a tenth of a depth
+/// around the previous root and the tilt's working set reaches four depths below the top
+/// (`docs/validation/path-solve.md`).
+const WARM_BAND_DEPTHS: f64 = 5.0;
+
+/// A chunk stops lowering its floor after this many samples that needed every pair, and solves
+/// the rest of its samples on every pair (a commensurate path whose top drops by hundreds of nm).
+const MAX_WIDENINGS: usize = 6;
 
 /// A straight path of slider poses: shifts `origin + s·e` from the scene's placement at
 /// rotation θ.
@@ -24,12 +44,8 @@ pub struct StraightPath<'a> {
 
 impl Solver {
     /// Solves `model` at load `load` (N) at every sample of `path` and maps each equilibrium
-    /// with `f(s, eq)`. The samples are cut into segments of about `path.segment` (m); each segment
-    /// runs one candidate search reaching half its length further ([`Solver::pairs_within`]) and
-    /// filters it per sample ([`Solver::pairs_from`], bit-identical to a fresh search).
-    /// Parallel over segments (rayon); results in sample order, identical for any thread count.
-    /// Cost: one solve per sample plus one wider search per segment (≈ 0.35 ms per sample and
-    /// 0.9 ms per 0.5 µm segment for the study's 3505-sphere slider).
+    /// with `f(s, eq)`: [`Solver::solve_along_loads`] for one load (same results, same errors:
+    /// the first failed sample's).
     pub fn solve_along<T, F>(
         &self,
         path: StraightPath,
@@ -41,60 +57,23 @@ impl Solver {
         T: Send,
         F: Fn(f64, Equilibrium) -> T + Sync,
     {
-        let StraightPath {
-            theta,
-            origin,
-            e,
-            s,
-            segment,
-        } = path;
-        if s.is_empty() {
-            return Ok(Vec::new());
-        }
-        let spacing = if s.len() > 1 {
-            (s[s.len() - 1] - s[0]) / (s.len() - 1) as f64
-        } else {
-            segment
-        };
-        let per = if spacing > 0.0 {
-            ((segment / spacing).round() as usize).max(1)
-        } else {
-            1
-        };
-        let at = |si: f64| Pose {
-            theta,
-            shift: [origin[0] + si * e[0], origin[1] + si * e[1]],
-        };
-        let out: Result<Vec<Vec<T>>, SceneError> = s
-            .par_chunks(per)
-            .map(|chunk| {
-                if let [si] = chunk {
-                    // a segment of one sample: a plain search
-                    let ps = self.pairs_at(at(*si));
-                    return Ok(vec![f(*si, self.solve_pairs(&ps, load, model)?)]);
-                }
-                let (a, b) = (chunk[0], chunk[chunk.len() - 1]);
-                // every sample of the chunk lies within half its span (plus round-off) of the middle
-                let reach = 0.5 * (b - a).abs() * (1.0 + 1e-9) + 1e-15;
-                let near = self.pairs_within(at(0.5 * (a + b)), reach);
-                chunk
-                    .iter()
-                    .map(|&si| {
-                        let ps = self.pairs_from(&near, at(si));
-                        Ok(f(si, self.solve_pairs(&ps, load, model)?))
-                    })
-                    .collect()
-            })
-            .collect();
-        Ok(out?.into_iter().flatten().collect())
+        self.solve_along_loads(path, &[load], model, |si, _, eq| f(si, eq))
+            .pop()
+            .expect("one result per load")
     }
 
-    /// [`Solver::solve_along`] for several loads (N) at once: every segment's candidate search
-    /// and every sample's filtered pair list ([`Solver::pairs_from`]) serve all loads, and the
-    /// loads of one sample share the prepared pair list ([`Solver::solve_loads_pairs`]). Each
-    /// equilibrium is bit-identical to the one [`Solver::solve_along`] gives for that load alone.
-    /// Returns, per load (in the order of `loads`), the mapped samples `f(s, load index, eq)` in
-    /// sample order, or that load's first failed solve. Parallel over segments, deterministic.
+    /// [`Solver::solve_along`] for several loads (N) at once. Each equilibrium is bit-identical
+    /// to [`Solver::solve_loads_pairs`] on a fresh search at that sample
+    /// ([`Solver::pairs_at`]). Returns, per load (in the order of `loads`), the mapped samples
+    /// `f(s, load index, eq)` in sample order, or that load's first failed solve.
+    ///
+    /// The samples are cut into chunks of [`CHUNK_SEGMENTS`] segments of about `path.segment`
+    /// (m); a chunk runs one candidate search ([`Solver::pairs_within`]) and keeps, per segment,
+    /// the pairs that can touch above a height floor ([`PathChunk`]): a sample filters and
+    /// solves a few hundred pairs, not every slider sphere's. A sample whose solve would need a
+    /// pair below the floor is solved on every pair and the floor lowered. Parallel over
+    /// chunks (rayon), deterministic. Cost (study's 3505-sphere slider, 1.75 mN): see
+    /// `docs/validation/path-solve.md`.
     pub fn solve_along_loads<T, F>(
         &self,
         path: StraightPath,
@@ -123,32 +102,114 @@ impl Solver {
         } else {
             1
         };
-        let at = |si: f64| Pose {
-            theta,
-            shift: [origin[0] + si * e[0], origin[1] + si * e[1]],
-        };
+        // the z root's first bracket for the heaviest load: one contact carrying it all
+        let w_max = loads
+            .iter()
+            .copied()
+            .filter(|w| w.is_finite() && *w > 0.0)
+            .fold(0.0, f64::max);
+        let partial = model != Model::Compliant && w_max > 0.0;
+        let band = BAND_OVERLAPS * self.hertz().overlap_for_force(w_max);
+        let gmax = self.lever_bound();
         // per chunk, per sample, per load
         type Solved<T> = Vec<Vec<Result<T, SceneError>>>;
-        let solve = |ps: &super::PairSet, si: f64| -> Vec<Result<T, SceneError>> {
-            self.solve_loads_pairs(ps, loads, model)
+        let solve_full = |ps: &super::PairSet, si: f64, which: &[usize]| {
+            let w: Vec<f64> = which.iter().map(|&j| loads[j]).collect();
+            self.solve_loads_pairs(ps, &w, model)
                 .into_iter()
-                .enumerate()
-                .map(|(j, r)| r.map(|eq| f(si, j, eq)))
-                .collect()
+                .zip(which)
+                .map(|(r, &j)| r.map(|eq| f(si, j, eq)))
+                .collect::<Vec<_>>()
         };
+        let all: Vec<usize> = (0..loads.len()).collect();
+        // chunks of about CHUNK_SEGMENTS segments, of equal size (no stub of one sample)
+        let n_chunks = s.len().div_ceil(per * CHUNK_SEGMENTS).max(1);
+        let size = s.len().div_ceil(n_chunks).max(1);
         let chunks: Vec<Solved<T>> = s
-            .par_chunks(per)
+            .par_chunks(size)
             .map(|chunk| {
-                if let [si] = chunk {
-                    return vec![solve(&self.pairs_at(at(*si)), *si)];
+                let mut pc = PathChunk::new(self, theta, origin, e, chunk, band);
+                let mut warm = vec![Warm::default(); loads.len()];
+                let mut widenings = 0;
+                let mut tightened = false;
+                let mut out: Solved<T> = Vec::with_capacity(chunk.len());
+                for seg in chunk.chunks(per) {
+                    let end = seg[seg.len() - 1];
+                    pc.refresh(seg[0], end);
+                    for &si in seg {
+                        if !partial {
+                            out.push(solve_full(&pc.full_at(si), si, &all));
+                            continue;
+                        }
+                        let floor = pc.floor;
+                        let before = warm.clone();
+                        let got = self.solve_loads_partial(
+                            pc.partial_at(si),
+                            loads,
+                            model,
+                            floor,
+                            gmax,
+                            &mut warm,
+                        );
+                        let missing: Vec<usize> =
+                            (0..loads.len()).filter(|&j| got[j].is_none()).collect();
+                        let mut redone = Vec::with_capacity(missing.len());
+                        if !missing.is_empty() {
+                            // every pair, from the same warm start: the answer does not depend
+                            // on the list (nor, so, on the other loads or the floor)
+                            let full = pc.full_at(si);
+                            let w: Vec<f64> = missing.iter().map(|&j| loads[j]).collect();
+                            let mut wm: Vec<Warm> = missing.iter().map(|&j| before[j]).collect();
+                            let r = self.solve_loads_partial(
+                                &full,
+                                &w,
+                                model,
+                                f64::NEG_INFINITY,
+                                gmax,
+                                &mut wm,
+                            );
+                            for ((&j, eq), wj) in missing.iter().zip(r).zip(wm) {
+                                warm[j] = wj;
+                                redone.push(match eq {
+                                    Some(eq) => Ok(f(si, j, eq)),
+                                    // the error a fresh solve gives
+                                    None => solve_full(&full, si, &[j]).pop().expect("one"),
+                                });
+                            }
+                        }
+                        let mut redone = redone.into_iter();
+                        out.push(
+                            got.into_iter()
+                                .enumerate()
+                                .map(|(j, eq)| match eq {
+                                    Some(eq) => Ok(f(si, j, eq)),
+                                    None => redone.next().expect("one full solve per miss"),
+                                })
+                                .collect(),
+                        );
+                        if !missing.is_empty() {
+                            // lower the floor by the cold band, doubling, for the rest (to
+                            // every pair after MAX_WIDENINGS: the list can then miss nothing)
+                            widenings += 1;
+                            pc.set_floor(if widenings < MAX_WIDENINGS {
+                                floor - band * (1u64 << widenings) as f64
+                            } else {
+                                f64::NEG_INFINITY
+                            });
+                            pc.refresh(si, end);
+                        } else if !tightened {
+                            // warm starts look this far below the top: raise the floor to it
+                            tightened = true;
+                            let depth = warm.iter().map(|w| w.depth).fold(0.0, f64::max);
+                            let warm_band = WARM_BAND_DEPTHS * depth + 1e-9 * band;
+                            if depth.is_finite() && warm_band < band {
+                                pc.set_floor(pc.top0 - warm_band);
+                                pc.refresh(si, end);
+                            }
+                        }
+                    }
                 }
-                let (a, b) = (chunk[0], chunk[chunk.len() - 1]);
-                let reach = 0.5 * (b - a).abs() * (1.0 + 1e-9) + 1e-15;
-                let near = self.pairs_within(at(0.5 * (a + b)), reach);
-                chunk
-                    .iter()
-                    .map(|&si| solve(&self.pairs_from(&near, at(si)), si))
-                    .collect()
+                out
             })
             .collect();
         let mut out: Vec<Result<Vec<T>, SceneError>> = loads

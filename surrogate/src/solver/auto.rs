@@ -12,7 +12,7 @@
 
 use super::ctx::Ctx;
 use super::law::Law;
-use super::rigid_tilt::{assemble_tilt, max_lever, tilt_from, NearSet};
+use super::rigid_tilt::{assemble_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, PairSet};
 use crate::error::SceneError;
@@ -25,8 +25,8 @@ pub(crate) fn moment_negligible(ctx: &Ctx, load: f64, m: [f64; 2]) -> bool {
 }
 
 /// [`Model::Auto`](super::Model::Auto) for `load` W (N) on the prepared rigid-z problem `rz` of
-/// `ps` (shared across loads). Cost: one rigid-z solve and its O(P) assembly (which sums the
-/// contact moment); where it escalates, plus one O(P) pass selecting the pairs near contact, the
+/// `ps` (shared across loads). Cost: one rigid-z solve and an O(P) pass summing its contact
+/// moment, then its assembly where that moment is negligible; where it escalates, plus one O(P) pass selecting the pairs near contact, the
 /// tilt Newton on them (typically 3–5 iterations of O(few hundred)) and a second assembly.
 pub(crate) fn solve_auto<L: Law>(
     ctx: &Ctx,
@@ -34,12 +34,12 @@ pub(crate) fn solve_auto<L: Law>(
     rz: &RigidZ<L>,
     load: f64,
 ) -> Result<Equilibrium, SceneError> {
-    let (zeta, iters) = rz.zr.solve(load, ctx.hertz, ctx.params)?;
-    let eq = rz.assemble(ctx, ps, load, zeta, iters);
-    if !ctx.tilts || moment_negligible(ctx, load, eq.moment_residual) {
-        return Ok(eq);
+    let (zeta, iters) = rz.zr.solve(ctx, load)?;
+    // the rigid-z moment, summed as the assembly sums it (same bits), without building contacts
+    if !ctx.tilts || moment_negligible(ctx, load, rz.moment(ctx, ps, zeta)) {
+        return Ok(rz.assemble(ctx, ps, load, zeta, iters));
     }
-    let near = NearSet::new(&rz.bp, zeta, max_lever(ctx, ps));
+    let near = NearSet::new(ctx, &rz.bp, zeta, ctx.lever_bound(ps));
     let (q, it) = tilt_from(ctx, &rz.bp, &near, load, zeta)?;
     Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, load, q, iters + it))
 }

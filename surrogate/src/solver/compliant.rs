@@ -159,8 +159,7 @@ pub(crate) fn solve_compliant<L: Law>(
     let (q0, it0) = if ctx.tilts {
         rigid_tilt_state(ctx, ps, &bp, load)?
     } else {
-        let (z, it) = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz.k())
-            .solve(load, ctx.hertz, ctx.params)?;
+        let (z, it) = ZRoot::new(&bp, [0.0, 0.0], ctx.two_r, ctx.hertz.k()).solve(ctx, load)?;
         ([z, 0.0, 0.0], it)
     };
     let nq = if ctx.tilts { 3 } else { 1 };

@@ -4,6 +4,42 @@
 use super::SolverParams;
 use crate::contact::Hertz;
 use crate::scene::{Coating, Scene};
+use std::cell::Cell;
+
+/// What a solve on a *partial* pair list relied on ([`super::path_pairs`]): the list holds every
+/// pair whose touch height is above a floor, and a solve is exact (bit-identical to one on every
+/// pair) when every height it looked at — the z root's lowest bracket, the tilt working set's
+/// floor, and each tilted state lowered by its rim drop `|q₁₂|·gmax` — lies above that floor.
+/// The models record the lowest such height (m, relative to z_ref) here.
+pub(crate) struct Watch {
+    /// Bound on the lever `|g| = |arm|/L` of every slider sphere (the path's, not the list's).
+    pub gmax: f64,
+    /// Lowest height (m, relative to z_ref) a model relied on since the last reset.
+    pub lowest: Cell<f64>,
+    /// Warm start of the untilted z root (m, relative to z_ref; NaN: none): the previous
+    /// sample's root on a path.
+    pub guess: Cell<f64>,
+    /// The untilted z root last found (m, relative to z_ref; NaN: none).
+    pub root: Cell<f64>,
+    /// Warm start `[ζ, L·t_x, L·t_y]` of the tilt Newton (ζ relative to z_ref; NaN: none).
+    pub tilt_guess: Cell<[f64; 3]>,
+    /// The tilted state last found (ζ relative to z_ref; NaN: none).
+    pub tilt_root: Cell<[f64; 3]>,
+}
+
+impl Watch {
+    /// A watch for a slider whose levers are bounded by `gmax`.
+    pub fn new(gmax: f64) -> Watch {
+        Watch {
+            gmax,
+            lowest: Cell::new(f64::INFINITY),
+            guess: Cell::new(f64::NAN),
+            root: Cell::new(f64::NAN),
+            tilt_guess: Cell::new([f64::NAN; 3]),
+            tilt_root: Cell::new([f64::NAN; 3]),
+        }
+    }
+}
 
 /// Per-sphere radii of a scene with per-site sizes (the slow path; `None` in [`Ctx`] for one
 /// size per body). Geometry: see [`crate::scene::SiteList`].
@@ -72,9 +108,38 @@ pub(crate) struct Ctx<'a> {
     /// Rotational stiffness tensor K_t (N·m/rad, lab frame, at this pose's θ) of the mount,
     /// acting on `[t_x, t_y]`. Zero for `free` and `locked`.
     pub kt: [[f64; 2]; 2],
+    /// Set when the pairs are a partial list ([`Watch`]); `None` for a complete one.
+    pub watch: Option<&'a Watch>,
 }
 
 impl Ctx<'_> {
+    /// Records that the solve relied on every pair touching above height `z` (m, relative to
+    /// z_ref) being in the list. O(1); nothing without a [`Watch`].
+    #[inline]
+    pub fn rely(&self, z: f64) {
+        if let Some(w) = self.watch {
+            w.lowest.set(w.lowest.get().min(z));
+        }
+    }
+
+    /// [`Ctx::rely`] for the tilted state `q = [ζ, L·t_x, L·t_y]`: a pair of touch height c
+    /// touches there iff `c − q₁₂·g > ζ`, so every pair above `ζ − |q₁₂|·gmax` counts.
+    #[inline]
+    pub fn rely_tilted(&self, q: [f64; 3]) {
+        if let Some(w) = self.watch {
+            self.rely(q[0] - q[1].hypot(q[2]) * w.gmax);
+        }
+    }
+
+    /// The bound on every pair's lever `|g|` the tilt working set uses: the watch's (a partial
+    /// list's slider positions are only those of its pairs), else [`super::rigid_tilt::max_lever`].
+    pub fn lever_bound(&self, ps: &super::PairSet) -> f64 {
+        match self.watch {
+            Some(w) => w.gmax,
+            None => super::rigid_tilt::max_lever(self, ps),
+        }
+    }
+
     /// Hertz law of slider sphere `i` on substrate sphere `j` (the scene's one law without
     /// per-site sizes). O(1).
     #[inline]

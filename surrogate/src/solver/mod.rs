@@ -19,6 +19,7 @@ mod law;
 mod model;
 mod pair_set;
 mod params;
+mod path_pairs;
 mod rigid_tilt;
 mod rigid_z;
 #[allow(clippy::module_inception)]
@@ -30,4 +31,5 @@ pub use equilibrium::{ContactInfo, Equilibrium};
 pub use model::Model;
 pub use pair_set::PairSet;
 pub use params::SolverParams;
+pub(crate) use solver::Warm;
 pub use solver::{Pose, SearchKind, Solver};

@@ -7,6 +7,8 @@
 
 use super::assemble::assemble;
 use super::ctx::Ctx;
+#[allow(unused_imports)]
+use super::ctx::Watch;
 use super::law::{body_pairs, BodyPair, Law};
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
@@ -67,14 +69,24 @@ fn eval<L: Law>(
 /// stop it, and a balanced but undetermined tilt stays at its start value. If the tilt grows
 /// until the rim drops by more than a sphere diameter the load point lies outside the support
 /// (e.g. slider hanging over the substrate edge) and the solve fails with `NoEquilibrium`.
+///
+/// `whole`: `tp` is every pair of the list (not a working set): each state it evaluates is
+/// recorded with [`Ctx::rely_tilted`].
 pub(crate) fn tilt_newton<L: Law>(
     ctx: &Ctx,
     tp: &[BodyPair<L>],
     load: f64,
     q0: [f64; 3],
+    whole: bool,
 ) -> Result<([f64; 3], usize, bool), SceneError> {
     let params = ctx.params;
     let mut q = q0;
+    let eval = |ctx: &Ctx, tp: &[BodyPair<L>], load: f64, q: [f64; 3]| {
+        if whole {
+            ctx.rely_tilted(q);
+        }
+        eval(ctx, tp, load, q)
+    };
     let tol_f = params.force_rtol * load;
     let tol_m = params.moment_rtol * load;
     let mut rho = ctx.two_r; // trust radius (m) on the step
@@ -189,8 +201,8 @@ pub(crate) fn rigid_tilt_state<L: Law>(
     load: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
     let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz.k());
-    let (z0, it0) = zr.solve(load, ctx.hertz, ctx.params)?;
-    let near = NearSet::new(bp, z0, max_lever(ctx, ps));
+    let (z0, it0) = zr.solve(ctx, load)?;
+    let near = NearSet::new(ctx, bp, z0, ctx.lever_bound(ps));
     let (q, it1) = tilt_from(ctx, bp, &near, load, z0)?;
     Ok((q, it0 + it1))
 }
@@ -212,13 +224,15 @@ pub(crate) struct NearSet<L> {
 
 impl<L: Law> NearSet<L> {
     /// The working set of `bp` around the rigid-z state `z0` (m); `gmax` bounds |g| over every
-    /// pair ([`max_lever`]).
-    pub fn new(bp: &[BodyPair<L>], z0: f64, gmax: f64) -> NearSet<L> {
+    /// pair ([`max_lever`]). On a partial list ([`Ctx::watch`]) the set is never complete unless
+    /// its band is empty, as on the whole list.
+    pub fn new(ctx: &Ctx, bp: &[BodyPair<L>], z0: f64, gmax: f64) -> NearSet<L> {
         let band = NEAR_BAND * (-z0).max(0.0);
         let floor = z0 - band;
+        ctx.rely(floor);
         let pairs: Vec<BodyPair<L>> = bp.iter().filter(|p| p.c > floor).copied().collect();
         NearSet {
-            complete: pairs.len() == bp.len() || band == 0.0,
+            complete: (pairs.len() == bp.len() && ctx.watch.is_none()) || band == 0.0,
             pairs,
             floor,
             gmax,
@@ -227,10 +241,11 @@ impl<L: Law> NearSet<L> {
 
     /// Whether a pair of `bp` left out of the set touches at state `q`: O(1) when the bound
     /// `ζ − |q₁₂|·max|g| > floor` rules it out, else one O(P) pass.
-    fn misses_a_contact(&self, bp: &[BodyPair<L>], q: [f64; 3]) -> bool {
+    fn misses_a_contact(&self, ctx: &Ctx, bp: &[BodyPair<L>], q: [f64; 3]) -> bool {
         if self.complete || q[0] - (q[1] * q[1] + q[2] * q[2]).sqrt() * self.gmax > self.floor {
             return false;
         }
+        ctx.rely_tilted(q);
         bp.iter()
             .any(|p| p.c <= self.floor && p.c > q[0] + q[1] * p.g[0] + q[2] * p.g[1])
     }
@@ -254,24 +269,44 @@ pub(crate) fn tilt_from<L: Law>(
     z0: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
     debug_assert!(ctx.tilts, "tilt model under a locked mount");
-    let start = [z0, 0.0, 0.0];
+    // a path's previous tilted state where it has one ([`Watch::tilt_guess`]), else rigid-z
+    let start = match ctx.watch.map(|w| w.tilt_guess.get()) {
+        Some(g) if g.iter().all(|v| v.is_finite()) => g,
+        _ => [z0, 0.0, 0.0],
+    };
+    let q = tilt_state(ctx, bp, near, load, start)?;
+    if let Some(w) = ctx.watch {
+        w.tilt_root.set(q.0);
+    }
+    Ok(q)
+}
+
+/// [`tilt_from`] from the state `start`.
+fn tilt_state<L: Law>(
+    ctx: &Ctx,
+    bp: &[BodyPair<L>],
+    near: &NearSet<L>,
+    load: f64,
+    start: [f64; 3],
+) -> Result<([f64; 3], usize), SceneError> {
     let (q, it1, force_ok) = if near.complete {
-        tilt_newton(ctx, bp, load, start)?
+        tilt_newton(ctx, bp, load, start, true)?
     } else {
-        match tilt_newton(ctx, &near.pairs, load, start) {
-            Ok((q, it, ok)) if !near.misses_a_contact(bp, q) => (q, it, ok),
+        match tilt_newton(ctx, &near.pairs, load, start, false) {
+            Ok((q, it, ok)) if !near.misses_a_contact(ctx, bp, q) => (q, it, ok),
             Ok((q, it, _)) => {
-                let (q2, it2, ok2) = tilt_newton(ctx, bp, load, q)?;
+                let (q2, it2, ok2) = tilt_newton(ctx, bp, load, q, true)?;
                 (q2, it + it2, ok2)
             }
-            Err(_) => tilt_newton(ctx, bp, load, start)?,
+            Err(_) => tilt_newton(ctx, bp, load, start, true)?,
         }
     };
     if force_ok {
         return Ok((q, it1));
     }
     let zr = ZRoot::new(bp, [q[1], q[2]], ctx.two_r, ctx.hertz.k());
-    let (z, it2) = zr.solve(load, ctx.hertz, ctx.params)?;
+    let drop = ctx.watch.map_or(0.0, |w| q[1].hypot(q[2]) * w.gmax);
+    let (z, it2) = zr.solve_dropped(ctx, load, drop)?;
     Ok(([z, q[1], q[2]], it1 + it2))
 }
 

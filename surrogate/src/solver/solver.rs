@@ -2,9 +2,9 @@
 
 use super::auto::solve_auto;
 use super::compliant::solve_compliant;
-use super::ctx::{Ctx, Sizes};
+use super::ctx::{Ctx, Sizes, Watch};
 use super::law::{Law, Own, Shared};
-use super::rigid_tilt::{assemble_tilt, max_lever, solve_rigid_tilt, tilt_from, NearSet};
+use super::rigid_tilt::{assemble_tilt, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
 use crate::contact::{BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz};
@@ -181,6 +181,49 @@ impl Solver {
         }
     }
 
+    /// The pairs that come within contact distance (plus a round-off margin) of each other
+    /// somewhere on the straight stretch of poses `pose.shift ± half` (m) at `pose.theta`: a
+    /// superset of every such pose's pairs, for [`Solver::pairs_from`], from one grid scan of
+    /// each sphere's swept capsule ([`GridSearch::pairs_swept`]). O(N_slider).
+    ///
+    /// Fills `out` (its buffers reused: no allocation once they have grown).
+    pub(crate) fn pairs_swept_into(&self, pose: Pose, half: [f64; 2], out: &mut PairSet) {
+        let (sn, cs) = pose.theta.sin_cos();
+        let cx = self.scene.slider.offset[0] + pose.shift[0];
+        let cy = self.scene.slider.offset[1] + pose.shift[1];
+        out.slider_xy.clear();
+        out.slider_xy.extend(
+            self.local
+                .iter()
+                .map(|p| [cx + cs * p[0] - sn * p[1], cy + sn * p[0] + cs * p[1]]),
+        );
+        out.centre = [cx, cy];
+        out.theta = pose.theta;
+        out.pairs.clear();
+        let slider_xy = &out.slider_xy;
+        let pairs = &mut out.pairs;
+        let margin = 1e-9 * self.reach + 1e-15;
+        self.grid
+            .pairs_swept(slider_xy, half, self.reach + margin, pairs);
+        if let Some(s) = &self.sizes {
+            // each pair's own reach r_i + r_j, swept
+            let h2 = half[0] * half[0] + half[1] * half[1];
+            pairs.retain(|c| {
+                let p = slider_xy[c.slider as usize];
+                let q = self.substrate[c.substrate as usize];
+                let v = [q[0] - p[0], q[1] - p[1]];
+                let t = if h2 > 0.0 {
+                    ((v[0] * half[0] + v[1] * half[1]) / h2).clamp(-1.0, 1.0)
+                } else {
+                    0.0
+                };
+                let w = [v[0] - t * half[0], v[1] - t * half[1]];
+                let d = s.distance(c.slider, c.substrate) + margin;
+                w[0] * w[0] + w[1] * w[1] < d * d
+            });
+        }
+    }
+
     /// The pairs of `pose` (lateral distance < 2R) taken from `near`, a [`Solver::pairs_within`]
     /// set of the same θ built with `extra` ≥ the distance between the two shifts: identical to
     /// [`Solver::pairs_at`]`(pose)` (same order, same r² arithmetic), without a candidate search.
@@ -234,6 +277,7 @@ impl Solver {
                 .max(self.scene.max_slider_sphere_radius()),
             tilts: self.scene.slider.mount.tilts(),
             kt: self.tilt_stiffness_at(theta),
+            watch: None,
         }
     }
 
@@ -300,6 +344,93 @@ impl Solver {
     }
 }
 
+impl Solver {
+    /// [`Solver::solve_loads_pairs`] (auto, rigid-z or rigid-tilt) on a partial list `ps` that
+    /// holds every pair touching above the height `floor` (m, absolute): per load, the
+    /// equilibrium bit-identical to the one on every pair, or `None` where the solve would have
+    /// needed a pair below the floor (or failed): solve that load on every pair.
+    /// `gmax` bounds every slider sphere's lever `|arm|/L` ([`Solver::lever_bound`]).
+    ///
+    /// `warm`, one per load: the previous sample's z root as the warm start of the z root
+    /// (NaN: a cold start, the same bracket as [`Solver::solve_loads_pairs`], so that a full
+    /// list with `floor` = −∞ and no warm start gives its bit-identical answer); updated with
+    /// this sample's (NaN where `None`).
+    pub(crate) fn solve_loads_partial(
+        &self,
+        ps: &PairSet,
+        loads: &[f64],
+        model: Model,
+        floor: f64,
+        gmax: f64,
+        warm: &mut [Warm],
+    ) -> Vec<Option<Equilibrium>> {
+        debug_assert!(model != Model::Compliant);
+        if self.check_model(model).is_err() {
+            return vec![None; loads.len()];
+        }
+        let watch = Watch::new(gmax);
+        let mut ctx = self.ctx(ps.theta);
+        ctx.watch = Some(&watch);
+        match ctx.sizes {
+            None => solve_many_partial::<Shared>(&ctx, ps, loads, model, floor, warm),
+            Some(_) => solve_many_partial::<Own>(&ctx, ps, loads, model, floor, warm),
+        }
+    }
+
+    /// A bound on `|arm|/L` of every slider sphere at any pose (its distance from the disc
+    /// centre over the tilt scale L, plus a round-off margin). O(N_slider).
+    pub(crate) fn lever_bound(&self) -> f64 {
+        let r2 = self
+            .local
+            .iter()
+            .map(|p| p[0] * p[0] + p[1] * p[1])
+            .fold(0.0, f64::max);
+        r2.sqrt() / self.ctx(0.0).scale * (1.0 + 1e-9)
+    }
+
+    /// Slider sphere `i`'s centre `[x, y]` (m) at `pose`: bit-identical to its entry in
+    /// [`Solver::pairs_at`]'s positions. O(1).
+    #[inline]
+    pub(crate) fn slider_xy_of(&self, i: u32, pose: Pose, sc: (f64, f64)) -> [f64; 2] {
+        let (s, c) = sc;
+        let cx = self.scene.slider.offset[0] + pose.shift[0];
+        let cy = self.scene.slider.offset[1] + pose.shift[1];
+        let p = self.local[i as usize];
+        [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]]
+    }
+
+    /// Slider sphere `i`'s position `[x, y]` (m) in the slider's own frame (θ = 0, centred).
+    #[inline]
+    pub(crate) fn slider_local(&self, i: u32) -> [f64; 2] {
+        self.local[i as usize]
+    }
+
+    /// The contact distance² (m²) of slider sphere `i` and substrate sphere `j`: the test
+    /// [`Solver::pairs_from`] applies. O(1).
+    #[inline]
+    pub(crate) fn pair_reach2(&self, i: u32, j: u32) -> f64 {
+        match &self.sizes {
+            None => self.reach * self.reach,
+            Some(s) => s.distance(i, j).powi(2),
+        }
+    }
+
+    /// The drop (m) of slider sphere `i` below the slider's reference plane (`r_i − R_sl` with
+    /// per-site sizes, else 0): its pair's touch height is `h + drop + √(d² − r²)`.
+    #[inline]
+    pub(crate) fn slider_drop(&self, i: u32) -> f64 {
+        match &self.sizes {
+            None => 0.0,
+            Some(s) => s.slider[i as usize] - s.r_sl,
+        }
+    }
+
+    /// The Hertz law of the scene (its `overlap_for_force` sets the z root's first bracket).
+    pub(crate) fn hertz(&self) -> &Hertz {
+        &self.hertz
+    }
+}
+
 /// One load with the pair law `L` (see [`Solver::solve_pairs`]).
 fn solve_one<L: Law>(
     ctx: &Ctx,
@@ -326,20 +457,96 @@ fn solve_many<L: Law>(
     let rz = RigidZ::<L>::new(ctx, ps);
     loads
         .iter()
-        .map(|&w| {
-            check_load(w)?;
+        .map(|&w| solve_one_of_many(ctx, ps, &rz, w, model))
+        .collect()
+}
+
+/// [`solve_many`] on a partial list whose left-out pairs all touch at or below the height
+/// `floor` (m, absolute): per load, the equilibrium where the solve never relied on a pair below
+/// the floor (then it is bit-identical to the solve on every pair), else `None` (also for any
+/// error: the caller solves that load on every pair). `ctx.watch` must be set.
+fn solve_many_partial<L: Law>(
+    ctx: &Ctx,
+    ps: &PairSet,
+    loads: &[f64],
+    model: Model,
+    floor: f64,
+    warm: &mut [Warm],
+) -> Vec<Option<Equilibrium>> {
+    let watch = ctx.watch.expect("a partial list is watched");
+    let rz = RigidZ::<L>::new(ctx, ps);
+    // heights are compared relative to z_ref, with a margin far above their round-off
+    let floor_rel = floor - rz.zref + 1e-12 * ctx.two_r;
+    loads
+        .iter()
+        .zip(warm.iter_mut())
+        .map(|(&w, warm)| {
+            watch.lowest.set(f64::INFINITY);
+            watch.guess.set(warm.z0 - rz.zref);
+            watch.root.set(f64::NAN);
+            let t = warm.tilt;
+            watch.tilt_guess.set([t[0] - rz.zref, t[1], t[2]]);
+            watch.tilt_root.set([f64::NAN; 3]);
+            let eq = solve_one_of_many(ctx, ps, &rz, w, model);
+            let ok = eq.is_ok() && watch.lowest.get() > floor_rel;
+            *warm = if ok {
+                let t = watch.tilt_root.get();
+                Warm {
+                    z0: rz.zref + watch.root.get(),
+                    depth: -watch.root.get(),
+                    tilt: [rz.zref + t[0], t[1], t[2]],
+                }
+            } else {
+                Warm::default()
+            };
+            eq.ok().filter(|_| ok)
+        })
+        .collect()
+}
+
+/// What a path's previous sample knew of one load: the untilted z root (m, absolute; NaN: none),
+/// its depth below the highest touch height (m) and the tilted state.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Warm {
+    pub z0: f64,
+    pub depth: f64,
+    /// The tilted state `[z (absolute), L·t_x, L·t_y]` (m; NaN: none).
+    pub tilt: [f64; 3],
+}
+
+impl Default for Warm {
+    fn default() -> Self {
+        Warm {
+            z0: f64::NAN,
+            depth: f64::NAN,
+            tilt: [f64::NAN; 3],
+        }
+    }
+}
+
+/// One load of [`solve_many`].
+fn solve_one_of_many<L: Law>(
+    ctx: &Ctx,
+    ps: &PairSet,
+    rz: &RigidZ<L>,
+    w: f64,
+    model: Model,
+) -> Result<Equilibrium, SceneError> {
+    check_load(w)?;
+    {
+        {
             match model {
-                Model::Auto => solve_auto(ctx, ps, &rz, w),
+                Model::Auto => solve_auto(ctx, ps, rz, w),
                 Model::RigidZ => rz.solve(ctx, ps, w),
                 _ => {
-                    let (z0, it0) = rz.zr.solve(w, ctx.hertz, ctx.params)?;
-                    let near = NearSet::new(&rz.bp, z0, max_lever(ctx, ps));
+                    let (z0, it0) = rz.zr.solve(ctx, w)?;
+                    let near = NearSet::new(ctx, &rz.bp, z0, ctx.lever_bound(ps));
                     let (q, it1) = tilt_from(ctx, &rz.bp, &near, w, z0)?;
                     Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
                 }
             }
-        })
-        .collect()
+        }
+    }
 }
 
 fn check_load(load: f64) -> Result<(), SceneError> {

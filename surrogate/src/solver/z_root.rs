@@ -1,6 +1,7 @@
 //! [`ZRoot`]: the safeguarded 1-D Newton root find of ΣF_z(ζ) = W at fixed tilt, shared by the
 //! rigid-z model and the final force-balance polish of the rigid-tilt model.
 
+use super::ctx::Ctx;
 use super::law::{pair_response, BodyPair, Law};
 use super::SolverParams;
 use crate::contact::Hertz;
@@ -114,26 +115,53 @@ impl ZRoot {
     /// where dF/dz → 0). Typically < 15 iterations of O(active pairs) each, after one O(P) pass
     /// per bracket doubling that keeps only the pairs above the lower bracket (the others cannot
     /// touch at the root, since ΣF_z is non-increasing): no sort of all P candidate pairs.
-    pub fn solve(
+    ///
+    /// Records its lowest bracket end with [`Ctx::rely`] (lowered by `drop`, m, the most a
+    /// tilted row's height can sit above its untilted one): no pair below it was looked at.
+    pub fn solve_dropped(
         &self,
+        ctx: &Ctx,
         load: f64,
-        hertz: &Hertz,
-        params: &SolverParams,
+        drop: f64,
     ) -> Result<(f64, usize), SceneError> {
+        let (z, it, z_lo) = self.solve_guess(ctx, load, None)?;
+        ctx.rely(z_lo - drop);
+        Ok((z, it))
+    }
+
+    /// [`ZRoot::solve_dropped`] for untilted rows, warm-started from the watch's guess where a
+    /// path sets one ([`super::ctx::Watch::guess`]; the root found goes to its `root`).
+    pub fn solve(&self, ctx: &Ctx, load: f64) -> Result<(f64, usize), SceneError> {
+        let guess = ctx.watch.map(|w| w.guess.get()).filter(|g| g.is_finite());
+        let (z, it, z_lo) = self.solve_guess(ctx, load, guess)?;
+        ctx.rely(z_lo);
+        if let Some(w) = ctx.watch {
+            w.root.set(z);
+        }
+        Ok((z, it))
+    }
+
+    fn solve_guess(
+        &self,
+        ctx: &Ctx,
+        load: f64,
+        guess: Option<f64>,
+    ) -> Result<(f64, usize, f64), SceneError> {
         match &self.rows {
-            Rows::Uniform(all) => self.solve_rows(all, load, hertz, params),
-            Rows::Sized(all) => self.solve_rows(all, load, hertz, params),
+            Rows::Uniform(all) => self.solve_rows(all, load, ctx.hertz, ctx.params, guess),
+            Rows::Sized(all) => self.solve_rows(all, load, ctx.hertz, ctx.params, guess),
         }
     }
 
-    /// [`ZRoot::solve`] over one kind of rows.
+    /// [`ZRoot::solve`] over one kind of rows; also returns the lowest bracket end ζ_lo (m).
     fn solve_rows<R: Row>(
         &self,
         all: &[R],
         load: f64,
         hertz: &Hertz,
         params: &SolverParams,
-    ) -> Result<(f64, usize), SceneError> {
+        guess: Option<f64>,
+    ) -> Result<(f64, usize, f64), SceneError> {
         if all.is_empty() {
             return Err(SceneError::NoEquilibrium(
                 "no substrate sphere lies under any slider sphere (slider off the substrate?)"
@@ -142,28 +170,69 @@ impl ZRoot {
         }
         let z_hi0 = self.c_max;
         let mut z_hi = z_hi0;
-        // Lower bracket: step down by the overlap one on-top contact needs for W, doubling. Only
-        // the pairs touching above z_lo can carry load anywhere in the bracket [z_lo, z_hi].
-        let mut step = hertz.overlap_for_force(load).max(1e-30 * self.two_r);
-        let mut z_lo = z_hi - step;
+        let mut z_lo;
         let mut iters = 0;
         let mut act = Vec::new();
-        loop {
-            select(all, z_lo, &mut act);
-            let (f, _) = self.eval(&act, z_lo);
-            if f >= load {
-                break;
+        let too_deep = || {
+            SceneError::NoEquilibrium(format!(
+                "load {load:e} N cannot be carried with overlap below the sphere diameter"
+            ))
+        };
+        match guess.filter(|g| g.is_finite() && *g < z_hi0) {
+            None => {
+                // Lower bracket: step down by the overlap one on-top contact needs for W,
+                // doubling. Only the pairs touching above z_lo can carry load anywhere in the
+                // bracket [z_lo, z_hi].
+                let mut step = hertz.overlap_for_force(load).max(1e-30 * self.two_r);
+                z_lo = z_hi - step;
+                loop {
+                    select(all, z_lo, &mut act);
+                    let (f, _) = self.eval(&act, z_lo);
+                    if f >= load {
+                        break;
+                    }
+                    z_hi = z_lo;
+                    step *= 2.0;
+                    z_lo = z_hi0 - step;
+                    iters += 1;
+                    if iters > params.max_iter || step > self.two_r {
+                        return Err(too_deep());
+                    }
+                }
             }
-            z_hi = z_lo;
-            step *= 2.0;
-            z_lo = z_hi0 - step;
-            iters += 1;
-            if iters > params.max_iter || step > self.two_r {
-                return Err(SceneError::NoEquilibrium(format!(
-                    "load {load:e} N cannot be carried with overlap below the sphere diameter"
-                )));
+            Some(g) => {
+                // Warm start (a path's previous sample): a bracket a tenth of the depth below
+                // the top around the guess, doubled until it holds the root.
+                let mut w = 0.1 * (z_hi0 - g) + 1e-9 * self.two_r;
+                z_lo = g - w;
+                z_hi = (g + w).min(z_hi0);
+                loop {
+                    select(all, z_lo, &mut act);
+                    let (f, _) = self.eval(&act, z_lo);
+                    if f >= load {
+                        break;
+                    }
+                    z_hi = z_lo;
+                    w *= 2.0;
+                    z_lo = g - w;
+                    iters += 1;
+                    if iters > params.max_iter || z_hi0 - z_lo > self.two_r {
+                        return Err(too_deep());
+                    }
+                }
+                loop {
+                    let (f, _) = self.eval(&act, z_hi);
+                    if f <= load || z_hi >= z_hi0 {
+                        break;
+                    }
+                    z_lo = z_hi;
+                    w *= 2.0;
+                    z_hi = (g + w).min(z_hi0);
+                    iters += 1;
+                }
             }
         }
+        let z_floor = z_lo;
         let mut z = 0.5 * (z_lo + z_hi);
         let tol = params.force_rtol * load;
         let w23 = load.powf(2.0 / 3.0);
@@ -172,7 +241,7 @@ impl ZRoot {
             let (f, df) = self.eval(&act, z);
             let g = f - load;
             if g.abs() <= tol {
-                return Ok((z, iters));
+                return Ok((z, iters, z_floor));
             }
             if g > 0.0 {
                 z_lo = z;
@@ -211,7 +280,7 @@ impl ZRoot {
                         fb - load
                     )));
                 }
-                return Ok((zb, iters));
+                return Ok((zb, iters, z_floor));
             }
         }
     }

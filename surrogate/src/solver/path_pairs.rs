@@ -1,0 +1,273 @@
+//! [`PathChunk`]: the pair list of one stretch of a straight path, cut to the pairs that can
+//! touch above a height floor and refreshed as the slider moves — a neighbour list with a skin,
+//! the skin in height rather than in distance (`docs/validation/path-solve.md`).
+//!
+//! A slider sphere i and a substrate sphere j at lateral distance r touch when the slider's
+//! reference plane sits below their touch height `c = h_j + drop_i + √(d² − r²)`. Along a
+//! straight path the pair's lateral distance is `r(s)² = r⊥² + (s − s*)²`, so it can rise above
+//! a floor F only inside the window `|s − s*| < √(ρ² − r⊥²)` with `ρ² = d² − (F − h − drop)²`.
+//! The chunk runs one candidate search, keeps the pairs that can rise above F somewhere, and
+//! per sub-chunk the ones whose window meets it; a sample then looks at a few hundred pairs
+//! instead of every slider sphere. The solve checks that it never relied on a pair below F
+//! ([`Solver::solve_loads_partial`]); where it did, that sample is solved on every pair and the
+//! floor is lowered, so every result is bit-identical to a solve on the full list.
+
+use super::{PairSet, Pose, Solver};
+use crate::contact::CandidatePair;
+use std::cell::RefCell;
+
+/// The buffers of a [`PathChunk`], kept per thread between chunks and paths: a chunk allocates
+/// nothing once they have grown to the scene's size (a fresh mapping of these ≈ 1 MB per chunk
+/// cost more than its search, in page faults).
+#[derive(Default)]
+struct Buffers {
+    wide: PairSet,
+    tracks: Vec<Track>,
+    above: Vec<Above>,
+    live: Vec<Above>,
+    ps: PairSet,
+}
+
+thread_local! {
+    static BUFFERS: RefCell<Vec<Buffers>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Where one candidate pair passes along the path.
+#[derive(Debug, Clone, Copy)]
+struct Track {
+    /// Path coordinate s (m) of the closest lateral approach.
+    s_star: f64,
+    /// Lateral distance² (m²) at the closest approach.
+    rp2: f64,
+    /// `h + drop` (m): the touch height less `√(d² − r²)`.
+    top: f64,
+    /// Contact distance² d² (m²).
+    d2: f64,
+}
+
+/// A pair that can rise above the floor, with what a sample needs of it (one contiguous
+/// record, so a sample streams through its list): its window `[lo, hi]` (m of path), the
+/// lateral distance² below which it rises above the floor (m², with margin), its contact
+/// distance² (m²), the slider sphere's local position (m) and the substrate sphere `[x, y, h]`.
+#[derive(Debug, Clone, Copy)]
+struct Above {
+    slider: u32,
+    substrate: u32,
+    lo: f64,
+    hi: f64,
+    rho2: f64,
+    d2: f64,
+    local: [f64; 2],
+    q: [f64; 3],
+}
+
+/// Relative margin on the windows and lateral thresholds (far above the round-off of positions
+/// ≈ 1e-16 of the substrate size): a pair is kept a little longer than it needs to be, never
+/// dropped while it can matter.
+const MARGIN: f64 = 1e-9;
+
+/// The pair list of one chunk of a straight path at rotation θ (see the module documentation).
+/// Buffers live as long as the chunk: a sample allocates nothing for its pairs.
+pub(crate) struct PathChunk<'a> {
+    solver: &'a Solver,
+    theta: f64,
+    sin_cos: (f64, f64),
+    origin: [f64; 2],
+    e: [f64; 2],
+    /// Every pair within contact distance at some sample of the chunk (slider-then-substrate
+    /// order), from one candidate search.
+    wide: PairSet,
+    tracks: Vec<Track>,
+    /// Height floor (m, absolute): every pair touching above it is in a sample's list.
+    pub floor: f64,
+    /// The highest touch height (m, absolute) at the chunk's first sample.
+    pub top0: f64,
+    above: Vec<Above>,
+    /// Of `above`, those whose window meets the current sub-chunk.
+    live: Vec<Above>,
+    /// The current sample's partial list (positions filled only for its pairs).
+    ps: PairSet,
+}
+
+impl<'a> PathChunk<'a> {
+    /// The chunk of samples `s` (m, ascending) of the path `origin + s·e` at rotation `theta`:
+    /// one candidate search over each sphere's swept capsule (O(N_slider)), and the floor `band` (m) below
+    /// the highest touch height at its first sample (O(candidates)).
+    pub fn new(
+        solver: &'a Solver,
+        theta: f64,
+        origin: [f64; 2],
+        e: [f64; 2],
+        s: &[f64],
+        band: f64,
+    ) -> PathChunk<'a> {
+        let (a, b) = (s[0], s[s.len() - 1]);
+        // every sample of the chunk lies within half its span (plus round-off) of the middle
+        let half = 0.5 * (b - a).abs() * (1.0 + 1e-9) + 1e-15;
+        let mid = 0.5 * (a + b);
+        let pose = |si: f64| Pose {
+            theta,
+            shift: [origin[0] + si * e[0], origin[1] + si * e[1]],
+        };
+        let mut buf = BUFFERS.with(|b| b.borrow_mut().pop()).unwrap_or_default();
+        let mut wide = std::mem::take(&mut buf.wide);
+        solver.pairs_swept_into(pose(mid), [half * e[0], half * e[1]], &mut wide);
+        let sub = solver.substrate();
+        let mut tracks = std::mem::take(&mut buf.tracks);
+        tracks.clear();
+        tracks.extend(wide.pairs.iter().map(|c| {
+            let p = wide.slider_xy[c.slider as usize];
+            let q = sub[c.substrate as usize];
+            let v = [q[0] - p[0], q[1] - p[1]];
+            let along = v[0] * e[0] + v[1] * e[1];
+            Track {
+                s_star: mid + along,
+                rp2: (v[0] * v[0] + v[1] * v[1] - along * along).max(0.0),
+                top: c.h + solver.slider_drop(c.slider),
+                d2: solver.pair_reach2(c.slider, c.substrate),
+            }
+        }));
+        let n = solver.slider_count();
+        let mut ps = std::mem::take(&mut buf.ps);
+        // positions are written for a sample's pairs only; stale entries are never read
+        ps.slider_xy.resize(n, [0.0; 2]);
+        ps.theta = theta;
+        let mut chunk = PathChunk {
+            solver,
+            theta,
+            sin_cos: theta.sin_cos(),
+            origin,
+            e,
+            ps,
+            wide,
+            tracks,
+            floor: f64::NEG_INFINITY,
+            top0: f64::NEG_INFINITY,
+            above: std::mem::take(&mut buf.above),
+            live: std::mem::take(&mut buf.live),
+        };
+        chunk.top0 = chunk.top_at(a);
+        chunk.set_floor(chunk.top0 - band);
+        chunk
+    }
+
+    fn pose(&self, si: f64) -> Pose {
+        Pose {
+            theta: self.theta,
+            shift: [
+                self.origin[0] + si * self.e[0],
+                self.origin[1] + si * self.e[1],
+            ],
+        }
+    }
+
+    /// The highest touch height (m) of any pair at sample `si` (−∞ without one). O(candidates).
+    fn top_at(&self, si: f64) -> f64 {
+        let pose = self.pose(si);
+        let sub = self.solver.substrate();
+        let mut top = f64::NEG_INFINITY;
+        for (c, t) in self.wide.pairs.iter().zip(&self.tracks) {
+            let p = self.solver.slider_xy_of(c.slider, pose, self.sin_cos);
+            let q = sub[c.substrate as usize];
+            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+            let r2 = dx * dx + dy * dy;
+            if r2 < t.d2 {
+                top = top.max(t.top + (t.d2 - r2).sqrt());
+            }
+        }
+        top
+    }
+
+    /// Sets the floor (m) and keeps the pairs that can rise above it, with their windows.
+    /// O(candidates). The live set must be refreshed after.
+    pub fn set_floor(&mut self, floor: f64) {
+        self.floor = floor;
+        self.above.clear();
+        for (k, t) in self.tracks.iter().enumerate() {
+            let rise = floor - t.top;
+            let rho2 = if rise > 0.0 {
+                if rise * rise >= t.d2 * (1.0 + MARGIN) {
+                    continue;
+                }
+                t.d2 - rise * rise
+            } else {
+                t.d2
+            };
+            let rho2 = rho2 * (1.0 + MARGIN) + MARGIN * MARGIN * t.d2;
+            if rho2 <= t.rp2 {
+                continue;
+            }
+            let w = (rho2 - t.rp2).sqrt() + MARGIN * t.d2.sqrt();
+            let c = &self.wide.pairs[k];
+            self.above.push(Above {
+                slider: c.slider,
+                substrate: c.substrate,
+                lo: t.s_star - w,
+                hi: t.s_star + w,
+                rho2,
+                d2: t.d2,
+                local: self.solver.slider_local(c.slider),
+                q: self.solver.substrate()[c.substrate as usize],
+            });
+        }
+        self.live.clear();
+    }
+
+    /// Keeps, of the pairs above the floor, those whose window meets `[a, b]` (m of path): the
+    /// list every sample of that sub-chunk filters. O(pairs above the floor).
+    pub fn refresh(&mut self, a: f64, b: f64) {
+        self.live.clear();
+        self.live
+            .extend(self.above.iter().filter(|x| x.hi >= a && x.lo <= b));
+    }
+
+    /// The partial pair list at sample `si` (m): every pair within contact distance whose touch
+    /// height can be above the floor, in the order of a full search, with the exact lateral
+    /// distances of [`Solver::pairs_from`]. O(live pairs), no allocation.
+    pub fn partial_at(&mut self, si: f64) -> &PairSet {
+        let pose = self.pose(si);
+        let ps = &mut self.ps;
+        ps.pairs.clear();
+        // the centre and positions as [`Solver::pairs_at`] computes them (same bits)
+        let cx = self.solver.scene().slider.offset[0] + pose.shift[0];
+        let cy = self.solver.scene().slider.offset[1] + pose.shift[1];
+        ps.centre = [cx, cy];
+        let (s, c) = self.sin_cos;
+        for x in &self.live {
+            let l = x.local;
+            let p = [cx + c * l[0] - s * l[1], cy + s * l[0] + c * l[1]];
+            let (dx, dy) = (x.q[0] - p[0], x.q[1] - p[1]);
+            let r2 = dx * dx + dy * dy;
+            if r2 < x.d2 && r2 < x.rho2 {
+                ps.slider_xy[x.slider as usize] = p;
+                ps.pairs.push(CandidatePair {
+                    slider: x.slider,
+                    substrate: x.substrate,
+                    r2,
+                    h: x.q[2],
+                });
+            }
+        }
+        &self.ps
+    }
+
+    /// The full pair list at sample `si` (m): [`Solver::pairs_from`] on the chunk's candidates,
+    /// identical to a fresh search. O(candidates + N_slider).
+    pub fn full_at(&self, si: f64) -> PairSet {
+        self.solver.pairs_from(&self.wide, self.pose(si))
+    }
+}
+
+impl Drop for PathChunk<'_> {
+    /// Hands the buffers back to this thread's pool.
+    fn drop(&mut self) {
+        let buf = Buffers {
+            wide: std::mem::take(&mut self.wide),
+            tracks: std::mem::take(&mut self.tracks),
+            above: std::mem::take(&mut self.above),
+            live: std::mem::take(&mut self.live),
+            ps: std::mem::take(&mut self.ps),
+        };
+        BUFFERS.with(|b| b.borrow_mut().push(buf));
+    }
+}
