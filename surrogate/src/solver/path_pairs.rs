@@ -271,3 +271,94 @@ impl Drop for PathChunk<'_> {
         BUFFERS.with(|b| b.borrow_mut().push(buf));
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Scene;
+    use proptest::prelude::*;
+
+    /// The touch height `h + drop + √(d² − r²)` (m) of a pair of a fresh search.
+    fn height(solver: &Solver, c: &CandidatePair) -> f64 {
+        let d2 = solver.pair_reach2(c.slider, c.substrate);
+        c.h + solver.slider_drop(c.slider) + (d2 - c.r2).max(0.0).sqrt()
+    }
+
+    fn key(c: &CandidatePair) -> (u32, u32, u64, u64) {
+        (c.slider, c.substrate, c.r2.to_bits(), c.h.to_bits())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+        /// After any sequence of moves along the path, shorter and longer than the skin (the
+        /// window a pair is kept beyond its closest approach), a sample's list holds exactly the
+        /// pairs of a fresh search that touch above the floor (plus, within the margin, a few
+        /// below it), with bit-identical lateral distances, in the fresh search's order; and
+        /// `full_at` is a fresh search. Flat and rough substrates, two pattern pairs.
+        #[test]
+        fn updated_list_matches_a_fresh_search(
+            theta_deg in 0.0f64..60.0,
+            dir_deg in 0.0f64..360.0,
+            ox in -1.5e-6f64..1.5e-6,
+            oy in -1.5e-6f64..1.5e-6,
+            moves in proptest::collection::vec(0.001e-6f64..1.5e-6, 2..12),
+            band in 5e-9f64..600e-9,
+            rough in any::<bool>(),
+            tri in any::<bool>(),
+        ) {
+            let mut sc = Scene::preset(if tri { "tri-tri" } else { "square-tri" }).unwrap();
+            sc.slider.radius = 12e-6;
+            sc.substrate.size = [80e-6, 80e-6];
+            sc.substrate.sigma_h = if rough { 0.01e-6 } else { 0.0 };
+            let solver = Solver::new(&sc).unwrap();
+            let (theta, dir) = (theta_deg.to_radians(), dir_deg.to_radians());
+            let e = [dir.cos(), dir.sin()];
+            let mut s = vec![0.0];
+            for m in &moves {
+                s.push(s[s.len() - 1] + m);
+            }
+            let mut pc = PathChunk::new(&solver, theta, [ox, oy], e, &s, band);
+            let floor = pc.floor;
+            // one refresh for the whole chunk, then per sample (both are valid uses)
+            for per_sample in [false, true] {
+                if !per_sample {
+                    pc.refresh(s[0], s[s.len() - 1]);
+                }
+                for &si in &s {
+                    if per_sample {
+                        pc.refresh(si, si);
+                    }
+                    let pose = Pose { theta, shift: [ox + si * e[0], oy + si * e[1]] };
+                    let fresh = solver.pairs_at(pose);
+                    let full = pc.full_at(si);
+                    prop_assert_eq!(
+                        fresh.pairs.iter().map(key).collect::<Vec<_>>(),
+                        full.pairs.iter().map(key).collect::<Vec<_>>()
+                    );
+                    let list: Vec<_> = pc.partial_at(si).pairs.iter().map(key).collect();
+                    let above: Vec<_> = fresh
+                        .pairs
+                        .iter()
+                        .filter(|c| height(&solver, c) > floor)
+                        .map(key)
+                        .collect();
+                    // the list is an ordered sub-sequence of the fresh search holding `above`
+                    let mut it = fresh.pairs.iter().map(key);
+                    for k in &list {
+                        prop_assert!(it.any(|f| f == *k), "{:?} not in the fresh order", k);
+                    }
+                    for k in &above {
+                        prop_assert!(list.contains(k), "{:?} above the floor is missing", k);
+                    }
+                    // positions of the listed spheres are the fresh search's
+                    let ps = pc.partial_at(si);
+                    for c in &ps.pairs {
+                        let i = c.slider as usize;
+                        prop_assert_eq!(ps.slider_xy[i], fresh.slider_xy[i]);
+                    }
+                    prop_assert_eq!(ps.centre, fresh.centre);
+                }
+            }
+        }
+    }
+}
