@@ -61,13 +61,10 @@ pub struct ThetaEval {
 /// cost knob only, the rows kept are bit-identical for any value.
 const LOAD_CHUNK: usize = 3;
 
-/// Path length (m) that shares one candidate-pair search in the α scan (a speed knob only: the
-/// solver's results are identical for any segment — the search covers the segment and each
-/// sample filters it; the default design's corrugation CSVs are byte-identical with the maps'
-/// default 0.5 µm). 1.5 µm (15 scan samples per search) cut the design's tri-tri CPU time by
-/// about a sixth (33.8 → 28.2 s user, 2-core sandbox under load, 2026-11-23); the friction
-/// estimates keep `FrictionParams::segment` (1.5 µm there measured no faster).
-const SEGMENT: f64 = 1.5e-6;
+/// Path length (m) sharing one refresh of the α scan's pair lists: the maps' default, so the
+/// design's corrugation rows are the `corrugation` command's (a chunk of twelve shares one
+/// candidate search; docs/validation/path-solve.md).
+const SEGMENT: f64 = 0.5e-6;
 
 /// A degree value folded into [0, p) and cleaned to 1e-9°; with a full-turn period (p =
 /// 360°: a pattern without a common rotation, or whose symmetry was not derived) into

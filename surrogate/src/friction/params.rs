@@ -43,9 +43,10 @@ pub struct FrictionParams {
     /// Default 1e-6 (a path of 12 µm then ends within 12 pm of the lattice line): a geometric
     /// tolerance, not measured (validation/friction.md, "The estimate", "Path").
     pub direction_tol: f64,
-    /// Length (m) of path that shares one candidate-pair search (a speed knob; results are
-    /// identical for any value > 0, tested). Default 0.5 µm (validation/friction.md,
-    /// "The estimate", "Path"; its cost in "Measured", "Cost").
+    /// Length (m) of path sharing one refresh of the pair list; twelve of them share one
+    /// candidate-pair search and one thread (a speed knob: results agree to the solver's
+    /// tolerance for any value > 0, and are identical for one value whatever the thread count).
+    /// Default 0.5 µm (validation/path-solve.md; validation/friction.md, "The estimate", "Path").
     pub segment: f64,
     /// Support speed (m/s) of the inertial model (`friction/inertial.rs`), as in the DEM. Study:
     /// 0.1 (validation/friction.md, "The estimate", "Inertial model": not fitted).

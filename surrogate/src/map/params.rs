@@ -18,8 +18,9 @@ pub struct MapParams {
     /// Moiré wave vectors shorter than this fraction of the shortest reciprocal vector count as
     /// zero (commensurate first shells: no contact line, fall back to the substrate row).
     pub q_zero_rtol: f64,
-    /// Length (m) of path sharing one candidate-pair search (speed only: results are identical
-    /// for any value > 0). Default 0.5 µm.
+    /// Length (m) of path sharing one refresh of the pair list, twelve of them one candidate
+    /// search (speed only: results agree to the solver's tolerance for any value > 0;
+    /// validation/path-solve.md). Default 0.5 µm.
     pub segment: f64,
 }
 

@@ -62,13 +62,16 @@ impl Solver {
             .expect("one result per load")
     }
 
-    /// [`Solver::solve_along`] for several loads (N) at once. Each equilibrium is bit-identical
-    /// to [`Solver::solve_loads_pairs`] on a fresh search at that sample
-    /// ([`Solver::pairs_at`]). Returns, per load (in the order of `loads`), the mapped samples
-    /// `f(s, load index, eq)` in sample order, or that load's first failed solve.
+    /// [`Solver::solve_along`] for several loads (N) at once. Each sample continues from the
+    /// previous one: its z root and tilt start from the previous equilibrium of the same load,
+    /// so each equilibrium equals [`Solver::solve_loads_pairs`] on a fresh search
+    /// ([`Solver::pairs_at`]) to the solver's tolerances (`force_rtol`, `moment_rtol`), and is
+    /// bit-identical whatever the thread count and whichever other loads share the path.
+    /// Returns, per load (in the order of `loads`), the mapped samples `f(s, load index, eq)` in
+    /// sample order, or that load's first failed solve.
     ///
     /// The samples are cut into chunks of [`CHUNK_SEGMENTS`] segments of about `path.segment`
-    /// (m); a chunk runs one candidate search ([`Solver::pairs_within`]) and keeps, per segment,
+    /// (m); a chunk runs one candidate search (each sphere's swept capsule) and keeps, per segment,
     /// the pairs that can touch above a height floor ([`PathChunk`]): a sample filters and
     /// solves a few hundred pairs, not every slider sphere's. A sample whose solve would need a
     /// pair below the floor is solved on every pair and the floor lowered. Parallel over
