@@ -600,7 +600,7 @@ pub fn run(a: Args) -> Result<()> {
         );
     }
     let t0 = std::time::Instant::now();
-    let store = Store::new(&a.out);
+    let store = Store::new(&a.out).labelled("--out-dir");
     let record = crate::study::design::inputs(&scenes, &params, true);
     let files = crate::present::design_report::Writer::new(&store, &record, &params);
     let o = design(&scenes, &params, &store, &rep, &|pr| files.pattern(pr))?;
