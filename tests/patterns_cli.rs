@@ -787,7 +787,7 @@ fn design_screens_the_whole_domain_without_theta_and_names_a_partial_one() {
     assert_eq!(*thetas.last().unwrap(), 360.0 - step);
     for note in [&log, &report] {
         assert!(
-            note.contains("no --theta given: the whole domain at 0.25°"),
+            note.contains("no `--theta` given: the whole domain at 0.25°"),
             "{note}"
         );
         assert!(!note.contains("not screened"), "{note}");
