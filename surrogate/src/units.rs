@@ -138,9 +138,11 @@ mod tests {
 
     #[test]
     fn message_texts_have_user_digits() {
-        assert_eq!(um_text(9.999999999999999e-6), "10");
-        assert_eq!(um_text(1.4849999999999999e-6), "1.485");
-        assert_eq!(um_text(4.9999999999999996e-5), "50");
+        // the doubles next to 10 µm and 50 µm, and 1.485 µm as it arrives from a file
+        let below = |v: f64| f64::from_bits(v.to_bits() - 1);
+        assert_eq!(um_text(below(10e-6)), "10");
+        assert_eq!(um_text(um_to_m(1.485)), "1.485");
+        assert_eq!(um_text(below(50e-6)), "50");
         assert_eq!(um_text(-0.0), "0");
         assert_eq!(um_pair_text([2.598076e-6, 1.5e-6]), "[2.598076, 1.5]");
         assert_eq!(nm_text(3e-12), "0.003");
