@@ -28,10 +28,10 @@ const SMALL: [&str; 8] = [
 /// `superlube design` on [`SMALL`] with `extra`; the nominal design (no fabrication tolerance)
 /// unless `extra` sets one (tolerance: tests/tolerance_cli.rs).
 fn design(extra: &[&str], out: &Path) -> std::process::Output {
-    let nominal: &[&str] = if extra.contains(&"--theta-tol") {
+    let nominal: &[&str] = if extra.contains(&"--theta-tol-deg") {
         &[]
     } else {
-        &["--theta-tol", "0", "--direction-tol", "0"]
+        &["--theta-tol-deg", "0", "--direction-tol-deg", "0"]
     };
     bin()
         .arg("design")
@@ -233,7 +233,7 @@ fn no_dem_writes_the_report_and_a_second_run_recomputes_nothing() {
     let o = bin()
         .arg("design")
         .args(&SMALL[..6])
-        .args(["--theta-tol", "0", "--direction-tol", "0"])
+        .args(["--theta-tol-deg", "0", "--direction-tol-deg", "0"])
         .args(["--load-mn", "0.01,0.03,0.06,0.08", "--no-dem", "--out"])
         .arg(&out)
         .output()
@@ -285,8 +285,8 @@ fn bad_input_names_the_flag() {
     run(&["--load-mn", "0.05,0.03"], "--load-mn");
     run(&["--load-mn", "0.05,0.05"], "--load-mn");
     run(
-        &["--load-mn", "0.01,0.05", "--confirm-loads", "0.02"],
-        "--confirm-loads",
+        &["--load-mn", "0.01,0.05", "--confirm-loads-mn", "0.02"],
+        "--confirm-loads-mn",
     );
     run(&["--alpha-refine-deg", "5,10"], "--alpha-refine-deg");
     run(&["--jobs", "0"], "--jobs");
@@ -321,7 +321,7 @@ fn dem_stage_runs_side_by_side_reuses_runs_and_reports_failures() {
         "square-tri",
         "--confirm",
         "1",
-        "--confirm-loads",
+        "--confirm-loads-mn",
         "0.01,0.09",
         "--dem-equilibrate-us",
         "0.1",
@@ -395,7 +395,7 @@ fn dem_stage_in_shards_then_the_report() {
         "square-tri",
         "--confirm",
         "1",
-        "--confirm-loads",
+        "--confirm-loads-mn",
         "0.01,0.06,0.09",
         "--dem-equilibrate-us",
         "0.1",

@@ -248,7 +248,7 @@ fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
     let o = bin()
         .args(["design", "--no-dem", "--theta", "0:30:2", "--patterns"])
         .arg(dir.join("c/index.csv"))
-        .args(["--theta-tol", "0", "--direction-tol", "0"])
+        .args(["--theta-tol-deg", "0", "--direction-tol-deg", "0"])
         .args(small)
         .args(["--load-mn", "0.01,0.03,0.06", "--out"])
         .arg(dir.join("d"))
@@ -344,7 +344,7 @@ fn design_family_generates_and_designs_the_candidates() {
         "--load-mn",
         "0.01,0.03",
     ];
-    let tol0 = ["--theta-tol", "0", "--direction-tol", "0"];
+    let tol0 = ["--theta-tol-deg", "0", "--direction-tol-deg", "0"];
     let family = "rectangular:a=3:3.5:0.5,b=3";
     let o = bin()
         .args(design)
@@ -749,7 +749,7 @@ fn design_screens_the_whole_domain_without_theta_and_names_a_partial_one() {
     let design = |theta: Option<&str>, out: &str| {
         let mut c = bin();
         c.args(["design", "--no-dem", "--load-mn", "0.005,0.01"])
-            .args(["--theta-tol", "0", "--direction-tol", "0"])
+            .args(["--theta-tol-deg", "0", "--direction-tol-deg", "0"])
             .args([
                 "--max-top",
                 "2",
@@ -787,7 +787,7 @@ fn design_screens_the_whole_domain_without_theta_and_names_a_partial_one() {
     assert_eq!(*thetas.last().unwrap(), 360.0 - step);
     for note in [&log, &report] {
         assert!(
-            note.contains("no --theta given: the whole domain at 0.25°"),
+            note.contains("no `--theta` given: the whole domain at 0.25°"),
             "{note}"
         );
         assert!(!note.contains("not screened"), "{note}");

@@ -272,3 +272,106 @@ fn geometry_flags_give_the_scene_files_rows() {
     fails(&["--slider-sites", "/nonexistent/s.csv"], "slider.sites");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Runs `superlube screen` in `dir` on the scene file `toml` (a small slider, one θ and load).
+fn screen_scene(dir: &std::path::Path, toml: &str) -> std::process::Output {
+    std::fs::write(dir.join("s.toml"), toml).unwrap();
+    common::bin()
+        .current_dir(dir)
+        .args([
+            "screen",
+            "--scene",
+            "s.toml",
+            "--theta",
+            "0",
+            "--load-mn",
+            "0.35",
+        ])
+        .args(["--slider-radius-um", "12", "--substrate-um", "60x60"])
+        .output()
+        .unwrap()
+}
+
+/// A refusal in the user's units and syntax: names `field`, no Rust debug form (`{ `), no
+/// metres (`e-6`, `e-5`), no float noise (`99999`, `00000`).
+fn refused_readably(out: &std::process::Output, field: &str) -> String {
+    assert!(!out.status.success(), "should be refused");
+    let e = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(e.contains(field), "`{e}` does not name {field}");
+    for bad in ["{ ", "e-6", "e-5", "99999", "00000", "Polygon", "Rectangle"] {
+        assert!(!e.contains(bad), "`{e}` contains `{bad}`");
+    }
+    e
+}
+
+/// Touching spheres typed to 6 decimals are accepted (issue 34): the honeycomb basis
+/// `[2.598076, 1.5]` at 5.196152 µm puts its spheres 2.99999982 µm apart (diameter 3 µm),
+/// within the relative 1e-6 of contact; a basis 1 % too close is refused naming both sites and
+/// the overlap in nm.
+#[test]
+fn six_decimal_touching_basis_screens_and_a_real_overlap_is_refused() {
+    let dir = common::tmpdir("scene-touching-basis");
+    let honeycomb = "[slider]\nlattice = { kind = 'triangular', spacing_um = 5.196152, basis_um = [[0, 0], [2.598076, 1.5]] }\n";
+    let out = screen_scene(&dir, honeycomb);
+    common::assert_ok(&out);
+    let rows = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(rows.lines().count(), 2, "{rows}");
+    // 2.97 µm apart: 30 nm overlap (1 %)
+    let out = screen_scene(
+        &dir,
+        "[slider]\nlattice = { kind = 'triangular', spacing_um = 6, basis_um = [[0, 0], [2.97, 0]] }\n",
+    );
+    let e = refused_readably(&out, "slider.lattice.basis_um");
+    assert!(
+        e.contains("basis_um[1] = [0, 0]") && e.contains("basis_um[2] = [2.97, 0]"),
+        "{e}"
+    );
+    assert!(
+        e.contains("overlap by 30 nm") && e.contains("2.97 µm apart"),
+        "{e}"
+    );
+    // a refused basis prints what was typed: 1.485, not 1.4849999999999999
+    let out = screen_scene(
+        &dir,
+        "[slider]\nlattice = { kind = 'triangular', spacing_um = 3, basis_um = [[0, 0], [1.485, 0]] }\n",
+    );
+    let e = refused_readably(&out, "slider.lattice.basis_um");
+    assert!(
+        e.contains("[[0, 0], [1.485, 0]]") && e.contains("1515 nm"),
+        "{e}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Outline refusals print the outline as the scene file's fields in µm, or the flag as typed.
+#[test]
+fn outline_refusals_speak_the_users_syntax() {
+    let dir = common::tmpdir("scene-outline-refusals");
+    for (outline, shown) in [
+        (
+            "{ kind = 'polygon', vertices_um = [[0, 0], [10, 6], [10, 0], [0, 4]] }",
+            "vertices_um = [[0, 0], [10, 6], [10, 0], [0, 4]]",
+        ),
+        (
+            "{ kind = 'polygon', sides = 2, radius_um = 50 }",
+            "sides = 2, radius_um = 50",
+        ),
+        (
+            "{ kind = 'rectangle', size_um = [0, 10] }",
+            "size_um = [0, 10]",
+        ),
+    ] {
+        let out = screen_scene(&dir, &format!("[slider]\noutline = {outline}\n"));
+        let e = refused_readably(&out, "slider.outline");
+        assert!(e.contains(shown), "{e}");
+    }
+    for spec in ["rectangle:0x10", "polygon:2:50", "disc:-1"] {
+        let out = common::bin()
+            .args(["screen", "--theta", "0", "--outline", spec])
+            .output()
+            .unwrap();
+        let e = refused_readably(&out, &format!("--outline {spec}"));
+        assert!(!e.contains("slider.outline"), "{e}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -24,7 +24,7 @@ fn oversized_runs_are_refused_with_their_cost() {
         vec!["landscape", "--grid", "100000"],
         vec!["screen", "--theta", "0:30:0.00001", "--load-mn", "1,2"],
         vec!["corrugation", "--alpha", "0:90:0.01", "--step-um", "0.001"],
-        vec!["figures", "--theta-step", "0.00001"],
+        vec!["figures", "--theta-step-deg", "0.00001"],
     ] {
         let t0 = std::time::Instant::now();
         let out = bin().args(&args).output().unwrap();

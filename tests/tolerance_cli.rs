@@ -1,4 +1,4 @@
-//! `superlube tolerance` and `design --theta-tol/--direction-tol` on small scenes: the map's
+//! `superlube tolerance` and `design --theta-tol-deg/--direction-tol-deg` on small scenes: the map's
 //! files and sidecars, its nominal point against `superlube friction`, the screen's bound,
 //! zero tolerance reproducing the nominal ranking, the robust ranking's order, and bad input
 //! refused naming the flag before anything is written.
@@ -49,9 +49,15 @@ fn tolerance_map(at: (&str, &str), theta: (&str, &str, &str), dir: (&str, &str, 
             at.1,
         ])
         .args(SMALL)
-        .args(["--theta-range", theta.0, "--theta-points", theta.1])
-        .args(["--direction-range", dir.0, "--direction-points", dir.1])
-        .args(["--theta-tol", theta.2, "--direction-tol", dir.2, "--out"])
+        .args(["--theta-range-deg", theta.0, "--theta-points", theta.1])
+        .args(["--direction-range-deg", dir.0, "--direction-points", dir.1])
+        .args([
+            "--theta-tol-deg",
+            theta.2,
+            "--direction-tol-deg",
+            dir.2,
+            "--out",
+        ])
         .arg(out)
         .output()
         .unwrap();
@@ -135,11 +141,11 @@ fn tolerance_bad_input_names_the_flag() {
         a.extend(["--out", o]);
         fails_naming(&a, flag);
     };
-    run(&["--theta-range", "-0.1"], "--theta-range");
-    run(&["--direction-range", "NaN"], "--direction-range");
+    run(&["--theta-range-deg", "-0.1"], "--theta-range-deg");
+    run(&["--direction-range-deg", "NaN"], "--direction-range-deg");
     run(&["--theta-points", "0"], "--theta-points");
-    run(&["--theta-tol", "0.5"], "--theta-tol");
-    run(&["--theta-tol", "-1"], "--theta-tol");
+    run(&["--theta-tol-deg", "0.5"], "--theta-tol-deg");
+    run(&["--theta-tol-deg", "-1"], "--theta-tol-deg");
     fails_naming(
         &["tolerance", "--pattern", "tri-tri", "--out", o],
         "--direction-deg",
@@ -164,7 +170,10 @@ fn design(extra: &[&str], out: &Path) {
 fn zero_tolerance_is_the_nominal_ranking_and_the_robust_one_is_ordered() {
     let d = tmpdir("tolerance-design");
     let nominal = d.join("nominal");
-    design(&["--theta-tol", "0", "--direction-tol", "0"], &nominal);
+    design(
+        &["--theta-tol-deg", "0", "--direction-tol-deg", "0"],
+        &nominal,
+    );
     let n = rows(&nominal.join("ranking.csv"));
     assert!(!n.is_empty());
     for r in &n {
@@ -181,11 +190,11 @@ fn zero_tolerance_is_the_nominal_ranking_and_the_robust_one_is_ordered() {
     let robust = d.join("robust");
     design(
         &[
-            "--theta-tol",
+            "--theta-tol-deg",
             "1",
-            "--theta-tol-step",
+            "--theta-tol-step-deg",
             "0.5",
-            "--direction-tol",
+            "--direction-tol-deg",
             "0.5",
         ],
         &robust,
@@ -233,13 +242,13 @@ fn design_tolerance_bad_input_names_the_flag() {
         a.extend(["--out", o]);
         fails_naming(&a, flag);
     };
-    run(&["--theta-tol", "-0.1"], "--theta-tol");
-    run(&["--theta-tol", "NaN"], "--theta-tol");
-    run(&["--direction-tol", "-1"], "--direction-tol");
+    run(&["--theta-tol-deg", "-0.1"], "--theta-tol-deg");
+    run(&["--theta-tol-deg", "NaN"], "--theta-tol-deg");
+    run(&["--direction-tol-deg", "-1"], "--direction-tol-deg");
     // square-tri's θ domain is 0–15°: ±8° spans it
     run(
-        &["--pattern", "square-tri", "--theta-tol", "8"],
-        "--theta-tol",
+        &["--pattern", "square-tri", "--theta-tol-deg", "8"],
+        "--theta-tol-deg",
     );
     run(&["--seeds", "1,2"], "--seeds");
     run(&["--sigma-h-um", "0.01", "--seeds", "x"], "--seeds");
@@ -255,14 +264,14 @@ fn the_dem_runs_the_corners_of_the_answers_box() {
         .args(["design", "--pattern", "square-tri", "--theta", "0:30:1"])
         .args(SMALL)
         .args([
-            "--theta-tol",
+            "--theta-tol-deg",
             "1",
-            "--theta-tol-step",
+            "--theta-tol-step-deg",
             "0.5",
-            "--direction-tol",
+            "--direction-tol-deg",
             "0.5",
         ])
-        .args(["--confirm", "1", "--confirm-loads", "0.01,0.09"])
+        .args(["--confirm", "1", "--confirm-loads-mn", "0.01,0.09"])
         .args(["--dem-equilibrate-us", "0.1", "--dem-relax-us", "0.05"])
         .args([
             "--dem-slide-us",
@@ -314,11 +323,11 @@ fn a_rerun_replays_the_robust_searches_without_new_estimates() {
     let d = tmpdir("tolerance-rerun");
     let out = d.join("r");
     let args = [
-        "--theta-tol",
+        "--theta-tol-deg",
         "1",
-        "--theta-tol-step",
+        "--theta-tol-step-deg",
         "0.5",
-        "--direction-tol",
+        "--direction-tol-deg",
         "0.5",
     ];
     design(&args, &out);
@@ -359,13 +368,13 @@ fn design_limit_and_windows_match_the_tolerance_map() {
         &[
             "--pattern",
             "tri-tri",
-            "--theta-tol",
+            "--theta-tol-deg",
             "1",
-            "--theta-tol-step",
+            "--theta-tol-step-deg",
             "0.5",
-            "--direction-tol",
+            "--direction-tol-deg",
             "0.5",
-            "--direction-tol-step",
+            "--direction-tol-step-deg",
             "0.25",
         ],
         &out,
@@ -430,11 +439,11 @@ fn seeds_give_each_realisations_limit_behind_the_worst_case() {
         &[
             "--pattern",
             "tri-tri",
-            "--theta-tol",
+            "--theta-tol-deg",
             "1",
-            "--theta-tol-step",
+            "--theta-tol-step-deg",
             "0.5",
-            "--direction-tol",
+            "--direction-tol-deg",
             "0.5",
             "--sigma-h-um",
             "0.02",
@@ -539,8 +548,13 @@ fn the_theta_window_of_a_coating_failure_is_found_to_the_sampling_step() {
         .args(["--transient-um", "0", "--max-period-um", "0.002"])
         .args(["--transverse-um", "0"])
         .args(["--scan-distance-um", "0.5", "--alpha-refine-deg", "none"])
-        .args(["--theta-tol", "1", "--theta-tol-step", "0.1"])
-        .args(["--direction-tol", "0.5", "--direction-tol-step", "0.5"])
+        .args(["--theta-tol-deg", "1", "--theta-tol-step-deg", "0.1"])
+        .args([
+            "--direction-tol-deg",
+            "0.5",
+            "--direction-tol-step-deg",
+            "0.5",
+        ])
         .arg("--out")
         .arg(&out)
         .output()

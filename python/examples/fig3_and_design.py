@@ -21,7 +21,7 @@ try:
     fig.savefig(sys.argv[1] if len(sys.argv) > 1 else "fig3.png", dpi=120)
 except ImportError:
     print("matplotlib is not installed: no figure")
-kw = dict(load_mN="0.35,1.4,2.45,3.5", no_dem=True, theta_tol=0, direction_tol=0) if quick else {}
+kw = dict(load_mN="0.35,1.4,2.45,3.5", no_dem=True, theta_tol_deg=0, direction_tol_deg=0) if quick else {}
 ranking, summary = superlube.design(pattern="tri-tri,square-tri", **kw)
 for p, answer in summary["answer"].items():
     print(f"design answer, {p}: {answer}")

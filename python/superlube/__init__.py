@@ -161,8 +161,8 @@ def tolerance(scene: SceneLike = None, *, progress: Any = None,
     substrate frame when the slider is misaligned).
 
     Options (``superlube tolerance --help``): ``theta_deg`` (nominal θ), ``alpha`` (degrees from
-    the contact line) or ``direction_deg`` (from x), ``theta_range``, ``theta_points``,
-    ``direction_range``, ``direction_points``, ``theta_tol``, ``direction_tol`` (degrees),
+    the contact line) or ``direction_deg`` (from x), ``theta_range_deg``, ``theta_points``,
+    ``direction_range_deg``, ``direction_points``, ``theta_tol_deg``, ``direction_tol_deg`` (degrees),
     ``load_mN``, ``mu_superlubric``, ``line_deg``, the path options of the estimate and
     ``out_dir`` (the command's folder: map.csv, map.png; kept).
 
@@ -229,7 +229,7 @@ def design(scenes: Union[SceneLike, Sequence[SceneLike]] = None, *, progress: An
     ``scenes``: one Scene or several (each named after its preset or file stem), or None with
     ``pattern="tri-tri,square-tri"`` (the default patterns). Options: those of
     ``superlube design --help`` in snake case (``load_mN``, ``no_dem``, ``top``,
-    ``confirm_loads``, ``per_level``, ``out_dir`` (a directory, kept) …). Cost: a minute per
+    ``confirm_loads_mn``, ``per_level``, ``out_dir`` (a directory, kept) …). Cost: a minute per
     pattern for the surrogate tiers (``no_dem=True``), plus the DEM runs.
 
     Returns ``(ranking, summary)``: ``ranking.csv`` as a DataFrame (every ranked design of every

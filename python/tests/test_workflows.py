@@ -96,8 +96,8 @@ def test_old_option_names_work_with_a_warning(tmp_path):
     with pytest.raises(ValueError, match="old name"):
         superlube.screen(scene, theta_deg=[0], solver="auto", model="auto")
     # an output keyword: tolerance's folder is `out_dir`, formerly `out`
-    opts = dict(theta_deg=30, alpha=0, load_mN="0.05", theta_range=0.2, theta_points=2,
-                direction_range=0.5, direction_points=2)  # fmt: skip
+    opts = dict(theta_deg=30, alpha=0, load_mN="0.05", theta_range_deg=0.2, theta_points=2,
+                direction_range_deg=0.5, direction_points=2)  # fmt: skip
     with pytest.warns(DeprecationWarning, match="`out` is now `out_dir`"):
         superlube.tolerance(superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60]),
                             out=tmp_path / "tol", **opts)  # fmt: skip
@@ -253,14 +253,14 @@ def test_design_on_scenes_returns_ranking_and_answer():
 
 def test_tolerance_map_equals_cli(cli_bin, tmp_path):
     scene = superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60])
-    opts = dict(theta_deg=30, alpha=0, load_mN="0.05,0.1", theta_range=0.2, theta_points=3,
-                direction_range=0.5, direction_points=3, theta_tol=0.1, direction_tol=0.5)  # fmt: skip
+    opts = dict(theta_deg=30, alpha=0, load_mN="0.05,0.1", theta_range_deg=0.2, theta_points=3,
+                direction_range_deg=0.5, direction_points=3, theta_tol_deg=0.1, direction_tol_deg=0.5)  # fmt: skip
     m = superlube.tolerance(scene, **opts)
     assert len(m) == 9 and "superlubric_to_mN" in m.columns
     scene.write(tmp_path / "s.toml")
     subprocess.run([cli_bin, "tolerance", "--scene", tmp_path / "s.toml", "--theta", "30",
-                    "--alpha", "0", "--load-mn", "0.05,0.1", "--theta-range", "0.2",
-                    "--theta-points", "3", "--direction-range", "0.5", "--direction-points",
+                    "--alpha", "0", "--load-mn", "0.05,0.1", "--theta-range-deg", "0.2",
+                    "--theta-points", "3", "--direction-range-deg", "0.5", "--direction-points",
                     "3", "--out-dir", tmp_path / "cli"], check=True, capture_output=True)  # fmt: skip
     import csv
     with open(tmp_path / "cli" / "map.csv") as f:

@@ -35,7 +35,7 @@ pub enum ModelArg {
     Auto,
     /// Slider spheres on their k_z springs; the linear mount network (k_z springs, control
     /// layer Z and tilts, mount springs) integrated implicitly, the contacts explicitly: the
-    /// step is set by the contacts (~28× the explicit one on the study scene).
+    /// step is set by the contacts (docs/validation/dem-integrator.md).
     Full,
     /// The full model with velocity-Verlet on everything (step set by the k_z springs): the
     /// reference for `full`.
@@ -144,12 +144,12 @@ pub struct DemArgs {
     /// the full model near coating failure, where stick-slip is expected and beyond the measured
     /// stiffness ratio (the choice and its reason are printed and in the JSON); `full` integrates
     /// the stiff mount springs implicitly (step set by the contacts), `full-explicit` is the same
-    /// model by velocity-Verlet throughout (~28× more steps), for reference; pruning and the
+    /// model by velocity-Verlet throughout (many more steps), for reference; pruning and the
     /// active set are exact and on in every model.
     #[arg(long, value_enum, default_value_t = ModelArg::Auto)]
     pub model: ModelArg,
     /// Reduction: slider spheres move rigidly with the control layer in z (replaces the stiff
-    /// 10⁶ N/m z-springs; allows a ~30× larger time step). Same as `--model reduced`.
+    /// 10⁶ N/m z-springs; allows a larger time step). Same as `--model reduced`.
     #[arg(long = "rigid-z")]
     pub rigid_z: bool,
     /// Leave out substrate spheres that the slider can never touch along its path (exact; on in

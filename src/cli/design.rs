@@ -83,8 +83,7 @@ pub struct Args {
     )]
     mu_superlubric: f64,
     /// Orientations kept per lower load level of the shortlist (those with the lowest P_max).
-    /// Default 6: on the default the smallest value whose answer equals evaluating every
-    /// orientation (`--per-level 400`; 3 and 5 missed tri-tri's best; docs/commands/design.md "The shortlist rule").
+    /// How the default was chosen: docs/commands/design.md "The shortlist rule".
     #[arg(long = "per-level", value_name = "N", default_value_t = 6)]
     per_level: usize,
     /// Most orientations kept from the top level (those surviving the highest load).
@@ -139,7 +138,8 @@ pub struct Args {
     /// Largest sampling step in degrees of the θ tolerance: the first sample off the nominal is
     /// at most this far, so a window narrower than the tolerance cannot pass.
     #[arg(
-        long = "theta-tol-step",
+        long = "theta-tol-step-deg",
+        alias = "theta-tol-step",
         value_name = "DEG",
         default_value_t = 0.02,
         allow_hyphen_values = true
@@ -147,7 +147,8 @@ pub struct Args {
     theta_tol_step: f64,
     /// Largest sampling step in degrees of the direction tolerance.
     #[arg(
-        long = "direction-tol-step",
+        long = "direction-tol-step-deg",
+        alias = "direction-tol-step",
         value_name = "DEG",
         default_value_t = 0.25,
         allow_hyphen_values = true
@@ -163,7 +164,12 @@ pub struct Args {
     confirm: usize,
     /// Loads in mN of the DEM confirmation, each one of --load-mn [default: the lowest, the
     /// middle and the highest load].
-    #[arg(long = "confirm-loads", value_name = "MN", allow_hyphen_values = true)]
+    #[arg(
+        long = "confirm-loads-mn",
+        alias = "confirm-loads",
+        value_name = "MN",
+        allow_hyphen_values = true
+    )]
     confirm_loads: Option<String>,
     /// Stop before the DEM confirmation (surrogate tiers only).
     #[arg(long = "no-dem")]
@@ -213,11 +219,11 @@ pub struct Args {
     /// DEM time step in µs [default: 0.25 × the stable-step estimate].
     #[arg(long = "dem-dt-us", value_name = "US", allow_hyphen_values = true)]
     dem_dt_us: Option<f64>,
-    /// DEM model of the confirmation runs (as `slide --model`): `reduced` (rigid-z, default:
-    /// measured against the full model in docs/validation/dem-engine.md "Model choice"; minutes
-    /// for a whole design), `auto`
-    /// (the full model near coating failure and where stick-slip is expected: up to tens of
-    /// minutes per run) or `full`. Pruning and the active set (exact) are on in every model.
+    /// DEM model of the confirmation runs (as `slide --model`): `reduced` (rigid-z, default;
+    /// its accuracy: docs/validation/dem-engine.md "Model choice"), `auto` (the full model near
+    /// coating failure and where stick-slip is expected; its cost:
+    /// docs/validation/dem-integrator.md) or `full`. Pruning and the active set (exact) are on
+    /// in every model.
     #[arg(long = "dem-model", value_enum, default_value_t = ModelArg::Reduced)]
     dem_model: ModelArg,
     /// Do not run the best design once more with the study's protocol (10 + 10 + 300 µs) to
@@ -406,13 +412,13 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             let v = checks::loads(t).map_err(|e| {
                 anyhow::anyhow!(
                     "{}",
-                    e.to_string().replace("`--load-mn`", "`--confirm-loads`")
+                    e.to_string().replace("`--load-mn`", "`--confirm-loads-mn`")
                 )
             })?;
             for &w in &v {
                 if !loads.iter().any(|&l| (l - w).abs() <= 1e-12 * l) {
                     bail!(
-                        "`--confirm-loads`: {} mN is not one of --load-mn (the DEM is compared with the estimate at the same load)",
+                        "`--confirm-loads-mn`: {} mN is not one of --load-mn (the DEM is compared with the estimate at the same load)",
                         surrogate::units::n_to_mn(w)
                     );
                 }
@@ -485,8 +491,9 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         None => crate::runs::shard::Shard::ALL,
     };
     let (theta_tol_deg, direction_tol_deg) = a.tol.checked()?;
-    let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step")?;
-    let direction_tol_step_deg = checks::positive(a.direction_tol_step, "--direction-tol-step")?;
+    let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step-deg")?;
+    let direction_tol_step_deg =
+        checks::positive(a.direction_tol_step, "--direction-tol-step-deg")?;
     let seeds: Vec<u64> = match &a.seeds {
         None => Vec::new(),
         Some(t) => t
@@ -544,7 +551,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         let (lo, hi, _) = sym.domain();
         if 2.0 * params.theta_tol_deg >= hi - lo {
             bail!(
-                "`--theta-tol`: ±{}° spans the whole θ domain of {} ([{lo}°, {hi}°]); give a tolerance below {}°",
+                "`--theta-tol-deg`: ±{}° spans the whole θ domain of {} ([{lo}°, {hi}°]); give a tolerance below {}°",
                 params.theta_tol_deg,
                 s.name,
                 0.5 * (hi - lo)
@@ -593,7 +600,7 @@ pub fn run(a: Args) -> Result<()> {
         );
     }
     let t0 = std::time::Instant::now();
-    let store = Store::new(&a.out);
+    let store = Store::new(&a.out).labelled("--out-dir");
     let record = crate::study::design::inputs(&scenes, &params, true);
     let files = crate::present::design_report::Writer::new(&store, &record, &params);
     let o = design(&scenes, &params, &store, &rep, &|pr| files.pattern(pr))?;

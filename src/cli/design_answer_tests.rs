@@ -32,13 +32,13 @@ fn params(extra: &[&str]) -> (Vec<DesignScene>, DesignParams) {
         "60x60",
         "--load-mn",
         "0.01,0.03,0.06,0.09",
-        "--confirm-loads",
+        "--confirm-loads-mn",
         "0.01,0.09",
         "--confirm",
         "3",
-        "--theta-tol",
+        "--theta-tol-deg",
         "0.1",
-        "--direction-tol",
+        "--direction-tol-deg",
         "0.5",
     ]
     .iter()

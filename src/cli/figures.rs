@@ -21,7 +21,8 @@ pub struct Args {
     out_dir: Option<PathBuf>,
     /// θ step in degrees of the orientation sweeps from 0 to 30° (study: 0.1).
     #[arg(
-        long = "theta-step",
+        long = "theta-step-deg",
+        alias = "theta-step",
         value_name = "DEG",
         default_value_t = 0.1,
         allow_hyphen_values = true
@@ -98,14 +99,14 @@ pub fn run(a: Args) -> Result<()> {
         .unwrap_or_else(|| PathBuf::from("figures"));
     if !(a.theta_step.is_finite() && a.theta_step > 0.0 && a.theta_step <= 30.0) {
         bail!(
-            "`--theta-step`: {} must be in (0, 30] degrees",
+            "`--theta-step-deg`: {} must be in (0, 30] degrees",
             a.theta_step
         );
     }
     let (distance, step) = checks::path(a.distance_um, a.step_um)?;
     let params = FiguresParams {
         sweep_thetas: checks::thetas(&format!("0:30:{}", a.theta_step))
-            .map_err(|e| anyhow::anyhow!("`--theta-step`: {e}"))?,
+            .map_err(|e| anyhow::anyhow!("`--theta-step-deg`: {e}"))?,
         corrugation: CorrugationParams {
             load: 0.0,
             alphas: checks::alphas(&a.alpha)?,

@@ -162,7 +162,7 @@ fn execute(p: Prepared) -> Result<()> {
                 "friction: {} estimates in {:.2} s ({:.1} ms per (θ, α, W))",
                 s.rows,
                 t0.elapsed().as_secs_f64(),
-                1e3 * t0.elapsed().as_secs_f64() / s.rows.max(1) as f64
+                surrogate::units::s_to_ms(t0.elapsed().as_secs_f64()) / s.rows.max(1) as f64
             ),
         );
     }

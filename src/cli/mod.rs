@@ -111,7 +111,9 @@ fn prepare_sweep(command: Command) -> Result<Option<(&'static str, SweepPlan)>> 
 
 /// Runs the parsed command line.
 pub fn run(cli: Cli) -> Result<()> {
-    match cli.command {
+    use crate::present::inputs;
+    crate::runs::progress::set_note_filter(inputs::to_flags);
+    let r = match cli.command {
         Command::Screen(a) => screen::run(a),
         Command::Landscape(a) => landscape::run(a),
         Command::Corrugation(a) => corrugation::run(a),
@@ -126,13 +128,28 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Merge(a) => merge::run(a),
         Command::Patterns(a) => patterns::run(a),
         Command::Slurm(a) => slurm::run(a),
-    }
+    };
+    r.map_err(inputs::error_with_flags)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use clap::CommandFactory;
+
+    /// Every workflow input that `src/study` names has a flag of some command.
+    #[test]
+    fn every_input_names_a_real_flag() {
+        let cli = Cli::command();
+        for i in crate::study::input::Input::ALL {
+            let f = crate::present::inputs::flag(i).trim_start_matches("--");
+            assert!(
+                cli.get_subcommands()
+                    .any(|c| c.get_arguments().any(|a| a.get_long() == Some(f))),
+                "{f}"
+            );
+        }
+    }
 
     /// The CLI's default load list (a clap default string formatted from the study's one
     /// definition) parses back to it exactly.

@@ -65,7 +65,9 @@ pub(super) fn check(family: &str, max_pq: u32, max_order: f64) -> Result<Pattern
         bail!("`--max-order`: {max_order} must be a number ≥ 1");
     }
     Ok(PatternParams {
-        family: parse_family(family, parse_list_or_range)?,
+        family: parse_family(family, |v, n| {
+            parse_list_or_range(v, &format!("--family {n}"))
+        })?,
         family_text: family.to_string(),
         max_pq,
         max_order,

@@ -80,6 +80,17 @@ mod tests {
             ("screen", "--model"),
             ("figures", "--corrugation-method"),
             ("slurm", "--threads"),
+            // flags whose names now carry their unit (issue 34)
+            ("design", "--theta-tol"),
+            ("design", "--direction-tol"),
+            ("design", "--theta-tol-step"),
+            ("design", "--direction-tol-step"),
+            ("design", "--confirm-loads"),
+            ("tolerance", "--theta-tol"),
+            ("tolerance", "--direction-tol"),
+            ("tolerance", "--theta-range"),
+            ("tolerance", "--direction-range"),
+            ("figures", "--theta-step"),
         ] {
             assert_eq!(
                 notes(&args(&["superlube", sub, old, "x"])).len(),

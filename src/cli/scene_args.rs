@@ -182,6 +182,18 @@ impl SceneOverrides {
                 "`{flag}`: `{spec}` must be disc:R, rectangle:WxH or polygon:N:R (µm); arbitrary vertices: the scene file's slider.outline"
             ),
         }
+        // refused here in the flag's syntax, before the scene file's rules name its fields
+        let positive = |v: Option<f64>| v.is_none_or(|v| v.is_finite() && v > 0.0);
+        if !positive(o.radius_um)
+            || !o
+                .size_um
+                .is_none_or(|s| s.iter().all(|v| positive(Some(*v))))
+        {
+            bail!("`{flag} {spec}`: every length (µm) must be a positive number");
+        }
+        if o.sides.is_some_and(|n| n < 3) {
+            bail!("`{flag} {spec}`: a polygon has at least 3 sides (polygon:N:R)");
+        }
         Ok(o)
     }
 }

@@ -46,7 +46,8 @@ pub struct Args {
     direction_deg: Option<f64>,
     /// Half-width in degrees of the map in θ around the nominal (≥ 0).
     #[arg(
-        long = "theta-range",
+        long = "theta-range-deg",
+        alias = "theta-range",
         value_name = "DEG",
         default_value_t = 0.2,
         allow_hyphen_values = true
@@ -57,7 +58,8 @@ pub struct Args {
     theta_points: usize,
     /// Half-width in degrees of the map in pulling direction around the nominal (≥ 0).
     #[arg(
-        long = "direction-range",
+        long = "direction-range-deg",
+        alias = "direction-range",
         value_name = "DEG",
         default_value_t = 1.0,
         allow_hyphen_values = true
@@ -119,19 +121,19 @@ pub fn run(a: Args) -> Result<()> {
     let thetas = grid(
         a.theta_range,
         a.theta_points,
-        "--theta-range",
+        "--theta-range-deg",
         "--theta-points",
     )?;
     let dirs = grid(
         a.direction_range,
         a.direction_points,
-        "--direction-range",
+        "--direction-range-deg",
         "--direction-points",
     )?;
     let (theta_tol, direction_tol) = a.tol.checked()?;
     if theta_tol > a.theta_range || direction_tol > a.direction_range {
         bail!(
-            "the tolerance box (`--theta-tol` {}, `--direction-tol` {}) must lie on the map (`--theta-range` {}, `--direction-range` {})",
+            "the tolerance box (`--theta-tol-deg` {}, `--direction-tol-deg` {}) must lie on the map (`--theta-range-deg` {}, `--direction-range-deg` {})",
             theta_tol, direction_tol, a.theta_range, a.direction_range
         );
     }

@@ -9,7 +9,7 @@ use crate::study::rows::{CorrugationRow, ScreenRow};
 use anyhow::Result;
 use std::path::Path;
 use surrogate::solver::Equilibrium;
-use surrogate::units::{m_to_nm, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg};
+use surrogate::units::{m_to_nm, m_to_um, mn_to_un, n_to_mn, pa_to_gpa, rad_to_deg};
 use surrogate::Scene;
 
 /// Two stacked panels: contacts (log) and P_max versus θ, one series per load, P_crit dashed.
@@ -188,7 +188,8 @@ pub fn corrugation_figure_png(path: &Path, rows: &[CorrugationRow], distance: f6
         let (c, f) = (corr.last_mut(), force.last_mut());
         if let (Some(c), Some(f)) = (c, f) {
             c.points.push((r.alpha_deg, r.corrugation_nm));
-            f.points.push((r.alpha_deg, r.max_lateral_force_mn * 1e3));
+            f.points
+                .push((r.alpha_deg, mn_to_un(r.max_lateral_force_mn)));
         }
     }
     let c = LinePlot {

@@ -10,3 +10,4 @@
 //! | `superlube design`'s `report.md`, CSVs and PNGs | [`design_report`] |
 
 pub mod design_report;
+pub mod inputs;

@@ -19,6 +19,13 @@ use super::sink::{partial_path, CsvSink, StreamFile};
 use super::sweep::{ShardInfo, Sweep};
 use anyhow::{bail, Result};
 use std::ops::Range;
+
+/// The role recorded in the sidecar of a DEM run's time series that no flag names (a batch
+/// run's `slide.csv`): the flag that names it in a single run, `slide --out`.
+pub const SERIES_ROLE: &str = "--out";
+/// The role of a DEM run's JSON summary that no flag names (a batch run's `slide.json`):
+/// `slide --json`.
+pub const SUMMARY_ROLE: &str = "--json";
 use std::path::{Path, PathBuf};
 
 /// How one process runs a sweep: the sweep, its shard (`--shard i/n`; `None` = the whole

@@ -55,6 +55,23 @@ pub struct Reporter {
 #[derive(Debug, Clone, Copy)]
 pub struct Cancelled;
 
+/// The filter every note passes through before it is printed or forwarded (set once by the
+/// command line: it names the workflows' inputs by their flags).
+static NOTE_FILTER: std::sync::OnceLock<fn(&str) -> String> = std::sync::OnceLock::new();
+
+/// Sets the note filter (the first call wins; later calls are ignored).
+pub fn set_note_filter(f: fn(&str) -> String) {
+    let _ = NOTE_FILTER.set(f);
+}
+
+/// `line` through the note filter.
+fn filtered(line: &str) -> std::borrow::Cow<'_, str> {
+    match NOTE_FILTER.get() {
+        Some(f) => std::borrow::Cow::Owned(f(line)),
+        None => std::borrow::Cow::Borrowed(line),
+    }
+}
+
 thread_local! {
     static FORWARD: RefCell<Option<Arc<dyn Progress + Send>>> = const { RefCell::new(None) };
 }
@@ -223,6 +240,7 @@ impl Progress for Reporter {
     }
 
     fn note(&self, line: &str) {
+        let line = &*filtered(line);
         if let Some(f) = &self.forward {
             return f.note(line);
         }

@@ -94,19 +94,20 @@ pub fn site_file_body(scene: &Scene) -> Option<String> {
 impl LineChoice {
     /// One log line describing the choice.
     pub fn describe(&self) -> String {
+        let given = format!("given by {}", crate::study::input::Input::LineDeg);
         let Some(estimate) = &self.estimate else {
             return format!(
                 "contact line: {:.3}° from x ({}: a site file has no lattice for the moiré estimate{})",
                 self.angle.to_degrees(),
                 if self.given {
-                    "given by --line-deg"
+                    given.as_str()
                 } else {
                     "the substrate x axis"
                 },
                 if self.given {
-                    ""
+                    String::new()
                 } else {
-                    "; --line-deg sets the line"
+                    format!("; {} sets the line", crate::study::input::Input::LineDeg)
                 }
             );
         };
@@ -114,7 +115,7 @@ impl LineChoice {
             "contact line: {:.3}° from x ({}; moiré estimate {:.3}°{}, line spacing {:.2} µm)",
             self.angle.to_degrees(),
             if self.given {
-                "given by --line-deg"
+                given.as_str()
             } else {
                 "moiré estimate"
             },
@@ -146,15 +147,24 @@ pub fn contact_line(scene: &Scene, given: Option<f64>) -> LineChoice {
 
 /// Cost estimate.
 pub fn estimate(scene: &Scene, p: &CorrugationParams) -> Estimate {
-    let (flags, solves) = match p.method {
+    use crate::study::input::Input;
+    let (inputs, solves) = match p.method {
         Method::Direct => (
-            "`--alpha` × (`--distance-um` / `--step-um`)",
+            format!(
+                "{} × ({} / {})",
+                Input::Alpha,
+                Input::DistanceUm,
+                Input::StepUm
+            ),
             (p.alphas.len() as u64).saturating_mul(p.samples_per_path()),
         ),
-        Method::Landscape => ("`--grid`", (p.grid as u64).saturating_mul(p.grid as u64)),
+        Method::Landscape => (
+            Input::Grid.to_string(),
+            (p.grid as u64).saturating_mul(p.grid as u64),
+        ),
     };
     Estimate::solves(
-        flags,
+        &inputs,
         solves,
         scene.slider_sites_local().len(),
         scene.substrate_spheres().len(),

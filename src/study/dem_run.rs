@@ -68,11 +68,11 @@ pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec) -> Result<ModelCh
     if spec.force_rigid_z && !c.rigid_z {
         c.rigid_z = true;
         c.model = "reduced";
-        c.reason = format!("rigid-z forced by --rigid-z (κ = {:.4})", c.stiffness_ratio);
+        c.reason = format!("rigid-z forced (κ = {:.4})", c.stiffness_ratio);
     }
     if !spec.active_set {
         c.active_set = false;
-        c.reason.push_str("; active set off (--no-active-set)");
+        c.reason.push_str("; active set off (asked for)");
     }
     Ok(c)
 }
@@ -167,9 +167,9 @@ pub fn run_dem(
         rad_to_deg(dir),
         rad_to_deg(line.angle),
         if line.given {
-            "given by --line-deg"
+            format!("given by {}", crate::study::input::Input::LineDeg)
         } else {
-            "moiré estimate"
+            "moiré estimate".to_string()
         },
         rad_to_deg(p.alpha)
     ));

@@ -91,7 +91,14 @@ impl FiguresParams {
             solves += 6 * per;
         }
         Estimate::solves(
-            "`--theta-step`, `--grid`, `--alpha` × (`--distance-um` / `--step-um`)",
+            &format!(
+                "{}, {}, {} × ({} / {})",
+                crate::study::input::Input::ThetaStepDeg,
+                crate::study::input::Input::Grid,
+                crate::study::input::Input::Alpha,
+                crate::study::input::Input::DistanceUm,
+                crate::study::input::Input::StepUm
+            ),
             solves,
             scene.slider_sites_local().len(),
             scene.substrate_spheres().len(),

@@ -73,7 +73,12 @@ pub struct FrictionStats {
 /// Cost estimate (for the size guard): at most `max_samples` solves per (θ, α, W).
 pub fn estimate(scene: &Scene, p: &FrictionSweepParams) -> Estimate {
     Estimate::solves(
-        "`--theta` × `--alpha` × `--load-mn` × path samples",
+        &format!(
+            "{} × {} × {} × path samples",
+            crate::study::input::Input::Theta,
+            crate::study::input::Input::Alpha,
+            crate::study::input::Input::LoadMn
+        ),
         (p.items() as u64)
             .saturating_mul(p.loads.len() as u64)
             .saturating_mul(p.max_samples()),

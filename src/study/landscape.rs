@@ -58,7 +58,7 @@ pub struct LandscapeStats {
 pub fn estimate(scene: &Scene, p: &LandscapeParams, plot: bool) -> Estimate {
     let n2 = (p.grid as u64).saturating_mul(p.grid as u64);
     Estimate::solves(
-        &format!("`--grid {}`", p.grid),
+        &format!("{} {}", crate::study::input::Input::Grid, p.grid),
         n2,
         scene.slider_sites_local().len(),
         scene.substrate_spheres().len(),

@@ -95,11 +95,15 @@ fn check_one(path: &Path) -> Result<ShardFile> {
     }
     if !sidecar.complete {
         bail!(
-            "{d} is incomplete (its sidecar says `complete: false`): the shard is still running or was interrupted; finish it (run it again with --resume) and merge its final output"
+            "{d} is incomplete (its sidecar says `complete: false`): the shard is still running or was interrupted; finish it (run it again with {}) and merge its final output",
+            crate::study::input::Input::Resume
         );
     }
     let Some(info) = sidecar.shard.clone() else {
-        bail!("{d} is not a shard (its sidecar has no `shard`: it was made without --shard i/n)");
+        bail!(
+            "{d} is not a shard (its sidecar has no `shard`: it was made without {} i/n)",
+            crate::study::input::Input::Shard
+        );
     };
     if sidecar.inputs().hash() != sidecar.input_hash {
         bail!(

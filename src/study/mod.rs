@@ -102,6 +102,7 @@ pub mod design;
 pub mod equilibrate;
 pub mod figures;
 pub mod friction;
+pub mod input;
 pub mod landscape;
 pub mod merge;
 pub mod patterns;

@@ -17,7 +17,9 @@
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use surrogate::solver::{ContactInfo, Equilibrium, Model};
-use surrogate::units::{j_to_pj, m_to_nm, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, UN};
+use surrogate::units::{
+    j_to_pj, m_to_nm, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, rad_to_urad, UN,
+};
 
 pub use dem::protocol::Sample as DemSample;
 pub use dem::protocol::{EquilibrateSummary, SlideSummary};
@@ -109,8 +111,8 @@ impl ScreenRow {
                 row.z_um = Some(m_to_um(e.z));
                 row.coating_failed = Some(e.coating_failed());
                 row.failed_contacts = Some(e.failed_count());
-                row.tilt_x_urad = Some(e.tilt[0] * 1e6);
-                row.tilt_y_urad = Some(e.tilt[1] * 1e6);
+                row.tilt_x_urad = Some(rad_to_urad(e.tilt[0]));
+                row.tilt_y_urad = Some(rad_to_urad(e.tilt[1]));
                 row.model = e.model.name().to_string();
                 row.residual_rel = Some(e.residual_rel());
                 row.iterations = Some(e.iterations);

@@ -45,7 +45,11 @@ pub fn window() -> usize {
 /// Cost estimate of the screen (for the size guard).
 pub fn estimate(scene: &Scene, p: &ScreenParams) -> Estimate {
     Estimate::solves(
-        "`--theta` × `--load-mn`",
+        &format!(
+            "{} × {}",
+            crate::study::input::Input::Theta,
+            crate::study::input::Input::LoadMn
+        ),
         (p.thetas.len() as u64).saturating_mul(p.loads.len() as u64),
         scene.slider_sites_local().len(),
         scene.substrate_spheres().len(),
@@ -69,7 +73,7 @@ pub fn screen(
     let mut solver = Solver::new(scene)?;
     solver
         .check_model(p.model)
-        .map_err(|e| anyhow::anyhow!("`--solver`: {e}"))?;
+        .map_err(|e| anyhow::anyhow!("{}: {e}", crate::study::input::Input::Solver))?;
     solver.search = p.search;
     let mut stats = ScreenStats::default();
     progress.stage("screen", p.thetas.len() as u64, "θ");

@@ -76,7 +76,12 @@ impl Verdict {
         if !r.error.is_empty() {
             return Verdict::Not;
         }
-        Verdict::of(r.mu_est, r.p_max_GPa.map(|p| p * 1e9), mu_sl, p_crit)
+        Verdict::of(
+            r.mu_est,
+            r.p_max_GPa.map(surrogate::units::gpa_to_pa),
+            mu_sl,
+            p_crit,
+        )
     }
 
     /// The worst verdict of `rows` (every load up to a limit, and every sample of a tolerance

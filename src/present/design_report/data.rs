@@ -458,7 +458,7 @@ impl ReportData {
                     if let Some(n) = crate::study::design::line_note(&pr.scene, p) {
                         t = format!("{t}. The {}", n.trim_start_matches("the "));
                     }
-                    t
+                    crate::present::inputs::to_flags(&t)
                 },
                 thetas: pr.thetas_deg.len(),
                 theta_first: pr

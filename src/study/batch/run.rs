@@ -67,7 +67,7 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
         Err(e) => (None, Some(format!("{e:#}"))),
         Ok((run, report)) => {
             outs.write(
-                "--out",
+                crate::runs::output::SERIES_ROLE,
                 Some(&dir.join("slide.csv")),
                 csv_bytes(&run.samples),
                 Some(run.samples.len() as u64),
@@ -80,7 +80,7 @@ fn run_one(dir: &Path, job: &SlideJob, inputs: &Inputs, progress: &dyn Progress)
                         .ok()
                         .and_then(|t| serde_json::from_str(t).ok());
                     outs.write(
-                        "--json",
+                        crate::runs::output::SUMMARY_ROLE,
                         Some(&dir.join("slide.json")),
                         text.map(String::into_bytes).map_err(Into::into),
                         None,

@@ -3,6 +3,7 @@
 
 use super::symmetry::PairSymmetry;
 use super::{DesignParams, DesignScene};
+use crate::study::input::Input;
 use anyhow::{bail, Result};
 
 /// Default θ step (degrees) over a domain up to [`WIDE_DOMAIN_DEG`] wide (the study's 0.1°).
@@ -44,7 +45,7 @@ pub fn default_domain(sym: &PairSymmetry, p: &DesignParams) -> Option<(Vec<f64>,
         super::symmetry::fmt(hi),
         step
     );
-    let mut v = crate::study::range::parse_list_or_range(&text, "--theta").ok()?;
+    let mut v = crate::study::range::parse_list_or_range(&text, "θ").ok()?;
     if !closed {
         v.retain(|&t| t < hi - 1e-9);
     }
@@ -69,15 +70,16 @@ pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> O
     if !gaps.is_empty() {
         let (lo, hi, closed) = sym.domain();
         let text = format!(
-            "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give --theta over the whole domain{})",
+            "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give {} over the whole domain{})",
             super::symmetry::fmt(lo),
             super::symmetry::fmt(hi),
             if closed { "]" } else { ")" },
             sym.gaps_text(&gaps),
+            Input::Theta,
             if p.theta_default {
-                ""
+                String::new()
             } else {
-                ", or leave --theta out to screen it at the default step"
+                format!(", or leave {} out to screen it at the default step", Input::Theta)
             }
         );
         return Some(ThetaNote {
@@ -87,7 +89,8 @@ pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> O
     }
     let (_, step) = default_domain(sym, p)?;
     let text = format!(
-        "no --theta given: the whole domain at {step}° ({} θ{})",
+        "no {} given: the whole domain at {step}° ({} θ{})",
+        Input::Theta,
         thetas_deg.len(),
         if step == WIDE_THETA_STEP_DEG {
             format!(
@@ -112,7 +115,8 @@ pub fn line_note(ds: &DesignScene, p: &DesignParams) -> Option<String> {
     }
     let why = crate::study::corrugation::site_file_body(&ds.scene)?;
     Some(format!(
-        "{why}, which has no lattice for the moiré contact-line estimate: α is measured from the substrate x axis (0°; --line-deg sets the line), and the α scan covers a whole α period from it"
+        "{why}, which has no lattice for the moiré contact-line estimate: α is measured from the substrate x axis (0°; {} sets the line), and the α scan covers a whole α period from it",
+        Input::LineDeg
     ))
 }
 
@@ -137,7 +141,8 @@ pub fn cut(ds: &DesignScene, p: &DesignParams) -> Result<(Vec<f64>, PairSymmetry
         let (lo, hi, closed) = sym.domain();
         let t = p.thetas_deg[0];
         bail!(
-            "`--theta`: none of `{}` lies in the fundamental domain [{}°, {}°{} of {} ({}); every orientation is equivalent to one in it (e.g. {}° ≡ {}°): give θ in [{}, {}], or pass --no-symmetry-cut",
+            "{}: none of `{}` lies in the fundamental domain [{}°, {}°{} of {} ({}); every orientation is equivalent to one in it (e.g. {}° ≡ {}°): give θ in [{}, {}], or pass {}",
+            Input::Theta,
             p.theta_text,
             super::symmetry::fmt(lo),
             super::symmetry::fmt(hi),
@@ -147,7 +152,8 @@ pub fn cut(ds: &DesignScene, p: &DesignParams) -> Result<(Vec<f64>, PairSymmetry
             super::symmetry::fmt(t),
             super::symmetry::fmt(sym.fold(t)),
             super::symmetry::fmt(lo),
-            super::symmetry::fmt(hi)
+            super::symmetry::fmt(hi),
+            Input::NoSymmetryCut
         );
     }
     Ok((kept, sym))

@@ -94,7 +94,7 @@ pub fn design(
     progress: &dyn Progress,
     on_pattern: PatternHook,
 ) -> Result<DesignOutcome> {
-    if store.claim(&inputs(scenes, p, false), "--out-dir")? {
+    if store.claim(&inputs(scenes, p, false))? {
         progress.note(&format!(
             "{}: a design of the same inputs is there: finished stages are reused",
             store.dir().display()
@@ -148,13 +148,15 @@ pub fn design(
         let (jobs, _) = confirm_jobs(&patterns, p);
         let part = p.dem_shard.range(jobs.len());
         progress.note(&format!(
-            "DEM shard {}/{}: runs {}..{} of {} into {}; run the design without --shard (same --out-dir, every shard's dem/ runs in it) to write the report",
+            "DEM shard {}/{}: runs {}..{} of {} into {}; run the design without {} (same {}, every shard's dem/ runs in it) to write the report",
             p.dem_shard.index,
             p.dem_shard.count,
             part.start,
             part.end,
             jobs.len(),
-            store.path("dem").display()
+            store.path("dem").display(),
+            crate::study::input::Input::Shard,
+            crate::study::input::Input::OutDir
         ));
         let dem: Vec<SlideOutcome> = if part.is_empty() {
             Vec::new()
@@ -305,9 +307,12 @@ fn pattern(
         progress.note(&format!(
             "{name}: note: the symmetry cut is exact for a flat substrate with the slider centred on a site; {}",
             if ds.scene.slider.offset != [0.0; 2] {
-                "this slider is offset, so the cut is approximate (--no-symmetry-cut screens the whole range)"
+                format!(
+                    "this slider is offset, so the cut is approximate ({} screens the whole range)",
+                    crate::study::input::Input::NoSymmetryCut
+                )
             } else {
-                "with σ_h > 0 it holds statistically"
+                "with σ_h > 0 it holds statistically".to_string()
             }
         ));
     }

@@ -229,9 +229,9 @@ pub struct RankingRow {
     pub line_deg: f64,
     /// Pulling direction (degrees from x).
     pub direction_deg: f64,
-    /// θ tolerance of the design (degrees; `--theta-tol`).
+    /// θ tolerance of the design (degrees; `--theta-tol-deg`).
     pub theta_tol_deg: f64,
-    /// Pulling-direction tolerance (degrees; `--direction-tol`).
+    /// Pulling-direction tolerance (degrees; `--direction-tol-deg`).
     pub direction_tol_deg: f64,
     /// Robust limit: highest load up to which superlubric (coating intact on the path and
     /// μ_est < the limit at every load up to it) at every sample of the tolerance box and every

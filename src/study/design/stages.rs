@@ -86,7 +86,7 @@ pub fn answer_map(
 
 /// The design's inputs: with `with_dem` false, those of the surrogate tiers (recorded in
 /// `design.json`: a re-run with other values is refused), with it true also the DEM protocol
-/// (recorded in the final outputs' sidecars). Never recorded: `--confirm`, `--confirm-loads`,
+/// (recorded in the final outputs' sidecars). Never recorded: `--confirm`, `--confirm-loads-mn`,
 /// `--no-dem`, `--jobs`, `--no-protocol-check` — they choose which DEM runs are made, and each
 /// run is stored with its own inputs (a run of the same name made with another protocol is
 /// refused, never mixed).
@@ -159,7 +159,7 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
     }
 }
 
-/// The tolerance box of the design's `--theta-tol` × `--direction-tol`.
+/// The tolerance box of the design's `--theta-tol-deg` × `--direction-tol-deg`.
 pub fn tolerance_box(p: &DesignParams) -> ToleranceBox {
     ToleranceBox::new(
         p.theta_tol_deg,

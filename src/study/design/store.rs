@@ -21,19 +21,35 @@ use serde::Serialize;
 use std::path::{Path, PathBuf};
 
 /// What the error of a stage made with other inputs suggests.
-const HINT: &str = "; remove it or use another --out-dir";
+fn hint() -> String {
+    format!(
+        "; remove it or use another {}",
+        crate::study::input::Input::OutDir
+    )
+}
 
 /// The output directory of a design.
 pub struct Store {
     dir: PathBuf,
+    /// What named the directory (the caller's flag or keyword), in messages and in the
+    /// sidecar of `design.json`.
+    label: String,
 }
 
 impl Store {
-    /// The store at `dir` (created when a file is first written).
+    /// The store at `dir` (created when a file is first written), named in messages and
+    /// sidecars as the output directory input ([`crate::study::input::Input::OutDir`]).
     pub fn new(dir: &Path) -> Store {
         Store {
             dir: dir.to_path_buf(),
+            label: crate::study::input::Input::OutDir.keyword().to_string(),
         }
+    }
+
+    /// The store named by `label` (the command line's flag) in messages and sidecars.
+    pub fn labelled(mut self, label: &str) -> Store {
+        self.label = label.to_string();
+        self
     }
 
     /// The directory.
@@ -49,7 +65,8 @@ impl Store {
     /// Checks that `dir` holds no design of other inputs: reads `design.json` if present and
     /// compares its `input_hash`; writes it when absent. Errors list the inputs that differ.
     /// Returns whether a design of these inputs was already there.
-    pub fn claim(&self, inputs: &Inputs, flag: &str) -> Result<bool> {
+    pub fn claim(&self, inputs: &Inputs) -> Result<bool> {
+        let flag = self.label.as_str();
         let path = self.path("design.json");
         if path.exists() {
             let s: Sidecar = std::fs::read_to_string(&path)
@@ -86,12 +103,18 @@ impl Store {
     /// The finished stage file `rel` for `inputs`: `None` when absent (or only partial); an
     /// error when its sidecar names other inputs ([`crate::runs::stored::finished`]).
     pub fn finished(&self, rel: &str, inputs: &Inputs) -> Result<Option<PathBuf>> {
-        crate::runs::stored::finished(&self.path(rel), inputs, "this design's", HINT)
+        crate::runs::stored::finished(&self.path(rel), inputs, "this design's", &hint())
     }
 
     /// Reads the finished JSON stage `rel` (see [`Store::finished`]).
     pub fn load_json<T: DeserializeOwned>(&self, rel: &str, inputs: &Inputs) -> Result<Option<T>> {
-        crate::runs::stored::load_json(&self.path(rel), inputs, "this design's", HINT, "stage file")
+        crate::runs::stored::load_json(
+            &self.path(rel),
+            inputs,
+            "this design's",
+            &hint(),
+            "stage file",
+        )
     }
 
     /// Reads the finished CSV stage `rel` (see [`Store::finished`]).

@@ -2,6 +2,7 @@
 //! count, reading an index back and ordering it by the contact-type pre-screen.
 
 use super::{line_spacing, tidy, Candidate, ContactType, Normalize};
+use crate::study::input::Input;
 use anyhow::{bail, Result};
 use surrogate::Scene;
 
@@ -193,8 +194,9 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
         #[serde(default)]
         commensurate_direction_deg: Option<f64>,
     }
-    let mut r = csv::Reader::from_path(index)
-        .map_err(|e| anyhow::anyhow!("`--patterns`: cannot read {}: {e}", index.display()))?;
+    let mut r = csv::Reader::from_path(index).map_err(|e| {
+        anyhow::anyhow!("{}: cannot read {}: {e}", Input::Patterns, index.display())
+    })?;
     // the fairness rule the candidates were made with (a hand-written index has no sidecar)
     let normalize = crate::runs::meta::Sidecar::of(index)
         .ok()
@@ -203,7 +205,12 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
     let mut out = Vec::new();
     for (k, row) in r.deserialize::<Row>().enumerate() {
         let row = row.map_err(|e| {
-            anyhow::anyhow!("`--patterns`: {} line {}: {e}", index.display(), k + 2)
+            anyhow::anyhow!(
+                "{}: {} line {}: {e}",
+                Input::Patterns,
+                index.display(),
+                k + 2
+            )
         })?;
         out.push((
             row.pattern_id,
@@ -253,13 +260,15 @@ pub fn prescreen_order(
 /// The scene files of an `index.csv` written by `superlube patterns` (its `scene_file` column,
 /// relative to the index), in row order. Errors name `--patterns` and the line.
 pub fn index_scenes(index: &std::path::Path) -> Result<Vec<std::path::PathBuf>> {
-    let text = std::fs::read_to_string(index)
-        .map_err(|e| anyhow::anyhow!("`--patterns`: cannot read {}: {e}", index.display()))?;
+    let text = std::fs::read_to_string(index).map_err(|e| {
+        anyhow::anyhow!("{}: cannot read {}: {e}", Input::Patterns, index.display())
+    })?;
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
     let Some(col) = header.iter().position(|c| *c == "scene_file") else {
         bail!(
-            "`--patterns`: {} line 1: no `scene_file` column (an index.csv of `superlube patterns`)",
+            "{}: {} line 1: no `scene_file` column (an index.csv of `superlube patterns`)",
+            Input::Patterns,
             index.display()
         );
     };
@@ -269,14 +278,15 @@ pub fn index_scenes(index: &std::path::Path) -> Result<Vec<std::path::PathBuf>> 
         match l.split(',').nth(col).filter(|f| !f.is_empty()) {
             Some(f) => out.push(dir.join(f)),
             None => bail!(
-                "`--patterns`: {} line {}: no scene_file",
+                "{}: {} line {}: no scene_file",
+                Input::Patterns,
                 index.display(),
                 k + 2
             ),
         }
     }
     if out.is_empty() {
-        bail!("`--patterns`: {} lists no pattern", index.display());
+        bail!("{}: {} lists no pattern", Input::Patterns, index.display());
     }
     Ok(out)
 }

@@ -19,11 +19,12 @@
 //! the spheres do not overlap, the classification is directional with u as the commensurate
 //! direction, and the moiré contact lines (as `corrugation` finds them) run along u.
 
+use crate::study::input::Input;
 use anyhow::{bail, Result};
 use std::f64::consts::PI;
 use surrogate::map::{contact_line_direction, MapParams};
-use surrogate::scene::{lattice_name, min_site_distance};
-use surrogate::units::{deg_to_rad, um_to_m};
+use surrogate::scene::{lattice_name, min_site_distance, overlaps};
+use surrogate::units::{deg_to_rad, m_to_um, um_to_m};
 use surrogate::{Lattice, Scene};
 
 mod classify;
@@ -135,16 +136,20 @@ impl Normalize {
 
 /// Parses a family: `directional`, `presets[:s=3:6:0.5]`, `rectangular:a=3,b=2.6:6:0.05`,
 /// `oblique:a=3,b=3.2,gamma_deg=60:90:5`; every value a number or `start:stop:step` (µm,
-/// degrees). Errors name `--family`.
-/// `values` parses one value or range (the command line's list/range parser).
+/// degrees). Errors name the family input ([`Input::Family`]).
+/// `values` parses one value or range (the command line's list/range parser), given the text
+/// and a name for its errors (`SPEC: k`).
 pub fn parse_family(spec: &str, values: impl Fn(&str, &str) -> Result<Vec<f64>>) -> Result<Family> {
     let (kind, rest) = spec.split_once(':').unwrap_or((spec, ""));
     let mut vals: Vec<(String, Vec<f64>)> = Vec::new();
     for part in rest.split(',').filter(|s| !s.is_empty()) {
         let Some((k, v)) = part.split_once('=') else {
-            bail!("`--family {spec}`: `{part}` is not `name=value` or `name=start:stop:step`");
+            bail!(
+                "{} `{spec}`: `{part}` is not `name=value` or `name=start:stop:step`",
+                Input::Family
+            );
         };
-        let list = values(v, &format!("--family {spec}: {k}"))?;
+        let list = values(v, &format!("{spec}: {k}"))?;
         vals.push((k.trim().to_string(), list));
     }
     let take = |name: &str, default: Option<f64>, um: bool| -> Result<Vec<f64>> {
@@ -153,14 +158,15 @@ pub fn parse_family(spec: &str, values: impl Fn(&str, &str) -> Result<Vec<f64>>)
             Some((_, v)) => Ok(v.iter().map(|&x| f(x)).collect()),
             None => match default {
                 Some(d) => Ok(vec![f(d)]),
-                None => bail!("`--family {spec}`: `{kind}` needs `{name}=…`"),
+                None => bail!("{} `{spec}`: `{kind}` needs `{name}=…`", Input::Family),
             },
         }
     };
     let known = |names: &[&str]| -> Result<()> {
         if let Some((k, _)) = vals.iter().find(|(k, _)| !names.contains(&k.as_str())) {
             bail!(
-                "`--family {spec}`: unknown parameter `{k}` of `{kind}` (expected {})",
+                "{} `{spec}`: unknown parameter `{k}` of `{kind}` (expected {})",
+                Input::Family,
                 names.join(", ")
             );
         }
@@ -193,7 +199,8 @@ pub fn parse_family(spec: &str, values: impl Fn(&str, &str) -> Result<Vec<f64>>)
             }
         }
         other => bail!(
-            "`--family`: unknown family `{other}` (expected directional, presets, rectangular:a=…,b=…, oblique:a=…,b=…,gamma_deg=…)"
+            "{}: unknown family `{other}` (expected directional, presets, rectangular:a=…,b=…, oblique:a=…,b=…,gamma_deg=…)",
+            Input::Family
         ),
     })
 }
@@ -303,7 +310,10 @@ pub fn candidates(scene: &Scene, p: &PatternParams) -> Result<Vec<Candidate>> {
     let sub = &scene.substrate.lattice;
     let sub_basis = &scene.geometry.substrate_basis;
     if scene.geometry.substrate_sites.is_some() {
-        bail!("`--family`: the substrate comes from a site file; candidates are classified against a substrate lattice");
+        bail!(
+            "{}: the substrate comes from a site file; candidates are classified against a substrate lattice",
+            Input::Family
+        );
     }
     let d = 2.0 * scene.slider_sphere_radius();
     let mut raw: Vec<Raw> = Vec::new();
@@ -380,7 +390,7 @@ pub fn candidates(scene: &Scene, p: &PatternParams) -> Result<Vec<Candidate>> {
     let total = raw.len();
     let mut out = Vec::new();
     for (l, basis, kind, comm) in raw {
-        if l.validate("--family").is_err() || min_site_distance(&l, &basis) < d * (1.0 - 1e-9) {
+        if l.validate("family").is_err() || overlaps(min_site_distance(&l, &basis), d) {
             continue;
         }
         let contact = classify(&l, &basis, scene.slider.theta, sub, sub_basis, p.max_order);
@@ -409,13 +419,17 @@ pub fn candidates(scene: &Scene, p: &PatternParams) -> Result<Vec<Candidate>> {
     }
     if out.is_empty() {
         bail!(
-            "`--family {}`: none of its {total} lattices is valid over this substrate: the spheres (diameter {} µm) overlap{}",
+            "{} `{}`: none of its {total} lattices is valid over this substrate: the spheres (diameter {} µm) overlap{}",
+            Input::Family,
             p.family_text,
-            tidy(d * 1e6),
+            tidy(m_to_um(d)),
             if p.family == Family::Directional {
-                ", or no directionally commensurate lattice has contact lines along its row (raise --max-pq)"
+                format!(
+                    ", or no directionally commensurate lattice has contact lines along its row (raise {})",
+                    Input::MaxPq
+                )
             } else {
-                " (use spacings of at least the sphere diameter)"
+                " (use spacings of at least the sphere diameter)".to_string()
             }
         );
     }

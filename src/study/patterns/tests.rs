@@ -189,11 +189,11 @@ fn families_parse_and_bad_ones_are_named() {
     let e = candidates(&scene, &params("rectangular:a=1,b=2"))
         .unwrap_err()
         .to_string();
-    assert!(e.contains("--family") && e.contains("overlap"), "{e}");
+    assert!(e.contains("‹family›") && e.contains("overlap"), "{e}");
     let e = parse_family("hexagonal", |_, _| Ok(vec![]))
         .unwrap_err()
         .to_string();
-    assert!(e.contains("--family"), "{e}");
+    assert!(e.contains("‹family›"), "{e}");
     let e = parse_family("rectangular:a=3", |_, _| Ok(vec![3.0]))
         .unwrap_err()
         .to_string();

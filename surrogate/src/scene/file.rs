@@ -35,7 +35,7 @@
 
 use super::{Lattice, Mount, Outline, Scene, SiteList};
 use crate::error::SceneError;
-use crate::units::{deg_to_rad, gcm3_to_kgm3, gpa_to_pa, um_to_m};
+use crate::units::{deg_to_rad, gcm3_to_kgm3, gpa_to_pa, um_text, um_to_m};
 use serde::{Deserialize, Serialize};
 
 /// A lattice in user units. `kind` is `triangular`, `square`, `rectangular` (needs
@@ -509,7 +509,7 @@ impl SceneFile {
                     if self.slider.radius_um.is_some_and(|v| um_to_m(v) != r) {
                         return Err(SceneError::invalid(
                             "slider.outline.radius_um",
-                            r * 1e6,
+                            um_text(r),
                             "differs from slider.radius_um: give the disc radius once",
                         ));
                     }
@@ -528,8 +528,8 @@ impl SceneFile {
                         path,
                         &format!(
                             "its diameter_um column ({} µm) differs from the body's sphere_diameter_um ({} µm); give one",
-                            d * 1e6,
-                            2e6 * r.unwrap_or_default()
+                            um_text(d),
+                            um_text(2.0 * r.unwrap_or_default())
                         ),
                     ));
                 }
@@ -555,7 +555,7 @@ impl SceneFile {
                         v,
                         &format!(
                             "with slider.sites it bounds the slider: the farthest site of {p} is {} µm from the centre",
-                            far * 1e6
+                            um_text(far)
                         ),
                     ))
                 }

@@ -1,6 +1,7 @@
 //! A 2-D Bravais lattice in the horizontal plane.
 
 use crate::error::SceneError;
+use crate::units::um_pair_text;
 use serde::{Deserialize, Serialize};
 
 /// A 2-D Bravais lattice given by two primitive vectors `a1`, `a2` (m). Sites are
@@ -160,7 +161,11 @@ impl Lattice {
         if all.iter().any(|v| !v.is_finite()) {
             return Err(SceneError::invalid(
                 field,
-                format!("{:?}", self),
+                format!(
+                    "a1_um = {}, a2_um = {}",
+                    um_pair_text(self.a1),
+                    um_pair_text(self.a2)
+                ),
                 "lattice vectors must be finite",
             ));
         }
@@ -170,9 +175,9 @@ impl Lattice {
             return Err(SceneError::invalid(
                 field,
                 format!(
-                    "a1_um={:?} a2_um={:?}",
-                    self.a1.map(|v| v * 1e6),
-                    self.a2.map(|v| v * 1e6)
+                    "a1_um = {}, a2_um = {}",
+                    um_pair_text(self.a1),
+                    um_pair_text(self.a2)
                 ),
                 "lattice vectors must be non-zero and not parallel",
             ));

@@ -1,6 +1,7 @@
 //! Elastic material of the spheres and the superlubric coating on them.
 
 use crate::error::SceneError;
+use crate::units::{kgm3_to_gcm3, pa_to_gpa};
 use serde::{Deserialize, Serialize};
 
 /// Isotropic elastic material of every sphere (SI).
@@ -38,7 +39,7 @@ impl Material {
         if !(self.youngs.is_finite() && self.youngs > 0.0) {
             return Err(SceneError::invalid(
                 "material.youngs_GPa",
-                self.youngs / 1e9,
+                pa_to_gpa(self.youngs),
                 "must be a positive number",
             ));
         }
@@ -52,7 +53,7 @@ impl Material {
         if !(self.density.is_finite() && self.density > 0.0) {
             return Err(SceneError::invalid(
                 "material.density_g_cm3",
-                self.density / 1e3,
+                kgm3_to_gcm3(self.density),
                 "must be a positive number",
             ));
         }
@@ -99,7 +100,7 @@ impl Coating {
         if !(self.p_crit.is_finite() && self.p_crit > 0.0) {
             return Err(SceneError::invalid(
                 "coating.p_crit_GPa",
-                self.p_crit / 1e9,
+                pa_to_gpa(self.p_crit),
                 "must be a positive number",
             ));
         }

@@ -18,7 +18,10 @@ pub use file::{
 pub use lattice::Lattice;
 pub use material::{Coating, Material};
 pub use mount::{rotate_tilt_stiffness, Mount, STUDY_K1};
-pub use pattern::{check_basis, min_site_distance, rebased, sites_in_outline, Geometry, Outline};
+pub use pattern::{
+    check_basis, closest_sites, min_site_distance, overlaps, rebased, sites_in_outline,
+    ClosestSites, Geometry, Outline, TOUCH_TOL,
+};
 pub use scene::{lattice_name, Scene, SliderSpec, SubstrateSpec, PATTERNS};
 pub use sites::SiteList;
 pub use to_file::scene_file;

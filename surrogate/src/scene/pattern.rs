@@ -6,7 +6,7 @@
 use super::sites::SiteList;
 use super::Lattice;
 use crate::error::SceneError;
-use crate::units::{m_to_um, um_to_m};
+use crate::units::{m_to_um, nm_text, um_pair_text, um_text, um_to_m};
 use serde::{Deserialize, Serialize};
 
 /// The slider's outline in its own frame (m), centred on the slider centre (which sits on the
@@ -93,20 +93,45 @@ impl Outline {
     /// Short description in µm for tables and logs: `disc r=100`, `rectangle 120x80`,
     /// `polygon 6 r=90`, `polygon 5 vertices`.
     pub fn describe(&self, disc_r: f64) -> String {
-        let um = |v: f64| (v * 1e6 * 1e6).round() / 1e6;
         match self {
-            Outline::Disc => format!("disc r={}", um(disc_r)),
-            Outline::Rectangle { size } => format!("rectangle {}x{}", um(size[0]), um(size[1])),
+            Outline::Disc => format!("disc r={}", um_text(disc_r)),
+            Outline::Rectangle { size } => {
+                format!("rectangle {}x{}", um_text(size[0]), um_text(size[1]))
+            }
             Outline::RegularPolygon { sides, radius } => {
-                format!("polygon {sides} r={}", um(*radius))
+                format!("polygon {sides} r={}", um_text(*radius))
             }
             Outline::Polygon { vertices } => format!("polygon {} vertices", vertices.len()),
         }
     }
 
-    /// Checks the outline is finite with a positive area; `field` names it in errors.
+    /// The outline's fields as written in the scene file's `outline = { … }` table, in µm, for
+    /// messages: `kind = "rectangle", size_um = [120, 80]` (at most 8 vertices listed).
+    pub fn toml_text(&self) -> String {
+        match self {
+            Outline::Disc => r#"kind = "disc""#.to_string(),
+            Outline::Rectangle { size } => {
+                format!(r#"kind = "rectangle", size_um = {}"#, um_pair_text(*size))
+            }
+            Outline::RegularPolygon { sides, radius } => format!(
+                r#"kind = "polygon", sides = {sides}, radius_um = {}"#,
+                um_text(*radius)
+            ),
+            Outline::Polygon { vertices } => {
+                let mut v: Vec<String> =
+                    vertices.iter().take(8).map(|p| um_pair_text(*p)).collect();
+                if vertices.len() > 8 {
+                    v.push(format!("… {} more", vertices.len() - 8));
+                }
+                format!(r#"kind = "polygon", vertices_um = [{}]"#, v.join(", "))
+            }
+        }
+    }
+
+    /// Checks the outline is finite with a positive area; `field` names it in errors, which
+    /// print the outline as its scene-file table in µm ([`Outline::toml_text`]).
     pub fn validate(&self, field: &str) -> Result<(), SceneError> {
-        let bad = |why: &str| SceneError::invalid(field, format!("{self:?}"), why);
+        let bad = |why: &str| SceneError::invalid(field, self.toml_text(), why);
         match self {
             Outline::Disc => Ok(()),
             Outline::Rectangle { size } => {
@@ -374,11 +399,44 @@ pub fn rebased(basis: &[[f64; 2]]) -> Vec<[f64; 2]> {
     }
 }
 
-/// Smallest distance (m) between two distinct sites of the lattice with `basis` (the nearest-
-/// neighbour spacing of the pattern). O(basis² × 49).
-pub fn min_site_distance(l: &Lattice, basis: &[[f64; 2]]) -> f64 {
+/// Relative tolerance of every sphere-overlap check (lattices, bases, site files, families):
+/// spheres whose centres are at least `d · (1 − 1e-6)` apart (d the contact distance, the sum
+/// of the radii) count as touching, not overlapping, so that coordinates typed to 6 decimals in
+/// µm (a honeycomb basis `[2.598076, 1.5]` at 5.196152 µm, 0.18 pm short of 3 µm) are
+/// accepted. A real overlap (more than 3 pm for 3 µm spheres) is refused.
+pub const TOUCH_TOL: f64 = 1e-6;
+
+/// Whether spheres at centre distance `dist` overlap for the contact distance `d` (m), beyond
+/// the [`TOUCH_TOL`] allowance.
+pub fn overlaps(dist: f64, d: f64) -> bool {
+    dist < d * (1.0 - TOUCH_TOL)
+}
+
+/// The closest pair of distinct sites of the lattice with `basis`: site `a` of the basis (index
+/// into `basis`, from 0) in the cell at the origin, site `b` in the cell `(i, j)` (lattice
+/// translation i·a1 + j·a2), and their distance (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClosestSites {
+    /// Basis index of the first site (cell 0).
+    pub a: usize,
+    /// Basis index of the second site.
+    pub b: usize,
+    /// The second site's cell (i, j).
+    pub cell: (i32, i32),
+    /// Centre distance (m).
+    pub distance: f64,
+}
+
+/// The closest pair of distinct sites of the lattice with `basis` (the nearest-neighbour
+/// spacing of the pattern). O(basis² × 49).
+pub fn closest_sites(l: &Lattice, basis: &[[f64; 2]]) -> ClosestSites {
     let b = rebased(basis);
-    let mut best = f64::INFINITY;
+    let mut best = ClosestSites {
+        a: 0,
+        b: 0,
+        cell: (0, 0),
+        distance: f64::INFINITY,
+    };
     for (k, p) in b.iter().enumerate() {
         for (m, q) in b.iter().enumerate() {
             for i in -3i32..=3 {
@@ -388,7 +446,14 @@ pub fn min_site_distance(l: &Lattice, basis: &[[f64; 2]]) -> f64 {
                     }
                     let t = l.point(i as f64, j as f64);
                     let d = (q[0] + t[0] - p[0]).hypot(q[1] + t[1] - p[1]);
-                    best = best.min(d);
+                    if d < best.distance {
+                        best = ClosestSites {
+                            a: k,
+                            b: m,
+                            cell: (i, j),
+                            distance: d,
+                        };
+                    }
                 }
             }
         }
@@ -396,29 +461,75 @@ pub fn min_site_distance(l: &Lattice, basis: &[[f64; 2]]) -> f64 {
     best
 }
 
+/// Smallest distance (m) between two distinct sites of the lattice with `basis` (the nearest-
+/// neighbour spacing of the pattern). O(basis² × 49).
+pub fn min_site_distance(l: &Lattice, basis: &[[f64; 2]]) -> f64 {
+    closest_sites(l, basis).distance
+}
+
+/// `i·a1 + j·a2` as text for messages (`a1`, `a2 − a1`, … ; empty for the origin cell).
+fn cell_text(cell: (i32, i32)) -> String {
+    let term = |n: i32, v: &str| match n {
+        0 => String::new(),
+        1 => v.to_string(),
+        -1 => format!("−{v}"),
+        n if n < 0 => format!("−{}·{v}", -n),
+        n => format!("{n}·{v}"),
+    };
+    match (term(cell.0, "a1"), term(cell.1, "a2")) {
+        (a, b) if a.is_empty() && b.is_empty() => String::new(),
+        (a, b) if b.is_empty() => format!(" + {a}"),
+        (a, b) if a.is_empty() => format!(" + {b}"),
+        (a, b) => format!(
+            " + {a} {} {}",
+            if cell.1 < 0 { "−" } else { "+" },
+            b.trim_start_matches('−')
+        ),
+    }
+}
+
 /// Checks a lattice with a basis: finite basis sites, none repeated, and spheres of diameter
-/// `d` (m) on them do not overlap. `field` names the basis (`slider.lattice.basis_um`).
+/// `d` (m) on them do not overlap beyond [`TOUCH_TOL`]. `field` names the basis
+/// (`slider.lattice.basis_um`); a refusal prints the basis as typed (µm), names the two sites
+/// (`basis_um[k]`, counted from 1, and the lattice translation) and the overlap in nm.
 pub fn check_basis(l: &Lattice, basis: &[[f64; 2]], d: f64, field: &str) -> Result<(), SceneError> {
-    let um = |v: f64| v * 1e6;
+    let typed = || {
+        let v: Vec<String> = basis.iter().map(|b| um_pair_text(*b)).collect();
+        format!("[{}]", v.join(", "))
+    };
     if basis.iter().flatten().any(|v| !v.is_finite()) {
         return Err(SceneError::invalid(
             field,
-            "NaN/inf",
+            typed(),
             "basis sites must be finite",
         ));
     }
-    let s = min_site_distance(l, basis);
-    if s < d * (1.0 - 1e-9) {
+    let c = closest_sites(l, basis);
+    if overlaps(c.distance, d) {
+        let site = |k: usize| format!("basis_um[{}] = {}", k + 1, um_pair_text(basis[k]));
+        let why = if c.a == c.b {
+            format!(
+                "{} and its copy{} are {} µm apart",
+                site(c.a),
+                cell_text(c.cell),
+                um_text(c.distance)
+            )
+        } else {
+            format!(
+                "{} and {}{} are {} µm apart",
+                site(c.a),
+                site(c.b),
+                cell_text(c.cell),
+                um_text(c.distance)
+            )
+        };
         return Err(SceneError::invalid(
             field,
-            format!(
-                "{:?}",
-                basis.iter().map(|b| [um(b[0]), um(b[1])]).collect::<Vec<_>>()
-            ),
+            typed(),
             &format!(
-                "two sites of the lattice with this basis are {:.6} µm apart: spheres of diameter {} µm overlap",
-                um(s),
-                um(d)
+                "{why}: spheres of diameter {} µm overlap by {} nm (spheres touching within a relative 10⁻⁶ count as touching)",
+                um_text(d),
+                nm_text(d - c.distance)
             ),
         ));
     }

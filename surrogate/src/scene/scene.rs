@@ -4,6 +4,7 @@ use super::pattern::{self, Geometry};
 use super::{Coating, Lattice, Material, Mount};
 use crate::contact::Hertz;
 use crate::error::SceneError;
+use crate::units::{m_to_um, nm_text, um_pair_text, um_text};
 use rand::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
 
@@ -113,11 +114,11 @@ impl Scene {
 
     /// Checks every field; the error names the first bad field in user units.
     pub fn validate(&self) -> Result<(), SceneError> {
-        let um = 1e6;
+        let um = um_text;
         if !(self.sphere_radius.is_finite() && self.sphere_radius > 0.0) {
             return Err(SceneError::invalid(
                 "sphere_diameter_um",
-                2.0 * self.sphere_radius * um,
+                um(2.0 * self.sphere_radius),
                 "must be a positive number",
             ));
         }
@@ -125,7 +126,7 @@ impl Scene {
             if !(r.is_finite() && r > 0.0) {
                 return Err(SceneError::invalid(
                     "slider.sphere_diameter_um",
-                    2.0 * r * um,
+                    um(2.0 * r),
                     "must be a positive number",
                 ));
             }
@@ -136,7 +137,7 @@ impl Scene {
         if !(self.slider.radius.is_finite() && self.slider.radius >= 0.0) {
             return Err(SceneError::invalid(
                 "slider.radius_um",
-                self.slider.radius * um,
+                um(self.slider.radius),
                 "must be a non-negative number",
             ));
         }
@@ -150,7 +151,7 @@ impl Scene {
         if !self.slider.offset.iter().all(|v| v.is_finite()) {
             return Err(SceneError::invalid(
                 "slider.offset_um",
-                format!("{:?}", self.slider.offset.map(|v| v * um)),
+                um_pair_text(self.slider.offset),
                 "must be finite",
             ));
         }
@@ -158,7 +159,7 @@ impl Scene {
         if !(lx.is_finite() && ly.is_finite() && lx > 0.0 && ly > 0.0) {
             return Err(SceneError::invalid(
                 "substrate.size_um",
-                format!("{}x{}", lx * um, ly * um),
+                format!("{}x{}", um(lx), um(ly)),
                 "both sides must be positive",
             ));
         }
@@ -166,7 +167,7 @@ impl Scene {
         if !(sh.is_finite() && sh >= 0.0) {
             return Err(SceneError::invalid(
                 "substrate.sigma_h_um",
-                sh * um,
+                um(sh),
                 "must be a non-negative number",
             ));
         }
@@ -174,21 +175,21 @@ impl Scene {
         if sh >= r_min {
             return Err(SceneError::invalid(
                 "substrate.sigma_h_um",
-                sh * um,
-                &format!("must be smaller than the sphere radius {} µm", r_min * um),
+                um(sh),
+                &format!("must be smaller than the sphere radius {} µm", um(r_min)),
             ));
         }
         self.slider.mount.validate("slider.tilt")?;
         if self.slider.radius > 0.5 * lx.min(ly) {
             return Err(SceneError::invalid(
                 "slider.radius_um",
-                self.slider.radius * um,
+                um(self.slider.radius),
                 &format!(
                     "the slider disc (diameter {} µm) does not fit on the {}x{} µm substrate; \
                      use a smaller slider or a larger substrate (substrate.size_um)",
-                    2.0 * self.slider.radius * um,
-                    lx * um,
-                    ly * um
+                    um(2.0 * self.slider.radius),
+                    um(lx),
+                    um(ly)
                 ),
             ));
         }
@@ -196,11 +197,11 @@ impl Scene {
         if ox.abs() > 0.5 * lx || oy.abs() > 0.5 * ly {
             return Err(SceneError::invalid(
                 "slider.offset_um",
-                format!("[{}, {}]", ox * um, oy * um),
+                um_pair_text([ox, oy]),
                 &format!(
                     "slider centre is not over the {}x{} µm substrate",
-                    lx * um,
-                    ly * um
+                    um(lx),
+                    um(ly)
                 ),
             ));
         }
@@ -221,14 +222,13 @@ impl Scene {
         let over_y = (oy.abs() + r - 0.5 * ly).max(0.0);
         if over_x > 0.0 || over_y > 0.0 {
             Some(format!(
-                "the slider (radius {} µm at offset [{}, {}] µm) hangs {:.3} µm over the edge of \
+                "the slider (radius {} µm at offset {} µm) hangs {:.3} µm over the edge of \
                  the {}x{} µm substrate: edge effects, not the periodic interface",
-                r * 1e6,
-                ox * 1e6,
-                oy * 1e6,
-                over_x.max(over_y) * 1e6,
-                lx * 1e6,
-                ly * 1e6
+                um_text(r),
+                um_pair_text([ox, oy]),
+                m_to_um(over_x.max(over_y)),
+                um_text(lx),
+                um_text(ly)
             ))
         } else {
             None
@@ -299,7 +299,8 @@ impl Scene {
     }
 
     /// Checks that a Bravais lattice (no basis, no site file replacing it) keeps its spheres
-    /// apart: nearest sites at least one sphere diameter apart (relative 1e-9), for user scenes
+    /// apart: nearest sites at least one sphere diameter apart (within the relative
+    /// [`pattern::TOUCH_TOL`], 1e-6), for user scenes
     /// ([`crate::SceneFile::into_scene`]; a test may build denser rails on purpose). Errors
     /// name `slider.lattice` / `substrate.lattice`. O(1).
     pub fn check_lattice_spacing(&self) -> Result<(), SceneError> {
@@ -323,13 +324,14 @@ impl Scene {
             ),
         ] {
             let s = l.min_spacing();
-            if basis.len() <= 1 && sites.is_none() && s < d * (1.0 - 1e-9) {
+            if basis.len() <= 1 && sites.is_none() && pattern::overlaps(s, d) {
                 return Err(SceneError::invalid(
                     field,
-                    format!("{:.6} µm nearest-site spacing", s * 1e6),
+                    format!("{} µm nearest-site spacing", um_text(s)),
                     &format!(
-                        "spheres of diameter {} µm on it overlap: give a spacing of at least the sphere diameter",
-                        d * 1e6
+                        "spheres of diameter {} µm on it overlap by {} nm: give a spacing of at least the sphere diameter",
+                        um_text(d),
+                        nm_text(d - s)
                     ),
                 ));
             }
@@ -382,7 +384,10 @@ impl Scene {
                         return Err(SceneError::invalid(
                             field,
                             &l.path,
-                            &format!("diameter_um = {} must be a positive number", 2e6 * r),
+                            &format!(
+                                "diameter_um = {} must be a positive number",
+                                um_text(2.0 * r)
+                            ),
                         ));
                     }
                     l.check_overlap_sized(field)?

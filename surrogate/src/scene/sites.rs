@@ -1,9 +1,9 @@
 //! [`SiteList`]: sphere sites read from a site file (`slider.sites`, `substrate.sites`), with
 //! per-site sphere diameters where the file's `diameter_um` column gives them.
 
-use super::pattern::snap_um;
+use super::pattern::{overlaps, snap_um};
 use crate::error::SceneError;
-use crate::units::um_to_m;
+use crate::units::{nm_text, um_pair_text, um_text, um_to_m};
 use serde::{Deserialize, Serialize};
 
 /// Sphere sites read from a site file (m): slider sites relative to the slider centre,
@@ -175,7 +175,7 @@ impl SiteList {
     }
 
     /// Checks no two spheres of per-site radii `radii` overlap: centre distance < r_i + r_j
-    /// (relative 1e-9); the error names both file lines and both diameters. Sweep over x with
+    /// (beyond the relative [`super::pattern::TOUCH_TOL`], 1e-6); the error names both file lines and both diameters. Sweep over x with
     /// the largest diameter as the window (`first_overlap`): O(N log N + close
     /// pairs).
     pub fn check_overlap_sized(&self, field: &str) -> Result<(), SceneError> {
@@ -190,20 +190,22 @@ impl SiteList {
                 a,
                 b,
                 &format!(
-                    "spheres at {:?} µm (diameter {} µm) and {:?} µm (diameter {} µm) overlap: centre distance {:.6} µm < radius sum {} µm",
-                    um2(self.sites[a]),
-                    2e6 * radii[a],
-                    um2(self.sites[b]),
-                    2e6 * radii[b],
-                    dist * 1e6,
-                    (radii[a] + radii[b]) * 1e6
+                    "spheres at {} µm (diameter {} µm) and {} µm (diameter {} µm) overlap by {} nm: centre distance {} µm < radius sum {} µm",
+                    um_pair_text(self.sites[a]),
+                    um_text(2.0 * radii[a]),
+                    um_pair_text(self.sites[b]),
+                    um_text(2.0 * radii[b]),
+                    nm_text(radii[a] + radii[b] - dist),
+                    um_text(dist),
+                    um_text(radii[a] + radii[b])
                 ),
             )),
         }
     }
 
     /// The first overlapping pair (a < b, centre distance) of spheres of radius `radius(i)`
-    /// (m): centre distance < r_a + r_b (relative 1e-9), by a sweep over x whose window
+    /// (m): centre distance < r_a + r_b (beyond the relative 1e-6 of
+    /// [`super::pattern::TOUCH_TOL`]), by a sweep over x whose window
     /// `window` (m) is at least the largest radius sum. O(N log N + close pairs).
     fn first_overlap(
         &self,
@@ -221,7 +223,7 @@ impl SiteList {
                 }
                 let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
                 let sum = radius(i) + radius(j);
-                if dx * dx + dy * dy < sum * sum * (1.0 - 1e-9) {
+                if overlaps(dx.hypot(dy), sum) {
                     return Some((i.min(j), i.max(j), dx.hypot(dy)));
                 }
             }
@@ -256,7 +258,8 @@ impl SiteList {
         Self::parse(&text, &shown, field)
     }
 
-    /// Checks no two spheres of diameter `d` (m) overlap (centre distance < d, relative 1e-9);
+    /// Checks no two spheres of diameter `d` (m) overlap (centre distance < d beyond the relative
+    /// [`super::pattern::TOUCH_TOL`], 1e-6);
     /// the error names both file lines. Sweep over x (`first_overlap`):
     /// O(N log N + close pairs).
     pub fn check_overlap(&self, d: f64, field: &str) -> Result<(), SceneError> {
@@ -267,18 +270,14 @@ impl SiteList {
                 a,
                 b,
                 &format!(
-                    "spheres at {:?} and {:?} µm overlap: centre distance {:.6} µm < sphere diameter {} µm",
-                    um2(self.sites[a]),
-                    um2(self.sites[b]),
-                    dist * 1e6,
-                    d * 1e6
+                    "spheres at {} and {} µm overlap by {} nm: centre distance {} µm < sphere diameter {} µm",
+                    um_pair_text(self.sites[a]),
+                    um_pair_text(self.sites[b]),
+                    nm_text(d - dist),
+                    um_text(dist),
+                    um_text(d)
                 ),
             )),
         }
     }
-}
-
-/// A position (m) in µm.
-fn um2(v: [f64; 2]) -> [f64; 2] {
-    [v[0] * 1e6, v[1] * 1e6]
 }
