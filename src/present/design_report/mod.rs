@@ -231,6 +231,10 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
                 m.theta_points,
                 m.nominal,
                 (p.theta_tol_deg, p.direction_tol_deg),
+                (
+                    surrogate::units::pa_to_gpa(pr.scene.scene.coating.p_crit),
+                    p.mu_superlubric,
+                ),
             )
         });
     }
