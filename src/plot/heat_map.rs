@@ -96,8 +96,8 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             .y_desc(&map.y_label)
             .label_style((FONT, 18))
             .axis_desc_style((FONT, 20))
-            .x_label_formatter(&|v| format!("{v:.px$}"))
-            .y_label_formatter(&|v| format!("{v:.py$}"))
+            .x_label_formatter(&|v| tick(*v, px))
+            .y_label_formatter(&|v| tick(*v, py))
             .draw()
             .map_err(perr("heat map axes"))?;
         let mut tiles = Vec::with_capacity(ni * nj);

@@ -266,10 +266,14 @@ pub fn limit_chart(o: &DesignOutcome, rows: &[PatternRow]) -> Chart {
 }
 
 /// The chart of patterns that are not one family: every curve as markers (no line suggests a
-/// continuous parameter between them).
+/// continuous parameter between them), the nominal limits as rings around them.
 fn points_only(c: &mut Chart) {
     for k in &mut c.curves {
-        k.style = Style::Markers;
+        k.style = if k.name.starts_with("nominal") {
+            Style::Rings
+        } else {
+            Style::Markers
+        };
     }
     c.title
         .push_str(" (separate patterns: points, not a family curve)");
@@ -516,7 +520,10 @@ mod tests {
         assert!(c.x_label.contains("γ"), "{}", c.x_label);
         assert!(c.curves.iter().any(|k| k.style != Style::Markers));
         points_only(&mut c);
-        assert!(c.curves.iter().all(|k| k.style == Style::Markers));
+        assert!(c
+            .curves
+            .iter()
+            .all(|k| matches!(k.style, Style::Markers | Style::Rings)));
         assert!(c.title.contains("not a family"));
     }
 }
