@@ -227,7 +227,7 @@ fn the_answer_table_matches_the_csvs_and_its_commands_run_the_answer() {
         &std::fs::read_to_string(out.join("answer_square-tri/slide.json")).unwrap(),
     )
     .unwrap();
-    let w = numbers(&slide[slide.iter().position(|w| *w == "--load-mn").unwrap() + 1])[0];
+    let w = numbers(slide[slide.iter().position(|w| *w == "--load-mn").unwrap() + 1])[0];
     let run = centre
         .iter()
         .find(|r| num(r, "load_mN") == w)
