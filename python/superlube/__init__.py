@@ -148,8 +148,9 @@ def friction(scene: SceneLike = None, *, progress: Any = None, threads: Optional
     terms on the quasi-static path).
 
     Options: those of ``superlube friction --help`` in snake case (``theta_deg``,
-    ``alpha_deg``, ``load_mN``, …). Returns the friction CSV as a DataFrame (one row per
-    θ, α, load).
+    ``alpha_deg``, ``load_mN``, ``mu_superlubric``, …). Returns the friction CSV as a
+    DataFrame (one row per θ, α, load), with its ``verdict`` column (``superlubric``,
+    ``borderline`` or ``not`` at the row's own θ, α and load, by ``design``'s rule).
     """
     return _table("friction", scene, options, progress, threads)
 

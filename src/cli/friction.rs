@@ -44,8 +44,17 @@ pub struct Args {
     line_deg: Option<f64>,
     #[command(flatten)]
     knobs: FrictionKnobArgs,
+    /// Friction coefficient below which a row can be superlubric: the threshold of each row's
+    /// `verdict` (superlubric, borderline or not, by `design`'s rule and band).
+    #[arg(
+        long = "mu-superlubric",
+        value_name = "MU",
+        default_value_t = 0.02,
+        allow_hyphen_values = true
+    )]
+    mu_superlubric: f64,
     /// Output CSV, one row per (θ, α, W), θ outer: `pattern,theta_deg,alpha_deg,load_mN,mu_est,
-    /// p_max_GPa,failed_fraction,…` (units in the names; docs/commands/friction.md), streamed
+    /// p_max_GPa,failed_fraction,…,verdict,error` (units in the names; docs/commands/friction.md), streamed
     /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent. Rows with
     /// mount_resonance = true (contacts fail and the `--tilt springs` mount's tilt mode is tuned
     /// to the stuck contact pairs' lateral mode, on a smooth substrate; the run prints the band
@@ -92,6 +101,7 @@ pub fn prepare(a: Args) -> Result<Prepared> {
     let loads = checks::loads(&a.load_mn)?;
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
+    let mu_superlubric = checks::positive(a.mu_superlubric, "--mu-superlubric")?;
     let sc = a.scene.resolve(None)?;
     checks::line_for(&sc.scene, line)?;
     let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {
@@ -104,6 +114,7 @@ pub fn prepare(a: Args) -> Result<Prepared> {
         loads,
         line,
         knobs,
+        mu_superlubric,
     };
     let run = a.sweep.run(
         Sweep {
@@ -147,7 +158,7 @@ fn execute(p: Prepared) -> Result<()> {
         Inputs {
             workflow: "friction".into(),
             scene: Some(recorded),
-            params: record::friction(&params),
+            params: record::friction(&params, sc.scene.coating.p_crit),
         },
         sc.warnings.clone(),
     );

@@ -245,6 +245,10 @@ pub fn run(a: Args) -> Result<()> {
             params.theta_offsets_deg.len(),
             (theta_deg, direction_deg),
             (theta_tol, direction_tol),
+            (
+                surrogate::units::pa_to_gpa(solver.scene().coating.p_crit),
+                params.limit.mu_superlubric,
+            ),
         )
     });
     if let Some(r) = nominal {

@@ -17,6 +17,9 @@ pub enum Style {
     LinePoints,
     /// Large filled markers only (e.g. DEM results).
     Markers,
+    /// Open rings, larger than the markers (a second value at the same points stays visible
+    /// around a marker).
+    Rings,
 }
 
 /// One curve of a [`Chart`].
@@ -167,6 +170,12 @@ pub fn chart_png(path: &Path, chart: &Chart) -> Result<()> {
                     .map_err(perr("markers"))?
                     .label(&c.name)
                     .legend(move |(x, y)| Circle::new((x + 11, y), 6, col.filled()));
+                }
+                Style::Rings => {
+                    ch.draw_series(pts.iter().map(|&p| Circle::new(p, 12, col.stroke_width(3))))
+                        .map_err(perr("rings"))?
+                        .label(&c.name)
+                        .legend(move |(x, y)| Circle::new((x + 11, y), 6, col.stroke_width(2)));
                 }
             }
         }

@@ -45,7 +45,8 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
             (a.min(v), b.max(v))
         });
-    let span = if hi > lo { hi - lo } else { 1.0 };
+    let (lo, hi) = bar_range(lo, hi);
+    let span = hi - lo;
     let pt = |i: f64, j: f64| {
         (
             map.origin[0] + i * map.da[0] + j * map.db[0],
@@ -95,8 +96,8 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             .y_desc(&map.y_label)
             .label_style((FONT, 18))
             .axis_desc_style((FONT, 20))
-            .x_label_formatter(&|v| format!("{v:.px$}"))
-            .y_label_formatter(&|v| format!("{v:.py$}"))
+            .x_label_formatter(&|v| tick(*v, px))
+            .y_label_formatter(&|v| tick(*v, py))
             .draw()
             .map_err(perr("heat map axes"))?;
         let mut tiles = Vec::with_capacity(ni * nj);
@@ -138,6 +139,26 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
     })
 }
 
+/// The colour bar's range for values in `[lo, hi]`: itself, or around a single value a narrow
+/// bar (±1 %, at least ±0.001) whose middle colour is that value and whose ticks name it.
+pub(crate) fn bar_range(lo: f64, hi: f64) -> (f64, f64) {
+    if hi > lo {
+        (lo, hi)
+    } else {
+        let h = (lo.abs() * 0.01).max(1e-3);
+        (lo - h, lo + h)
+    }
+}
+
+/// A tick label with `prec` decimals, never `-0.0` (a tick at −1e-17 is 0).
+pub(crate) fn tick(v: f64, prec: usize) -> String {
+    let s = format!("{v:.prec$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
 /// Draws a vertical viridis colour bar for `[lo, hi]` with a label into `area`, `margin_top`
 /// pixels below its top (to line up with the chart next to it).
 pub(crate) fn colour_bar<DB: DrawingBackend>(
@@ -147,7 +168,7 @@ pub(crate) fn colour_bar<DB: DrawingBackend>(
     label: &str,
     margin_top: u32,
 ) -> Result<()> {
-    let hi_v = if hi > lo { hi } else { lo + 1.0 };
+    let (lo, hi_v) = bar_range(lo, hi);
     // Enough decimals to tell ticks apart: span 88 → 0, 5.7 → 1, 0.3 → 2.
     let prec = (1.0 - (hi_v - lo).log10().floor()).clamp(0.0, 4.0) as usize;
     let mut bar = ChartBuilder::on(area)
@@ -163,7 +184,7 @@ pub(crate) fn colour_bar<DB: DrawingBackend>(
         .y_desc(label)
         .label_style((FONT, 17))
         .axis_desc_style((FONT, 19))
-        .y_label_formatter(&|v| format!("{v:.prec$}"))
+        .y_label_formatter(&|v| tick(*v, prec))
         .draw()
         .map_err(perr("colour bar axis"))?;
     let steps = 200;
@@ -177,4 +198,15 @@ pub(crate) fn colour_bar<DB: DrawingBackend>(
     }))
     .map_err(perr("colour bar"))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn ticks_never_read_minus_zero() {
+        assert_eq!(super::tick(-1e-17, 1), "0.0");
+        assert_eq!(super::tick(-0.04, 1), "0.0");
+        assert_eq!(super::tick(-0.06, 1), "-0.1");
+        assert_eq!(super::tick(1.75, 2), "1.75");
+    }
 }

@@ -7,7 +7,9 @@
 //! ([`surrogate::friction::estimate_friction_loads`], bit-identical to one estimate per load).
 //! Items run one after the other, each parallel over its path segments (rayon), so the output is
 //! the same whatever the thread count. α is measured from the slider's contact line at each θ
-//! (the moiré estimate, or the `line` given), as in `corrugation` and `slide`.
+//! (the moiré estimate, or the `line` given), as in `corrugation` and `slide`. Every row carries
+//! its verdict at its own (θ, α, W) by the rule `design` applies at each sample
+//! ([`crate::study::verdict::Verdict::of_row`]).
 
 use super::corrugation::{contact_line, LineChoice};
 use super::rows::FrictionRow;
@@ -39,6 +41,9 @@ pub struct FrictionSweepParams {
     pub line: Option<f64>,
     /// The estimate's knobs (path, step, stiffnesses).
     pub knobs: FrictionParams,
+    /// μ below which a row can be superlubric (study: 0.02): the threshold of each row's
+    /// `verdict` ([`crate::study::verdict::Verdict::of_row`], with the scene's P_crit).
+    pub mu_superlubric: f64,
 }
 
 impl FrictionSweepParams {
@@ -173,7 +178,8 @@ pub fn friction(
         let line = line_at(scene, theta, p.line).angle;
         let est = estimate_friction_loads(&solver, theta, line + alpha, &p.loads, &p.knobs)?;
         for (&w, r) in p.loads.iter().zip(&est) {
-            let row = FrictionRow::new(&scene.pattern, theta, alpha, line, w, r);
+            let row = FrictionRow::new(&scene.pattern, theta, alpha, line, w, r)
+                .judged(p.mu_superlubric, scene.coating.p_crit);
             stats.rows += 1;
             stats.failures += !row.error.is_empty() as u64;
             rows.push(&row)?;

@@ -10,7 +10,7 @@ use super::rows::{clean, label};
 use super::screen::ScreenParams;
 use serde_json::{json, Value};
 use sha2::{Digest, Sha256};
-use surrogate::units::{m_to_um, n_to_mn, rad_to_deg, s_to_us};
+use surrogate::units::{m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, s_to_us};
 
 /// Longest axis written out value by value; longer ones are recorded as count, first, last and
 /// the sha256 of their values (still exact for the hash, without a 100 MB sidecar).
@@ -104,8 +104,9 @@ pub fn friction_knobs(k: &surrogate::friction::FrictionParams) -> Value {
     })
 }
 
-/// `friction`: θ, α (degrees) and W (mN) axes, contact line, the estimate's knobs.
-pub fn friction(p: &FrictionSweepParams) -> Value {
+/// `friction`: θ, α (degrees) and W (mN) axes, contact line, the estimate's knobs, and the
+/// rule of the rows' `verdict` against the scene's P_crit `p_crit` (Pa): μ_sl and the band.
+pub fn friction(p: &FrictionSweepParams, p_crit: f64) -> Value {
     let t: Vec<f64> = p.thetas.iter().map(|&t| label(rad_to_deg(t))).collect();
     let a: Vec<f64> = p.alphas.iter().map(|&a| clean(rad_to_deg(a))).collect();
     let w: Vec<f64> = p.loads.iter().map(|&w| label(n_to_mn(w))).collect();
@@ -115,6 +116,21 @@ pub fn friction(p: &FrictionSweepParams) -> Value {
         "load_mN": axis(&w),
         "line_deg": p.line.map(rad_to_deg),
         "friction": friction_knobs(&p.knobs),
+        "verdict": verdict_rule(p.mu_superlubric, p_crit),
+    })
+}
+
+/// The verdict rule of a row's `verdict` column (`src/study/verdict.rs`): μ_sl, P_crit (GPa),
+/// the measured ratios that widen each threshold into the borderline band, and the band in
+/// words.
+pub fn verdict_rule(mu_sl: f64, p_crit: f64) -> Value {
+    use super::verdict::{band_words, MU_RATIO, P_RATIO};
+    json!({
+        "mu_superlubric": mu_sl,
+        "p_crit_GPa": label(pa_to_gpa(p_crit)),
+        "mu_est_over_mu_dem": [MU_RATIO.0, MU_RATIO.1],
+        "dem_over_estimate_p_max": [P_RATIO.0, P_RATIO.1],
+        "band": band_words(mu_sl, p_crit),
     })
 }
 

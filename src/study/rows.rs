@@ -9,7 +9,7 @@
 //! | [`LandscapeRow`] | `landscape --out`, `figures` (landscape_*.csv) | `x_um,y_um,dz_nm` |
 //! | [`LandscapeZRow`] | `landscape --shard i/n --out` (a shard, merged by `superlube merge`), the landscape's spill file | `x_um,y_um,z_um` (z exact, see [`exact_um`]) |
 //! | [`CorrugationRow`] | `corrugation --out`, `figures` (corrugation_square-tri.csv) | `theta_deg,load_mN,line_deg,alpha_deg,direction_deg,corrugation_nm,max_lateral_force_mN` |
-//! | [`FrictionRow`] | `friction --out`, `design` (`friction_<pattern>.csv`) | `pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,mu_coating,mu_corrugation,mu_quasi_static,mu_est_spread,eta,barrier_pJ,max_lateral_force_mN,p_max_mean_GPa,contacts_mean,k_spring_N_m,line_deg,direction_deg,path_length_um,path_step_um,samples,periodic,slips,transverse_offset_um,tilt_pair_ratio,mount_resonance,error` |
+//! | [`FrictionRow`] | `friction --out`, `design` (`friction_<pattern>.csv`) | `pattern,theta_deg,alpha_deg,load_mN,mu_est,p_max_GPa,failed_fraction,mu_coating,mu_corrugation,mu_quasi_static,mu_est_spread,eta,barrier_pJ,max_lateral_force_mN,p_max_mean_GPa,contacts_mean,k_spring_N_m,line_deg,direction_deg,path_length_um,path_step_um,samples,periodic,slips,transverse_offset_um,tilt_pair_ratio,mount_resonance,verdict,error` (`verdict`: `friction`, `design`) |
 //! | [`DemSample`] | `equilibrate --out`, `slide --out` | `t_us,support_x_um,spring_force_mN,z_um,contacts,p_max_GPa,failed_contacts,p_max_peak_GPa` |
 //! | [`EquilibrateReport`], [`SlideReport`] | `equilibrate --json`, `slide --json` | JSON objects (keys documented on the fields) |
 //! | [`BatchRow`] | `slide --out-dir DIR` (`DIR/runs.csv`), `figures --friction` (`runs.csv`) | `name,pattern,theta_deg,alpha_deg,load_mN,sigma_h_um,seed,E_GPa,p_crit_GPa,mu1,mu2,mu_constant,mount,model_requested,model,rigid_z,equilibrate_us,relax_us,slide_us,speed_m_s,dt_us,friction_mN,friction_std_mN,mu,mean_contacts,max_p_max_GPa,mean_failed_contacts,locked_in,advance_ratio,steps,wall_s,status,error` |
@@ -393,11 +393,24 @@ pub struct FrictionRow {
     /// `true` where the ratio lies in the measured resonance band (0.6–1.15) and contacts fail
     /// along the path: μ_est may be an upper bound there (the DEM measured up to 2.8× lower).
     pub mount_resonance: Option<bool>,
+    /// The verdict at this row's own (θ, α, W) ([`crate::study::verdict::Verdict::of_row`]:
+    /// `superlubric`, `borderline` or `not`), set where the row is written
+    /// ([`FrictionRow::judged`]); absent (no column) in the stage files.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<crate::study::verdict::Verdict>,
     /// Empty, or why this configuration has no estimate.
     pub error: String,
 }
 
 impl FrictionRow {
+    /// This row with its [`verdict`](FrictionRow::verdict) against μ_sl `mu_sl` and P_crit
+    /// `p_crit` (Pa): the rule `design` and `tolerance` apply at each sample
+    /// ([`crate::study::verdict::Verdict::of_row`]). Cost: a few comparisons.
+    pub fn judged(mut self, mu_sl: f64, p_crit: f64) -> FrictionRow {
+        self.verdict = Some(crate::study::verdict::Verdict::of_row(&self, mu_sl, p_crit));
+        self
+    }
+
     /// The row of (θ rad, α rad from the contact line `line` rad, W N) from the estimate.
     pub fn new(
         pattern: &str,
@@ -435,6 +448,7 @@ impl FrictionRow {
             transverse_offset_um: None,
             tilt_pair_ratio: None,
             mount_resonance: None,
+            verdict: None,
             error: String::new(),
         };
         match r {

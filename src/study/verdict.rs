@@ -180,6 +180,57 @@ mod tests {
         assert_eq!(Verdict::Borderline.to_string(), "borderline");
     }
 
+    /// A judged row's CSV is the unjudged row's, byte for byte, with one `verdict` column
+    /// before `error`; its verdict is [`Verdict::of_row`]'s; JSON without a verdict has no key.
+    #[test]
+    fn a_judged_row_adds_only_its_verdict_column() {
+        let row = |mu: f64, p: f64| {
+            let mut r = FrictionRow::new(
+                "square-tri",
+                0.1,
+                0.2,
+                0.3,
+                1e-3,
+                &Err(surrogate::SceneError::invalid("x", 0.0, "y")),
+            );
+            r.error.clear();
+            r.mu_est = Some(mu);
+            r.p_max_GPa = Some(p);
+            r
+        };
+        let plain = vec![row(0.010, 3.0), row(0.018, 3.0), row(0.03, 3.0)];
+        let judged: Vec<FrictionRow> = plain.iter().map(|r| r.clone().judged(0.02, 4e9)).collect();
+        let words: Vec<Verdict> = judged.iter().map(|r| r.verdict.unwrap()).collect();
+        assert_eq!(
+            words,
+            vec![Verdict::Superlubric, Verdict::Borderline, Verdict::Not]
+        );
+        for (a, b) in plain.iter().zip(&judged) {
+            assert_eq!(Some(Verdict::of_row(a, 0.02, 4e9)), b.verdict);
+        }
+        let text = |rows: &[FrictionRow]| {
+            String::from_utf8(crate::runs::sink::csv_bytes(rows).unwrap()).unwrap()
+        };
+        let (before, after) = (text(&plain), text(&judged));
+        let header: Vec<&str> = after.lines().next().unwrap().split(',').collect();
+        let k = header.iter().position(|c| *c == "verdict").unwrap();
+        assert_eq!(header[k + 1], "error");
+        assert_eq!(header.len(), k + 2);
+        let dropped: String = after
+            .lines()
+            .map(|l| {
+                let mut v: Vec<&str> = l.split(',').collect();
+                v.remove(k);
+                v.join(",") + "\n"
+            })
+            .collect();
+        assert_eq!(dropped, before);
+        assert!(after.contains(",superlubric,\n") && after.contains(",borderline,\n"));
+        assert!(!serde_json::to_string(&plain[0])
+            .unwrap()
+            .contains("verdict"));
+    }
+
     #[test]
     fn a_dem_run_is_superlubric_only_below_every_threshold() {
         let run = |mu: f64, p_gpa: f64, locked_in: bool| SlideResult {

@@ -30,6 +30,7 @@ pub fn theta_text(v: &[f64]) -> String {
     list
 }
 
+/// The design's loads (mN), comma separated (a `--load-mn` value).
 pub fn loads_text(p: &DesignParams) -> String {
     p.loads
         .iter()
@@ -60,7 +61,7 @@ pub fn protocol_flags(p: &DesignParams, study: bool) -> String {
 }
 
 /// ` --line-deg L` when the design fixes the contact line, else nothing.
-fn line_flag(p: &DesignParams) -> String {
+pub fn line_flag(p: &DesignParams) -> String {
     p.line
         .map_or(String::new(), |l| format!(" --line-deg {}", rad_to_deg(l)))
 }
@@ -94,7 +95,7 @@ pub fn corrugation_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) 
 /// `superlube friction …` reproducing the friction estimates of the best α's of `e`.
 pub fn friction_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) -> String {
     format!(
-        "superlube friction {} --theta {} --alpha {} --load-mn {}{} --length-um {} --max-period-um {} --step-um {} --transient-um {} --k0-n-m {} --transverse-um {}",
+        "superlube friction {} --theta {} --alpha {} --load-mn {}{} --length-um {} --max-period-um {} --step-um {} --transient-um {} --k0-n-m {} --transverse-um {} --mu-superlubric {}",
         flags(pr),
         e.eval.theta_deg,
         e.eval
@@ -110,7 +111,8 @@ pub fn friction_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) -> 
         label(m_to_um(p.friction.step)),
         label(m_to_um(p.friction.transient)),
         p.friction.k0,
-        label(m_to_um(p.friction.transverse))
+        label(m_to_um(p.friction.transverse)),
+        p.mu_superlubric
     )
 }
 

@@ -5,7 +5,8 @@
 use super::commands::slide_command;
 use super::commands::{corrugation_command, friction_command, loads_text, screen_command};
 use super::rows::{dem_rows, DemRow};
-use super::words::{answer_line, fmt_g, opt, protocol_words, which_design};
+use super::top::{angle, angle_decimals};
+use super::words::{fmt_g, opt, protocol_words, which_design};
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams};
 use crate::study::friction::resonance_note;
 use crate::study::rows::label;
@@ -21,8 +22,17 @@ pub struct ReportData {
     pub loads_mn: String,
     /// The superlubric limit on μ.
     pub mu_superlubric: String,
-    /// The answer of each pattern (a Markdown list item, [`answer_line`]).
+    /// The answer table: one row per pattern ([`super::top::top_rows`]).
+    pub top: Vec<super::top::TopRow>,
+    /// One short paragraph per pattern's answer ([`super::top::paragraph`]).
     pub answers: Vec<String>,
+    /// How to run each answer: its scene file and commands ([`super::top::answer_runs`]).
+    pub runs: Vec<super::top::AnswerRun>,
+    /// The fabrication tolerance in words (`θ ±0.1° × pull direction ±0.5°`; empty without one).
+    pub tolerance: String,
+    /// Largest measured μ_est/μ_DEM of a mount in resonance
+    /// ([`surrogate::friction::RESONANCE_DROP_MAX`]).
+    pub resonance_drop: String,
     /// The patterns with a tolerance map around their answer (`tolerance_<p>.png`).
     pub maps: Vec<String>,
     /// The patterns side by side (`patterns.csv`), when more than one was designed.
@@ -239,7 +249,7 @@ fn verdict_word(v: Option<bool>) -> &'static str {
     }
 }
 
-fn dem_line(d: &DemRow) -> DemLine {
+fn dem_line(d: &DemRow, dec: usize) -> DemLine {
     let verdict = |v: Option<bool>| match v {
         Some(true) => "superlubric",
         Some(false) => "not",
@@ -248,8 +258,8 @@ fn dem_line(d: &DemRow) -> DemLine {
     DemLine {
         pattern: d.pattern.clone(),
         rank: d.rank,
-        theta_deg: format!("{}", d.theta_deg),
-        alpha_deg: format!("{}", d.alpha_deg),
+        theta_deg: angle(d.theta_deg, dec),
+        alpha_deg: angle(d.alpha_deg, dec),
         corner: if d.theta_offset_deg == 0.0 && d.direction_offset_deg == 0.0 {
             "–".to_string()
         } else {
@@ -316,7 +326,7 @@ fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> DemSectio
         model: p.dem_words.clone(),
         checks,
         unmeasured: study.is_empty() && !p.dem_is_study_protocol,
-        rows: dem.iter().map(dem_line).collect(),
+        rows: dem.iter().map(|d| dem_line(d, angle_decimals(p))).collect(),
         agree: dem
             .iter()
             .filter(|d| d.verdicts_agree == Some(true))
@@ -395,7 +405,6 @@ impl ReportData {
     pub fn new(o: &DesignOutcome, p: &DesignParams) -> Self {
         // the patterns side by side, once (a slider site list per pattern)
         let pats = (o.patterns.len() > 1).then(|| super::patterns::pattern_rows(o));
-        let w_top = label(n_to_mn(*p.loads.last().unwrap_or(&0.0)));
         let dem = dem_rows(o, p);
         let has_dem = o.dem_ran && !dem.is_empty();
         let ranking = o
@@ -542,12 +551,23 @@ impl ReportData {
                 .join(", "),
             loads_mn: loads_text(p),
             mu_superlubric: format!("{}", p.mu_superlubric),
+            top: super::top::top_rows(o, p, &dem),
             answers: o
                 .patterns
                 .iter()
                 .zip(&o.answers)
-                .map(|(pr, a)| answer_line(pr, a, &dem, p, w_top))
+                .map(|(pr, a)| super::top::paragraph(pr, a, p))
                 .collect(),
+            runs: super::top::answer_runs(o, p),
+            tolerance: if tolerance_box(p).is_point() {
+                String::new()
+            } else {
+                format!(
+                    "θ ±{}° × pull direction ±{}°",
+                    p.theta_tol_deg, p.direction_tol_deg
+                )
+            },
+            resonance_drop: format!("{}", surrogate::friction::RESONANCE_DROP_MAX),
             maps: o
                 .patterns
                 .iter()

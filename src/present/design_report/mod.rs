@@ -4,7 +4,8 @@
 //!
 //! | file | content |
 //! |---|---|
-//! | `report.md` | the answer per pattern, how sure (DEM vs estimate), ranking, shortlist, wall times, reproduction commands: `report.md.j2` over [`ReportData`] |
+//! | `report.md` | the answer table (a row per pattern) and a paragraph per answer, how to run each answer, how to read it, how sure (DEM vs estimate), ranking, shortlist, wall times, reproduction commands: `report.md.j2` over [`ReportData`] |
+//! | `answer_<p>.toml` | each answer's scene with its θ set ([`top::answer_toml`]), run by the report's `slide`, `tolerance` and `export-lammps` commands |
 //! | `ranking.csv` | [`RankingRow`] per candidate, best first within each pattern |
 //! | `shortlist_<p>.csv` | [`ShortlistRow`] per screened θ: coating-intact load, P_max and contacts there, level, kept, evaluated |
 //! | `screen_<p>.csv` | the screen (the `screen` schema; a stage file) |
@@ -29,6 +30,7 @@ pub mod data;
 pub mod pattern_files;
 pub mod patterns;
 pub mod rows;
+pub mod top;
 pub mod words;
 
 pub use data::ReportData;
@@ -231,8 +233,23 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
                 m.theta_points,
                 m.nominal,
                 (p.theta_tol_deg, p.direction_tol_deg),
+                (
+                    surrogate::units::pa_to_gpa(pr.scene.scene.coating.p_crit),
+                    p.mu_superlubric,
+                ),
             )
         });
+    }
+    // each answer's scene, θ set, for the commands the report gives
+    for (pr, a) in o.patterns.iter().zip(&o.answers) {
+        let Some(c) = a.index.and_then(|i| pr.ranking.get(i)) else {
+            continue;
+        };
+        let rel = top::scene_file_name(&pr.scene.name);
+        let toml = top::answer_toml(pr, c);
+        if store.write_if_changed(&mut outs, &rel, Ok(toml.into_bytes()), None) {
+            wrote.push(rel);
+        }
     }
     let md = markdown(o, p)?;
     if store.write_if_changed(&mut outs, "report.md", Ok(md.into_bytes()), None) {
@@ -262,10 +279,30 @@ mod tests {
             patterns: s("square-tri, tri-tri"),
             loads_mn: s("0.01,0.09"),
             mu_superlubric: s("0.02"),
+            top: vec![super::top::TopRow {
+                pattern: s("square-tri"),
+                theta: s("10 ± 0.1"),
+                pull_x: s("146 ± 0.5"),
+                alpha: s("146"),
+                limit_mn: s("0.09"),
+                verdict: s("superlubric"),
+                dem_centre: s("held at 0.09 mN"),
+                dem_corners: s("4 of 4 held at 0.09 mN"),
+                nominal: s("the same design"),
+            }],
             answers: vec![
-                s("- **square-tri**: θ = **10°**"),
-                s("- **tri-tri**: no design"),
+                s("**square-tri**: make the slider at θ = 10°"),
+                s("**tri-tri**: no design"),
             ],
+            runs: vec![super::top::AnswerRun {
+                pattern: s("square-tri"),
+                scene_file: s("answer_square-tri.toml"),
+                slide: s("superlube slide --scene answer_square-tri.toml --alpha 146"),
+                tolerance: s("superlube tolerance --scene answer_square-tri.toml"),
+                export: s("superlube export-lammps --scene answer_square-tri.toml"),
+            }],
+            tolerance: s("θ ±0.1° × pull direction ±0.5°"),
+            resonance_drop: s("2.8"),
             maps: vec![s("square-tri")],
             compared: vec![],
             fairness: String::new(),
@@ -350,10 +387,17 @@ mod tests {
     #[test]
     fn the_template_renders_the_answer_first_and_each_branch() {
         let md = render(&small(false, 2)).unwrap();
-        assert!(md.starts_with("# superlube design: square-tri, tri-tri\n\nLoads 0.01,0.09 mN;"));
+        assert!(md.starts_with("# superlube design: square-tri, tri-tri\n\nLoads 0.01,0.09 mN."));
         assert!(md.contains(
-            "## Answer\n\n- **square-tri**: θ = **10°**\n- **tri-tri**: no design\n\n![square-tri:"
-        ));
+            "## Answer\n\n| pattern | θ (°) | pull from x (°) | pull from contact line α (°) | robust limit (mN) | verdict | DEM at the design | DEM at the box corners | nominal optimum |\n|---|---|---|---|---|---|---|---|---|\n| square-tri | 10 ± 0.1 | 146 ± 0.5 | 146 | 0.09 | superlubric | held at 0.09 mN | 4 of 4 held at 0.09 mN | the same design |\n\n**square-tri**: make the slider at θ = 10°\n\n**tri-tri**: no design\n\n"
+        ), "{md}");
+        assert!(md.contains("**square-tri** (`answer_square-tri.toml`):\n\n```sh\nsuperlube slide --scene answer_square-tri.toml --alpha 146\nsuperlube tolerance --scene answer_square-tri.toml\nsuperlube export-lammps --scene answer_square-tri.toml\n```\n\n![square-tri:"), "{md}");
+        // the definitions once, in "How to read this", linked from the top
+        assert!(md.contains("[How to read this](#how-to-read-this)"));
+        assert_eq!(md.matches("## How to read this\n").count(), 1);
+        assert_eq!(md.matches("borderline = μ_est").count(), 1, "{md}");
+        assert_eq!(md.matches("verdict-band.md").count(), 1, "{md}");
+        assert_eq!(md.matches("tilt mode is tuned").count(), 1, "{md}");
         assert!(
             md.contains("\n\nNot confirmed with the DEM (`--no-dem`)."),
             "{md}"
@@ -412,8 +456,14 @@ mod tests {
             .map(|w| sec.find(w).unwrap_or_else(|| panic!("{w}: {sec}")))
             .collect();
         assert!(at.windows(2).all(|w| w[0] < w[1]), "{sec}");
-        assert!(sec.contains("θ ±0.1° sampled every 0.02°"), "{sec}");
-        assert!(sec.contains("docs/validation/verdict-band.md"), "{sec}");
+        assert!(sec.contains("over the tolerance box"), "{sec}");
+        assert!(
+            sec.contains("[How to read this](#how-to-read-this)"),
+            "{sec}"
+        );
+        let how = &md[md.find("## How to read this").unwrap()..md.find("## How sure").unwrap()];
+        assert!(how.contains("θ ±0.1° sampled every 0.02°"), "{how}");
+        assert!(how.contains("docs/validation/verdict-band.md"), "{how}");
         assert!(!sec.contains("(1) highest load"), "{sec}");
         assert!(sec.contains("| superlubric to, robust (mN) | nominal (mN) | θ window (°) | direction window (°) | verdict |"), "{sec}");
         assert!(
@@ -431,6 +481,7 @@ mod tests {
         );
         d.maps.clear();
         d.sampling.clear();
+        d.tolerance.clear();
         let md = render(&d).unwrap();
         assert!(!md.contains("tolerance_<p>.csv"));
         assert!(md.contains("(no tolerance: 0)"), "{md}");
@@ -474,7 +525,7 @@ mod tests {
         assert!(md.contains(": μ = 0.0105 (short) vs 0.0100 (study protocol): +5.0 %; **the DEM verdicts differ**: not superlubric (short) vs superlubric (study protocol).\n\n"), "{md}");
         assert!(md.contains("\n| square-tri | 1 | 10 | 146 | – | 0.09 | design | 0.0100 | 0.0105 | 0.949 | superlubric / not | 3.19 | 3.00 | locked-in | 1.00 |\n\nVerdicts agree on 0 of 1 runs"), "{md}");
         assert!(md.contains("covers 12 µm where the study's DEM slides 30 µm"));
-        assert!(md.contains("up to 2.8× μ_DEM measured"));
+        assert!(md.contains("up to 2.8× below μ_est"));
         assert!(md.contains("placement): none. every level"), "{md}");
         assert!(!md.contains("Not confirmed with the DEM"));
     }

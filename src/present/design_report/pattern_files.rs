@@ -104,11 +104,13 @@ fn write_pattern(
     if scans_changed {
         wrote.push(rel);
     }
-    // friction
+    // friction, each row with its verdict at its own (θ, α, W) (the rule of every sample)
+    let p_crit = pr.scene.scene.coating.p_crit;
     let fr: Vec<FrictionRow> = pr
         .ranking
         .iter()
         .flat_map(|c| c.friction.iter().cloned())
+        .map(|r| r.judged(p.mu_superlubric, p_crit))
         .collect();
     let rel = format!("friction_{name}.csv");
     if store.write_if_changed(outs, &rel, csv_bytes(&fr), Some(fr.len() as u64)) {

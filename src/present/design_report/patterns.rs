@@ -236,23 +236,47 @@ const MAX_SERIES: usize = 12;
 /// a = |a1|, b = |a2| (µm) or the angle γ between them (°) — else the sphere count. With one
 /// varying parameter, the robust and the nominal limit as two curves; with a second one, one
 /// robust curve per value of it (up to 12, else markers). With a slider from a site file
-/// among the patterns (no lattice), against the sphere count. Cost: one pass over the rows.
+/// among the patterns (no lattice), against the sphere count. Lines join the points only where
+/// the patterns are one family (every one a candidate of `superlube patterns`: `--family`,
+/// `--patterns`); patterns given one by one (`--pattern square-tri,tri-tri`, `--scene …`) are
+/// points, not a curve. Cost: one pass over the rows.
 pub fn limit_chart(o: &DesignOutcome, rows: &[PatternRow]) -> Chart {
-    if o.patterns
+    let family = o.patterns.iter().all(|pr| pr.scene.facts.is_some());
+    let mut c = if o
+        .patterns
         .iter()
         .any(|pr| pr.scene.scene.geometry.slider_sites.is_some())
     {
-        return chart_over(&[], rows);
+        chart_over(&[], rows)
+    } else {
+        // in the rows' order
+        let lat: Vec<([f64; 2], [f64; 2])> = pattern_order(o)
+            .into_iter()
+            .map(|i| {
+                let l = &o.patterns[i].scene.scene.slider.lattice;
+                (l.a1, l.a2)
+            })
+            .collect();
+        chart_over(&lat, rows)
+    };
+    if !family {
+        points_only(&mut c);
     }
-    // in the rows' order
-    let lat: Vec<([f64; 2], [f64; 2])> = pattern_order(o)
-        .into_iter()
-        .map(|i| {
-            let l = &o.patterns[i].scene.scene.slider.lattice;
-            (l.a1, l.a2)
-        })
-        .collect();
-    chart_over(&lat, rows)
+    c
+}
+
+/// The chart of patterns that are not one family: every curve as markers (no line suggests a
+/// continuous parameter between them), the nominal limits as rings around them.
+fn points_only(c: &mut Chart) {
+    for k in &mut c.curves {
+        k.style = if k.name.starts_with("nominal") {
+            Style::Rings
+        } else {
+            Style::Markers
+        };
+    }
+    c.title
+        .push_str(" (separate patterns: points, not a family curve)");
 }
 
 /// [`limit_chart`] over the slider lattice vectors (a1, a2; m) of each row (none: against the
@@ -485,5 +509,21 @@ mod tests {
         assert_eq!(c.x_label, "slider spheres");
         assert_eq!(c.curves[0].style, Style::Markers);
         assert_eq!(c.curves[0].points, vec![(3.0, 2.0), (4.0, 1.0)]);
+    }
+
+    /// Two presets (square and triangular sliders: γ 90° and 60°) are not a family: points,
+    /// no line between them.
+    #[test]
+    fn patterns_of_no_family_are_points() {
+        let tri = ([3e-6, 0.0], [1.5e-6, 3e-6 * 0.75f64.sqrt()]);
+        let mut c = chart_over(&[rect(3.0, 3.0), tri], &[row(9, 1.0), row(8, 2.0)]);
+        assert!(c.x_label.contains("γ"), "{}", c.x_label);
+        assert!(c.curves.iter().any(|k| k.style != Style::Markers));
+        points_only(&mut c);
+        assert!(c
+            .curves
+            .iter()
+            .all(|k| matches!(k.style, Style::Markers | Style::Rings)));
+        assert!(c.title.contains("not a family"));
     }
 }
