@@ -41,6 +41,27 @@ fn main() {
     let threads = rayon::current_num_threads();
     println!("threads {threads}, reps {reps}");
     let load = [mn_to_n(1.75)];
+    if args.iter().any(|a| a == "--tolerance") {
+        // a tolerance-box sample of square-tri 0°/90° with the study's 11 loads
+        let loads: Vec<f64> = [0.35, 0.7, 1.05, 1.4, 1.75, 2.1, 2.45, 2.8, 3.15, 3.5, 3.86]
+            .iter()
+            .map(|w| mn_to_n(*w))
+            .collect();
+        let sc = Scene::preset("square-tri").unwrap();
+        let s = Solver::new(&sc).unwrap();
+        for (th, al) in [(0.0, 90.0), (0.04, 90.25), (-0.1, 89.5)] {
+            let theta = deg_to_rad(th);
+            let dir =
+                contact_line_direction(&sc, theta, &MapParams::default()).angle + deg_to_rad(al);
+            let (dt, n, d) = time(&s, theta, dir, &loads, reps);
+            println!(
+                "square-tri θ {th}° α {al}°, 11 loads: {:.1} µs/sample ({n} samples, {:.2} ms) | {d}",
+                dt / n as f64 * 1e6,
+                dt * 1e3
+            );
+        }
+        return;
+    }
     if args.iter().any(|a| a == "--sizes") {
         for r_um in [100.0, 200.0, 400.0] {
             let mut sc = Scene::preset("square-tri").unwrap();

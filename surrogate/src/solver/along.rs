@@ -23,7 +23,7 @@ const WARM_BAND_DEPTHS: f64 = 5.0;
 
 /// A chunk stops lowering its floor after this many samples that needed every pair, and solves
 /// the rest of its samples on every pair (a commensurate path whose top drops by hundreds of nm).
-const MAX_WIDENINGS: usize = 6;
+const MAX_WIDENINGS: usize = 16;
 
 /// A straight path of slider poses: shifts `origin + s·e` from the scene's placement at
 /// rotation θ.
@@ -157,6 +157,8 @@ impl Solver {
                         let missing: Vec<usize> =
                             (0..loads.len()).filter(|&j| got[j].is_none()).collect();
                         let mut redone = Vec::with_capacity(missing.len());
+                        // the lowest height the full solves of the missed loads relied on
+                        let mut need = f64::INFINITY;
                         if !missing.is_empty() {
                             // every pair, from the same warm start: the answer does not depend
                             // on the list (nor, so, on the other loads or the floor)
@@ -172,6 +174,7 @@ impl Solver {
                                 &mut wm,
                             );
                             for ((&j, eq), wj) in missing.iter().zip(r).zip(wm) {
+                                need = need.min(wj.need);
                                 warm[j] = wj;
                                 redone.push(match eq {
                                     Some(eq) => Ok(f(si, j, eq)),
@@ -191,11 +194,13 @@ impl Solver {
                                 .collect(),
                         );
                         if !missing.is_empty() {
-                            // lower the floor by the cold band, doubling, for the rest (to
-                            // every pair after MAX_WIDENINGS: the list can then miss nothing)
+                            // lower the floor below what the full solve needed, by twice
+                            // the shortfall (the path keeps going down), for the rest; to
+                            // every pair after MAX_WIDENINGS: the list can then miss nothing
                             widenings += 1;
-                            pc.set_floor(if widenings < MAX_WIDENINGS {
-                                floor - band * (1u64 << widenings) as f64
+                            let gap = (floor - need).max(0.0);
+                            pc.set_floor(if widenings < MAX_WIDENINGS && need.is_finite() {
+                                need - gap - 0.25 * band
                             } else {
                                 f64::NEG_INFINITY
                             });

@@ -21,10 +21,6 @@ pub(crate) struct Watch {
     pub guess: Cell<f64>,
     /// The untilted z root last found (m, relative to z_ref; NaN: none).
     pub root: Cell<f64>,
-    /// Warm start `[ζ, L·t_x, L·t_y]` of the tilt Newton (ζ relative to z_ref; NaN: none).
-    pub tilt_guess: Cell<[f64; 3]>,
-    /// The tilted state last found (ζ relative to z_ref; NaN: none).
-    pub tilt_root: Cell<[f64; 3]>,
 }
 
 impl Watch {
@@ -35,8 +31,6 @@ impl Watch {
             lowest: Cell::new(f64::INFINITY),
             guess: Cell::new(f64::NAN),
             root: Cell::new(f64::NAN),
-            tilt_guess: Cell::new([f64::NAN; 3]),
-            tilt_root: Cell::new([f64::NAN; 3]),
         }
     }
 }

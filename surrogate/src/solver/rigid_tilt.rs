@@ -269,16 +269,9 @@ pub(crate) fn tilt_from<L: Law>(
     z0: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
     debug_assert!(ctx.tilts, "tilt model under a locked mount");
-    // a path's previous tilted state where it has one ([`Watch::tilt_guess`]), else rigid-z
-    let start = match ctx.watch.map(|w| w.tilt_guess.get()) {
-        Some(g) if g.iter().all(|v| v.is_finite()) => g,
-        _ => [z0, 0.0, 0.0],
-    };
-    let q = tilt_state(ctx, bp, near, load, start)?;
-    if let Some(w) = ctx.watch {
-        w.tilt_root.set(q.0);
-    }
-    Ok(q)
+    // from the rigid-z state: a path's previous tilted state was measured to start worse
+    // (docs/validation/path-solve.md)
+    tilt_state(ctx, bp, near, load, [z0, 0.0, 0.0])
 }
 
 /// [`tilt_from`] from the state `start`.

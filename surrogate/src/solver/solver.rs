@@ -484,17 +484,13 @@ fn solve_many_partial<L: Law>(
             watch.lowest.set(f64::INFINITY);
             watch.guess.set(warm.z0 - rz.zref);
             watch.root.set(f64::NAN);
-            let t = warm.tilt;
-            watch.tilt_guess.set([t[0] - rz.zref, t[1], t[2]]);
-            watch.tilt_root.set([f64::NAN; 3]);
             let eq = solve_one_of_many(ctx, ps, &rz, w, model);
             let ok = eq.is_ok() && watch.lowest.get() > floor_rel;
             *warm = if ok {
-                let t = watch.tilt_root.get();
                 Warm {
                     z0: rz.zref + watch.root.get(),
                     depth: -watch.root.get(),
-                    tilt: [rz.zref + t[0], t[1], t[2]],
+                    need: rz.zref + watch.lowest.get(),
                 }
             } else {
                 Warm::default()
@@ -505,13 +501,13 @@ fn solve_many_partial<L: Law>(
 }
 
 /// What a path's previous sample knew of one load: the untilted z root (m, absolute; NaN: none),
-/// its depth below the highest touch height (m) and the tilted state.
+/// its depth below the highest touch height (m) and the lowest height it relied on.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Warm {
     pub z0: f64,
     pub depth: f64,
-    /// The tilted state `[z (absolute), L·t_x, L·t_y]` (m; NaN: none).
-    pub tilt: [f64; 3],
+    /// The lowest height (m, absolute) the solve relied on (NaN: none).
+    pub need: f64,
 }
 
 impl Default for Warm {
@@ -519,7 +515,7 @@ impl Default for Warm {
         Warm {
             z0: f64::NAN,
             depth: f64::NAN,
-            tilt: [f64::NAN; 3],
+            need: f64::NAN,
         }
     }
 }
