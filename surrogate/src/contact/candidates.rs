@@ -70,6 +70,20 @@ impl GridSearch {
     }
 }
 
+/// The squared distance (m²) from the point `v` (m) to the segment from `−half` to `+half` (m),
+/// `h2 = |half|²`: the closest a substrate sphere at `v` from a slider sphere comes while the
+/// slider moves by `±half`. O(1).
+#[inline]
+pub(crate) fn swept_distance2(v: [f64; 2], half: [f64; 2], h2: f64) -> f64 {
+    let t = if h2 > 0.0 {
+        ((v[0] * half[0] + v[1] * half[1]) / h2).clamp(-1.0, 1.0)
+    } else {
+        0.0
+    };
+    let w = [v[0] - t * half[0], v[1] - t * half[1]];
+    w[0] * w[0] + w[1] * w[1]
+}
+
 impl GridSearch {
     /// Appends every pair whose lateral distance is below `reach` (m) somewhere on the straight
     /// move of each slider sphere from `p − half` to `p + half` (`p` in `slider_xy`, `half` in
@@ -94,13 +108,7 @@ impl GridSearch {
             self.cells.for_in_box(lo, hi, |k| {
                 let q = self.spheres[k as usize];
                 let v = [q[0] - p[0], q[1] - p[1]];
-                let t = if h2 > 0.0 {
-                    ((v[0] * half[0] + v[1] * half[1]) / h2).clamp(-1.0, 1.0)
-                } else {
-                    0.0
-                };
-                let w = [v[0] - t * half[0], v[1] - t * half[1]];
-                if w[0] * w[0] + w[1] * w[1] < r2max {
+                if swept_distance2(v, half, h2) < r2max {
                     local.push(CandidatePair {
                         slider: si as u32,
                         substrate: k,

@@ -7,6 +7,7 @@ mod cell_list;
 mod hertz;
 
 pub use bvh_search::BvhSearch;
+pub(crate) use candidates::swept_distance2;
 pub use candidates::{CandidatePair, CandidateSearch, GridSearch};
 pub use cell_list::CellList;
 pub use hertz::Hertz;

@@ -89,15 +89,16 @@ pub struct FrictionEstimate {
 /// The path runs parallel to the pull from the scene's placement or, where the slider drifts
 /// off a crest of the landscape across the pull, from the lowest groove beside it
 /// (`friction/transverse.rs`); its samples are solved with [`crate::solver::Model::Auto`] (so
-/// the slider obeys the scene's mount), in parallel (rayon, one candidate search per
-/// `params.segment` of path), deterministically.
-/// Cost: `length/step + 1` equilibria (≈ 61–241 with the defaults; ≈ 0.3–0.5 ms each for the
-/// study's 3505-sphere slider), a tenth of that for the drift check (3 more where it shows a
-/// transverse force, never on a mirror line of the scene, and `transverse/step` more where the
-/// slider drifts); plus O(samples) for the Prandtl–Tomlinson model and, where η > 1,
-/// `params.starts` runs of the inertial model (≈ 1.5 ms each, in parallel). Measured 17–58 ms
-/// per (θ, α, W) (`cargo bench --bench friction`; 24–73 ms on a busier machine). Several loads
-/// of one (θ, direction): [`estimate_friction_loads`] (same results, cheaper).
+/// the slider obeys the scene's mount), continuing from sample to sample
+/// ([`crate::solver::Solver::solve_along_loads`]), in parallel over chunks of path,
+/// deterministically.
+/// Cost: `length/step + 1` equilibria (≈ 61–241 with the defaults), each about a quarter of a
+/// fresh solve's cost (docs/validation/path-solve.md), a tenth of that for the drift check (3
+/// more where it shows a transverse force, never on a mirror line of the scene, and
+/// `transverse/step` more where the slider drifts); plus O(samples) for the Prandtl–Tomlinson
+/// model and, where η > 1, `params.starts` runs of the inertial model (≈ 1.5 ms each, in
+/// parallel). Several loads of one (θ, direction): [`estimate_friction_loads`] (same results,
+/// cheaper).
 ///
 /// Errors: a bad knob (field `friction.*`), non-positive load (`load_mN`), non-finite θ or
 /// direction (`theta_deg`, `alpha_deg`), a path that takes the slider off the substrate

@@ -7,7 +7,9 @@ use super::law::{Law, Own, Shared};
 use super::rigid_tilt::{assemble_tilt, solve_rigid_tilt, tilt_from, NearSet};
 use super::rigid_z::RigidZ;
 use super::{Equilibrium, Model, PairSet, SolverParams};
-use crate::contact::{BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz};
+use crate::contact::{
+    swept_distance2, BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz,
+};
 use crate::error::SceneError;
 use crate::scene::{rotate_tilt_stiffness, Scene};
 use crate::solver::ContactInfo;
@@ -212,14 +214,8 @@ impl Solver {
                 let p = slider_xy[c.slider as usize];
                 let q = self.substrate[c.substrate as usize];
                 let v = [q[0] - p[0], q[1] - p[1]];
-                let t = if h2 > 0.0 {
-                    ((v[0] * half[0] + v[1] * half[1]) / h2).clamp(-1.0, 1.0)
-                } else {
-                    0.0
-                };
-                let w = [v[0] - t * half[0], v[1] - t * half[1]];
                 let d = s.distance(c.slider, c.substrate) + margin;
-                w[0] * w[0] + w[1] * w[1] < d * d
+                swept_distance2(v, half, h2) < d * d
             });
         }
     }

@@ -169,62 +169,44 @@ impl ZRoot {
             ));
         }
         let z_hi0 = self.c_max;
-        let mut z_hi = z_hi0;
-        let mut z_lo;
-        let mut iters = 0;
         let mut act = Vec::new();
-        let too_deep = || {
-            SceneError::NoEquilibrium(format!(
-                "load {load:e} N cannot be carried with overlap below the sphere diameter"
-            ))
+        // Lower bracket: from `anchor`, step down by `w`, doubling, until the pairs touching
+        // above z_lo carry the load (only they can carry any anywhere in [z_lo, z_hi]).
+        let down = |anchor: f64, mut w: f64, mut z_hi: f64, act: &mut Vec<R>| {
+            let mut iters = 0;
+            let mut z_lo = anchor - w;
+            loop {
+                select(all, z_lo, act);
+                let (f, _) = self.eval(act, z_lo);
+                if f >= load {
+                    return Ok((z_lo, z_hi, w, iters));
+                }
+                z_hi = z_lo;
+                w *= 2.0;
+                z_lo = anchor - w;
+                iters += 1;
+                if iters > params.max_iter || z_hi0 - z_lo > self.two_r {
+                    return Err(SceneError::NoEquilibrium(format!(
+                        "load {load:e} N cannot be carried with overlap below the sphere diameter"
+                    )));
+                }
+            }
         };
+        let (mut z_lo, mut z_hi, mut iters);
         match guess.filter(|g| g.is_finite() && *g < z_hi0) {
             None => {
-                // Lower bracket: step down by the overlap one on-top contact needs for W,
-                // doubling. Only the pairs touching above z_lo can carry load anywhere in the
-                // bracket [z_lo, z_hi].
-                let mut step = hertz.overlap_for_force(load).max(1e-30 * self.two_r);
-                z_lo = z_hi - step;
-                loop {
-                    select(all, z_lo, &mut act);
-                    let (f, _) = self.eval(&act, z_lo);
-                    if f >= load {
-                        break;
-                    }
-                    z_hi = z_lo;
-                    step *= 2.0;
-                    z_lo = z_hi0 - step;
-                    iters += 1;
-                    if iters > params.max_iter || step > self.two_r {
-                        return Err(too_deep());
-                    }
-                }
+                // from the top, by the overlap one on-top contact needs for W
+                let step = hertz.overlap_for_force(load).max(1e-30 * self.two_r);
+                (z_lo, z_hi, _, iters) = down(z_hi0, step, z_hi0, &mut act)?;
             }
             Some(g) => {
                 // Warm start (a path's previous sample): a bracket a tenth of the depth below
                 // the top around the guess, doubled until it holds the root.
-                let mut w = 0.1 * (z_hi0 - g) + 1e-9 * self.two_r;
-                z_lo = g - w;
-                z_hi = (g + w).min(z_hi0);
-                loop {
-                    select(all, z_lo, &mut act);
-                    let (f, _) = self.eval(&act, z_lo);
-                    if f >= load {
-                        break;
-                    }
-                    z_hi = z_lo;
-                    w *= 2.0;
-                    z_lo = g - w;
-                    iters += 1;
-                    if iters > params.max_iter || z_hi0 - z_lo > self.two_r {
-                        return Err(too_deep());
-                    }
-                }
-                loop {
-                    let (f, _) = self.eval(&act, z_hi);
-                    if f <= load || z_hi >= z_hi0 {
-                        break;
-                    }
+                let w0 = 0.1 * (z_hi0 - g) + 1e-9 * self.two_r;
+                let w;
+                (z_lo, z_hi, w, iters) = down(g, w0, (g + w0).min(z_hi0), &mut act)?;
+                let mut w = w;
+                while z_hi < z_hi0 && self.eval(&act, z_hi).0 > load {
                     z_lo = z_hi;
                     w *= 2.0;
                     z_hi = (g + w).min(z_hi0);
