@@ -108,7 +108,7 @@ impl CellList {
         };
         for j in j0..=j1 {
             for i in i0..=i1 {
-                let c = j as usize * self.nx + i as usize;
+                let c = j * self.nx + i;
                 for &n in &self.items[self.start[c] as usize..self.start[c + 1] as usize] {
                     f(n);
                 }

@@ -70,9 +70,9 @@ impl Solver {
     /// Returns, per load (in the order of `loads`), the mapped samples `f(s, load index, eq)` in
     /// sample order, or that load's first failed solve.
     ///
-    /// The samples are cut into chunks of [`CHUNK_SEGMENTS`] segments of about `path.segment`
+    /// The samples are cut into chunks of twelve segments of about `path.segment`
     /// (m); a chunk runs one candidate search (each sphere's swept capsule) and keeps, per segment,
-    /// the pairs that can touch above a height floor ([`PathChunk`]): a sample filters and
+    /// the pairs that can touch above a height floor (`PathChunk`): a sample filters and
     /// solves a few hundred pairs, not every slider sphere's. A sample whose solve would need a
     /// pair below the floor is solved on every pair and the floor lowered. Parallel over
     /// chunks (rayon), deterministic. Cost (study's 3505-sphere slider, 1.75 mN): see
