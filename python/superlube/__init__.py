@@ -263,13 +263,14 @@ def design(scenes: Union[SceneLike, Sequence[SceneLike]] = None, *, progress: An
 
 
 def _answers(report: str) -> Dict[str, str]:
-    """The answer per pattern: the items of report.md's ``## Answer`` section."""
+    """The answer per pattern: the paragraphs of report.md's ``## Answer`` section, each
+    ``**pattern**: text`` (the plain-words reading of the answer table's row)."""
     answers, inside = {}, False
     for line in report.splitlines():
         if line.startswith("## "):
             inside = line.strip() == "## Answer"
-        elif inside and line.startswith("- **"):
-            name, _, text = line[4:].partition("**: ")
+        elif inside and line.startswith("**") and "**: " in line:
+            name, _, text = line[2:].partition("**: ")
             answers[name] = text
     return answers
 

@@ -66,7 +66,8 @@ def renamed_keywords(command: str, kwargs: Dict[str, Any]) -> Dict[str, Any]:
             stem, _, unit = name.rpartition("-")
             if unit in _UNITS and stem in old_to_new:
                 new = old_to_new[stem]
-        if new is None:
+        if new is None or new == name:
+            # not renamed, or already the current name (an old name plus its unit)
             out[key] = value
             continue
         new_key = new.replace("-", "_")
