@@ -12,6 +12,7 @@
 //! ([`Solver::solve_loads_partial`]); where it did, that sample is solved on every pair and the
 //! floor is lowered, so every result is bit-identical to a solve on the full list.
 
+use super::solver::place;
 use super::{PairSet, Pose, Solver};
 use crate::contact::CandidatePair;
 use std::cell::RefCell;
@@ -163,11 +164,11 @@ impl<'a> PathChunk<'a> {
 
     /// The highest touch height (m) of any pair at sample `si` (−∞ without one). O(candidates).
     fn top_at(&self, si: f64) -> f64 {
-        let pose = self.pose(si);
+        let centre = self.solver.centre_at(self.pose(si));
         let sub = self.solver.substrate();
         let mut top = f64::NEG_INFINITY;
         for (c, t) in self.wide.pairs.iter().zip(&self.tracks) {
-            let p = self.solver.slider_xy_of(c.slider, pose, self.sin_cos);
+            let p = place(centre, self.sin_cos, self.solver.slider_local(c.slider));
             let q = sub[c.substrate as usize];
             let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
             let r2 = dx * dx + dy * dy;
@@ -229,13 +230,10 @@ impl<'a> PathChunk<'a> {
         let ps = &mut self.ps;
         ps.pairs.clear();
         // the centre and positions as [`Solver::pairs_at`] computes them (same bits)
-        let cx = self.solver.scene().slider.offset[0] + pose.shift[0];
-        let cy = self.solver.scene().slider.offset[1] + pose.shift[1];
-        ps.centre = [cx, cy];
-        let (s, c) = self.sin_cos;
+        let centre = self.solver.centre_at(pose);
+        ps.centre = centre;
         for x in &self.live {
-            let l = x.local;
-            let p = [cx + c * l[0] - s * l[1], cy + s * l[0] + c * l[1]];
+            let p = place(centre, self.sin_cos, x.local);
             let (dx, dy) = (x.q[0] - p[0], x.q[1] - p[1]);
             let r2 = dx * dx + dy * dy;
             if r2 < x.d2 && r2 < x.rho2 {

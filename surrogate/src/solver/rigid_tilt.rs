@@ -269,19 +269,9 @@ pub(crate) fn tilt_from<L: Law>(
     z0: f64,
 ) -> Result<([f64; 3], usize), SceneError> {
     debug_assert!(ctx.tilts, "tilt model under a locked mount");
-    // from the rigid-z state: a path's previous tilted state was measured to start worse
-    // (docs/validation/path-solve.md)
-    tilt_state(ctx, bp, near, load, [z0, 0.0, 0.0])
-}
-
-/// [`tilt_from`] from the state `start`.
-fn tilt_state<L: Law>(
-    ctx: &Ctx,
-    bp: &[BodyPair<L>],
-    near: &NearSet<L>,
-    load: f64,
-    start: [f64; 3],
-) -> Result<([f64; 3], usize), SceneError> {
+    // from the rigid-z state: on a path, the previous sample's tilted state was measured to
+    // start worse (docs/validation/path-solve.md)
+    let start = [z0, 0.0, 0.0];
     let (q, it1, force_ok) = if near.complete {
         tilt_newton(ctx, bp, load, start, true)?
     } else {

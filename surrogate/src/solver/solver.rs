@@ -132,15 +132,28 @@ impl Solver {
 
     /// Slider sphere centres `[x, y]` (m) and the disc centre at `pose`. O(N_slider).
     fn slider_xy_at(&self, pose: Pose) -> (Vec<[f64; 2]>, [f64; 2]) {
-        let (s, c) = pose.theta.sin_cos();
-        let cx = self.scene.slider.offset[0] + pose.shift[0];
-        let cy = self.scene.slider.offset[1] + pose.shift[1];
-        let slider_xy: Vec<[f64; 2]> = self
-            .local
-            .iter()
-            .map(|p| [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]])
-            .collect();
-        (slider_xy, [cx, cy])
+        let mut slider_xy = Vec::with_capacity(self.local.len());
+        let centre = self.fill_slider_xy(pose, &mut slider_xy);
+        (slider_xy, centre)
+    }
+
+    /// Replaces `out` with the slider sphere centres `[x, y]` (m) at `pose` ([`place`] of each
+    /// site) and returns the disc centre. O(N_slider), no allocation once `out` has grown.
+    fn fill_slider_xy(&self, pose: Pose, out: &mut Vec<[f64; 2]>) -> [f64; 2] {
+        let centre = self.centre_at(pose);
+        let sc = pose.theta.sin_cos();
+        out.clear();
+        out.extend(self.local.iter().map(|&p| place(centre, sc, p)));
+        centre
+    }
+
+    /// The disc centre `[x, y]` (m) at `pose`: the scene's offset plus the pose's shift. O(1).
+    #[inline]
+    pub(crate) fn centre_at(&self, pose: Pose) -> [f64; 2] {
+        [
+            self.scene.slider.offset[0] + pose.shift[0],
+            self.scene.slider.offset[1] + pose.shift[1],
+        ]
     }
 
     /// Candidate pairs (lateral distance < 2R) of the slider at `pose`. O(N_slider) with the
@@ -190,16 +203,7 @@ impl Solver {
     ///
     /// Fills `out` (its buffers reused: no allocation once they have grown).
     pub(crate) fn pairs_swept_into(&self, pose: Pose, half: [f64; 2], out: &mut PairSet) {
-        let (sn, cs) = pose.theta.sin_cos();
-        let cx = self.scene.slider.offset[0] + pose.shift[0];
-        let cy = self.scene.slider.offset[1] + pose.shift[1];
-        out.slider_xy.clear();
-        out.slider_xy.extend(
-            self.local
-                .iter()
-                .map(|p| [cx + cs * p[0] - sn * p[1], cy + sn * p[0] + cs * p[1]]),
-        );
-        out.centre = [cx, cy];
+        out.centre = self.fill_slider_xy(pose, &mut out.slider_xy);
         out.theta = pose.theta;
         out.pairs.clear();
         let slider_xy = &out.slider_xy;
@@ -384,17 +388,6 @@ impl Solver {
         r2.sqrt() / self.ctx(0.0).scale * (1.0 + 1e-9)
     }
 
-    /// Slider sphere `i`'s centre `[x, y]` (m) at `pose`: bit-identical to its entry in
-    /// [`Solver::pairs_at`]'s positions. O(1).
-    #[inline]
-    pub(crate) fn slider_xy_of(&self, i: u32, pose: Pose, sc: (f64, f64)) -> [f64; 2] {
-        let (s, c) = sc;
-        let cx = self.scene.slider.offset[0] + pose.shift[0];
-        let cy = self.scene.slider.offset[1] + pose.shift[1];
-        let p = self.local[i as usize];
-        [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]]
-    }
-
     /// Slider sphere `i`'s position `[x, y]` (m) in the slider's own frame (θ = 0, centred).
     #[inline]
     pub(crate) fn slider_local(&self, i: u32) -> [f64; 2] {
@@ -425,6 +418,18 @@ impl Solver {
     pub(crate) fn hertz(&self) -> &Hertz {
         &self.hertz
     }
+}
+
+/// A slider site at `local` (m, the slider's own frame) placed at the disc centre `centre` (m)
+/// rotated by θ with `sin_cos = θ.sin_cos()`: the one formula every slider position comes from,
+/// so a position computed alone equals its entry in a full list bit for bit. O(1).
+#[inline]
+pub(crate) fn place(centre: [f64; 2], sin_cos: (f64, f64), local: [f64; 2]) -> [f64; 2] {
+    let (s, c) = sin_cos;
+    [
+        centre[0] + c * local[0] - s * local[1],
+        centre[1] + s * local[0] + c * local[1],
+    ]
 }
 
 /// One load with the pair law `L` (see [`Solver::solve_pairs`]).
