@@ -9,7 +9,10 @@ use super::{ContactInfo, Equilibrium, Model, PairSet};
 /// centres; the residuals are recomputed from the contact forces: the force residual
 /// `ΣF_z − W` and the moment residual `M_c − K_t·t` with the contact moment about the disc
 /// centre `M_c = [Σ F_z·(y − y_c), −Σ F_z·(x − x_c)]` (about the x and y axes). `defl(i)` is the upward
-/// deflection (m) of slider sphere i relative to the rigid body.
+/// deflection (m) of slider sphere i relative to the rigid body. `floor` (m, relative to z_ref):
+/// no pair with its touch height at or below it touches at `q` (−∞: any may); those are
+/// skipped before their response is computed — they contribute nothing either way, so the
+/// sums and the contact list are the same, bit for bit.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn assemble<L: Law>(
     ctx: &Ctx,
@@ -21,6 +24,7 @@ pub(crate) fn assemble<L: Law>(
     q: [f64; 3],
     defl: impl Fn(u32) -> f64,
     iterations: usize,
+    floor: f64,
 ) -> Equilibrium {
     let (k, two_r) = (ctx.hertz.k(), ctx.two_r);
     let mut contacts = Vec::new();
@@ -28,6 +32,9 @@ pub(crate) fn assemble<L: Law>(
     let mut fsum = 0.0;
     let mut mom = [0.0; 2];
     for (p, b) in ps.pairs.iter().zip(bp) {
+        if b.c <= floor {
+            continue;
+        }
         let w = defl(p.slider);
         let dz = q[0] + q[1] * b.g[0] + q[2] * b.g[1] + w - b.c;
         let r = b.response(k, two_r, dz);

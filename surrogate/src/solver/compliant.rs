@@ -263,5 +263,6 @@ pub(crate) fn solve_compliant<L: Law>(
         sys.q(&x),
         |i| defl[i as usize],
         iters,
+        f64::NEG_INFINITY,
     ))
 }

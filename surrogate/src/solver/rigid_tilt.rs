@@ -180,7 +180,9 @@ pub(crate) fn solve_rigid_tilt<L: Law>(
     Ok(assemble_tilt(ctx, ps, &bp, zref, load, q, iters))
 }
 
-/// The [`Equilibrium`] of a converged rigid-tilt state.
+/// The [`Equilibrium`] of a converged rigid-tilt state. On a watched list, where the lever bound
+/// gmax is known, only the pairs above `ζ − |q₁₂|·gmax` (the only ones that can touch at `q`)
+/// are evaluated; else every pair. Same result.
 pub(crate) fn assemble_tilt<L: Law>(
     ctx: &Ctx,
     ps: &PairSet,
@@ -190,7 +192,21 @@ pub(crate) fn assemble_tilt<L: Law>(
     q: [f64; 3],
     iters: usize,
 ) -> Equilibrium {
-    assemble(ctx, ps, bp, zref, Model::RigidTilt, load, q, |_| 0.0, iters)
+    let floor = ctx
+        .watch
+        .map_or(f64::NEG_INFINITY, |w| q[0] - q[1].hypot(q[2]) * w.gmax);
+    assemble(
+        ctx,
+        ps,
+        bp,
+        zref,
+        Model::RigidTilt,
+        load,
+        q,
+        |_| 0.0,
+        iters,
+        floor,
+    )
 }
 
 /// Converged `[ζ, L·t_x, L·t_y]` and iterations, from the rigid-z start.

@@ -39,6 +39,10 @@ impl<L: Law> RigidZ<L> {
         let (k, two_r) = (ctx.hertz.k(), ctx.two_r);
         let mut mom = [0.0; 2];
         for (p, b) in ps.pairs.iter().zip(&self.bp) {
+            // a pair at or below ζ does not touch (skipped before its response: same sums)
+            if b.c <= zeta {
+                continue;
+            }
             let r = b.response(k, two_r, zeta - b.c);
             if r.fz <= 0.0 {
                 continue;
@@ -71,6 +75,7 @@ impl<L: Law> RigidZ<L> {
             [zeta, 0.0, 0.0],
             |_| 0.0,
             iters,
+            zeta,
         )
     }
 }

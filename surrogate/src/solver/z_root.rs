@@ -6,11 +6,12 @@ use super::law::{pair_response, BodyPair, Law};
 use super::SolverParams;
 use crate::contact::Hertz;
 use crate::error::SceneError;
+use std::cell::RefCell;
 
 /// The pairs of one pair set at fixed tilt, prepared for the root find. Build once per pair set
 /// (and tilt), solve for many loads.
 pub(crate) struct ZRoot {
-    /// The pairs, in pair order (unsorted).
+    /// The pairs, in pair order, and the sorted prefix of the high ones.
     rows: Rows,
     /// Highest touch height (m): the top of the first bracket.
     c_max: f64,
@@ -23,8 +24,51 @@ pub(crate) struct ZRoot {
 /// distance² (m²), touch gap (m) — when every pair shares one law (the fast path), plus the
 /// pair's own Hertz prefactor and contact distance `(k, d)` with per-site sizes.
 enum Rows {
-    Uniform(Vec<(f64, f64, f64)>),
-    Sized(Vec<(f64, f64, f64, f64, f64)>),
+    Uniform(Vec<Row3>, RefCell<Sorted<Row3>>),
+    Sized(Vec<Row5>, RefCell<Sorted<Row5>>),
+}
+
+/// A row `(c, r2, u_t)` with the shared law.
+type Row3 = (f64, f64, f64);
+/// A row `(c, r2, u_t, k, d)` with its own law.
+type Row5 = (f64, f64, f64, f64, f64);
+
+/// The rows whose touch height lies above `cut`, sorted by touch height (descending; ties in
+/// pair order): the pairs active at any ζ ≥ `cut` are a prefix. Grown downwards on demand, so
+/// the loads of one pair set share one sort of the pairs near the top instead of filtering and
+/// sorting every pair per load and bracket.
+struct Sorted<R> {
+    rows: Vec<R>,
+    cut: f64,
+}
+
+impl<R: Row> Sorted<R> {
+    fn new() -> Self {
+        Sorted {
+            rows: Vec::new(),
+            cut: f64::INFINITY,
+        }
+    }
+
+    /// The number of sorted rows with c > `floor`, first growing the prefix down to `floor`
+    /// (to twice its depth below the top `c_max`, so a bracket stepping down by doubling grows
+    /// it a few times only). O(P + new·log new) when it grows, O(log P) else.
+    fn upto(&mut self, all: &[R], c_max: f64, floor: f64) -> usize {
+        if floor < self.cut {
+            let cut = if floor.is_finite() && c_max.is_finite() {
+                floor - (c_max - floor).max(0.0)
+            } else {
+                f64::NEG_INFINITY
+            };
+            let (start, old) = (self.rows.len(), self.cut);
+            self.rows
+                .extend(all.iter().filter(|r| r.c() > cut && r.c() <= old));
+            // stable: ties keep pair order
+            self.rows[start..].sort_by(|a, b| b.c().total_cmp(&a.c()));
+            self.cut = cut;
+        }
+        self.rows.partition_point(|r| r.c() > floor)
+    }
 }
 
 /// One pair row: its touch height and its vertical response at ζ (with the shared `k`, `d`
@@ -56,14 +100,6 @@ impl Row for (f64, f64, f64, f64, f64) {
     }
 }
 
-/// The pairs of `all` that touch below ζ = `floor`, sorted by touch height, descending, so the
-/// pairs active at any ζ ≥ `floor` are a prefix. O(P + A log A) for A selected pairs.
-fn select<R: Row>(all: &[R], floor: f64, act: &mut Vec<R>) {
-    act.clear();
-    act.extend(all.iter().copied().filter(|p| p.c() > floor));
-    act.sort_by(|a, b| b.c().total_cmp(&a.c()));
-}
-
 impl ZRoot {
     /// Takes the pairs at fixed body tilt `q12 = [L·t_x, L·t_y]` (m); every pair has the Hertz
     /// prefactor `k` and the contact distance `two_r` (m) unless it carries its own. O(P).
@@ -78,11 +114,11 @@ impl ZRoot {
                 })
                 .collect();
             let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
-            (Rows::Sized(all), c_max)
+            (Rows::Sized(all, RefCell::new(Sorted::new())), c_max)
         } else {
             let all: Vec<_> = pairs.iter().map(|p| (c(p), p.r2, p.ut)).collect();
             let c_max = all.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
-            (Rows::Uniform(all), c_max)
+            (Rows::Uniform(all, RefCell::new(Sorted::new())), c_max)
         };
         ZRoot {
             rows,
@@ -92,8 +128,8 @@ impl ZRoot {
         }
     }
 
-    /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m) over `act` (sorted, descending, as from
-    /// [`select`]). O(active pairs).
+    /// ΣF_z (N) and d(ΣF_z)/dζ (N/m) at ζ (m) over `act` (sorted, descending, a prefix of
+    /// [`Sorted`]). O(active pairs).
     fn eval<R: Row>(&self, act: &[R], zeta: f64) -> (f64, f64) {
         let mut f = 0.0;
         let mut df = 0.0;
@@ -112,9 +148,11 @@ impl ZRoot {
     ///
     /// ΣF_z is non-increasing in ζ, so Newton's method inside a shrinking bracket converges from
     /// any start; bisection takes over whenever a Newton step leaves the bracket (grazing contacts
-    /// where dF/dz → 0). Typically < 15 iterations of O(active pairs) each, after one O(P) pass
-    /// per bracket doubling that keeps only the pairs above the lower bracket (the others cannot
-    /// touch at the root, since ΣF_z is non-increasing): no sort of all P candidate pairs.
+    /// where dF/dz → 0). Typically < 15 iterations of O(active pairs) each, over the prefix of
+    /// the pairs sorted by touch height that lies above the lower bracket (the others cannot
+    /// touch at the root, since ΣF_z is non-increasing); the prefix is sorted once per pair set
+    /// and grown only when a bracket reaches below it, so the loads share it: no sort of all P
+    /// candidate pairs.
     ///
     /// Records its lowest bracket end with [`Ctx::rely`] (lowered by `drop`, m, the most a
     /// tilted row's height can sit above its untilted one): no pair below it was looked at.
@@ -148,8 +186,22 @@ impl ZRoot {
         guess: Option<f64>,
     ) -> Result<(f64, usize, f64), SceneError> {
         match &self.rows {
-            Rows::Uniform(all) => self.solve_rows(all, load, ctx.hertz, ctx.params, guess),
-            Rows::Sized(all) => self.solve_rows(all, load, ctx.hertz, ctx.params, guess),
+            Rows::Uniform(all, srt) => self.solve_rows(
+                all,
+                &mut srt.borrow_mut(),
+                load,
+                ctx.hertz,
+                ctx.params,
+                guess,
+            ),
+            Rows::Sized(all, srt) => self.solve_rows(
+                all,
+                &mut srt.borrow_mut(),
+                load,
+                ctx.hertz,
+                ctx.params,
+                guess,
+            ),
         }
     }
 
@@ -157,6 +209,7 @@ impl ZRoot {
     fn solve_rows<R: Row>(
         &self,
         all: &[R],
+        srt: &mut Sorted<R>,
         load: f64,
         hertz: &Hertz,
         params: &SolverParams,
@@ -169,15 +222,16 @@ impl ZRoot {
             ));
         }
         let z_hi0 = self.c_max;
-        let mut act = Vec::new();
+        // the active rows at the bracket's lower end: a prefix of the sorted rows
+        let mut n_act = 0;
         // Lower bracket: from `anchor`, step down by `w`, doubling, until the pairs touching
         // above z_lo carry the load (only they can carry any anywhere in [z_lo, z_hi]).
-        let down = |anchor: f64, mut w: f64, mut z_hi: f64, act: &mut Vec<R>| {
+        let mut down = |anchor: f64, mut w: f64, mut z_hi: f64, n_act: &mut usize| {
             let mut iters = 0;
             let mut z_lo = anchor - w;
             loop {
-                select(all, z_lo, act);
-                let (f, _) = self.eval(act, z_lo);
+                *n_act = srt.upto(all, z_hi0, z_lo);
+                let (f, _) = self.eval(&srt.rows[..*n_act], z_lo);
                 if f >= load {
                     return Ok((z_lo, z_hi, w, iters));
                 }
@@ -197,16 +251,17 @@ impl ZRoot {
             None => {
                 // from the top, by the overlap one on-top contact needs for W
                 let step = hertz.overlap_for_force(load).max(1e-30 * self.two_r);
-                (z_lo, z_hi, _, iters) = down(z_hi0, step, z_hi0, &mut act)?;
+                (z_lo, z_hi, _, iters) = down(z_hi0, step, z_hi0, &mut n_act)?;
             }
             Some(g) => {
                 // Warm start (a path's previous sample): a bracket a tenth of the depth below
                 // the top around the guess, doubled until it holds the root.
                 let w0 = 0.1 * (z_hi0 - g) + 1e-9 * self.two_r;
                 let w;
-                (z_lo, z_hi, w, iters) = down(g, w0, (g + w0).min(z_hi0), &mut act)?;
+                (z_lo, z_hi, w, iters) = down(g, w0, (g + w0).min(z_hi0), &mut n_act)?;
                 let mut w = w;
-                while z_hi < z_hi0 && self.eval(&act, z_hi).0 > load {
+                let act = &srt.rows[..n_act];
+                while z_hi < z_hi0 && self.eval(act, z_hi).0 > load {
                     z_lo = z_hi;
                     w *= 2.0;
                     z_hi = (g + w).min(z_hi0);
@@ -215,12 +270,13 @@ impl ZRoot {
             }
         }
         let z_floor = z_lo;
+        let act = &srt.rows[..n_act];
         let mut z = 0.5 * (z_lo + z_hi);
         let tol = params.force_rtol * load;
         let w23 = load.powf(2.0 / 3.0);
         loop {
             iters += 1;
-            let (f, df) = self.eval(&act, z);
+            let (f, df) = self.eval(act, z);
             let g = f - load;
             if g.abs() <= tol {
                 return Ok((z, iters, z_floor));
@@ -249,8 +305,8 @@ impl ZRoot {
             if z_hi - z_lo <= 4.0 * f64::EPSILON * scale || iters > params.max_iter {
                 // Bracket exhausted at machine precision: accept the better end point if it
                 // balances the load to 1e-9 (the documented guarantee), else fail loudly.
-                let (fl, _) = self.eval(&act, z_lo);
-                let (fh, _) = self.eval(&act, z_hi);
+                let (fl, _) = self.eval(act, z_lo);
+                let (fh, _) = self.eval(act, z_hi);
                 let (zb, fb) = if (fl - load).abs() <= (fh - load).abs() {
                     (z_lo, fl)
                 } else {
