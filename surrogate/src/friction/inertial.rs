@@ -58,27 +58,51 @@ pub(crate) struct InertialRun {
     pub sticks: usize,
 }
 
-/// A periodic, piecewise linear profile over samples `y[0..=n]` spaced `h` (`y[n]` closes the
-/// last interval; the next period starts again at `y[0]`).
+/// Two periodic, piecewise linear profiles `f` and `c` over samples `[0..=n]` spaced `h` (the
+/// last sample closes the last interval; the next period starts again at the first), read at
+/// the same position. The interval of the last read is kept: the slider moves at most half a
+/// sample per step, so most reads skip the floor and the wrap (same values as computing them).
 struct Lin<'a> {
     h: f64,
-    y: &'a [f64],
+    f: &'a [f64],
+    c: &'a [f64],
+    /// The last interval: its start in samples (unwrapped) and its index in the period.
+    fl: f64,
+    i: usize,
 }
 
-impl Lin<'_> {
-    fn at(&self, x: f64) -> f64 {
-        let n = self.y.len() - 1;
+impl<'a> Lin<'a> {
+    fn new(h: f64, f: &'a [f64], c: &'a [f64]) -> Self {
+        Lin {
+            h,
+            f,
+            c,
+            fl: f64::NAN,
+            i: 0,
+        }
+    }
+
+    /// `(f(x), c(x))`, interpolated linearly. O(1).
+    #[inline]
+    fn at(&mut self, x: f64) -> (f64, f64) {
         let t = x / self.h;
-        // floor and wrap, the cheap way on the common case 0 ≤ t < n (same values)
-        let (fl, i) = if (0.0..n as f64).contains(&t) {
-            let i = t as usize;
-            (i as f64, i)
-        } else {
-            let fl = t.floor();
-            (fl, (fl as i64).rem_euclid(n as i64) as usize)
-        };
-        let w = t - fl;
-        self.y[i] + w * (self.y[i + 1] - self.y[i])
+        // the same interval as the last read (NaN at first: never)
+        if !(t >= self.fl && t < self.fl + 1.0) {
+            let n = self.f.len() - 1;
+            // floor and wrap, the cheap way on the common case 0 ≤ t < n (same values)
+            (self.fl, self.i) = if (0.0..n as f64).contains(&t) {
+                let i = t as usize;
+                (i as f64, i)
+            } else {
+                let fl = t.floor();
+                (fl, (fl as i64).rem_euclid(n as i64) as usize)
+            };
+        }
+        let (i, w) = (self.i, t - self.fl);
+        (
+            self.f[i] + w * (self.f[i + 1] - self.f[i]),
+            self.c[i] + w * (self.c[i + 1] - self.c[i]),
+        )
     }
 }
 
@@ -117,8 +141,7 @@ fn in_window(t0: f64, t1: f64, t_w: f64) -> f64 {
 /// sliding at `x_start` (m).
 pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> InertialRun {
     assert!(f.len() == c.len() && f.len() >= 2);
-    let fp = Lin { h, y: f };
-    let cp = Lin { h, y: c };
+    let mut prof = Lin::new(h, f, c);
     // the fastest natural frequency sets the largest step; a moving slider also crosses at most
     // half a sample per step
     let slope = f
@@ -132,17 +155,18 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
     // steady sliding at x_start
     let mut x = x_start;
     let mut u = v;
-    let x0_support = x_start + (fp.at(x_start) + cp.at(x_start)) / k;
+    let (f0, c0) = prof.at(x_start);
+    let x0_support = x_start + (f0 + c0) / k;
     let spring = |t: f64, x: f64| k * (x0_support + v * t - x);
     let mut t = 0.0f64;
     let mut sum = 0.0; // ∫ s dt over the window
     let mut sticks = 0usize;
     while t < t_end {
-        let coulomb = cp.at(x);
+        let (fx, coulomb) = prof.at(x);
         if u == 0.0 {
             // stuck: the drive K(X − x) − F(x) + γv grows at K·v; it frees the slider when it
             // leaves [−C, C]
-            let drive = spring(t, x) - fp.at(x) + g * v;
+            let drive = spring(t, x) - fx + g * v;
             let wait = if drive.abs() > coulomb {
                 0.0
             } else {
@@ -161,8 +185,8 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
                     break;
                 }
             }
-            // free: one step from rest in the direction of the drive
-            let drive = spring(t, x) - fp.at(x) + g * v;
+            // free: one step from rest in the direction of the drive (x has not moved)
+            let drive = spring(t, x) - fx + g * v;
             let dt = dt_max.min(t_end - t);
             u = (drive - coulomb.copysign(drive)) / m * dt;
             if (drive.abs() - coulomb) <= 0.0 {
@@ -175,7 +199,7 @@ pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> I
             continue;
         }
         let dt = dt_max.min(0.5 * h / u.abs()).min(t_end - t);
-        let drive = spring(t, x) - fp.at(x) - g * (u - v);
+        let drive = spring(t, x) - fx - g * (u - v);
         let un = u + (drive - coulomb.copysign(u)) / m * dt;
         if un * u <= 0.0 {
             u = 0.0;
