@@ -6,7 +6,8 @@
 //! reference plane sits below their touch height `c = h_j + drop_i + √(d² − r²)`. Along a
 //! straight path the pair's lateral distance is `r(s)² = r⊥² + (s − s*)²`, so it can rise above
 //! a floor F only inside the window `|s − s*| < √(ρ² − r⊥²)` with `ρ² = d² − (F − h − drop)²`.
-//! The chunk runs one candidate search, keeps the pairs that can rise above F somewhere, and
+//! The chunk runs one candidate search (its capsules narrowed to the lateral distance below which
+//! any pair can rise above F), keeps the pairs that can rise above F somewhere, and
 //! per sub-chunk the ones whose window meets it; a sample then looks at a few hundred pairs
 //! instead of every slider sphere. The solve checks that it never relied on a pair below F
 //! ([`Solver::solve_loads_partial`]); where it did, that sample is solved on every pair and the
@@ -75,8 +76,13 @@ pub(crate) struct PathChunk<'a> {
     sin_cos: (f64, f64),
     origin: [f64; 2],
     e: [f64; 2],
-    /// Every pair within contact distance at some sample of the chunk (slider-then-substrate
-    /// order), from one candidate search.
+    /// The middle of the chunk (m of path) and the half-span vector (m) its search sweeps.
+    mid: f64,
+    half: [f64; 2],
+    /// The lowest floor (m, absolute) the last candidate search covers.
+    searched: f64,
+    /// Every pair that can rise above `searched` at some sample of the chunk
+    /// (slider-then-substrate order), from one candidate search.
     wide: PairSet,
     tracks: Vec<Track>,
     /// Height floor (m, absolute): every pair touching above it is in a sample's list.
@@ -92,8 +98,9 @@ pub(crate) struct PathChunk<'a> {
 
 impl<'a> PathChunk<'a> {
     /// The chunk of samples `s` (m, ascending) of the path `origin + s·e` at rotation `theta`:
-    /// one candidate search over each sphere's swept capsule (O(N_slider)), and the floor `band` (m) below
-    /// the highest touch height at its first sample (O(candidates)).
+    /// the highest touch height at its first sample (one fresh search), then one candidate
+    /// search over each sphere's swept capsule, narrowed to the pairs that can rise above the
+    /// floor `band` (m) below that height (O(N_slider)).
     pub fn new(
         solver: &'a Solver,
         theta: f64,
@@ -105,29 +112,7 @@ impl<'a> PathChunk<'a> {
         let (a, b) = (s[0], s[s.len() - 1]);
         // every sample of the chunk lies within half its span (plus round-off) of the middle
         let half = 0.5 * (b - a).abs() * (1.0 + 1e-9) + 1e-15;
-        let mid = 0.5 * (a + b);
-        let pose = |si: f64| Pose {
-            theta,
-            shift: [origin[0] + si * e[0], origin[1] + si * e[1]],
-        };
         let mut buf = BUFFERS.with(|b| b.borrow_mut().pop()).unwrap_or_default();
-        let mut wide = std::mem::take(&mut buf.wide);
-        solver.pairs_swept_into(pose(mid), [half * e[0], half * e[1]], &mut wide);
-        let sub = solver.substrate();
-        let mut tracks = std::mem::take(&mut buf.tracks);
-        tracks.clear();
-        tracks.extend(wide.pairs.iter().map(|c| {
-            let p = wide.slider_xy[c.slider as usize];
-            let q = sub[c.substrate as usize];
-            let v = [q[0] - p[0], q[1] - p[1]];
-            let along = v[0] * e[0] + v[1] * e[1];
-            Track {
-                s_star: mid + along,
-                rp2: (v[0] * v[0] + v[1] * v[1] - along * along).max(0.0),
-                top: c.h + solver.slider_drop(c.slider),
-                d2: solver.pair_reach2(c.slider, c.substrate),
-            }
-        }));
         let n = solver.slider_count();
         let mut ps = std::mem::take(&mut buf.ps);
         // positions are written for a sample's pairs only; stale entries are never read
@@ -139,9 +124,12 @@ impl<'a> PathChunk<'a> {
             sin_cos: theta.sin_cos(),
             origin,
             e,
+            mid: 0.5 * (a + b),
+            half: [half * e[0], half * e[1]],
+            searched: f64::INFINITY,
             ps,
-            wide,
-            tracks,
+            wide: std::mem::take(&mut buf.wide),
+            tracks: std::mem::take(&mut buf.tracks),
             floor: f64::NEG_INFINITY,
             top0: f64::NEG_INFINITY,
             above: std::mem::take(&mut buf.above),
@@ -150,6 +138,31 @@ impl<'a> PathChunk<'a> {
         chunk.top0 = chunk.top_at(a);
         chunk.set_floor(chunk.top0 - band);
         chunk
+    }
+
+    /// Runs the chunk's candidate search for pairs that can rise above `floor` (m, absolute)
+    /// and records where each passes along the path. O(N_slider + candidates).
+    fn search(&mut self, floor: f64) {
+        let solver = self.solver;
+        let pose = self.pose(self.mid);
+        solver.pairs_swept_into(pose, self.half, floor, &mut self.wide);
+        let (mid, e) = (self.mid, self.e);
+        let sub = solver.substrate();
+        self.tracks.clear();
+        let wide = &self.wide;
+        self.tracks.extend(wide.pairs.iter().map(|c| {
+            let p = wide.slider_xy[c.slider as usize];
+            let q = sub[c.substrate as usize];
+            let v = [q[0] - p[0], q[1] - p[1]];
+            let along = v[0] * e[0] + v[1] * e[1];
+            Track {
+                s_star: mid + along,
+                rp2: (v[0] * v[0] + v[1] * v[1] - along * along).max(0.0),
+                top: c.h + solver.slider_drop(c.slider),
+                d2: solver.pair_reach2(c.slider, c.substrate),
+            }
+        }));
+        self.searched = floor;
     }
 
     fn pose(&self, si: f64) -> Pose {
@@ -162,26 +175,27 @@ impl<'a> PathChunk<'a> {
         }
     }
 
-    /// The highest touch height (m) of any pair at sample `si` (−∞ without one). O(candidates).
+    /// The highest touch height (m) of any pair at sample `si` (−∞ without one), from a fresh
+    /// search. O(N_slider).
     fn top_at(&self, si: f64) -> f64 {
-        let centre = self.solver.centre_at(self.pose(si));
-        let sub = self.solver.substrate();
+        let ps = self.solver.pairs_at(self.pose(si));
         let mut top = f64::NEG_INFINITY;
-        for (c, t) in self.wide.pairs.iter().zip(&self.tracks) {
-            let p = place(centre, self.sin_cos, self.solver.slider_local(c.slider));
-            let q = sub[c.substrate as usize];
-            let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
-            let r2 = dx * dx + dy * dy;
-            if r2 < t.d2 {
-                top = top.max(t.top + (t.d2 - r2).sqrt());
+        for c in &ps.pairs {
+            let d2 = self.solver.pair_reach2(c.slider, c.substrate);
+            if c.r2 < d2 {
+                top = top.max(c.h + self.solver.slider_drop(c.slider) + (d2 - c.r2).sqrt());
             }
         }
         top
     }
 
-    /// Sets the floor (m) and keeps the pairs that can rise above it, with their windows.
+    /// Sets the floor (m) and keeps the pairs that can rise above it, with their windows (a
+    /// new candidate search first where the floor falls below what the last one covered).
     /// O(candidates). The live set must be refreshed after.
     pub fn set_floor(&mut self, floor: f64) {
+        if floor < self.searched {
+            self.search(floor);
+        }
         self.floor = floor;
         self.above.clear();
         for (k, t) in self.tracks.iter().enumerate() {
@@ -249,10 +263,9 @@ impl<'a> PathChunk<'a> {
         &self.ps
     }
 
-    /// The full pair list at sample `si` (m): [`Solver::pairs_from`] on the chunk's candidates,
-    /// identical to a fresh search. O(candidates + N_slider).
+    /// The full pair list at sample `si` (m): a fresh search ([`Solver::pairs_at`]). O(N_slider).
     pub fn full_at(&self, si: f64) -> PairSet {
-        self.solver.pairs_from(&self.wide, self.pose(si))
+        self.solver.pairs_at(self.pose(si))
     }
 }
 
@@ -291,8 +304,9 @@ mod tests {
         /// After any sequence of moves along the path, shorter and longer than the skin (the
         /// window a pair is kept beyond its closest approach), a sample's list holds exactly the
         /// pairs of a fresh search that touch above the floor (plus, within the margin, a few
-        /// below it), with bit-identical lateral distances, in the fresh search's order; and
-        /// `full_at` is a fresh search. Flat and rough substrates, two pattern pairs.
+        /// below it), with bit-identical lateral distances, in the fresh search's order, also
+        /// after the floor is lowered (a wider search); and `full_at` is a fresh search. Flat
+        /// and rough substrates, two pattern pairs.
         #[test]
         fn updated_list_matches_a_fresh_search(
             theta_deg in 0.0f64..60.0,
@@ -301,6 +315,7 @@ mod tests {
             oy in -1.5e-6f64..1.5e-6,
             moves in proptest::collection::vec(0.001e-6f64..1.5e-6, 2..12),
             band in 5e-9f64..600e-9,
+            lower in 0.0f64..900e-9,
             rough in any::<bool>(),
             tri in any::<bool>(),
         ) {
@@ -316,9 +331,15 @@ mod tests {
                 s.push(s[s.len() - 1] + m);
             }
             let mut pc = PathChunk::new(&solver, theta, [ox, oy], e, &s, band);
-            let floor = pc.floor;
-            // one refresh for the whole chunk, then per sample (both are valid uses)
-            for per_sample in [false, true] {
+            // one refresh for the whole chunk, then per sample (both are valid uses), then per
+            // sample below a lowered floor (a new, wider candidate search)
+            for phase in 0..3 {
+                let per_sample = phase > 0;
+                if phase == 2 {
+                    let f = pc.floor - lower;
+                    pc.set_floor(f);
+                }
+                let floor = pc.floor;
                 if !per_sample {
                     pc.refresh(s[0], s[s.len() - 1]);
                 }

@@ -49,6 +49,9 @@ pub struct Solver {
     sizes: Option<Sizes>,
     /// Lateral reach (m) of the candidate search: the largest pair's contact distance.
     reach: f64,
+    /// The highest substrate sphere centre plus the largest slider drop (m): no pair's
+    /// `h + drop` lies above it.
+    top_base: f64,
     /// Principal rotational stiffnesses of the mount about the slider's own axes (N·m/rad).
     mount_k: [f64; 2],
     /// Numerical knobs.
@@ -65,9 +68,22 @@ impl Solver {
         let spheres = scene.substrate_spheres();
         let reach = scene.max_contact_distance();
         let local = scene.slider_sites_local();
+        let sizes = Sizes::of(scene, local.len(), spheres.len());
+        let drop_max = sizes.as_ref().map_or(0.0, |s| {
+            s.slider
+                .iter()
+                .map(|r| r - s.r_sl)
+                .fold(f64::NEG_INFINITY, f64::max)
+        });
+        let top_base = spheres
+            .iter()
+            .map(|q| q[2])
+            .fold(f64::NEG_INFINITY, f64::max)
+            + drop_max;
         Ok(Solver {
-            sizes: Sizes::of(scene, local.len(), spheres.len()),
+            sizes,
             reach,
+            top_base,
             mount_k: scene.slider.mount.principal_tilt_stiffness(&local),
             scene: scene.clone(),
             hertz: scene.hertz(),
@@ -202,15 +218,32 @@ impl Solver {
     /// each sphere's swept capsule ([`GridSearch::pairs_swept`]). O(N_slider).
     ///
     /// Fills `out` (its buffers reused: no allocation once they have grown).
-    pub(crate) fn pairs_swept_into(&self, pose: Pose, half: [f64; 2], out: &mut PairSet) {
+    ///
+    /// `floor` (m, absolute; −∞: every pair): only the pairs whose touch height
+    /// `h + drop + √(d² − r²)` can rise above it are needed, so the capsules shrink to the
+    /// lateral distance `ρ = √(d² − (floor − h_max − drop_max)²)` below which any pair can
+    /// (with a margin); a superset of the pairs a floor at or above `floor` keeps.
+    pub(crate) fn pairs_swept_into(
+        &self,
+        pose: Pose,
+        half: [f64; 2],
+        floor: f64,
+        out: &mut PairSet,
+    ) {
         out.centre = self.fill_slider_xy(pose, &mut out.slider_xy);
         out.theta = pose.theta;
         out.pairs.clear();
         let slider_xy = &out.slider_xy;
         let pairs = &mut out.pairs;
         let margin = 1e-9 * self.reach + 1e-15;
+        let rise = floor - self.top_base;
+        let reach = if rise > 0.0 {
+            ((self.reach * self.reach - rise * rise).max(0.0).sqrt() * (1.0 + 1e-8)).min(self.reach)
+        } else {
+            self.reach
+        };
         self.grid
-            .pairs_swept(slider_xy, half, self.reach + margin, pairs);
+            .pairs_swept(slider_xy, half, reach + margin, pairs);
         if let Some(s) = &self.sizes {
             // each pair's own reach r_i + r_j, swept
             let h2 = half[0] * half[0] + half[1] * half[1];
