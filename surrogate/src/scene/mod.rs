@@ -10,6 +10,7 @@ mod pattern;
 mod scene;
 mod sites;
 mod sizes;
+pub mod symmetry;
 mod to_file;
 
 pub use file::{
