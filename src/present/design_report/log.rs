@@ -1,5 +1,5 @@
 //! The design's log in words: [`Log`] is the observer the command passes to the pipeline
-//! (`crate::study::design::Observer`); it words each event ([`line`]) as a note, opens the
+//! (`crate::study::design::Observer`); it words each event ([`line()`]) as a note, opens the
 //! stages' bars, and passes the rest to the command's progress reporter.
 
 use crate::runs::progress::Progress;

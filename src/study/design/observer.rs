@@ -15,7 +15,7 @@ use std::path::Path;
 /// the last two once.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stage {
-    /// The symmetry cut and the screen of every θ × W ([`super::stages`]).
+    /// The symmetry cut and the screen of every θ × W (`stages.rs`).
     Screen,
     /// Per θ the coating-intact load and the levels ([`super::shortlist`]).
     Shortlist,
