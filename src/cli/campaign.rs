@@ -300,7 +300,7 @@ pub fn run(dir: &Path, a: &CampaignArgs) -> Result<()> {
     }
     let failed: Vec<&str> = rows
         .iter()
-        .filter(|r| r.status == "failed")
+        .filter(|r| r.status == crate::study::rows::RunStatus::Failed)
         .map(|r| r.name.as_str())
         .collect();
     if !failed.is_empty() {

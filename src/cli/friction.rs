@@ -3,6 +3,7 @@
 use super::friction_args::FrictionKnobArgs;
 use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
+use super::verdict_args::VerdictArgs;
 use super::{checks, SceneArgs, SweepPlan};
 use crate::runs::{
     budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
@@ -44,15 +45,8 @@ pub struct Args {
     line_deg: Option<f64>,
     #[command(flatten)]
     knobs: FrictionKnobArgs,
-    /// Friction coefficient below which a row can be superlubric: the threshold of each row's
-    /// `verdict` (superlubric, borderline or not, by `design`'s rule and band).
-    #[arg(
-        long = "mu-superlubric",
-        value_name = "MU",
-        default_value_t = 0.02,
-        allow_hyphen_values = true
-    )]
-    mu_superlubric: f64,
+    #[command(flatten)]
+    verdict: VerdictArgs,
     /// Output CSV, one row per (θ, α, W), θ outer: `pattern,theta_deg,alpha_deg,load_mN,mu_est,
     /// p_max_GPa,failed_fraction,…,verdict,error` (units in the names; docs/commands/friction.md), streamed
     /// through FILE.csv.partial, with a sidecar FILE.csv.meta.json. Stdout if absent. Rows with
@@ -101,7 +95,7 @@ pub fn prepare(a: Args) -> Result<Prepared> {
     let loads = checks::loads(&a.load_mn)?;
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
-    let mu_superlubric = checks::positive(a.mu_superlubric, "--mu-superlubric")?;
+    let mu_superlubric = a.verdict.mu_superlubric()?;
     let sc = a.scene.resolve(None)?;
     checks::line_for(&sc.scene, line)?;
     let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {

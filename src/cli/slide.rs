@@ -225,7 +225,10 @@ fn write_summary(
     warnings: Vec<String>,
     rep: &dyn Progress,
 ) -> Result<()> {
-    let failed = rows.iter().filter(|r| r.status == "failed").count();
+    let failed = rows
+        .iter()
+        .filter(|r| r.status == crate::study::rows::RunStatus::Failed)
+        .count();
     if missing > 0 {
         rep.note(&format!(
             "{missing} of {} runs not finished yet (other shards, or an interrupted call): runs.csv is written by the call that finds every run finished — run the same command without --shard (it runs what is left) once the shards are done",

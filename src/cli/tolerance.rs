@@ -4,6 +4,7 @@
 use super::design::STUDY_LOADS;
 use super::friction_args::FrictionKnobArgs;
 use super::tolerance_args::ToleranceArgs;
+use super::verdict_args::VerdictArgs;
 use super::{checks, SceneArgs};
 use crate::plot::tolerance::tolerance_png;
 use crate::runs::sink::csv_bytes;
@@ -73,14 +74,8 @@ pub struct Args {
     /// Normal loads W in mN, strictly increasing [default: the study's 0.35 … 3.86].
     #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), allow_hyphen_values = true)]
     load_mn: String,
-    /// Friction coefficient below which a load counts as superlubric.
-    #[arg(
-        long = "mu-superlubric",
-        value_name = "MU",
-        default_value_t = 0.02,
-        allow_hyphen_values = true
-    )]
-    mu_superlubric: f64,
+    #[command(flatten)]
+    verdict: VerdictArgs,
     /// Contact-line angle in degrees from the substrate x axis that α is measured from
     /// [default: the moiré estimate at each θ].
     #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
@@ -137,7 +132,7 @@ pub fn run(a: Args) -> Result<()> {
             theta_tol, direction_tol, a.theta_range, a.direction_range
         );
     }
-    checks::positive(a.mu_superlubric, "--mu-superlubric")?;
+    a.verdict.mu_superlubric()?;
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
     knobs.validate()?;
@@ -169,7 +164,7 @@ pub fn run(a: Args) -> Result<()> {
         direction_offsets_deg: dirs,
         limit: LimitParams {
             loads,
-            mu_superlubric: a.mu_superlubric,
+            mu_superlubric: a.verdict.mu_superlubric,
             line,
             friction: knobs,
         },
@@ -200,7 +195,7 @@ pub fn run(a: Args) -> Result<()> {
                 "theta_tol_deg": theta_tol,
                 "direction_tol_deg": direction_tol,
                 "load_mN": params.limit.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
-                "mu_superlubric": a.mu_superlubric,
+                "mu_superlubric": a.verdict.mu_superlubric,
                 "line_deg": line.map(rad_to_deg),
                 "friction": record::friction_knobs(&params.limit.friction),
             }),

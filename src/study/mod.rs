@@ -104,6 +104,7 @@ pub mod figures;
 pub mod friction;
 pub mod input;
 pub mod landscape;
+pub mod load;
 pub mod merge;
 pub mod patterns;
 pub mod range;

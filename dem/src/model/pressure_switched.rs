@@ -1,9 +1,11 @@
 //! [`PressureSwitched`]: μ1 while p0 ≤ P_crit, μ2 once the coating has failed (p0 > P_crit).
 
 use super::FrictionLaw;
+use surrogate::contact::{coating_failed, coating_mu};
 use surrogate::Coating;
 
-/// The study's coating law: `μ = μ1` for `p0 ≤ P_crit`, `μ = μ2` for `p0 > P_crit` (SI).
+/// The study's coating law ([`surrogate::contact::coating_mu`]): `μ = μ1` for `p0 ≤ P_crit`,
+/// `μ = μ2` for `p0 > P_crit` (SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PressureSwitched {
     /// Critical pressure (Pa).
@@ -27,14 +29,10 @@ impl From<&Coating> for PressureSwitched {
 impl FrictionLaw for PressureSwitched {
     #[inline]
     fn mu(&self, p0: f64) -> f64 {
-        if p0 > self.p_crit {
-            self.mu2
-        } else {
-            self.mu1
-        }
+        coating_mu(p0, self.p_crit, self.mu1, self.mu2)
     }
     #[inline]
     fn failed(&self, p0: f64) -> bool {
-        p0 > self.p_crit
+        coating_failed(p0, self.p_crit)
     }
 }

@@ -2,7 +2,7 @@
 //! finalists (`corrugation_<p>.png`), μ versus load with the DEM markers (`mu_<p>.png`). Each
 //! function only builds the [`Chart`] data; `crate::plot::design::chart_png` draws it.
 
-use super::rows::DemRow;
+use super::rows::{DemProtocol, DemRow};
 use crate::plot::design::{Chart, Colour, Curve, Style};
 use crate::study::design::trim::CHART_DESIGNS;
 use crate::study::design::{DesignParams, PatternResult};
@@ -123,7 +123,7 @@ pub fn mu_chart(pr: &PatternResult, dem: &[DemRow], p: &DesignParams) -> Chart {
             .filter(|d| {
                 d.pattern == pr.scene.name
                     && d.rank == k + 1
-                    && d.protocol == "design"
+                    && d.protocol == DemProtocol::Design
                     && d.mu_dem.is_some()
             })
             .map(|d| (d.load_mN, d.mu_dem.unwrap_or(f64::NAN)))

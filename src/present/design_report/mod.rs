@@ -27,6 +27,7 @@
 pub mod charts;
 pub mod commands;
 pub mod data;
+pub mod log;
 pub mod pattern_files;
 pub mod patterns;
 pub mod rows;
@@ -34,8 +35,9 @@ pub mod top;
 pub mod words;
 
 pub use data::ReportData;
+pub use log::Log;
 pub use pattern_files::Writer;
-pub use rows::{dem_rows, DemRow, ShortlistRow};
+pub use rows::{dem_rows, DemProtocol, DemRow, DemStatus, ShortlistRow};
 
 use crate::plot::design::chart_png;
 use crate::runs::meta::Inputs;

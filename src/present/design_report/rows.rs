@@ -26,6 +26,47 @@ pub struct ShortlistRow {
     pub evaluated: bool,
 }
 
+/// The protocol of a DEM run of `dem.csv` (`protocol`: `design` or `study`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum DemProtocol {
+    /// The design's confirmation protocol.
+    Design,
+    /// The study's protocol (10 + 10 + 300 µs), the protocol check of a shorter one.
+    Study,
+}
+
+/// How a DEM run of `dem.csv` ended (`status`: `ok`, `locked-in` or `failed`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum DemStatus {
+    /// Finished, sliding.
+    Ok,
+    /// Finished, locked in (stick).
+    LockedIn,
+    /// Stopped early; the reason is in `error`.
+    Failed,
+}
+
+impl std::fmt::Display for DemProtocol {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            DemProtocol::Design => "design",
+            DemProtocol::Study => "study",
+        })
+    }
+}
+
+impl std::fmt::Display for DemStatus {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            DemStatus::Ok => "ok",
+            DemStatus::LockedIn => "locked-in",
+            DemStatus::Failed => "failed",
+        })
+    }
+}
+
 /// One DEM run of `dem.csv`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[allow(non_snake_case)]
@@ -46,9 +87,9 @@ pub struct DemRow {
     /// Load (mN).
     pub load_mN: f64,
     /// `design` (the design's confirmation protocol) or `study` (10 + 10 + 300 µs).
-    pub protocol: String,
+    pub protocol: DemProtocol,
     /// `ok`, `locked-in` or `failed`.
-    pub status: String,
+    pub status: DemStatus,
     /// Friction coefficient of the DEM run.
     pub mu_dem: Option<f64>,
     /// The surrogate estimate at the same (θ, α, W); for a tolerance-corner run, the estimate
@@ -129,11 +170,15 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
                 theta_offset_deg: e.theta_offset_deg,
                 direction_offset_deg: e.direction_offset_deg,
                 load_mN: w,
-                protocol: if e.study_protocol { "study" } else { "design" }.into(),
+                protocol: if e.study_protocol {
+                    DemProtocol::Study
+                } else {
+                    DemProtocol::Design
+                },
                 status: match (r, &e.outcome.error) {
-                    (Some(r), _) if r.locked_in => "locked-in".into(),
-                    (Some(_), _) => "ok".into(),
-                    _ => "failed".into(),
+                    (Some(r), _) if r.locked_in => DemStatus::LockedIn,
+                    (Some(_), _) => DemStatus::Ok,
+                    _ => DemStatus::Failed,
                 },
                 mu_dem: r.map(|r| r.mu),
                 mu_est,

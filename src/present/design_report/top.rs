@@ -6,7 +6,7 @@
 //! "How to read this", once.
 
 use super::commands::{line_flag, loads_text, protocol_flags};
-use super::rows::{row_at, DemRow};
+use super::rows::{row_at, DemProtocol, DemRow};
 use super::words::{fmt_g, opt};
 use crate::study::design::answer::{Answer, Check};
 use crate::study::design::rank::Candidate;
@@ -124,7 +124,7 @@ fn centre_runs<'d>(dem: &'d [DemRow], name: &str, c: &Candidate) -> Vec<&'d DemR
                 && d.alpha_deg == c.alpha_deg
                 && d.theta_offset_deg == 0.0
                 && d.direction_offset_deg == 0.0
-                && d.protocol == "design"
+                && d.protocol == DemProtocol::Design
         })
         .collect();
     v.sort_by(|a, b| a.load_mN.total_cmp(&b.load_mN));
@@ -138,7 +138,7 @@ fn corner_runs<'d>(dem: &'d [DemRow], name: &str, rank: usize) -> Vec<&'d DemRow
         .filter(|d| {
             d.pattern == name
                 && d.rank == rank
-                && d.protocol == "design"
+                && d.protocol == DemProtocol::Design
                 && (d.theta_offset_deg != 0.0 || d.direction_offset_deg != 0.0)
         })
         .collect();

@@ -2,7 +2,7 @@
 //! hold: the answer per pattern (also the final log line), its tolerance words, the protocol in
 //! words, which design a study-protocol run is on; and the number formats ([`fmt_g`]).
 
-use super::rows::{row_at, DemRow};
+use super::rows::{row_at, DemProtocol, DemRow};
 use crate::study::design::answer::{Answer, Check};
 use crate::study::design::best::BEST_PATTERNS;
 use crate::study::design::rank::Candidate;
@@ -132,7 +132,7 @@ pub fn answer_line(
                 && d.alpha_deg == b.alpha_deg
                 && d.theta_offset_deg == 0.0
                 && d.direction_offset_deg == 0.0
-                && d.protocol == "design"
+                && d.protocol == DemProtocol::Design
         })
         .map(|d| match d.mu_dem {
             Some(mu) => format!(

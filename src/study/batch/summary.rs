@@ -66,19 +66,19 @@ impl BatchRow {
     /// The row of `job` with its outcome (`None`: not run yet) and the model facts of its
     /// summary.
     pub fn new(job: &SlideJob, o: Option<&SlideOutcome>, facts: Option<&RunFacts>) -> BatchRow {
-        use crate::study::rows::label;
+        use crate::study::rows::{label, RunStatus};
         use surrogate::units::{m_to_um, n_to_mn, pa_to_gpa, rad_to_deg, s_to_us};
         let (s, p) = (&job.scene, &job.params.sim);
         let r = o.and_then(|o| o.result.as_ref());
         let (status, error) = match o {
             None => (
-                "missing",
+                RunStatus::Missing,
                 "not run yet (another shard's run, or an interrupted batch)".to_string(),
             ),
             Some(o) => match (&o.result, &o.error) {
-                (Some(_), _) => ("ok", String::new()),
+                (Some(_), _) => (RunStatus::Ok, String::new()),
                 (None, e) => (
-                    "failed",
+                    RunStatus::Failed,
                     e.clone().unwrap_or_else(|| "no result".to_string()),
                 ),
             },
@@ -118,7 +118,7 @@ impl BatchRow {
             advance_ratio: r.and_then(|r| r.advance_ratio),
             steps: r.map(|r| r.steps),
             wall_s: r.map(|r| r.wall_s),
-            status: status.to_string(),
+            status,
             error,
         }
     }

@@ -67,7 +67,7 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
         return Check::Unchecked;
     };
     let p_crit = pr.scene.scene.coating.p_crit;
-    let w_mn = |e: &DemEntry| crate::study::rows::label(n_to_mn(e.load));
+    let w_mn = |e: &DemEntry| crate::study::load::Load::from_n(e.load).mn();
     let corner = |e: &DemEntry| e.theta_offset_deg != 0.0 || e.direction_offset_deg != 0.0;
     let mut runs: Vec<&DemEntry> = dem
         .iter()

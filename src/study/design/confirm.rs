@@ -12,11 +12,12 @@ pub use crate::study::batch::{
     job_inputs, run_batch, Failure, SlideJob, SlideOutcome, SlideResult,
 };
 
+use super::observer::{Event, Observer};
 use super::rank::{self, Candidate};
 use super::store::Store;
 use super::{answer, tag, tolerance_box, DemEntry, DesignParams, PatternResult};
 use crate::runs::meta::{scene_file, Inputs};
-use crate::runs::progress::Progress;
+use crate::study::load::Load;
 use crate::study::record;
 use crate::study::rows::label;
 use anyhow::Result;
@@ -70,8 +71,8 @@ pub(super) fn confirm_estimates(
         let ds = &pr.scene;
         for c in pr.ranking.iter_mut().take(p.confirm) {
             for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
-                let wm = label(n_to_mn(w));
-                if c.friction.iter().any(|r| r.load_mN == wm) {
+                let wm = Load::from_n(w).mn();
+                if c.friction.iter().any(|r| Load::from_n(w).is(r.load_mN)) {
                     continue;
                 }
                 let theta = deg_to_rad(c.theta_deg);
@@ -136,10 +137,11 @@ pub(super) fn confirm_estimates(
 /// design's loads, one of which the superlubric load is) in N.
 pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64]) -> Vec<f64> {
     let mut w = confirm_loads.to_vec();
-    if let Some(&own) = loads.iter().find(|&&l| {
-        c.score.superlubric_to_mn > 0.0 && label(n_to_mn(l)) == c.score.superlubric_to_mn
-    }) {
-        if !w.iter().any(|&x| label(n_to_mn(x)) == label(n_to_mn(own))) {
+    let own = Load::position(loads, c.score.superlubric_to_mn)
+        .filter(|_| c.score.superlubric_to_mn > 0.0)
+        .map(|k| loads[k]);
+    if let Some(own) = own {
+        if !w.iter().any(|&x| Load::from_n(x) == Load::from_n(own)) {
             w.push(own);
         }
     }
@@ -147,9 +149,26 @@ pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64
     w
 }
 
-/// One DEM run of the confirmation: (pattern, rank, θ (°), α (°), W (N), study protocol,
-/// θ offset (°), direction offset (°)).
-pub type ConfirmEntry = (String, usize, f64, f64, f64, bool, f64, f64);
+/// One DEM run of the confirmation: which design it checks, where and how.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConfirmEntry {
+    /// Pattern name.
+    pub pattern: String,
+    /// Rank of the design within its pattern (1 = best).
+    pub rank: usize,
+    /// θ of the run (degrees).
+    pub theta_deg: f64,
+    /// α of the run (degrees from the contact line).
+    pub alpha_deg: f64,
+    /// Load W (N).
+    pub load: f64,
+    /// The study's protocol (the protocol check) rather than the design's.
+    pub study_protocol: bool,
+    /// θ offset (degrees) from the design for a tolerance-corner run (0: the design itself).
+    pub theta_offset_deg: f64,
+    /// Pull-direction offset (degrees, substrate frame) for a tolerance-corner run.
+    pub direction_offset_deg: f64,
+}
 
 /// The confirmation runs (top `confirm` designs × confirmation loads, and the corners of each
 /// one's tolerance box, `corner_jobs`), with what each one is; the runs of borderline designs
@@ -171,16 +190,16 @@ pub fn confirm_jobs(
                         scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
                         params: dem_params(p, c.alpha_deg, w, false),
                     },
-                    (
-                        pr.scene.name.clone(),
-                        k + 1,
-                        c.theta_deg,
-                        c.alpha_deg,
-                        w,
-                        false,
-                        0.0,
-                        0.0,
-                    ),
+                    ConfirmEntry {
+                        pattern: pr.scene.name.clone(),
+                        rank: k + 1,
+                        theta_deg: c.theta_deg,
+                        alpha_deg: c.alpha_deg,
+                        load: w,
+                        study_protocol: false,
+                        theta_offset_deg: 0.0,
+                        direction_offset_deg: 0.0,
+                    },
                 ));
             }
             // every design that the answer can name (any of the top K) has its corners run
@@ -207,11 +226,7 @@ pub(super) fn corner_jobs(
     if c.score.superlubric_to_mn <= 0.0 {
         return out;
     }
-    let Some(k) = p
-        .loads
-        .iter()
-        .position(|&w| label(n_to_mn(w)) == c.score.superlubric_to_mn)
-    else {
+    let Some(k) = Load::position(&p.loads, c.score.superlubric_to_mn) else {
         return out;
     };
     let loads = &p.loads[k..(k + 2).min(p.loads.len())];
@@ -228,7 +243,16 @@ pub(super) fn corner_jobs(
                     scene,
                     params: dem_params(p, alpha, w, false),
                 },
-                (pr.scene.name.clone(), rank, theta, alpha, w, false, dt, dd),
+                ConfirmEntry {
+                    pattern: pr.scene.name.clone(),
+                    rank,
+                    theta_deg: theta,
+                    alpha_deg: alpha,
+                    load: w,
+                    study_protocol: false,
+                    theta_offset_deg: dt,
+                    direction_offset_deg: dd,
+                },
             ));
         }
     }
@@ -243,20 +267,20 @@ pub(super) fn confirm_stage(
     patterns: &[PatternResult],
     p: &DesignParams,
     store: &Store,
-    progress: &dyn Progress,
+    obs: &dyn Observer,
 ) -> Result<Vec<DemEntry>> {
     let (jobs, mut entries) = confirm_jobs(patterns, p);
     if jobs.is_empty() {
-        progress.note("DEM: nothing to confirm (no ranked design)");
+        obs.event(&Event::DemNothing);
         return Ok(Vec::new());
     }
-    progress.note(&format!(
-        "DEM: {} runs, {} side by side (one thread each), into {}",
-        jobs.len(),
-        p.jobs.min(jobs.len()),
-        store.path("dem").display()
-    ));
-    let mut outcomes = run_batch(&jobs, p.jobs, &store.path("dem"), progress)?;
+    let dir = store.path("dem");
+    obs.event(&Event::DemRuns {
+        runs: jobs.len(),
+        side_by_side: p.jobs.min(jobs.len()),
+        dir: &dir,
+    });
+    let mut outcomes = run_batch(&jobs, p.jobs, &dir, obs.progress())?;
     let mut dem = to_entries(&entries, &outcomes);
     // the protocol check, on the design the report recommends
     if p.protocol_check && !p.dem_is_study_protocol {
@@ -264,41 +288,45 @@ pub(super) fn confirm_stage(
             .iter()
             .map(|pr| answer::answer(pr, &dem, true, p))
             .collect();
-        if let Some((pr, i, w)) = protocol_check_design(patterns, &answers, &p.confirm_loads) {
+        if let Some(ProtocolCheck {
+            pattern: pr,
+            index: i,
+            load: w,
+        }) = protocol_check_design(patterns, &answers, &p.confirm_loads)
+        {
             let c = &pr.ranking[i];
             let job = SlideJob {
                 name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
                 scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
                 params: dem_params(p, c.alpha_deg, w, true),
             };
-            progress.note(&format!(
-                "DEM: the study's protocol (10 + 10 + 300 µs) on the recommended design, {} θ = {}°, α = {}° at {} mN, to measure the shorter protocol's difference",
-                pr.scene.name,
-                c.theta_deg,
-                c.alpha_deg,
-                label(n_to_mn(w))
-            ));
-            let o = run_batch(std::slice::from_ref(&job), 1, &store.path("dem"), progress)?;
-            entries.push((
-                pr.scene.name.clone(),
-                i + 1,
-                c.theta_deg,
-                c.alpha_deg,
-                w,
-                true,
-                0.0,
-                0.0,
-            ));
+            obs.event(&Event::ProtocolCheck {
+                pattern: &pr.scene.name,
+                theta_deg: c.theta_deg,
+                alpha_deg: c.alpha_deg,
+                load: w,
+            });
+            let o = run_batch(std::slice::from_ref(&job), 1, &dir, obs.progress())?;
+            entries.push(ConfirmEntry {
+                pattern: pr.scene.name.clone(),
+                rank: i + 1,
+                theta_deg: c.theta_deg,
+                alpha_deg: c.alpha_deg,
+                load: w,
+                study_protocol: true,
+                theta_offset_deg: 0.0,
+                direction_offset_deg: 0.0,
+            });
             outcomes.extend(o);
             dem = to_entries(&entries, &outcomes);
         }
     }
     let reused = outcomes.iter().filter(|o| o.reused).count();
     if reused > 0 {
-        progress.note(&format!(
-            "DEM: {reused} of {} runs reused (input hash matches)",
-            outcomes.len()
-        ));
+        obs.event(&Event::DemReused {
+            reused,
+            runs: outcomes.len(),
+        });
     }
     Ok(dem)
 }
@@ -308,12 +336,12 @@ pub(super) fn confirm_stage(
 /// confirmed), at the middle of its design-protocol runs up to its superlubric load (the
 /// confirmed loads), else at the middle confirmation load. So the measured difference is that
 /// of the design the report recommends, at a load where the shorter protocol ran on it.
-/// `confirm_loads` in N. Returns (pattern, index into its ranking, load in N).
+/// `confirm_loads` in N.
 pub fn protocol_check_design<'a>(
     patterns: &'a [PatternResult],
     answers: &[answer::Answer],
     confirm_loads: &[f64],
-) -> Option<(&'a PatternResult, usize, f64)> {
+) -> Option<ProtocolCheck<'a>> {
     let with_index = || {
         patterns
             .iter()
@@ -326,35 +354,44 @@ pub fn protocol_check_design<'a>(
     let w = match &a.check {
         answer::Check::Confirmed(loads) if !loads.is_empty() => {
             let mn = loads[loads.len() / 2];
-            confirm_loads
-                .iter()
-                .copied()
-                .find(|&w| label(n_to_mn(w)) == mn)?
+            confirm_loads[Load::position(confirm_loads, mn)?]
         }
         _ => *confirm_loads.get(confirm_loads.len() / 2)?,
     };
-    Some((pr, i, w))
+    Some(ProtocolCheck {
+        pattern: pr,
+        index: i,
+        load: w,
+    })
 }
 
-/// The DEM entries of the runs `outcomes` made for `entries` (pattern, rank, θ, α, W, study,
-/// θ offset, direction offset), in order.
+/// The design and load of the study-protocol check ([`protocol_check_design`]).
+#[derive(Debug, Clone, Copy)]
+pub struct ProtocolCheck<'a> {
+    /// The pattern.
+    pub pattern: &'a PatternResult,
+    /// The design: an index into the pattern's ranking.
+    pub index: usize,
+    /// The load (N).
+    pub load: f64,
+}
+
+/// The DEM entries of the runs `outcomes` made for `entries`, in order.
 pub fn to_entries(entries: &[ConfirmEntry], outcomes: &[SlideOutcome]) -> Vec<DemEntry> {
     entries
         .iter()
         .cloned()
         .zip(outcomes.iter().cloned())
-        .map(
-            |((pattern, rank, theta_deg, alpha_deg, load, study, dt, dd), outcome)| DemEntry {
-                pattern,
-                rank,
-                theta_deg,
-                alpha_deg,
-                load,
-                study_protocol: study,
-                theta_offset_deg: dt,
-                direction_offset_deg: dd,
-                outcome,
-            },
-        )
+        .map(|(e, outcome)| DemEntry {
+            pattern: e.pattern,
+            rank: e.rank,
+            theta_deg: e.theta_deg,
+            alpha_deg: e.alpha_deg,
+            load: e.load,
+            study_protocol: e.study_protocol,
+            theta_offset_deg: e.theta_offset_deg,
+            direction_offset_deg: e.direction_offset_deg,
+            outcome,
+        })
         .collect()
 }

@@ -1,7 +1,7 @@
 //! The θ list of a pattern: the symmetry cut of `--theta` to the pair's domain, the default
 //! list over a whole domain, and the notes that say what was (not) screened.
 
-use super::symmetry::PairSymmetry;
+use super::symmetry::{Domain, PairSymmetry, SymmetryWords};
 use super::{DesignParams, DesignScene};
 use crate::study::input::Input;
 use anyhow::{bail, Result};
@@ -33,7 +33,11 @@ pub fn default_domain(sym: &PairSymmetry, p: &DesignParams) -> Option<(Vec<f64>,
     if !cut.is_empty() && sym.unscreened(&cut).is_empty() {
         return None;
     }
-    let (lo, hi, closed) = sym.domain();
+    let Domain {
+        lo_deg: lo,
+        hi_deg: hi,
+        closed,
+    } = sym.domain();
     let step = if hi - lo > WIDE_DOMAIN_DEG + 1e-9 {
         WIDE_THETA_STEP_DEG
     } else {
@@ -68,7 +72,11 @@ pub struct ThetaNote {
 pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> Option<ThetaNote> {
     let gaps = sym.unscreened(thetas_deg);
     if !gaps.is_empty() {
-        let (lo, hi, closed) = sym.domain();
+        let Domain {
+            lo_deg: lo,
+            hi_deg: hi,
+            closed,
+        } = sym.domain();
         let text = format!(
             "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give {} over the whole domain{})",
             super::symmetry::fmt(lo),
@@ -138,7 +146,11 @@ pub fn cut(ds: &DesignScene, p: &DesignParams) -> Result<(Vec<f64>, PairSymmetry
         .filter(|&t| sym.contains(t))
         .collect();
     if kept.is_empty() {
-        let (lo, hi, closed) = sym.domain();
+        let Domain {
+            lo_deg: lo,
+            hi_deg: hi,
+            closed,
+        } = sym.domain();
         let t = p.thetas_deg[0];
         bail!(
             "{}: none of `{}` lies in the fundamental domain [{}°, {}°{} of {} ({}); every orientation is equivalent to one in it (e.g. {}° ≡ {}°): give θ in [{}, {}], or pass {}",

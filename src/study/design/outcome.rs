@@ -26,6 +26,24 @@ pub struct EvalStage {
     pub wall_s: f64,
 }
 
+/// Why a pattern's level-by-level evaluation stopped (with [`PatternResult::levels_skipped`]
+/// and [`PatternResult::robust_floor_mn`], the levels skipped under a floor).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Stop {
+    /// Every level was taken (evaluated, or skipped under the floor).
+    EveryLevel,
+    /// Stopped before the level of load `level` (N): its orientations cannot be superlubric
+    /// beyond `reach_mn` (mN), below the best limit found, `best_mn` (mN).
+    Before {
+        /// The level's load W_c (N).
+        level: f64,
+        /// The most its orientations can reach (mN).
+        reach_mn: f64,
+        /// The best superlubric limit found (mN).
+        best_mn: f64,
+    },
+}
+
 /// One evaluated orientation of a pattern.
 #[derive(Debug, Clone)]
 pub struct Evaluated {
@@ -69,7 +87,7 @@ pub struct PatternResult {
     /// exceed it over the tolerance box (`super::design`, many patterns).
     pub levels_skipped: Vec<usize>,
     /// Why the evaluation stopped.
-    pub stop: String,
+    pub stop: Stop,
     /// The evaluated orientations, in evaluation order.
     pub evaluated: Vec<Evaluated>,
     /// The candidates, best first (below the top few, each with its lowest-load friction
@@ -157,7 +175,7 @@ impl PatternResult {
             levels: vec![],
             levels_evaluated: 0,
             levels_skipped: vec![],
-            stop: String::new(),
+            stop: Stop::EveryLevel,
             evaluated: vec![],
             ranking,
             resonance_flagged: 0,

@@ -9,11 +9,12 @@
 //! Cost: about one single-load path per sample to disprove a bound, and one path per sample to
 //! verify a limit; docs/validation/tolerance-cost.md.
 
+use super::observer::{Event, Observer};
 use super::rank::{self, Candidate, CornerEstimate};
 use super::store::Store;
 use super::{DesignParams, DesignScene};
 use crate::runs::meta::Inputs;
-use crate::runs::progress::Progress;
+use crate::study::load::Load;
 use crate::study::rows::{label, FrictionRow};
 use crate::study::tolerance::{LimitParams, RobustSearch, RobustState, Snapshot, ToleranceBox};
 use anyhow::Result;
@@ -47,6 +48,60 @@ pub struct RobustStage {
     pub designs: Vec<StoredSearch>,
 }
 
+/// The identity of a design in the robust searches: its nominal (θ, α), degrees.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DesignKey {
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// α (degrees from the contact line).
+    pub alpha_deg: f64,
+}
+
+impl DesignKey {
+    /// The key of candidate `c`.
+    pub fn of(c: &Candidate) -> DesignKey {
+        DesignKey {
+            theta_deg: c.theta_deg,
+            alpha_deg: c.alpha_deg,
+        }
+    }
+    /// The key of a stored search.
+    fn of_stored(s: &StoredSearch) -> DesignKey {
+        DesignKey {
+            theta_deg: s.theta_deg,
+            alpha_deg: s.alpha_deg,
+        }
+    }
+}
+
+/// What the search knows of a candidate so far.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Known {
+    /// Upper bound of its robust limit (count of loads).
+    bound: usize,
+    /// Whether the bound is the limit.
+    exact: bool,
+    /// θ window (degrees), where computed.
+    theta_window_deg: Option<f64>,
+    /// Direction window (degrees), where computed.
+    direction_window_deg: Option<f64>,
+}
+
+/// A candidate's place in the best-first order of the search: its best possible score.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Pending {
+    /// Index into the ranking.
+    index: usize,
+    /// Upper bound of its robust limit (count of loads).
+    bound: usize,
+    /// Nothing left to refine (exact with its windows, or bounded at the floor).
+    settled: bool,
+    /// θ window (degrees; the whole tolerance where not computed).
+    theta_window_deg: f64,
+    /// Direction window (degrees; likewise).
+    direction_window_deg: f64,
+}
+
 /// The robust searches of one pattern's candidates, kept across the shortlist levels.
 pub struct Searches<'a> {
     solvers: &'a [Solver],
@@ -55,7 +110,7 @@ pub struct Searches<'a> {
     stored: RobustStage,
     rel: String,
     inputs: Inputs,
-    live: Vec<((f64, f64), RobustSearch<'a>)>,
+    live: Vec<(DesignKey, RobustSearch<'a>)>,
     /// Shortlist levels done so far in this run.
     level: usize,
 }
@@ -98,12 +153,12 @@ impl<'a> Searches<'a> {
     }
 
     fn index(&mut self, c: &Candidate) -> usize {
-        let key = (c.theta_deg, c.alpha_deg);
+        let key = DesignKey::of(c);
         if let Some(i) = self.live.iter().position(|(k, _)| *k == key) {
             return i;
         }
         let old = self.stored.designs.iter().find(|s| {
-            (s.theta_deg, s.alpha_deg) == key
+            DesignKey::of_stored(s) == key
                 && s.nominal == c.friction
                 && s.state.samples.len() == self.expected_samples()
                 // a state from a later level than this one would use estimates this level did
@@ -140,17 +195,17 @@ impl<'a> Searches<'a> {
     fn begin_level(&mut self, ranking: &[Candidate]) {
         let level = self.level;
         for d in &self.stored.designs {
-            let key = (d.theta_deg, d.alpha_deg);
+            let key = DesignKey::of_stored(d);
             let same = ranking
                 .iter()
-                .any(|c| (c.theta_deg, c.alpha_deg) == key && c.friction == d.nominal);
+                .any(|c| DesignKey::of(c) == key && c.friction == d.nominal);
             let Some((_, snap)) = d.levels.iter().find(|(l, _)| *l == level) else {
                 continue;
             };
             let Some(state) = d.state.at(snap).filter(|_| same) else {
                 continue;
             };
-            let Some(c) = ranking.iter().find(|c| (c.theta_deg, c.alpha_deg) == key) else {
+            let Some(c) = ranking.iter().find(|c| DesignKey::of(c) == key) else {
                 continue;
             };
             let s = RobustSearch::resume(
@@ -169,7 +224,7 @@ impl<'a> Searches<'a> {
 
     fn save(&mut self, store: &Store, ranking: &[Candidate]) -> Result<()> {
         for (key, s) in &self.live {
-            let Some(c) = ranking.iter().find(|c| (c.theta_deg, c.alpha_deg) == *key) else {
+            let Some(c) = ranking.iter().find(|c| DesignKey::of(c) == *key) else {
                 continue;
             };
             let snap = (self.level, s.state.snapshot());
@@ -177,7 +232,7 @@ impl<'a> Searches<'a> {
                 .stored
                 .designs
                 .iter_mut()
-                .find(|d| (d.theta_deg, d.alpha_deg) == *key && d.nominal == c.friction)
+                .find(|d| DesignKey::of_stored(d) == *key && d.nominal == c.friction)
             {
                 Some(d) => {
                     // the latest state holds every estimate (a replayed level's is a subset)
@@ -188,8 +243,8 @@ impl<'a> Searches<'a> {
                     d.levels.push(snap);
                 }
                 None => self.stored.designs.push(StoredSearch {
-                    theta_deg: key.0,
-                    alpha_deg: key.1,
+                    theta_deg: key.theta_deg,
+                    alpha_deg: key.alpha_deg,
                     nominal: c.friction.clone(),
                     state: s.state.clone(),
                     levels: vec![snap],
@@ -270,9 +325,9 @@ fn unsearched(c: &mut Candidate) {
     c.score.direction_window_deg = None;
 }
 
-/// The loads (count) up to `mn`.
+/// The loads (count) up to `mn` (mN).
 fn count(p: &DesignParams, mn: f64) -> usize {
-    p.loads.iter().filter(|&&w| label(n_to_mn(w)) <= mn).count()
+    Load::count_upto(&p.loads, mn)
 }
 
 /// Stage 4b on every candidate so far (`ranking`, all levels): refines best first (module
@@ -289,10 +344,11 @@ pub fn robust_stage(
     searches: &mut Searches,
     p: &DesignParams,
     store: &Store,
-    progress: &dyn Progress,
+    obs: &dyn Observer,
     floor_mn: f64,
     keep: usize,
 ) -> Result<()> {
+    let progress = obs.progress();
     let keep = keep.max(1);
     ranking.sort_by(rank::compare);
     searches.begin_level(ranking);
@@ -309,37 +365,30 @@ pub fn robust_stage(
         // nothing to search (the pattern's own note names the floor)
         return searches.save(store, ranking);
     }
-    progress.stage(
-        &format!(
-            "{}: robust limits over θ ±{}° × direction ±{}°{}",
-            ds.name,
-            p.theta_tol_deg,
-            p.direction_tol_deg,
-            if searches.solvers.len() > 1 {
-                format!(" × {} substrates", searches.solvers.len())
-            } else {
-                String::new()
-            }
-        ),
-        keep.min(todo.len()) as u64,
-        "designs",
-    );
+    obs.event(&Event::Robust {
+        pattern: &ds.name,
+        theta_tol_deg: p.theta_tol_deg,
+        direction_tol_deg: p.direction_tol_deg,
+        substrates: searches.solvers.len(),
+        designs: keep.min(todo.len()) as u64,
+    });
     let t0 = Instant::now();
     let mut paths = 0usize;
-    // what is known of candidate c: (bound, exact, θ window, direction window)
-    let known = |s: &Searches, c: &Candidate| -> (usize, bool, Option<f64>, Option<f64>) {
-        match s
-            .live
-            .iter()
-            .find(|(k, _)| *k == (c.theta_deg, c.alpha_deg))
-        {
-            Some((_, r)) => (
-                r.state.bound,
-                r.settled(),
-                r.state.theta_window_deg,
-                r.state.direction_window_deg,
-            ),
-            None => (count(p, c.score.nominal_to_mn), false, None, None),
+    // what is known of candidate c
+    let known = |s: &Searches, c: &Candidate| -> Known {
+        match s.live.iter().find(|(k, _)| *k == DesignKey::of(c)) {
+            Some((_, r)) => Known {
+                bound: r.state.bound,
+                exact: r.settled(),
+                theta_window_deg: r.state.theta_window_deg,
+                direction_window_deg: r.state.direction_window_deg,
+            },
+            None => Known {
+                bound: count(p, c.score.nominal_to_mn),
+                exact: false,
+                theta_window_deg: None,
+                direction_window_deg: None,
+            },
         }
     };
     // a bound at or below the floor is as far as a search needs to go (`count` of the loads)
@@ -348,24 +397,28 @@ pub fn robust_stage(
     loop {
         // every candidate's best possible score: its bound, its window or the whole tolerance
         // where not computed, then μ and contacts (known); ordered as the ranking orders
-        let mut order: Vec<(usize, usize, bool, f64, f64)> = todo
+        let mut order: Vec<Pending> = todo
             .iter()
             .map(|&i| {
-                let (b, exact, wt, wd) = known(searches, &ranking[i]);
-                let settled =
-                    (exact && (b == 0 || wt.is_some())) || (floor_mn > 0.0 && b <= floor_n);
-                let wt = wt.unwrap_or(p.theta_tol_deg);
-                let wd = wd.unwrap_or(p.direction_tol_deg);
-                (i, b, settled, wt, wd)
+                let k = known(searches, &ranking[i]);
+                let b = k.bound;
+                Pending {
+                    index: i,
+                    bound: b,
+                    settled: (k.exact && (b == 0 || k.theta_window_deg.is_some()))
+                        || (floor_mn > 0.0 && b <= floor_n),
+                    theta_window_deg: k.theta_window_deg.unwrap_or(p.theta_tol_deg),
+                    direction_window_deg: k.direction_window_deg.unwrap_or(p.direction_tol_deg),
+                }
             })
             .collect();
         order.sort_by(|x, y| {
-            let (a, b) = (&ranking[x.0], &ranking[y.0]);
-            (x.1 == 0)
-                .cmp(&(y.1 == 0))
-                .then(y.1.cmp(&x.1))
-                .then(y.3.total_cmp(&x.3))
-                .then(y.4.total_cmp(&x.4))
+            let (a, b) = (&ranking[x.index], &ranking[y.index]);
+            (x.bound == 0)
+                .cmp(&(y.bound == 0))
+                .then(y.bound.cmp(&x.bound))
+                .then(y.theta_window_deg.total_cmp(&x.theta_window_deg))
+                .then(y.direction_window_deg.total_cmp(&x.direction_window_deg))
                 .then(a.score.mu_worst.total_cmp(&b.score.mu_worst))
                 .then(b.score.contacts.total_cmp(&a.score.contacts))
                 .then(a.theta_deg.total_cmp(&b.theta_deg))
@@ -373,12 +426,17 @@ pub fn robust_stage(
         });
         // done when the best `keep` by that order are settled: every other candidate's best
         // possible score is below theirs
-        let exact_top = order.iter().take_while(|x| x.2).count().min(keep) as u64;
+        let exact_top = order.iter().take_while(|x| x.settled).count().min(keep) as u64;
         if exact_top > done {
             progress.advance(exact_top - done);
             done = exact_top;
         }
-        let Some(&(i, _, _, _, _)) = order.iter().take(keep).find(|x| !x.2) else {
+        let Some(i) = order
+            .iter()
+            .take(keep)
+            .find(|x| !x.settled)
+            .map(|x| x.index)
+        else {
             break;
         };
         let k = searches.index(&ranking[i]);
@@ -398,7 +456,11 @@ pub fn robust_stage(
         .fold(0.0f64, f64::max);
     for &i in &todo {
         let c = &ranking[i];
-        let (b, settled, _, _) = known(searches, c);
+        let Known {
+            bound: b,
+            exact: settled,
+            ..
+        } = known(searches, c);
         if (settled && b > 0) || (c.score.nominal_to_mn == top && (floor_mn == 0.0 || b > floor_n))
         {
             let k = searches.index(c);
@@ -408,11 +470,15 @@ pub fn robust_stage(
         }
     }
     // the spread over substrate seeds, for the exact designs
-    let mut seed_limits: Vec<((f64, f64), Vec<f64>)> = Vec::new();
+    let mut seed_limits: Vec<(DesignKey, Vec<f64>)> = Vec::new();
     if searches.solvers.len() > 1 {
         for &i in &todo {
             let c = &ranking[i];
-            let (b, settled, _, _) = known(searches, c);
+            let Known {
+                bound: b,
+                exact: settled,
+                ..
+            } = known(searches, c);
             if settled && b > 0 {
                 let k = searches.index(c);
                 let before = searches.live[k].1.state.paths;
@@ -425,13 +491,13 @@ pub fn robust_stage(
                         label(n_to_mn(p.loads[n - 1]))
                     }
                 };
-                seed_limits.push(((c.theta_deg, c.alpha_deg), v.into_iter().map(mn).collect()));
+                seed_limits.push((DesignKey::of(c), v.into_iter().map(mn).collect()));
             }
         }
     }
     // the scores
     for &i in &todo {
-        let key = (ranking[i].theta_deg, ranking[i].alpha_deg);
+        let key = DesignKey::of(&ranking[i]);
         let c = &mut ranking[i];
         match searches.live.iter().find(|(k, _)| *k == key) {
             Some((_, s)) => {
@@ -457,11 +523,12 @@ pub fn robust_stage(
     progress.finish();
     searches.save(store, ranking)?;
     let exact = todo.iter().filter(|&&i| ranking[i].score.exact).count();
-    progress.note(&format!(
-        "{}: robust limits: {exact} of {} designs exact, the others bounded, in {:.1} s ({paths} friction paths)",
-        ds.name,
-        todo.len(),
-        t0.elapsed().as_secs_f64()
-    ));
+    obs.event(&Event::RobustDone {
+        pattern: &ds.name,
+        exact,
+        searched: todo.len(),
+        wall_s: t0.elapsed().as_secs_f64(),
+        paths,
+    });
     Ok(())
 }

@@ -109,9 +109,9 @@ pub fn paths_per_scan(p: &DesignParams, sym: &PairSymmetry) -> usize {
     n
 }
 
-/// Evaluates orientation `theta_deg` of `scene` (see the module docs): scan at `scan_load` (N),
-/// friction at every load of `p`. `tick` is called once per scanned path and once per friction
-/// path.
+/// Evaluates orientation `theta_deg` of `scene` (see the module docs): the α scan at
+/// `scan_load` (N, [`scan_alpha`]), then the friction estimate at every load of `p`
+/// ([`estimate`]). `tick` is called once per scanned path and once per friction path.
 #[allow(clippy::too_many_arguments)]
 pub fn evaluate(
     solver: &Solver,
@@ -122,6 +122,42 @@ pub fn evaluate(
     sym: &PairSymmetry,
     tick: &(dyn Fn() + Sync),
 ) -> Result<ThetaEval> {
+    let scan = scan_alpha(solver, scene, theta_deg, scan_load, p, sym, tick)?;
+    let friction = estimate(solver, scene, theta_deg, scan_load, &scan, p, tick)?;
+    Ok(ThetaEval {
+        theta_deg: label(theta_deg),
+        scan_load_mN: label(n_to_mn(scan_load)),
+        line_deg: rad_to_deg(scan.line),
+        scan: scan.scan,
+        alphas_deg: scan.alphas_deg,
+        friction,
+    })
+}
+
+/// The α scan of one orientation (the stage before the estimate).
+#[derive(Debug, Clone, PartialEq)]
+pub struct AlphaScan {
+    /// Contact line used (rad from x).
+    pub line: f64,
+    /// The scan rows, in scan order (coarse grid, then each refinement).
+    pub scan: Vec<CorrugationRow>,
+    /// The best α's (degrees), best first.
+    pub alphas_deg: Vec<f64>,
+}
+
+/// The α scan of orientation `theta_deg` of `scene` at `scan_load` (N) and its best α's (see
+/// the module docs). `tick` is called once per scanned path. Cost: the coarse grid plus each
+/// refinement's new angles, one corrugation path each ([`paths_per_scan`]).
+#[allow(clippy::too_many_arguments)]
+pub fn scan_alpha(
+    solver: &Solver,
+    scene: &Scene,
+    theta_deg: f64,
+    scan_load: f64,
+    p: &DesignParams,
+    sym: &PairSymmetry,
+    tick: &(dyn Fn() + Sync),
+) -> Result<AlphaScan> {
     let theta = deg_to_rad(theta_deg);
     let line = contact_line(&scene.with_theta(theta), p.line);
     let map = MapParams {
@@ -187,13 +223,35 @@ pub fn evaluate(
             alphas.push(r.alpha_deg);
         }
     }
+    Ok(AlphaScan {
+        line: line.angle,
+        scan,
+        alphas_deg: alphas,
+    })
+}
+
+/// The friction estimate of orientation `theta_deg` along each best α of `scan` (see the
+/// module docs): the lowest load, then, while superlubric, the loads up to `scan_load` (N)
+/// until the coating fails on the path. `tick` is called once per α. Cost: one friction path
+/// per α and chunk of loads.
+pub fn estimate(
+    solver: &Solver,
+    scene: &Scene,
+    theta_deg: f64,
+    scan_load: f64,
+    scan: &AlphaScan,
+    p: &DesignParams,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Vec<FrictionRow>> {
+    let theta = deg_to_rad(theta_deg);
+    let line_angle = scan.line;
     let mut friction = Vec::new();
     let p_crit = scene.coating.p_crit;
-    for &a in &alphas {
+    for &a in &scan.alphas_deg {
         let alpha = deg_to_rad(a);
-        let dir = line.angle + alpha;
+        let dir = line_angle + alpha;
         let row = |w: f64, r: &Result<_, _>| {
-            let mut row = FrictionRow::new(&scene.pattern, theta, alpha, line.angle, w, r);
+            let mut row = FrictionRow::new(&scene.pattern, theta, alpha, line_angle, w, r);
             row.alpha_deg = a;
             row
         };
@@ -226,14 +284,7 @@ pub fn evaluate(
         }
         tick();
     }
-    Ok(ThetaEval {
-        theta_deg: label(theta_deg),
-        scan_load_mN: label(n_to_mn(scan_load)),
-        line_deg: rad_to_deg(line.angle),
-        scan,
-        alphas_deg: alphas,
-        friction,
-    })
+    Ok(friction)
 }
 
 #[cfg(test)]

@@ -2,6 +2,7 @@
 //! orientation, the seed solvers and the answer's tolerance map, each stored with its inputs.
 
 use super::domain::{default_domain, line_note};
+use super::observer::{Event, Observer, Stage};
 use super::outcome::{AnswerMap, EvalStage, Timing};
 use super::rank::Candidate;
 use super::scan::ThetaEval;
@@ -10,13 +11,13 @@ use super::store::Store;
 use super::symmetry::PairSymmetry;
 use super::{DesignParams, DesignScene};
 use crate::runs::meta::{scene_file, Inputs};
-use crate::runs::progress::Progress;
 use crate::runs::sink::csv_bytes;
 use crate::study::record;
 use crate::study::rows::{label, ScreenRow};
 use crate::study::screen::{screen, ScreenParams};
 use crate::study::tolerance::{LimitParams, ToleranceBox};
 use anyhow::Result;
+use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::time::Instant;
 use surrogate::solver::{Model, SearchKind, Solver};
@@ -29,8 +30,9 @@ pub fn answer_map(
     c: &Candidate,
     p: &DesignParams,
     store: &Store,
-    progress: &dyn Progress,
+    obs: &dyn Observer,
 ) -> Result<AnswerMap> {
+    let progress = obs.progress();
     let grid = |tol: f64, min: f64, n: usize| -> Vec<f64> {
         let r = (2.0 * tol).max(min);
         (0..n)
@@ -68,11 +70,10 @@ pub fn answer_map(
     sc.slider.theta = 0.0;
     let solver = Solver::new(&sc)?;
     let n = mp.theta_offsets_deg.len() * mp.direction_offsets_deg.len();
-    progress.stage(
-        &format!("{}: tolerance map around the answer", ds.name),
-        n as u64,
-        "points",
-    );
+    obs.event(&Event::ToleranceMap {
+        pattern: &ds.name,
+        points: n as u64,
+    });
     let rows = crate::study::tolerance::map(&solver, &mp, &|| progress.advance(1))?;
     progress.finish();
     let m = AnswerMap {
@@ -229,7 +230,7 @@ pub(super) fn screen_stage(
     thetas_deg: &[f64],
     p: &DesignParams,
     store: &Store,
-    progress: &dyn Progress,
+    obs: &dyn Observer,
 ) -> Result<(Vec<ScreenRow>, Option<f64>)> {
     let sp = screen_params(thetas_deg, p);
     let inputs = screen_inputs(ds, &sp);
@@ -237,28 +238,27 @@ pub(super) fn screen_stage(
     let timing = format!("stages/{}/screen.json", ds.name);
     if let Some(rows) = store.load_csv::<ScreenRow>(&rel, &inputs)? {
         let t = store.load_json::<Timing>(&timing, &inputs)?;
-        progress.note(&format!(
-            "{}: screen reused from {rel} ({} rows, input hash matches)",
-            ds.name,
-            rows.len()
-        ));
+        obs.event(&Event::ScreenReused {
+            pattern: &ds.name,
+            file: &rel,
+            rows: rows.len(),
+        });
         return Ok((rows, t.map(|t| t.wall_s)));
     }
     let t0 = Instant::now();
     let mut rows: Vec<ScreenRow> = Vec::new();
     let mut scene = ds.scene.clone();
     scene.slider.theta = 0.0;
-    screen(&scene, &sp, &mut rows, progress)?;
+    screen(&scene, &sp, &mut rows, obs.progress())?;
     let wall_s = t0.elapsed().as_secs_f64();
     store.save(&rel, &inputs, csv_bytes(&rows)?, Some(rows.len() as u64))?;
     store.save_json(&timing, &inputs, &Timing { wall_s })?;
-    progress.note(&format!(
-        "{}: screened {} θ × {} loads in {:.2} s",
-        ds.name,
-        thetas_deg.len(),
-        p.loads.len(),
-        wall_s
-    ));
+    obs.event(&Event::Screened {
+        pattern: &ds.name,
+        thetas: thetas_deg.len(),
+        loads: p.loads.len(),
+        wall_s,
+    });
     Ok((rows, Some(wall_s)))
 }
 
@@ -290,41 +290,115 @@ pub(super) fn eval_inputs(
     }
 }
 
-/// Stage 4 for one orientation (`stages/<name>/theta_<θ>.json`), reused when finished.
+/// Stages 4a and 4b for the orientations `picks` of one shortlist level, scanned at
+/// `scan_load` (N): each one's stored evaluation (`stages/<name>/theta_<θ>.json`) where
+/// finished, else its α scan ([`Stage::AlphaScan`], every orientation side by side), then its
+/// friction estimate ([`Stage::Estimate`], likewise), stored. `per` paths per orientation are
+/// reported through the observer's bar. Returns per pick (in order) the evaluation, its wall
+/// time (s) and whether it was reused.
 #[allow(clippy::too_many_arguments)]
-pub(super) fn eval_stage(
+pub(super) fn eval_level(
     ds: &DesignScene,
-    o: &Orientation,
+    picks: &[Orientation],
     scan_load: f64,
     sym: &PairSymmetry,
     p: &DesignParams,
     store: &Store,
     solver: &Solver,
     per: usize,
-    progress: &dyn Progress,
-) -> Result<(ThetaEval, f64, bool)> {
-    let inputs = eval_inputs(ds, o.theta_deg, scan_load, sym, p);
-    let rel = format!("stages/{}/theta_{}.json", ds.name, super::tag(o.theta_deg));
-    if let Some(st) = store.load_json::<EvalStage>(&rel, &inputs)? {
-        progress.advance(per as u64);
-        return Ok((st.eval, st.wall_s, true));
+    obs: &dyn Observer,
+) -> Result<Vec<(ThetaEval, f64, bool)>> {
+    use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
+    let progress = obs.progress();
+    let rel =
+        |o: &Orientation| format!("stages/{}/theta_{}.json", ds.name, super::tag(o.theta_deg));
+    let inputs: Vec<Inputs> = picks
+        .iter()
+        .map(|o| eval_inputs(ds, o.theta_deg, scan_load, sym, p))
+        .collect();
+    let stored: Vec<Option<EvalStage>> = picks
+        .iter()
+        .zip(&inputs)
+        .map(|(o, i)| store.load_json::<EvalStage>(&rel(o), i))
+        .collect::<Result<_>>()?;
+    let reused = stored.iter().flatten().count();
+    if reused > 0 {
+        progress.advance((reused * per) as u64);
     }
-    let t0 = Instant::now();
-    let ticks = std::sync::atomic::AtomicUsize::new(0);
-    let tick = || {
-        if ticks.fetch_add(1, std::sync::atomic::Ordering::Relaxed) < per {
+    // at most `per` ticks per orientation; the rest when it is done
+    let ticks: Vec<AtomicUsize> = picks.iter().map(|_| AtomicUsize::new(0)).collect();
+    let tick = |k: usize| {
+        if ticks[k].fetch_add(1, Relaxed) < per {
             progress.advance(1);
         }
     };
-    let eval = super::scan::evaluate(solver, &ds.scene, o.theta_deg, scan_load, p, sym, &tick)?;
-    let done = ticks.load(std::sync::atomic::Ordering::Relaxed);
-    if done < per {
-        progress.advance((per - done) as u64);
+    let todo: Vec<usize> = (0..picks.len()).filter(|&k| stored[k].is_none()).collect();
+    obs.stage(Stage::AlphaScan, &ds.name);
+    let scans: Vec<Result<(super::scan::AlphaScan, f64)>> = todo
+        .par_iter()
+        .map(|&k| {
+            let t0 = Instant::now();
+            let s = super::scan::scan_alpha(
+                solver,
+                &ds.scene,
+                picks[k].theta_deg,
+                scan_load,
+                p,
+                sym,
+                &|| tick(k),
+            )?;
+            Ok((s, t0.elapsed().as_secs_f64()))
+        })
+        .collect();
+    let scans: Vec<(super::scan::AlphaScan, f64)> = scans.into_iter().collect::<Result<_>>()?;
+    obs.stage(Stage::Estimate, &ds.name);
+    let estimates: Vec<Result<(Vec<crate::study::rows::FrictionRow>, f64)>> = todo
+        .par_iter()
+        .zip(&scans)
+        .map(|(&k, (s, _))| {
+            let t0 = Instant::now();
+            let f = super::scan::estimate(
+                solver,
+                &ds.scene,
+                picks[k].theta_deg,
+                scan_load,
+                s,
+                p,
+                &|| tick(k),
+            )?;
+            Ok((f, t0.elapsed().as_secs_f64()))
+        })
+        .collect();
+    let mut fresh: Vec<Option<EvalStage>> = picks.iter().map(|_| None).collect();
+    for ((&k, (s, scan_s)), e) in todo.iter().zip(scans).zip(estimates) {
+        let (friction, est_s) = e?;
+        let done = ticks[k].load(Relaxed);
+        if done < per {
+            progress.advance((per - done) as u64);
+        }
+        let st = EvalStage {
+            eval: ThetaEval {
+                theta_deg: label(picks[k].theta_deg),
+                scan_load_mN: label(n_to_mn(scan_load)),
+                line_deg: rad_to_deg(s.line),
+                scan: s.scan,
+                alphas_deg: s.alphas_deg,
+                friction,
+            },
+            wall_s: scan_s + est_s,
+        };
+        store.save_json(&rel(&picks[k]), &inputs[k], &st)?;
+        fresh[k] = Some(st);
     }
-    let st = EvalStage {
-        eval,
-        wall_s: t0.elapsed().as_secs_f64(),
-    };
-    store.save_json(&rel, &inputs, &st)?;
-    Ok((st.eval, st.wall_s, false))
+    stored
+        .into_iter()
+        .zip(fresh)
+        .map(|(old, new)| match (old, new) {
+            (Some(st), _) => Ok((st.eval, st.wall_s, true)),
+            (None, Some(st)) => Ok((st.eval, st.wall_s, false)),
+            (None, None) => Err(anyhow::anyhow!(
+                "an orientation was neither stored nor evaluated"
+            )),
+        })
+        .collect()
 }

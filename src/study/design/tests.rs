@@ -87,7 +87,11 @@ fn protocol_check_runs_on_the_recommended_design() {
         },
         contradicted.clone(),
     ];
-    let (pr, i, w) = protocol_check_design(&pats, &answers, &loads).unwrap();
+    let ProtocolCheck {
+        pattern: pr,
+        index: i,
+        load: w,
+    } = protocol_check_design(&pats, &answers, &loads).unwrap();
     assert_eq!((pr.scene.name.as_str(), i, w), ("square-tri", 2, 2.1e-3));
     // the first pattern unconfirmed, the second confirmed at one load: the second
     let answers = vec![
@@ -98,11 +102,19 @@ fn protocol_check_runs_on_the_recommended_design() {
             others: vec![],
         },
     ];
-    let (pr, i, w) = protocol_check_design(&pats, &answers, &loads).unwrap();
+    let ProtocolCheck {
+        pattern: pr,
+        index: i,
+        load: w,
+    } = protocol_check_design(&pats, &answers, &loads).unwrap();
     assert_eq!((pr.scene.name.as_str(), i, w), ("tri-tri", 1, 0.35e-3));
     // none confirmed: the first pattern's answer at the middle confirmation load
     let answers = vec![contradicted.clone(), contradicted];
-    let (pr, i, w) = protocol_check_design(&pats, &answers, &loads).unwrap();
+    let ProtocolCheck {
+        pattern: pr,
+        index: i,
+        load: w,
+    } = protocol_check_design(&pats, &answers, &loads).unwrap();
     assert_eq!((pr.scene.name.as_str(), i, w), ("square-tri", 0, 2.1e-3));
     // no ranked design at all
     let none = Answer {

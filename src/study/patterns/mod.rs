@@ -23,6 +23,7 @@ use crate::study::input::Input;
 use anyhow::{bail, Result};
 use std::f64::consts::PI;
 use surrogate::map::{contact_line_direction, MapParams};
+use surrogate::scene::symmetry::{gcd, rotation_order};
 use surrogate::scene::{lattice_name, min_site_distance, overlaps};
 use surrogate::units::{deg_to_rad, m_to_um, um_to_m};
 use surrogate::{Lattice, Scene};
@@ -205,32 +206,9 @@ pub fn parse_family(spec: &str, values: impl Fn(&str, &str) -> Result<Vec<f64>>)
     })
 }
 
-fn gcd(a: u32, b: u32) -> u32 {
-    if b == 0 {
-        a
-    } else {
-        gcd(b, a % b)
-    }
-}
-
 /// A degree or µm value without binary noise.
 pub fn tidy(v: f64) -> f64 {
     (v * 1e9).round() / 1e9 + 0.0
-}
-
-/// Rotation order of a Bravais lattice (6, 4 or 2).
-fn rotation_order(l: &Lattice) -> u32 {
-    [6u32, 4, 3]
-        .into_iter()
-        .find(|&n| {
-            let (s, c) = (2.0 * PI / n as f64).sin_cos();
-            [l.a1, l.a2].iter().all(|v| {
-                let w = [c * v[0] - s * v[1], s * v[0] + c * v[1]];
-                let k = l.to_lattice_coords(w);
-                k.iter().all(|x| (x - x.round()).abs() < 1e-6)
-            })
-        })
-        .unwrap_or(2)
 }
 
 /// Substrate row directions (rad) and periods (m): lattice vectors up to twice the shortest,

@@ -24,7 +24,7 @@ use anyhow::Result;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use surrogate::solver::Solver;
-use surrogate::units::{deg_to_rad, n_to_mn};
+use surrogate::units::deg_to_rad;
 
 /// Samples estimated at once (fixed: which samples are estimated must not depend on the thread
 /// count).
@@ -248,7 +248,7 @@ impl<'a> RobustSearch<'a> {
             loads_estimated: 0,
         };
         for r in nominal {
-            if let Some(k) = p.loads.iter().position(|&w| label(n_to_mn(w)) == r.load_mN) {
+            if let Some(k) = crate::study::load::Load::position(&p.loads, r.load_mN) {
                 state.samples[0].rows[k] = Some(r.clone());
             }
         }

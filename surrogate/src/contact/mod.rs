@@ -4,10 +4,12 @@
 mod bvh_search;
 mod candidates;
 mod cell_list;
+mod coating_law;
 mod hertz;
 
 pub use bvh_search::BvhSearch;
 pub(crate) use candidates::swept_distance2;
 pub use candidates::{CandidatePair, CandidateSearch, GridSearch};
 pub use cell_list::CellList;
+pub use coating_law::{coating_failed, coating_mu};
 pub use hertz::Hertz;

@@ -104,11 +104,7 @@ pub(crate) fn solve_samples(
                 let c = &eq.contacts[i];
                 let n = c.normal(sub[c.substrate as usize]);
                 let en = n[0] * e[0] + n[1] * e[1];
-                let mu = if coat.failed(c.p0) {
-                    coat.mu2
-                } else {
-                    coat.mu1
-                };
+                let mu = coat.mu(c.p0);
                 smp.v += solver.contact_energy(c);
                 smp.f_pull -= c.force_n * en;
                 smp.f_perp += c.force_n * (n[1] * e[0] - n[0] * e[1]);

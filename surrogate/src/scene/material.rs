@@ -85,15 +85,11 @@ impl Default for Coating {
 impl Coating {
     /// Friction coefficient of a contact whose maximum Hertz pressure is `p0` (Pa).
     pub fn mu(&self, p0: f64) -> f64 {
-        if self.failed(p0) {
-            self.mu2
-        } else {
-            self.mu1
-        }
+        crate::contact::coating_mu(p0, self.p_crit, self.mu1, self.mu2)
     }
     /// Whether a contact with maximum Hertz pressure `p0` (Pa) has failed (`p0 > P_crit`).
     pub fn failed(&self, p0: f64) -> bool {
-        p0 > self.p_crit
+        crate::contact::coating_failed(p0, self.p_crit)
     }
     /// Checks ranges; errors name the user-facing field.
     pub fn validate(&self) -> Result<(), SceneError> {

@@ -10,6 +10,7 @@ mod pattern;
 mod scene;
 mod sites;
 mod sizes;
+pub mod symmetry;
 mod to_file;
 
 pub use file::{
@@ -22,6 +23,6 @@ pub use pattern::{
     check_basis, closest_sites, min_site_distance, overlaps, rebased, sites_in_outline,
     ClosestSites, Geometry, Outline, TOUCH_TOL,
 };
-pub use scene::{lattice_name, Scene, SliderSpec, SubstrateSpec, PATTERNS};
+pub use scene::{lattice_name, place, Scene, SliderSpec, SubstrateSpec, PATTERNS};
 pub use sites::SiteList;
 pub use to_file::scene_file;

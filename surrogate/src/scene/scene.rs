@@ -408,13 +408,16 @@ impl Scene {
 
     /// Slider sphere centres in the substrate frame (m) for the slider rotated by `theta` (rad)
     /// and its centre at `offset + shift`.
+    /// Each site comes from [`place`], the one placement formula (the solver's too).
     pub fn slider_sites_at(&self, theta: f64, shift: [f64; 2]) -> Vec<[f64; 2]> {
-        let (s, c) = theta.sin_cos();
-        let cx = self.slider.offset[0] + shift[0];
-        let cy = self.slider.offset[1] + shift[1];
+        let sc = theta.sin_cos();
+        let centre = [
+            self.slider.offset[0] + shift[0],
+            self.slider.offset[1] + shift[1],
+        ];
         self.slider_sites_local()
             .into_iter()
-            .map(|p| [cx + c * p[0] - s * p[1], cy + s * p[0] + c * p[1]])
+            .map(|p| place(centre, sc, p))
             .collect()
     }
 
@@ -471,6 +474,18 @@ pub fn lattice_name(l: &Lattice) -> String {
     } else {
         "oblique".into()
     }
+}
+
+/// A slider site at `local` (m, the slider's own frame) placed at the disc centre `centre` (m)
+/// rotated by θ with `sin_cos = θ.sin_cos()`: the one formula every slider position comes from,
+/// so a position computed alone equals its entry in a full list bit for bit. O(1).
+#[inline]
+pub fn place(centre: [f64; 2], sin_cos: (f64, f64), local: [f64; 2]) -> [f64; 2] {
+    let (s, c) = sin_cos;
+    [
+        centre[0] + c * local[0] - s * local[1],
+        centre[1] + s * local[0] + c * local[1],
+    ]
 }
 
 #[cfg(test)]

@@ -13,9 +13,9 @@
 //! ([`Solver::solve_loads_partial`]); where it did, that sample is solved on every pair and the
 //! floor is lowered, so every result is bit-identical to a solve on the full list.
 
-use super::solver::place;
 use super::{PairSet, Pose, Solver};
 use crate::contact::CandidatePair;
+use crate::scene::place;
 use std::cell::RefCell;
 
 /// The buffers of a [`PathChunk`], kept per thread between chunks and paths: a chunk allocates

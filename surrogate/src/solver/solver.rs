@@ -11,7 +11,7 @@ use crate::contact::{
     swept_distance2, BvhSearch, CandidatePair, CandidateSearch, GridSearch, Hertz,
 };
 use crate::error::SceneError;
-use crate::scene::{rotate_tilt_stiffness, Scene};
+use crate::scene::{place, rotate_tilt_stiffness, Scene};
 use crate::solver::ContactInfo;
 
 /// Lateral pose of the slider: rotation θ (rad) and in-plane shift (m) of its centre from the
@@ -451,18 +451,6 @@ impl Solver {
     pub(crate) fn hertz(&self) -> &Hertz {
         &self.hertz
     }
-}
-
-/// A slider site at `local` (m, the slider's own frame) placed at the disc centre `centre` (m)
-/// rotated by θ with `sin_cos = θ.sin_cos()`: the one formula every slider position comes from,
-/// so a position computed alone equals its entry in a full list bit for bit. O(1).
-#[inline]
-pub(crate) fn place(centre: [f64; 2], sin_cos: (f64, f64), local: [f64; 2]) -> [f64; 2] {
-    let (s, c) = sin_cos;
-    [
-        centre[0] + c * local[0] - s * local[1],
-        centre[1] + s * local[0] + c * local[1],
-    ]
 }
 
 /// One load with the pair law `L` (see [`Solver::solve_pairs`]).

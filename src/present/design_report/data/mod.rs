@@ -2,16 +2,25 @@
 //! outcome. The template holds the prose and the layout (loops and ifs only); every number is
 //! formatted here, so the template does no arithmetic and no number formatting.
 
+mod dem;
+mod lines;
+
+use dem::dem_section;
+pub use lines::{
+    DemLine, DemSection, DemWall, LevelLine, RankingLine, Reproduce, ReproduceTheta, ResonanceLine,
+    ScreenLine, StudyCheck, WallLine,
+};
+
 use super::commands::slide_command;
 use super::commands::{corrugation_command, friction_command, loads_text, screen_command};
-use super::rows::{dem_rows, DemRow};
-use super::top::{angle, angle_decimals};
-use super::words::{fmt_g, opt, protocol_words, which_design};
+use super::rows::dem_rows;
+use super::words::{fmt_g, opt};
+use crate::study::design::symmetry::SymmetryWords;
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams};
 use crate::study::friction::resonance_note;
 use crate::study::rows::label;
 use serde::Serialize;
-use surrogate::units::{m_to_um, n_to_mn};
+use surrogate::units::n_to_mn;
 
 /// Everything `report.md` shows, in its order.
 #[derive(Debug, Clone, Serialize)]
@@ -63,282 +72,6 @@ pub struct ReportData {
     pub reproduce: Vec<Reproduce>,
     /// The commands reproducing the DEM runs.
     pub slides: Vec<String>,
-}
-
-/// The DEM comparison: protocol, its measured difference from the study's, one row per run.
-#[derive(Debug, Clone, Serialize)]
-pub struct DemSection {
-    /// The confirmation protocol in words.
-    pub protocol: String,
-    /// The confirmation protocol is the study's.
-    pub study_protocol: bool,
-    /// The DEM model and reductions in words.
-    pub model: String,
-    /// The study-protocol checks.
-    pub checks: Vec<StudyCheck>,
-    /// No check and a protocol shorter than the study's (`--no-protocol-check`).
-    pub unmeasured: bool,
-    /// One row per DEM run.
-    pub rows: Vec<DemLine>,
-    /// Runs whose DEM and estimate verdicts agree.
-    pub agree: usize,
-    /// Runs with both verdicts.
-    pub judged: usize,
-    /// Friction path length (µm).
-    pub path_um: String,
-    /// The study DEM's slide length (µm).
-    pub slid_um: String,
-    /// Largest measured μ_est/μ_DEM of a mount in resonance
-    /// ([`surrogate::friction::RESONANCE_DROP_MAX`]).
-    pub resonance_drop: String,
-}
-
-/// One study-protocol run against the same run with the design's shorter protocol.
-#[derive(Debug, Clone, Serialize)]
-pub struct StudyCheck {
-    /// Which design, in words.
-    pub what: String,
-    pub pattern: String,
-    pub theta_deg: String,
-    pub alpha_deg: String,
-    pub load_mn: String,
-    /// Both runs have a μ.
-    pub measured: bool,
-    /// μ of the short and the study protocol.
-    pub mu_short: String,
-    pub mu_study: String,
-    /// (μ_short/μ_study − 1) in %, signed, one decimal.
-    pub difference_pct: String,
-    /// Both DEM verdicts are the same.
-    pub same: bool,
-    /// The verdicts in words (short, study).
-    pub short_verdict: String,
-    pub study_verdict: String,
-    /// Why the study-protocol run did not complete.
-    pub error: String,
-}
-
-/// One row of the DEM table (cells as printed).
-#[derive(Debug, Clone, Serialize)]
-pub struct DemLine {
-    pub pattern: String,
-    pub rank: usize,
-    pub theta_deg: String,
-    pub alpha_deg: String,
-    /// `δθ, δdir` of a tolerance-corner run, `–` for the design itself.
-    pub corner: String,
-    pub load_mn: String,
-    pub protocol: String,
-    pub mu_est: String,
-    pub mu_dem: String,
-    pub ratio: String,
-    pub verdict_est: String,
-    pub verdict_dem: String,
-    pub max_p_max_gpa: String,
-    pub contacts: String,
-    /// Status, with the error after a colon.
-    pub status: String,
-    pub wall_s: String,
-}
-
-/// One row of the ranking table (cells as printed).
-#[derive(Debug, Clone, Serialize)]
-pub struct RankingLine {
-    pub pattern: String,
-    pub rank: usize,
-    pub theta_deg: String,
-    pub alpha_deg: String,
-    pub pull_deg: String,
-    /// The robust limit (mN), `≤ x` where it is an upper bound (`robust_exact = false`).
-    pub superlubric_to_mn: String,
-    /// The limit at the nominal (θ, α) alone (mN).
-    pub nominal_mn: String,
-    /// The θ and direction windows (±degrees), `–` where not computed.
-    pub theta_window_deg: String,
-    pub direction_window_deg: String,
-    /// The worst verdict up to the robust limit.
-    pub verdict: String,
-    pub mu_worst: String,
-    pub contacts: String,
-    pub intact_to_mn: String,
-    pub screen_intact_to_mn: String,
-    pub corrugation_nm: String,
-    pub reason: String,
-}
-
-/// Candidates of a pattern with failed contacts on a mount in resonance.
-#[derive(Debug, Clone, Serialize)]
-pub struct ResonanceLine {
-    pub pattern: String,
-    pub flagged: usize,
-    pub candidates: usize,
-    /// The resonance in words.
-    pub note: String,
-}
-
-/// The screen and the shortlist levels of one pattern.
-#[derive(Debug, Clone, Serialize)]
-pub struct ScreenLine {
-    pub pattern: String,
-    /// The symmetry cut in words.
-    pub symmetry: String,
-    pub thetas: usize,
-    /// First and last θ screened (empty when none).
-    pub theta_first: String,
-    pub theta_last: String,
-    pub loads: usize,
-    /// The levels, highest first.
-    pub levels: Vec<LevelLine>,
-    /// Why the evaluation stopped.
-    pub stop: String,
-}
-
-/// One shortlist level.
-#[derive(Debug, Clone, Serialize)]
-pub struct LevelLine {
-    pub load_mn: String,
-    pub size: usize,
-    pub kept: usize,
-    pub evaluated: bool,
-}
-
-/// Wall times of the screen and the evaluation of one pattern.
-#[derive(Debug, Clone, Serialize)]
-pub struct WallLine {
-    pub pattern: String,
-    pub thetas: usize,
-    pub loads: usize,
-    pub screen_s: String,
-    pub evaluated: usize,
-    pub scan_paths: usize,
-    pub friction_paths: usize,
-    pub estimates: usize,
-    pub evaluation_s: String,
-}
-
-/// Wall time of the DEM tier.
-#[derive(Debug, Clone, Serialize)]
-pub struct DemWall {
-    pub runs: usize,
-    pub jobs: usize,
-    pub sum_s: String,
-    pub elapsed_s: String,
-}
-
-/// The reproduction commands of one pattern's surrogate stages.
-#[derive(Debug, Clone, Serialize)]
-pub struct Reproduce {
-    pub pattern: String,
-    pub screen: String,
-    pub evaluated: Vec<ReproduceTheta>,
-}
-
-/// The commands of one evaluated θ.
-#[derive(Debug, Clone, Serialize)]
-pub struct ReproduceTheta {
-    pub theta_deg: String,
-    pub corrugation: String,
-    pub friction: String,
-}
-
-fn verdict_word(v: Option<bool>) -> &'static str {
-    match v {
-        Some(true) => "superlubric",
-        Some(false) => "not superlubric",
-        None => "no verdict",
-    }
-}
-
-fn dem_line(d: &DemRow, dec: usize) -> DemLine {
-    let verdict = |v: Option<bool>| match v {
-        Some(true) => "superlubric",
-        Some(false) => "not",
-        None => "–",
-    };
-    DemLine {
-        pattern: d.pattern.clone(),
-        rank: d.rank,
-        theta_deg: angle(d.theta_deg, dec),
-        alpha_deg: angle(d.alpha_deg, dec),
-        corner: if d.theta_offset_deg == 0.0 && d.direction_offset_deg == 0.0 {
-            "–".to_string()
-        } else {
-            format!("{:+}, {:+}", d.theta_offset_deg, d.direction_offset_deg)
-        },
-        load_mn: format!("{}", d.load_mN),
-        protocol: d.protocol.clone(),
-        mu_est: opt(d.mu_est, 3),
-        mu_dem: opt(d.mu_dem, 3),
-        ratio: opt(d.ratio_est_dem, 3),
-        verdict_est: verdict(d.superlubric_est).into(),
-        verdict_dem: verdict(d.superlubric_dem).into(),
-        max_p_max_gpa: opt(d.max_p_max_GPa, 3),
-        contacts: opt(d.mean_contacts, 3),
-        status: if d.error.is_empty() {
-            d.status.clone()
-        } else {
-            format!("{}: {}", d.status, d.error.replace('|', "/"))
-        },
-        wall_s: opt(d.wall_s, 3),
-    }
-}
-
-fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> DemSection {
-    let study: Vec<&DemRow> = dem.iter().filter(|d| d.protocol == "study").collect();
-    let checks = study
-        .iter()
-        .map(|s| {
-            let short = dem.iter().find(|d| {
-                d.protocol == "design"
-                    && d.pattern == s.pattern
-                    && d.theta_deg == s.theta_deg
-                    && d.alpha_deg == s.alpha_deg
-                    && d.load_mN == s.load_mN
-            });
-            let mus = (short.and_then(|d| d.mu_dem), s.mu_dem);
-            let (short_verdict, study_verdict) = (
-                verdict_word(short.and_then(|d| d.superlubric_dem)),
-                verdict_word(s.superlubric_dem),
-            );
-            StudyCheck {
-                what: which_design(o, s),
-                pattern: s.pattern.clone(),
-                theta_deg: format!("{}", s.theta_deg),
-                alpha_deg: format!("{}", s.alpha_deg),
-                load_mn: format!("{}", s.load_mN),
-                measured: matches!(mus, (Some(_), Some(_))),
-                mu_short: mus.0.map_or(String::new(), |a| fmt_g(a, 4)),
-                mu_study: mus.1.map_or(String::new(), |b| fmt_g(b, 4)),
-                difference_pct: match mus {
-                    (Some(a), Some(b)) => format!("{:+.1}", 100.0 * (a / b - 1.0)),
-                    _ => String::new(),
-                },
-                same: short_verdict == study_verdict,
-                short_verdict: short_verdict.into(),
-                study_verdict: study_verdict.into(),
-                error: s.error.clone(),
-            }
-        })
-        .collect();
-    DemSection {
-        protocol: protocol_words(p),
-        study_protocol: p.dem_is_study_protocol,
-        model: p.dem_words.clone(),
-        checks,
-        unmeasured: study.is_empty() && !p.dem_is_study_protocol,
-        rows: dem.iter().map(|d| dem_line(d, angle_decimals(p))).collect(),
-        agree: dem
-            .iter()
-            .filter(|d| d.verdicts_agree == Some(true))
-            .count(),
-        judged: dem.iter().filter(|d| d.verdicts_agree.is_some()).count(),
-        path_um: format!("{}", label(m_to_um(p.friction.length))),
-        slid_um: format!(
-            "{}",
-            label(m_to_um(p.friction.speed * p.friction.slide_time))
-        ),
-        resonance_drop: format!("{}", surrogate::friction::RESONANCE_DROP_MAX),
-    }
 }
 
 /// A window cell: `±w` (degrees), `0` for none, `–` where not computed.
@@ -490,7 +223,7 @@ impl ReportData {
                         evaluated: k < pr.levels_evaluated && !pr.levels_skipped.contains(&k),
                     })
                     .collect(),
-                stop: pr.stop.clone(),
+                stop: super::log::pattern_stop(pr),
             })
             .collect();
         let walls = o

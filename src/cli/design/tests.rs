@@ -117,3 +117,55 @@ fn a_trimmed_outcome_gives_every_output_of_the_untrimmed_one() {
     assert!(again.pattern(&o.patterns[0]).is_err());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The one observer of a design is told each stage as the pipeline enters it, in the order
+/// the pipeline runs them: screen, shortlist, then per shortlist level the α scan, the estimate
+/// and (with a tolerance) the robust search, then the report data.
+#[test]
+fn the_observer_is_told_every_stage_in_order() {
+    use crate::study::design::{Event, Observer, Stage};
+    use std::sync::Mutex;
+    struct Record(Mutex<Vec<(Stage, String)>>);
+    impl Observer for Record {
+        fn stage(&self, s: Stage, pattern: &str) {
+            self.0.lock().unwrap().push((s, pattern.to_string()));
+        }
+        fn event(&self, _: &Event<'_>) {}
+        fn progress(&self) -> &dyn crate::runs::progress::Progress {
+            &Silent
+        }
+    }
+    let dir = std::env::temp_dir().join(format!("superlube-design-obs-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut a = args(&dir, &["--per-level", "1"]);
+    a.pattern = Some("tri-tri".into());
+    a.theta = Some("0:30:15".into());
+    a.load_mn = "0.01,0.03".into();
+    let (scenes, params) = prepare(&a).unwrap();
+    let rec = Record(Mutex::new(Vec::new()));
+    design(&scenes, &params, &Store::new(&a.out), &rec, &|_| Ok(())).unwrap();
+    let seen = rec.0.into_inner().unwrap();
+    let stages: Vec<Stage> = seen.iter().map(|(s, _)| *s).collect();
+    assert_eq!(stages[..2], [Stage::Screen, Stage::Shortlist], "{stages:?}");
+    assert_eq!(stages.last(), Some(&Stage::ReportData), "{stages:?}");
+    assert!(stages.contains(&Stage::RobustSearch), "{stages:?}");
+    // the level loop: each α scan followed by its estimate, then the robust search or the
+    // next level's α scan
+    let levels = &stages[2..stages.len() - 1];
+    assert!(
+        !levels.is_empty() && levels[0] == Stage::AlphaScan,
+        "{stages:?}"
+    );
+    for w in levels.windows(2) {
+        let ok = matches!(
+            w,
+            [Stage::AlphaScan, Stage::Estimate]
+                | [Stage::Estimate, Stage::RobustSearch]
+                | [Stage::Estimate, Stage::AlphaScan]
+                | [Stage::RobustSearch, Stage::AlphaScan]
+        );
+        assert!(ok, "{w:?} out of order in {stages:?}");
+    }
+    assert!(seen[..seen.len() - 1].iter().all(|(_, p)| p == "tri-tri"));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -7,7 +7,7 @@ use crate::present::design_report::{dem_rows, words::answer_line};
 use crate::study::design::answer::{answer, check, Check};
 use crate::study::design::confirm::{confirm_jobs, to_entries};
 use crate::study::design::rank::{Candidate, CornerEstimate, Score};
-use crate::study::design::{DemEntry, PatternResult};
+use crate::study::design::{DemEntry, DesignParams, DesignScene, PatternResult};
 use crate::study::rows::{label, FrictionRow};
 use crate::study::verdict::Verdict;
 use clap::Parser;
@@ -113,7 +113,7 @@ fn runs(pr: &PatternResult, p: &DesignParams, mu: &dyn Fn(&DemEntry) -> f64) -> 
     let outcomes: Vec<_> = entries
         .iter()
         .map(|e| crate::study::batch::SlideOutcome {
-            name: format!("run{}", e.1),
+            name: format!("run{}", e.rank),
             dir: std::path::PathBuf::new(),
             result: None,
             error: None,
@@ -147,7 +147,7 @@ fn borderline_designs_run_first_and_every_top_design_has_its_corners() {
     pr.ranking[1].score.verdict = Verdict::Borderline;
     let (jobs, entries) = confirm_jobs(std::slice::from_ref(&pr), &p);
     assert_eq!(jobs.len(), entries.len());
-    let ranks: Vec<usize> = entries.iter().map(|e| e.1).collect();
+    let ranks: Vec<usize> = entries.iter().map(|e| e.rank).collect();
     let first_other = ranks.iter().position(|&r| r != 2).unwrap();
     assert!(first_other > 0, "{ranks:?}");
     assert!(ranks[first_other..].iter().all(|&r| r != 2), "{ranks:?}");
@@ -156,25 +156,33 @@ fn borderline_designs_run_first_and_every_top_design_has_its_corners() {
     for rank in 1..=3 {
         let corners: Vec<_> = entries
             .iter()
-            .filter(|e| e.1 == rank && (e.6 != 0.0 || e.7 != 0.0))
+            .filter(|e| {
+                e.rank == rank && (e.theta_offset_deg != 0.0 || e.direction_offset_deg != 0.0)
+            })
             .collect();
         // four corners at 0.06 mN (the limit) and four at 0.09 mN (the next load)
         assert_eq!(corners.len(), 8, "rank {rank}: {entries:?}");
         for w in [0.06, 0.09] {
             let at: Vec<_> = corners
                 .iter()
-                .filter(|e| label(n_to_mn(e.4)) == w)
+                .filter(|e| label(n_to_mn(e.load)) == w)
                 .collect();
             assert_eq!(at.len(), 4, "rank {rank} at {w} mN");
         }
         for e in &corners {
-            assert_eq!((e.6.abs(), e.7.abs()), (0.1, 0.5));
-            assert_eq!(e.2, label(rank as f64 + e.6));
+            assert_eq!(
+                (e.theta_offset_deg.abs(), e.direction_offset_deg.abs()),
+                (0.1, 0.5)
+            );
+            assert_eq!(e.theta_deg, label(rank as f64 + e.theta_offset_deg));
         }
     }
     // the borderline design's corners are among its first runs, before rank 1's
-    let first_corner_2 = entries.iter().position(|e| e.1 == 2 && e.6 != 0.0).unwrap();
-    let first_1 = entries.iter().position(|e| e.1 == 1).unwrap();
+    let first_corner_2 = entries
+        .iter()
+        .position(|e| e.rank == 2 && e.theta_offset_deg != 0.0)
+        .unwrap();
+    let first_1 = entries.iter().position(|e| e.rank == 1).unwrap();
     assert!(first_corner_2 < first_1);
     // run names are distinct (one directory each)
     let mut names: Vec<&str> = jobs.iter().map(|j| j.name.as_str()).collect();

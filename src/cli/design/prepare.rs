@@ -1,0 +1,228 @@
+//! Every check of `superlube design`'s flags, before any work: the patterns, the design's
+//! parameters (SI) and the tolerance against each pattern's θ domain.
+
+use super::super::dem_args::ModelArg;
+use super::super::{checks, parse_list_or_range};
+use super::scenes::scenes;
+use super::Args;
+use super::DEFAULT_THETA;
+use crate::runs::output::check_outputs;
+use crate::study::dem_run::{DemParams, ModelSpec};
+use crate::study::design::{cut, DesignParams, DesignScene};
+use anyhow::{bail, Result};
+use dem::protocol::RunIo;
+use dem::{SimParams, Start};
+use surrogate::units::{mn_to_n, um_to_m, us_to_s};
+
+/// Every check of `superlube design`, before any work.
+pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
+    let theta_text = a.theta.clone().unwrap_or_else(|| DEFAULT_THETA.to_string());
+    let thetas_deg = parse_list_or_range(&theta_text, "--theta")?;
+    let loads = checks::loads(&a.load_mn)?;
+    if let Some(k) = loads.windows(2).position(|w| w[1] <= w[0]) {
+        bail!(
+            "`--load-mn`: the loads must be strictly increasing ({} mN then {} mN): a design's superlubric load is the highest of an increasing list",
+            a.load_mn.split(',').nth(k).unwrap_or("?").trim(),
+            a.load_mn.split(',').nth(k + 1).unwrap_or("?").trim()
+        );
+    }
+    let mu_superlubric = a.verdict.mu_superlubric()?;
+    if a.per_level == 0 {
+        bail!("`--per-level`: 0 would keep no orientation below the top level; give ≥ 1");
+    }
+    if a.max_top == 0 {
+        bail!("`--max-top`: 0 would keep no orientation of the top level; give ≥ 1");
+    }
+    if a.alphas_per_theta == 0 {
+        bail!("`--best-alphas`: give ≥ 1");
+    }
+    let step = checks::positive(a.alpha_step_deg, "--alpha-step-deg")?;
+    if step > 90.0 {
+        bail!("`--alpha-step-deg`: {step} must be at most 90");
+    }
+    let refine: Vec<f64> = if a.alpha_refine_deg.trim() == "none" {
+        vec![]
+    } else {
+        parse_list_or_range(&a.alpha_refine_deg, "--alpha-refine-deg")?
+    };
+    let mut prev = step;
+    for &r in &refine {
+        if !(r > 0.0 && r < prev) {
+            bail!("`--alpha-refine-deg`: each step must be positive and below the previous one ({r} after {prev})");
+        }
+        prev = r;
+    }
+    let line = checks::line_deg(a.line_deg)?;
+    let scan_length = checks::positive(a.scan_um, "--scan-distance-um").map(um_to_m)?;
+    let scan_step = checks::positive(a.scan_step_um, "--scan-step-um").map(um_to_m)?;
+    if scan_step > scan_length {
+        bail!(
+            "`--scan-step-um`: {} must not exceed --scan-distance-um {}",
+            a.scan_step_um,
+            a.scan_um
+        );
+    }
+    let friction = a.friction.params()?;
+    if !a.no_dem && a.confirm == 0 {
+        bail!("`--confirm`: 0 designs to confirm with the DEM on; give --confirm ≥ 1, or --no-dem to stop before the DEM");
+    }
+    let confirm_loads = match &a.confirm_loads {
+        Some(t) => {
+            let v = checks::loads(t).map_err(|e| {
+                anyhow::anyhow!(
+                    "{}",
+                    e.to_string().replace("`--load-mn`", "`--confirm-loads-mn`")
+                )
+            })?;
+            for &w in &v {
+                if !loads.iter().any(|&l| (l - w).abs() <= 1e-12 * l) {
+                    bail!(
+                        "`--confirm-loads-mn`: {} mN is not one of --load-mn (the DEM is compared with the estimate at the same load)",
+                        surrogate::units::n_to_mn(w)
+                    );
+                }
+            }
+            v
+        }
+        None => {
+            let mut v = vec![loads[0], loads[loads.len() / 2], loads[loads.len() - 1]];
+            v.dedup();
+            v
+        }
+    };
+    let jobs = match a.jobs {
+        Some(0) => bail!("`--jobs`: give ≥ 1 DEM runs side by side"),
+        Some(j) => j,
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    let times = [
+        (a.dem_equilibrate_us, "--dem-equilibrate-us"),
+        (a.dem_slide_us, "--dem-slide-us"),
+        (a.dem_speed_m_s, "--dem-speed-m-s"),
+    ];
+    for (v, f) in times {
+        checks::positive(v, f)?;
+    }
+    checks::non_negative(a.dem_relax_us, "--dem-relax-us")?;
+    let dt = a
+        .dem_dt_us
+        .map(|d| checks::time_us(d, "--dem-dt-us"))
+        .transpose()?;
+    let study = SimParams::default();
+    let sim = SimParams {
+        dt,
+        load: mn_to_n(1.0),
+        equilibrate_time: us_to_s(a.dem_equilibrate_us),
+        relax_time: us_to_s(a.dem_relax_us),
+        slide_time: us_to_s(a.dem_slide_us),
+        support_speed: a.dem_speed_m_s,
+        ..SimParams::default()
+    };
+    let dem_is_study_protocol = sim.equilibrate_time == study.equilibrate_time
+        && sim.relax_time == study.relax_time
+        && sim.slide_time == study.slide_time
+        && sim.support_speed == study.support_speed;
+    let dem = DemParams {
+        sim,
+        alpha: 0.0,
+        line,
+        start: Start::Surrogate,
+        friction: None,
+        io: RunIo {
+            checkpoint: None,
+            checkpoint_every: 50_000,
+            xyz: None,
+            xyz_every: 10_000,
+        },
+        resume: None,
+        model: ModelSpec {
+            request: a.dem_model.request(),
+            ..ModelSpec::default()
+        },
+    };
+    let dem_shard = match &a.shard {
+        Some(t) => {
+            if a.no_dem {
+                bail!("`--shard`: shards the DEM confirmation runs, but --no-dem skips them");
+            }
+            crate::runs::shard::Shard::parse(t, "--shard")?
+        }
+        None => crate::runs::shard::Shard::ALL,
+    };
+    let (theta_tol_deg, direction_tol_deg) = a.tol.checked()?;
+    let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step-deg")?;
+    let direction_tol_step_deg =
+        checks::positive(a.direction_tol_step, "--direction-tol-step-deg")?;
+    let seeds: Vec<u64> = match &a.seeds {
+        None => Vec::new(),
+        Some(t) => t
+            .split(',')
+            .map(|x| {
+                x.trim().parse::<u64>().map_err(|_| {
+                    anyhow::anyhow!(
+                        "`--seeds`: `{}` is not a non-negative integer seed",
+                        x.trim()
+                    )
+                })
+            })
+            .collect::<Result<_>>()?,
+    };
+    let params = DesignParams {
+        theta_tol_deg,
+        direction_tol_deg,
+        theta_tol_step_deg,
+        direction_tol_step_deg,
+        seeds,
+        thetas_deg,
+        theta_text,
+        theta_default: a.theta.is_none(),
+        symmetry_cut: !a.no_symmetry_cut,
+        loads,
+        mu_superlubric,
+        per_level: a.per_level,
+        max_top: a.max_top,
+        alpha_step_deg: step,
+        alpha_refine_deg: refine,
+        line,
+        scan_length,
+        scan_step,
+        alphas_per_theta: a.alphas_per_theta,
+        friction,
+        confirm: a.confirm,
+        confirm_loads,
+        no_dem: a.no_dem,
+        jobs,
+        dem_shard,
+        dem,
+        dem_is_study_protocol,
+        dem_flags: format!(" --model {}", a.dem_model.request().name()),
+        dem_words: match a.dem_model {
+            ModelArg::Reduced => "reduced model `--model reduced` (slider spheres rigid in z; unreachable substrate spheres left out and only the active set integrated, both exact)".into(),
+            ModelArg::Full => "full model `--model full` (slider spheres on their z springs; pruning and the active set, both exact)".into(),
+            ModelArg::FullExplicit => "full model by velocity-Verlet throughout `--model full-explicit` (slider spheres on their z springs; pruning and the active set, both exact)".into(),
+            ModelArg::Auto => "`--model auto` (per run: the full model near coating failure, where stick-slip is expected or beyond the measured stiffness ratio, else rigid-z; the choice is in each run's JSON)".into(),
+        },
+        protocol_check: !a.no_protocol_check,
+    };
+    let scenes = scenes(a)?;
+    for s in &scenes {
+        let (_, sym) = cut(s, &params)?;
+        let (lo, hi) = (sym.domain().lo_deg, sym.domain().hi_deg);
+        if 2.0 * params.theta_tol_deg >= hi - lo {
+            bail!(
+                "`--theta-tol-deg`: ±{}° spans the whole θ domain of {} ([{lo}°, {hi}°]); give a tolerance below {}°",
+                params.theta_tol_deg,
+                s.name,
+                0.5 * (hi - lo)
+            );
+        }
+        if !params.seeds.is_empty() && s.scene.substrate.sigma_h == 0.0 {
+            bail!(
+                "`--seeds`: {} has a flat substrate (σ_h = 0), so every seed gives the same one; give --sigma-h-um > 0 or leave --seeds out",
+                s.name
+            );
+        }
+    }
+    check_outputs(&[("--out-dir", Some(&a.out.join("report.md")))])?;
+    Ok((scenes, params))
+}

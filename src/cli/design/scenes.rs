@@ -1,0 +1,117 @@
+//! The pattern scenes of `superlube design`'s command line (`--pattern`, `--scene`,
+//! `--patterns`, `--family`).
+
+use super::super::SceneArgs;
+use super::Args;
+use crate::study::design::DesignScene;
+use anyhow::{bail, Result};
+use std::path::PathBuf;
+
+/// The scene flags shared by every pattern, as given (for the reproduction commands).
+pub(super) fn scene_args(a: &Args, pattern: Option<String>, scene: Option<PathBuf>) -> SceneArgs {
+    SceneArgs {
+        pattern,
+        scene,
+        overrides: a.overrides.clone(),
+    }
+}
+
+/// The pattern scenes of the command line (errors name `--pattern` / `--scene`).
+pub(super) fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
+    let mut out: Vec<DesignScene> = Vec::new();
+    let mut files = a.scene.clone();
+    let mut facts = Vec::new();
+    let mut pattern = a.pattern.clone();
+    let generated = match &a.family {
+        Some(spec) => {
+            if a.scene.len() > 1 || pattern.as_deref().is_some_and(|p| p.contains(',')) {
+                bail!("`--family`: give at most one --pattern or --scene (the base of the candidates)");
+            }
+            let base = scene_args(a, pattern.take(), files.pop()).resolve(None)?;
+            let params = super::super::patterns::check(
+                spec,
+                super::super::patterns::DEFAULT_MAX_PQ,
+                super::super::patterns::DEFAULT_MAX_ORDER,
+            )?;
+            Some(super::super::patterns::generate(
+                &base,
+                &params,
+                a.normalize.unwrap_or_default(),
+                &a.out.join("patterns"),
+                Some("--family"),
+            )?)
+        }
+        None => None,
+    };
+    if let Some(index) = a.patterns.as_ref().or(generated.as_ref()) {
+        facts = crate::study::patterns::index_facts(index)?;
+        // the contact-type pre-screen orders the surrogate's work
+        files.extend(crate::study::patterns::prescreen_order(
+            crate::study::patterns::index_scenes(index)?,
+            &facts,
+        ));
+    }
+    let patterns: Vec<String> = match (&pattern, files.is_empty()) {
+        (Some(p), _) => p.split(',').map(|s| s.trim().to_string()).collect(),
+        (None, true) => vec!["square-tri".into(), "tri-tri".into()],
+        (None, false) => vec![],
+    };
+    let extra = a.overrides.flags();
+    for p in patterns {
+        if !surrogate::scene::PATTERNS.contains(&p.as_str()) {
+            bail!(
+                "`--pattern`: unknown pattern `{p}` (expected a comma list of {})",
+                surrogate::scene::PATTERNS.join(", ")
+            );
+        }
+        let r = scene_args(a, Some(p.clone()), None).resolve(Some(0.0))?;
+        let mut flags = vec!["--pattern".to_string(), p.clone()];
+        flags.extend(extra.iter().cloned());
+        out.push(DesignScene {
+            name: p,
+            scene: r.scene,
+            flags,
+            warnings: r.warnings,
+            facts: None,
+        });
+    }
+    for f in &files {
+        let name = f
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        if name.is_empty()
+            || !name
+                .chars()
+                .all(|c| c.is_alphanumeric() || "-_.".contains(c))
+        {
+            bail!(
+                "`--scene`: {}: the file stem names the outputs and must be letters, digits, `-`, `_`, `.`",
+                f.display()
+            );
+        }
+        let r = scene_args(a, None, Some(f.clone())).resolve(Some(0.0))?;
+        let mut flags = vec!["--scene".to_string(), f.display().to_string()];
+        flags.extend(extra.iter().cloned());
+        let facts = facts
+            .iter()
+            .find(|(id, _)| *id == name)
+            .map(|(_, f)| f.clone());
+        out.push(DesignScene {
+            name,
+            scene: r.scene,
+            flags,
+            warnings: r.warnings,
+            facts,
+        });
+    }
+    for (k, s) in out.iter().enumerate() {
+        if out[..k].iter().any(|t| t.name == s.name) {
+            bail!(
+                "`--pattern`/`--scene`: `{}` is given twice (patterns and scene-file stems name the outputs)",
+                s.name
+            );
+        }
+    }
+    Ok(out)
+}
