@@ -59,6 +59,9 @@ pub struct Args {
     /// Scene override flags, applied to every pattern and scene.
     #[command(flatten)]
     overrides: SceneOverrides,
+    /// Recipe flags (`--vary`, `--fair`, `--skip-invalid`): scene fields as design variables.
+    #[command(flatten)]
+    recipe: super::recipe_args::RecipeArgs,
     /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
     /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md); a list
     /// that does not span a domain is named in the log and the report [default: 0:30:0.1, and
@@ -347,7 +350,7 @@ fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             );
         }
     }
-    Ok(out)
+    a.recipe.expand(out, &a.out)
 }
 
 /// Every check of `superlube design`, before any work.

@@ -107,6 +107,7 @@ pub mod landscape;
 pub mod merge;
 pub mod patterns;
 pub mod range;
+pub mod recipe;
 pub mod record;
 pub mod rows;
 pub mod screen;
