@@ -29,6 +29,7 @@ pub mod commands;
 pub mod data;
 pub mod pattern_files;
 pub mod patterns;
+pub mod recipes;
 pub mod rows;
 pub mod top;
 pub mod words;
@@ -174,6 +175,7 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
     }
     if o.patterns.len() > 1 {
         patterns::write_figures(store, &mut outs, &mut global, o, &pats)?;
+        recipes::write_figures(store, &mut outs, &mut global, &pats)?;
     }
     global.append(&mut wrote);
     let mut wrote = global;
@@ -306,6 +308,7 @@ mod tests {
             maps: vec![s("square-tri")],
             compared: vec![],
             fairness: String::new(),
+            recipes: None,
             contact_maps: vec![],
             dem_ran: dem,
             dem: dem.then(|| DemSection {

@@ -337,3 +337,17 @@ pub fn outside_validated_range(s: &Scene) -> Option<String> {
         )
     })
 }
+
+/// The base name and the varied values of a recipe's name `<base>+FIELD=VALUE+…` (as
+/// [`variants`] names it); `None` for a name without varied values. O(length).
+pub fn parse_name(name: &str) -> Option<(String, Vec<(String, f64)>)> {
+    let mut parts = name.split('+');
+    let base = parts.next()?.to_string();
+    let values: Vec<(String, f64)> = parts
+        .map(|p| {
+            let (f, v) = p.split_once('=')?;
+            Some((f.to_string(), v.parse().ok()?))
+        })
+        .collect::<Option<_>>()?;
+    (!values.is_empty()).then_some((base, values))
+}
