@@ -5,7 +5,7 @@
 //! makes the grid of recipes of one base scene: each [`Vary`] is a dotted field of the scene
 //! file in user units (`slider.sphere_diameter_um`, `slider.material.youngs_GPa`,
 //! `slider.lattice.spacing_um`, `slider.outline.size_um.0`, …) with its values; several form a
-//! grid. Each value is written into the base scene's file form ([`surrogate::scene_file`], a
+//! grid. Each value is written into the base scene's file form ([`surrogate::scene::scene_file`], a
 //! TOML value tree) at its path, and the tree is parsed and validated as a scene file: every
 //! numeric field works, and an unknown or non-numeric field, or a value the scene refuses, is
 //! named in the error. The variants are the candidates of the design's multi-pattern ranking
