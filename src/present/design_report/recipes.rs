@@ -85,7 +85,7 @@ pub fn section(rows: &[PatternRow]) -> Option<RecipeSection> {
         }
         let v: Vec<String> = values
             .iter()
-            .map(|(f, v)| format!("{f} = {}", fmt_g(*v, 6)))
+            .map(|(f, v)| format!("{f} = {}", crate::study::recipe::value_text(*v)))
             .collect();
         best.push((
             base.clone(),
@@ -112,7 +112,11 @@ pub fn section(rows: &[PatternRow]) -> Option<RecipeSection> {
             .iter()
             .map(|c| RecipeLine {
                 base: c.base.clone(),
-                values: c.values.iter().map(|(_, v)| fmt_g(*v, 6)).collect(),
+                values: c
+                    .values
+                    .iter()
+                    .map(|(_, v)| crate::study::recipe::value_text(*v))
+                    .collect(),
                 limit_mn: limit(c.row),
                 spheres: c.row.spheres,
                 mean_pressure_kpa: fmt_g(c.row.mean_pressure_kPa, 3),
@@ -154,7 +158,7 @@ pub fn field_chart(rows: &[PatternRow], k: usize) -> Option<Chart> {
         .iter()
         .enumerate()
         .filter(|(j, _)| *j != k)
-        .map(|(_, (f, v))| format!("{f} = {}", fmt_g(*v, 6)))
+        .map(|(_, (f, v))| format!("{f} = {}", crate::study::recipe::value_text(*v)))
         .collect();
     Some(Chart {
         title: if others.is_empty() {
