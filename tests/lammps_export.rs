@@ -1166,3 +1166,67 @@ fn lammps_check_reads_a_dump_and_finds_contacts_above_p_crit() {
     let _ = std::fs::remove_dir_all(&dir);
     let _ = std::fs::remove_dir_all(&other);
 }
+
+/// Per-body materials: the slider–substrate pair's own `pair_coeff 1 2` gives LAMMPS the Hertz
+/// E* of both bodies (`E/(2(1 − ν²))` of its modulus at the slider's ν is
+/// `1/((1 − ν1²)/E1 + (1 − ν2²)/E2)`) and k_t = 8G*; export.json records that E*; each body's
+/// atoms carry its own density. With `lmp`, the deck sets up and starts at the surrogate's
+/// equilibrium (contacts, P_max).
+#[test]
+fn export_of_per_body_materials_writes_the_pairs_moduli() {
+    let dir = tmpdir("materials");
+    let scene = dir.join("m.toml");
+    std::fs::write(
+        &scene,
+        "pattern = 'square-tri'\n[slider]\nradius_um = 15\n[slider.material]\nyoungs_GPa = 50\npoisson = 0.25\n\
+         [substrate]\nsize_um = [66, 54]\n[substrate.material]\ndensity_g_cm3 = 3.0\n",
+    )
+    .unwrap();
+    let args = [
+        "--scene",
+        scene.to_str().unwrap(),
+        "--theta",
+        "10",
+        "--load-mn",
+        "0.05",
+        "--slide-us",
+        "0",
+    ];
+    let meta = export(&dir.join("a"), &args);
+    let e_star = 1.0 / ((1.0 - 0.25 * 0.25) / 50.0 + (1.0 - 0.3 * 0.3) / 100.0);
+    let got = meta["e_star_GPa"].as_f64().unwrap();
+    assert!((got / e_star - 1.0).abs() < 1e-12, "{got} vs {e_star}");
+    let deck = std::fs::read_to_string(dir.join("a/in.superlube.lmp")).unwrap();
+    let pair: Vec<&str> = deck
+        .lines()
+        .find(|l| l.starts_with("pair_coeff      1 2 "))
+        .expect("a pair_coeff of the slider-substrate pair")
+        .split_whitespace()
+        .collect();
+    // hertz/material E e nu …: E in 1e3 Pa (LAMMPS micro units)
+    let (e, nu) = (
+        pair[4].parse::<f64>().unwrap(),
+        pair[6].parse::<f64>().unwrap(),
+    );
+    assert_eq!(nu, 0.25);
+    assert!((e / (2.0 * (1.0 - nu * nu)) * 1e-6 / e_star - 1.0).abs() < 1e-12);
+    let g = |e: f64, nu: f64| e / (2.0 * (1.0 + nu));
+    let g_star = 1.0 / ((2.0 - 0.25) / g(50.0, 0.25) + (2.0 - 0.3) / g(100.0, 0.3));
+    let k = pair.iter().position(|w| *w == "mindlin").unwrap();
+    let k_t = pair[k + 1].parse::<f64>().unwrap() * 1e-6;
+    assert!((k_t / (8.0 * g_star) - 1.0).abs() < 1e-12, "{k_t}");
+    // one material: no pair line
+    let one = dir.join("b");
+    export(&one, &[SMALL, &args[2..]].concat());
+    let deck1 = std::fs::read_to_string(one.join("in.superlube.lmp")).unwrap();
+    assert!(!deck1.contains("pair_coeff      1 2 "));
+    if let Some(lmp) = lmp() {
+        let log = run_deck(&lmp, &dir.join("a"), &[("nsteps", "0")]);
+        let r = result(&log, "equilibrate");
+        let s = &meta["surrogate"];
+        assert_eq!(r["contacts"], s["contacts"].as_f64().unwrap());
+        let (p, ps) = (r["p_max_GPa"], s["p_max_GPa"].as_f64().unwrap());
+        assert!((p - ps).abs() < 1e-9 * ps, "P_max {p} vs surrogate {ps}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -68,9 +68,9 @@ pub fn contact_model(
             hertz: scene.hertz(),
             gamma_n: params.gamma_n,
         },
-        tangential: Mindlin::equal_spheres(
-            scene.material.youngs,
-            scene.material.poisson,
+        tangential: Mindlin::between(
+            &scene.slider_material(),
+            &scene.substrate_material(),
             params.gamma_t,
         ),
         history: params.tangential,
@@ -101,21 +101,25 @@ pub fn stability_input(
         );
         (
             scene
-                .material
+                .slider_material()
                 .sphere_mass(min(scene.slider_radii(), f64::INFINITY)),
             scene
-                .material
+                .substrate_material()
                 .sphere_mass(min(scene.substrate_radii(), scene.sphere_radius)),
             r_sl * r_sb / (r_sl + r_sb),
         )
     } else {
         (
-            scene.material.sphere_mass(scene.slider_sphere_radius()),
-            scene.material.sphere_mass(scene.sphere_radius),
+            scene
+                .slider_material()
+                .sphere_mass(scene.slider_sphere_radius()),
+            scene.substrate_material().sphere_mass(scene.sphere_radius),
             m.normal.hertz.r_eff,
         )
     };
-    let m_control = scene.material.sphere_mass(params.control_sphere_radius);
+    let m_control = scene
+        .slider_material()
+        .sphere_mass(params.control_sphere_radius);
     StabilityInput {
         m_slider,
         m_substrate,

@@ -18,6 +18,7 @@ mod landscape;
 mod merge;
 mod patterns;
 mod protocol_args;
+mod recipe_args;
 pub mod renamed;
 mod scene_args;
 mod screen;

@@ -84,3 +84,24 @@ impl ValueEnum for Normalize {
         })
     }
 }
+
+impl ValueEnum for crate::study::recipe::Fair {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[
+            crate::study::recipe::Fair::Area,
+            crate::study::recipe::Fair::Count,
+        ]
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        use crate::study::recipe::Fair;
+        Some(match self {
+            Fair::Area => PossibleValue::new("area")
+                .help("Every recipe keeps the base slider's outline: equal slider area (µm²)"),
+            Fair::Count => PossibleValue::new("count").help(
+                "Each recipe's outline is scaled to hold the base slider's sphere count (the \
+                 closest its lattice allows)",
+            ),
+        })
+    }
+}

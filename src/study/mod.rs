@@ -108,6 +108,7 @@ pub mod load;
 pub mod merge;
 pub mod patterns;
 pub mod range;
+pub mod recipe;
 pub mod record;
 pub mod rows;
 pub mod screen;

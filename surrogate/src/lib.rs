@@ -19,4 +19,6 @@ pub mod solver;
 pub mod units;
 
 pub use error::SceneError;
-pub use scene::{Coating, Lattice, Material, Mount, Scene, SceneFile, SliderSpec, SubstrateSpec};
+pub use scene::{
+    BodyMaterials, Coating, Lattice, Material, Mount, Scene, SceneFile, SliderSpec, SubstrateSpec,
+};

@@ -68,6 +68,7 @@ fn rail_scene(mu: f64) -> Scene {
         },
         sphere_radius: 1.5e-6,
         material: Material::default(),
+        body_materials: Default::default(),
         coating: Coating {
             p_crit: 4e9,
             mu1: mu,

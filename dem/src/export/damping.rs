@@ -56,6 +56,16 @@ pub enum LammpsDamping {
 /// [3·10⁻⁴, 1.2728], i.e. 2.5·10⁻⁴ ≤ γ_n ≤ 1.039), or γ_t > 0 with γ_n = 0 (LAMMPS scales the
 /// tangential damping by the normal one).
 pub fn lammps_damping(gamma_n: f64, gamma_t: f64, nu: f64) -> Result<LammpsDamping, DemError> {
+    lammps_damping_ratio(gamma_n, gamma_t, 3.0 * (1.0 - nu) / (2.0 - nu))
+}
+
+/// [`lammps_damping`] for a pair of two materials: `shear_ratio` = `8G*/(4/3 E*)` of the pair
+/// (`3(1−ν)/(2−ν)` for one material), so `xgammat = (γ_t/α) √shear_ratio`.
+pub fn lammps_damping_ratio(
+    gamma_n: f64,
+    gamma_t: f64,
+    shear_ratio: f64,
+) -> Result<LammpsDamping, DemError> {
     if !(gamma_t.is_finite() && gamma_t >= 0.0) {
         return Err(DemError::invalid(
             "gamma_t",
@@ -87,7 +97,7 @@ pub fn lammps_damping(gamma_n: f64, gamma_t: f64, nu: f64) -> Result<LammpsDampi
     })?;
     // the α LAMMPS will actually use (the bisection is exact to rounding)
     let alpha = tsuji_alpha(e);
-    let xgammat = gamma_t / alpha * (3.0 * (1.0 - nu) / (2.0 - nu)).sqrt();
+    let xgammat = gamma_t / alpha * shear_ratio.sqrt();
     Ok(LammpsDamping::Tsuji { e, xgammat })
 }
 

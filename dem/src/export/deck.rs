@@ -65,6 +65,19 @@ pub struct DeckViscous {
     pub relative: bool,
 }
 
+/// The slider–substrate pair's coefficients when the bodies' materials differ (LAMMPS micro
+/// units): an explicit `pair_coeff 1 2` whose `hertz/material` gives the pair's Hertz
+/// `E* = E/(2(1 − ν²))` at the slider's ν, and whose Mindlin stiffness is the pair's `8G*`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeckPair {
+    /// `2(1 − ν_sl²) E*` (10³ Pa): the modulus that LAMMPS turns into the pair's E*.
+    pub youngs: f64,
+    /// `8 G*` (10³ Pa) of the pair: `1/G* = (2 − ν1)/G1 + (2 − ν2)/G2`.
+    pub k_t: f64,
+    /// The substrate's own Young's modulus (10³ Pa) and Poisson ratio (recorded in a comment).
+    pub substrate: [f64; 2],
+}
+
 /// Everything the deck needs, in LAMMPS micro units (µm, µs, pg, nN, 10³ Pa, nN/µm).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DeckInputs {
@@ -76,10 +89,14 @@ pub struct DeckInputs {
     pub window_start: u64,
     /// Time step (µs).
     pub dt: f64,
-    /// Young's modulus (10³ Pa), Poisson ratio.
+    /// Young's modulus (10³ Pa) of the slider's material (of both bodies' when `pair` is
+    /// `None`).
     pub youngs: f64,
-    /// Poisson ratio (–).
+    /// Poisson ratio (–) of the slider's material.
     pub poisson: f64,
+    /// The slider–substrate pair's own coefficients when the two bodies' materials differ;
+    /// `None`: one material.
+    pub pair: Option<DeckPair>,
     /// Contact damping.
     pub damping: LammpsDamping,
     /// Constant friction coefficient.
@@ -126,6 +143,18 @@ pub struct DeckInputs {
     /// Per-site sphere sizes (then `contact_distance` is the largest radius sum, for the
     /// communication cutoff); `None`: one size per body.
     pub sizes: Option<super::deck_sizes::DeckSizes>,
+}
+
+/// The comment over the slider–substrate pair's own `pair_coeff` (two materials).
+fn pair_lines(s: &mut String, p: &DeckPair) {
+    let _ = writeln!(
+        s,
+        "# per-body materials: the slider (types 2-5) as above, the substrate E = {} nu = {}; the\n\
+         # slider-substrate pair (types 1 2) takes 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2 as the modulus\n\
+         # whose E/(2(1-nu^2)) is E* at the slider's nu, and k_t = 8 G*, 1/G* = (2-nu1)/G1 + (2-nu2)/G2",
+        N(p.substrate[0]),
+        N(p.substrate[1])
+    );
 }
 
 /// A number as LAMMPS reads it: the shortest text that round-trips (`1e-5`, `0.1`, `1e8`).
@@ -256,10 +285,18 @@ pub fn render(d: &DeckInputs) -> String {
             w!("# tangential damping = xgammat x normal = the Rust -gamma_t sqrt(m_eff k_t) v_t");
             w!("pair_style      granular");
             w!("pair_coeff      * * hertz/material {} {} {} damping tsuji tangential mindlin NULL {} {}", N(d.youngs), N(e), N(d.poisson), N(xgammat), N(d.mu));
+            if let Some(p) = d.pair {
+                pair_lines(&mut s, &p);
+                w!("pair_coeff      1 2 hertz/material {} {} {} damping tsuji tangential mindlin {} {} {}", N(p.youngs), N(e), N(d.poisson), N(p.k_t), N(xgammat), N(d.mu));
+            }
         }
         LammpsDamping::None => {
             w!("pair_style      granular");
             w!("pair_coeff      * * hertz/material {} 0.0 {} damping viscoelastic tangential mindlin NULL 0.0 {}", N(d.youngs), N(d.poisson), N(d.mu));
+            if let Some(p) = d.pair {
+                pair_lines(&mut s, &p);
+                w!("pair_coeff      1 2 hertz/material {} 0.0 {} damping viscoelastic tangential mindlin {} 0.0 {}", N(p.youngs), N(d.poisson), N(p.k_t), N(d.mu));
+            }
         }
     }
     w!("neighbor        {} bin", N(d.skin));

@@ -18,9 +18,11 @@ pub struct DeckSizes {
     pub z_offset: f64,
     /// Viscous damping time τ (µs); `None` = off.
     pub tau: Option<f64>,
-    /// Material density (pg/µm³): a class is picked out by its atoms' mass `ρ π d³/6` (the
-    /// per-atom diameter is not an atom-style variable keyword).
-    pub density: f64,
+    /// Density (pg/µm³) of the slider's material: a class is picked out by its atoms' mass
+    /// `ρ π d³/6` (the per-atom diameter is not an atom-style variable keyword).
+    pub slider_density: f64,
+    /// Density (pg/µm³) of the substrate's material (as `slider_density`).
+    pub substrate_density: f64,
 }
 
 /// The distinct values of `v` (µm), ascending (equal to 10⁻⁹ relative are one).
@@ -89,7 +91,12 @@ pub fn p_max(s: &mut String, z: &DeckSizes, pref: f64) {
     w("# per-site sizes: P_max per (slider size, substrate size) class of pairs, each with its own".into());
     w("# contact distance c = (d_sl + d_sb)/2 and R_eff".into());
     let group = |w: &mut dyn FnMut(String), name: &str, ty: u32, d: f64| {
-        let m = z.density * std::f64::consts::PI / 6.0 * d * d * d;
+        let rho = if ty == 1 {
+            z.substrate_density
+        } else {
+            z.slider_density
+        };
+        let m = rho * std::f64::consts::PI / 6.0 * d * d * d;
         w(format!(
             "variable        is_{name} atom (type=={ty})&&(abs(mass-{})<{})   # diameter {} um",
             n(m),
@@ -151,7 +158,8 @@ mod tests {
             substrate_diameters: vec![3.0],
             z_offset: 0.1,
             tau: Some(1.0),
-            density: 1.0,
+            slider_density: 1.0,
+            substrate_density: 1.0,
         };
         let mut s = String::new();
         p_max(&mut s, &z, 1.0);

@@ -138,7 +138,8 @@ pub fn layout(
 ) -> Layout {
     let n = spec.slider_sites.len();
     assert_eq!(local.len(), n, "local sites must match the slider sites");
-    let rho = spec.material.density;
+    let rho = spec.slider_material.density;
+    let rho_sb = spec.substrate_material.density;
     let d_sb = 2.0 * spec.substrate_sphere_radius;
     let dc = 2.0 * params.control_sphere_radius;
     let mut atoms = Vec::with_capacity(spec.substrate.len() + 3 * n + 1);
@@ -161,7 +162,7 @@ pub fn layout(
             None => d_sb,
             Some(r) => 2.0 * r[j],
         };
-        push(TYPE_SUBSTRATE, *p, d, rho, 0);
+        push(TYPE_SUBSTRATE, *p, d, rho_sb, 0);
     }
     let sl_first = sub_first + spec.substrate.len() as u64;
     for (i, (s, z)) in spec.slider_sites.iter().zip(&spec.slider_z).enumerate() {
@@ -272,7 +273,8 @@ mod tests {
             substrate_sphere_radius: 1.5e-6,
             slider_radii: None,
             substrate_radii: None,
-            material: Material::default(),
+            slider_material: Material::default(),
+            substrate_material: Material::default(),
             tilt_stiffness: None,
             disc: None,
             substrate_size: None,

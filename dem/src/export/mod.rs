@@ -37,7 +37,7 @@ pub use options::ExportOptions;
 
 use crate::protocol::{step_counts, RunKind};
 use crate::{DemError, SimParams, Start};
-use deck::{DeckInputs, DeckMount, DeckViscous};
+use deck::{DeckInputs, DeckMount, DeckPair, DeckViscous};
 use std::path::{Path, PathBuf};
 use surrogate::{Mount, Scene};
 
@@ -122,7 +122,13 @@ pub fn export_lammps(
             "the bond split needs k_slider_z ≥ k_slider_xy ≥ 0 (N/m)",
         ));
     }
-    let damping = damping::lammps_damping(params.gamma_n, params.gamma_t, scene.material.poisson)?;
+    let (m_sl, m_sb) = (scene.slider_material(), scene.substrate_material());
+    let damping = if m_sl == m_sb {
+        damping::lammps_damping(params.gamma_n, params.gamma_t, m_sl.poisson)?
+    } else {
+        let ratio = 6.0 * m_sl.g_star_with(&m_sb) / m_sl.e_star_with(&m_sb);
+        damping::lammps_damping_ratio(params.gamma_n, params.gamma_t, ratio)?
+    };
     let friction = crate::model::Friction::Constant(crate::model::Constant { mu: opts.mu });
     let prep = crate::prepare(scene, params.clone(), Start::Surrogate, Some(friction))?;
     let sim = &prep.sim;
@@ -144,7 +150,7 @@ pub fn export_lammps(
     let hertz = scene.hertz();
     let m_s = sim.spec.slider_sphere_mass();
     let m_b = sim.spec.substrate_sphere_mass();
-    let m_c = 0.5 * scene.material.sphere_mass(p.control_sphere_radius);
+    let m_c = 0.5 * m_sl.sphere_mass(p.control_sphere_radius);
     let viscous = (p.damping_time.is_finite() && p.damping_time > 0.0).then(|| DeckViscous {
         gamma_sphere: micro::drag(m_s / p.damping_time),
         control_ratio: m_c / m_s,
@@ -235,7 +241,7 @@ pub fn export_lammps(
     let sizes = spec.has_sizes().then(|| {
         let n_sl = spec.slider_sites.len();
         let masses: Vec<f64> = (0..n_sl)
-            .map(|i| spec.material.sphere_mass(spec.slider_radius(i)))
+            .map(|i| spec.slider_material.sphere_mass(spec.slider_radius(i)))
             .collect();
         let z_offset = (0..n_sl)
             .map(|i| masses[i] * (spec.slider_sphere_radius - spec.slider_radius(i)))
@@ -255,7 +261,8 @@ pub fn export_lammps(
             z_offset: micro::len(z_offset),
             tau: (p.damping_time.is_finite() && p.damping_time > 0.0)
                 .then(|| micro::time(p.damping_time)),
-            density: micro::density(spec.material.density),
+            slider_density: micro::density(spec.slider_material.density),
+            substrate_density: micro::density(spec.substrate_material.density),
         }
     });
     let window_start = (p.measure_from * ns as f64).round() as u64;
@@ -264,8 +271,18 @@ pub fn export_lammps(
         steps,
         window_start,
         dt: micro::time(sim.dt),
-        youngs: micro::pressure(scene.material.youngs),
-        poisson: scene.material.poisson,
+        youngs: micro::pressure(m_sl.youngs),
+        poisson: m_sl.poisson,
+        pair: (m_sl != m_sb).then(|| {
+            // the one material whose E/(2(1 − ν²)) is the pair's E* (at the slider's ν), and the
+            // pair's Mindlin stiffness 8G* given explicitly
+            let nu = m_sl.poisson;
+            DeckPair {
+                youngs: micro::pressure(2.0 * (1.0 - nu * nu) * hertz.e_star),
+                k_t: micro::pressure(8.0 * m_sl.g_star_with(&m_sb)),
+                substrate: [micro::pressure(m_sb.youngs), m_sb.poisson],
+            }
+        }),
         damping,
         mu: opts.mu,
         contact_distance: micro::len(sim.spec.max_contact_distance()),

@@ -103,7 +103,9 @@ impl Body {
             .collect();
         let m_s = spec.slider_sphere_mass();
         let m_b = spec.substrate_sphere_mass();
-        let m_c = spec.material.sphere_mass(params.control_sphere_radius);
+        let m_c = spec
+            .slider_material
+            .sphere_mass(params.control_sphere_radius);
         let m_cl = n as f64 * m_c;
         let sizes = spec.has_sizes().then(|| {
             let sl_r: Vec<f64> = (0..n).map(|i| spec.slider_radius(i)).collect();
@@ -111,14 +113,17 @@ impl Body {
                 .map(|j| spec.substrate_radius(j))
                 .collect();
             Sizes {
-                sl_m: sl_r.iter().map(|&r| spec.material.sphere_mass(r)).collect(),
+                sl_m: sl_r
+                    .iter()
+                    .map(|&r| spec.slider_material.sphere_mass(r))
+                    .collect(),
                 sl_dz: sl_r
                     .iter()
                     .map(|&r| spec.slider_sphere_radius - r)
                     .collect(),
                 sub_m: sub_r
                     .iter()
-                    .map(|&r| spec.material.sphere_mass(r))
+                    .map(|&r| spec.substrate_material.sphere_mass(r))
                     .collect(),
                 sl_r,
                 sub_r,

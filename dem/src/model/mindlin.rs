@@ -21,6 +21,16 @@ impl Mindlin {
             gamma_t,
         }
     }
+
+    /// A sphere of material `a` against one of `b`: `G*` of
+    /// [`surrogate::Material::g_star_with`] (`1/G* = (2 − ν1)/G1 + (2 − ν2)/G2`), equal to
+    /// [`Mindlin::equal_spheres`] bit for bit for one material.
+    pub fn between(a: &surrogate::Material, b: &surrogate::Material, gamma_t: f64) -> Self {
+        Mindlin {
+            g_star: a.g_star_with(b),
+            gamma_t,
+        }
+    }
 }
 
 #[inline]

@@ -126,7 +126,8 @@ pub fn from_scene(
             substrate_sphere_radius: scene.sphere_radius,
             slider_radii,
             substrate_radii: sub_radii,
-            material: scene.material,
+            slider_material: scene.slider_material(),
+            substrate_material: scene.substrate_material(),
             tilt_stiffness: scene
                 .slider
                 .mount

@@ -30,8 +30,11 @@ pub struct SystemSpec {
     /// `None`: every one has `substrate_sphere_radius`. Their heights in `substrate` already
     /// include the offset `r_j − R` (bottom on the substrate plane).
     pub substrate_radii: Option<Vec<f64>>,
-    /// Material (density for the masses, elastic constants for the contact model).
-    pub material: Material,
+    /// Material of the slider spheres and the control layer (density for their masses; the
+    /// contact model's elastic constants come from both bodies' materials).
+    pub slider_material: Material,
+    /// Material of the substrate spheres (density for their masses).
+    pub substrate_material: Material,
     /// Rotational stiffness `K_t` (N·m/rad, lab frame, on `[t_x, t_y]`) of the slider mount when
     /// the control layer may tilt (`free`: zeros; `springs`: the anti-tilt springs); `None`: the
     /// mount is locked (no tilt degrees of freedom).
@@ -47,11 +50,12 @@ pub struct SystemSpec {
 impl SystemSpec {
     /// Mass of one slider sphere (kg).
     pub fn slider_sphere_mass(&self) -> f64 {
-        self.material.sphere_mass(self.slider_sphere_radius)
+        self.slider_material.sphere_mass(self.slider_sphere_radius)
     }
     /// Mass of one substrate sphere (kg).
     pub fn substrate_sphere_mass(&self) -> f64 {
-        self.material.sphere_mass(self.substrate_sphere_radius)
+        self.substrate_material
+            .sphere_mass(self.substrate_sphere_radius)
     }
     /// Centre distance (m) at which a slider and a substrate sphere touch, `R_sl + R_sb`
     /// (`2R`, bit for bit, for one size).

@@ -61,6 +61,9 @@ pub struct Args {
     /// Scene override flags, applied to every pattern and scene.
     #[command(flatten)]
     overrides: SceneOverrides,
+    /// Recipe flags (`--vary`, `--fair`, `--skip-invalid`): scene fields as design variables.
+    #[command(flatten)]
+    recipe: super::recipe_args::RecipeArgs,
     /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
     /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md); a list
     /// that does not span a domain is named in the log and the report [default: 0:30:0.1, and

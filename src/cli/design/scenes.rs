@@ -113,5 +113,5 @@ pub(super) fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             );
         }
     }
-    Ok(out)
+    a.recipe.expand(out, &a.out)
 }

@@ -30,6 +30,7 @@ pub mod data;
 pub mod log;
 pub mod pattern_files;
 pub mod patterns;
+pub mod recipes;
 pub mod rows;
 pub mod top;
 pub mod words;
@@ -176,6 +177,7 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
     }
     if o.patterns.len() > 1 {
         patterns::write_figures(store, &mut outs, &mut global, o, &pats)?;
+        recipes::write_figures(store, &mut outs, &mut global, &pats)?;
     }
     global.append(&mut wrote);
     let mut wrote = global;
@@ -308,6 +310,7 @@ mod tests {
             maps: vec![s("square-tri")],
             compared: vec![],
             fairness: String::new(),
+            recipes: None,
             contact_maps: vec![],
             dem_ran: dem,
             dem: dem.then(|| DemSection {

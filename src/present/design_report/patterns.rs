@@ -165,7 +165,18 @@ pub fn fairness(o: &DesignOutcome, rows: &[PatternRow]) -> String {
     };
     let equal_area = same(&|r: &PatternRow| r.slider_area_um2);
     let equal_count = same(&|r: &PatternRow| r.spheres as f64);
-    if rule.iter().all(|r| *r == "spheres") {
+    if rule.iter().all(|r| *r == "recipe-area") {
+        format!(
+            "Recipes compared at **equal slider area** (`--fair area`: each keeps the base slider's outline; the sphere count follows the recipe: {}); the mean pressure and the load per sphere at each limit are in patterns.csv.",
+            range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
+        )
+    } else if rule.iter().all(|r| *r == "recipe-count") {
+        format!(
+            "Recipes compared at **equal sphere count** (`--fair count`: each outline scaled to hold the base slider's sphere count, the closest its lattice allows: {}; slider area {}).",
+            range_text(rows.iter().map(|r| r.spheres as f64), "spheres"),
+            range_text(rows.iter().map(|r| r.slider_area_um2), "µm²")
+        )
+    } else if rule.iter().all(|r| *r == "spheres") {
         format!(
             "Compared at **equal sphere count**: the candidates were made with `superlube patterns --normalize spheres` (each outline scaled to hold the base slider's sphere count, the closest its lattice allows: {}).",
             if equal_count {

@@ -121,12 +121,29 @@ pub fn run_facts(o: &SlideOutcome) -> Option<RunFacts> {
     serde_json::from_str(&text).ok()
 }
 
+/// `E` of a run name: the slider's Young's modulus (GPa), `-` the substrate's when the two
+/// bodies' materials differ.
+fn material_label(scene: &Scene) -> String {
+    use crate::study::rows::label;
+    use surrogate::units::pa_to_gpa;
+    let (sl, sb) = (scene.slider_material(), scene.substrate_material());
+    if sl == sb {
+        format!("{}", label(pa_to_gpa(sl.youngs)))
+    } else {
+        format!(
+            "{}-{}",
+            label(pa_to_gpa(sl.youngs)),
+            label(pa_to_gpa(sb.youngs))
+        )
+    }
+}
+
 /// The directory name of a run: `<pattern>_th<θ>_a<α>_W<W>_sh<σ_h>_s<seed>_E<E>` (degrees,
 /// mN, µm, GPa as printed by [`crate::study::rows::label`]; the seed part only when σ_h > 0, where it
-/// matters).
+/// matters; `E<E_slider>-<E_substrate>` when the bodies' materials differ).
 pub fn run_name(scene: &Scene, params: &DemParams) -> String {
     use crate::study::rows::label;
-    use surrogate::units::{m_to_um, n_to_mn, pa_to_gpa, rad_to_deg};
+    use surrogate::units::{m_to_um, n_to_mn, rad_to_deg};
     let sh = label(m_to_um(scene.substrate.sigma_h));
     let seed = if sh > 0.0 {
         format!("_s{}", scene.substrate.seed)
@@ -141,6 +158,6 @@ pub fn run_name(scene: &Scene, params: &DemParams) -> String {
         label(n_to_mn(params.sim.load)),
         sh,
         seed,
-        label(pa_to_gpa(scene.material.youngs)),
+        material_label(scene),
     )
 }

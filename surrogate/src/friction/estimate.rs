@@ -363,11 +363,16 @@ impl Body {
     fn of(solver: &Solver, params: &FrictionParams) -> Body {
         let scene = solver.scene();
         let n = solver.slider_count() as f64;
-        let m_c = scene.material.sphere_mass(params.control_sphere_radius);
+        let m_c = scene
+            .slider_material()
+            .sphere_mass(params.control_sphere_radius);
         let mass = if scene.slider_radii().is_some() {
             scene.slider_spheres_mass() + n * m_c
         } else {
-            n * (scene.material.sphere_mass(scene.slider_sphere_radius()) + m_c)
+            n * (scene
+                .slider_material()
+                .sphere_mass(scene.slider_sphere_radius())
+                + m_c)
         };
         Body {
             mass,

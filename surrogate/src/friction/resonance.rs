@@ -137,9 +137,11 @@ impl TiltResonance {
         // the mean slider sphere mass (per-site sizes: Σ m_i / N)
         let m_s = match scene.slider_radii() {
             Some(_) => scene.slider_spheres_mass() / n,
-            None => scene.material.sphere_mass(scene.slider_sphere_radius()),
+            None => scene
+                .slider_material()
+                .sphere_mass(scene.slider_sphere_radius()),
         };
-        let unit = m_s + scene.material.sphere_mass(r_control);
+        let unit = m_s + scene.slider_material().sphere_mass(r_control);
         let w2 = [k[0] / (unit * syy), k[1] / (unit * sxx)];
         let tilt_omega = (0.5 * (w2[0] + w2[1])).sqrt();
         let pair_omega = ((k_xy + k_tether) / (2.0 * m_s)).sqrt();

@@ -23,6 +23,8 @@
 //! # [slider] outline = { kind = "rectangle", size_um = [120, 80] } (disc, rectangle, polygon)
 //! # [slider] sites = "slider.csv"   (x_um,y_um[,diameter_um] relative to the slider centre)
 //! # [slider] sphere_diameter_um = 2.0 (the slider's own sphere size; same for [substrate])
+//! # [slider.material] youngs_GPa = 50 (the slider's own material; same for [substrate.material]:
+//! #                   each field given overrides [material] for that body; Hertz E* from both)
 //! [material]
 //! youngs_GPa = 100.0
 //! poisson = 0.3
@@ -33,7 +35,7 @@
 //! mu2 = 0.5
 //! ```
 
-use super::{Lattice, Mount, Outline, Scene, SiteList};
+use super::{BodyMaterials, Lattice, Material, Mount, Outline, Scene, SiteList};
 use crate::error::SceneError;
 use crate::units::{deg_to_rad, gcm3_to_kgm3, gpa_to_pa, um_text, um_to_m};
 use serde::{Deserialize, Serialize};
@@ -250,6 +252,10 @@ pub struct SliderFile {
     /// Diameter of the slider spheres (µm); default the scene's `sphere_diameter_um`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sphere_diameter_um: Option<f64>,
+    /// The slider spheres' own material (`[slider.material]`): each field given overrides the
+    /// shared `[material]` for the slider only.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub material: Option<MaterialFile>,
 }
 
 /// Substrate overrides (user units).
@@ -271,6 +277,10 @@ pub struct SubstrateFile {
     /// Diameter of the substrate spheres (µm); default the scene's `sphere_diameter_um`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sphere_diameter_um: Option<f64>,
+    /// The substrate spheres' own material (`[substrate.material]`): each field given
+    /// overrides the shared `[material]` for the substrate only.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub material: Option<MaterialFile>,
 }
 
 /// Material overrides (user units).
@@ -284,6 +294,45 @@ pub struct MaterialFile {
     pub poisson: Option<f64>,
     /// Density (g/cm³).
     pub density_g_cm3: Option<f64>,
+}
+
+impl MaterialFile {
+    /// `base` (SI) with every field given here overriding it.
+    pub fn apply(&self, mut base: Material) -> Material {
+        if let Some(v) = self.youngs_gpa {
+            base.youngs = gpa_to_pa(v);
+        }
+        if let Some(v) = self.poisson {
+            base.poisson = v;
+        }
+        if let Some(v) = self.density_g_cm3 {
+            base.density = gcm3_to_kgm3(v);
+        }
+        base
+    }
+
+    /// Overlays the fields set in `other` (`other` wins).
+    fn merged(&self, other: &MaterialFile) -> MaterialFile {
+        MaterialFile {
+            youngs_gpa: other.youngs_gpa.or(self.youngs_gpa),
+            poisson: other.poisson.or(self.poisson),
+            density_g_cm3: other.density_g_cm3.or(self.density_g_cm3),
+        }
+    }
+
+    /// This body override less the fields that `shared` sets: a shared value given later (a
+    /// flag such as `--youngs-gpa`) is the shorthand for both bodies. `None` when nothing is
+    /// left.
+    fn without(&self, shared: &MaterialFile) -> Option<MaterialFile> {
+        let f = MaterialFile {
+            youngs_gpa: self.youngs_gpa.filter(|_| shared.youngs_gpa.is_none()),
+            poisson: self.poisson.filter(|_| shared.poisson.is_none()),
+            density_g_cm3: self
+                .density_g_cm3
+                .filter(|_| shared.density_g_cm3.is_none()),
+        };
+        (f != MaterialFile::default()).then_some(f)
+    }
 }
 
 /// Coating overrides (user units).
@@ -399,6 +448,19 @@ impl SceneFile {
         take!(material.youngs_gpa);
         take!(material.poisson);
         take!(material.density_g_cm3);
+        // a shared material value given in `other` is the shorthand for both bodies: it
+        // replaces the bodies' own values of that field; a body's own table in `other` wins
+        for (mine, theirs) in [
+            (&mut self.slider.material, &other.slider.material),
+            (&mut self.substrate.material, &other.substrate.material),
+        ] {
+            let kept = mine.as_ref().and_then(|m| m.without(&other.material));
+            *mine = match (kept, theirs) {
+                (Some(m), Some(t)) => Some(m.merged(t)),
+                (None, Some(t)) => Some(t.clone()),
+                (m, None) => m,
+            };
+        }
         take!(coating.p_crit_gpa);
         take!(coating.mu1);
         take!(coating.mu2);
@@ -446,15 +508,22 @@ impl SceneFile {
         if let Some(v) = self.substrate.seed {
             s.substrate.seed = v;
         }
-        if let Some(v) = self.material.youngs_gpa {
-            s.material.youngs = gpa_to_pa(v);
-        }
-        if let Some(v) = self.material.poisson {
-            s.material.poisson = v;
-        }
-        if let Some(v) = self.material.density_g_cm3 {
-            s.material.density = gcm3_to_kgm3(v);
-        }
+        s.material = self.material.apply(s.material);
+        s.material.validate()?;
+        let body =
+            |f: &Option<MaterialFile>, table: &str| -> Result<Option<Material>, SceneError> {
+                f.as_ref()
+                    .map(|f| {
+                        let m = f.apply(s.material);
+                        m.validate_in(table).map(|_| m)
+                    })
+                    .transpose()
+            };
+        let bodies = BodyMaterials {
+            slider: body(&self.slider.material, "slider.material")?,
+            substrate: body(&self.substrate.material, "substrate.material")?,
+        };
+        (s.material, s.body_materials) = bodies.normalized(s.material);
         if let Some(v) = self.coating.p_crit_gpa {
             s.coating.p_crit = gpa_to_pa(v);
         }

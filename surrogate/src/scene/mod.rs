@@ -17,7 +17,7 @@ pub use file::{
     CoatingFile, LatticeFile, MaterialFile, OutlineFile, SceneFile, SliderFile, SubstrateFile,
 };
 pub use lattice::Lattice;
-pub use material::{Coating, Material};
+pub use material::{BodyMaterials, Coating, Material};
 pub use mount::{rotate_tilt_stiffness, Mount, STUDY_K1};
 pub use pattern::{
     check_basis, closest_sites, min_site_distance, overlaps, rebased, sites_in_outline,
@@ -25,4 +25,4 @@ pub use pattern::{
 };
 pub use scene::{lattice_name, place, Scene, SliderSpec, SubstrateSpec, PATTERNS};
 pub use sites::SiteList;
-pub use to_file::scene_file;
+pub use to_file::{scene_file, scene_file_with_lattices};

@@ -1,7 +1,7 @@
 //! [`Scene`]: the full description of one slider–substrate pair (SI units).
 
 use super::pattern::{self, Geometry};
-use super::{Coating, Lattice, Material, Mount};
+use super::{BodyMaterials, Coating, Lattice, Material, Mount};
 use crate::contact::Hertz;
 use crate::error::SceneError;
 use crate::units::{m_to_um, nm_text, um_pair_text, um_text};
@@ -53,8 +53,13 @@ pub struct Scene {
     /// Radius of every substrate sphere, and of every slider sphere unless
     /// `geometry.slider_sphere_radius` says otherwise (m). Study: 1.5 µm.
     pub sphere_radius: f64,
-    /// Sphere material.
+    /// Sphere material shared by both bodies (the shorthand `[material]`), unless
+    /// `body_materials` overrides it for a body.
     pub material: Material,
+    /// Per-body materials (`[slider.material]`, `[substrate.material]`); read them through
+    /// [`Scene::slider_material`] and [`Scene::substrate_material`]. Not recorded when absent.
+    #[serde(default, skip_serializing_if = "BodyMaterials::is_shared")]
+    pub body_materials: BodyMaterials,
     /// Coating strength and friction coefficients.
     pub coating: Coating,
     /// Bases, slider outline, site files and the slider sphere size (default: the presets'
@@ -100,6 +105,7 @@ impl Scene {
             },
             sphere_radius: 1.5e-6,
             material: Material::default(),
+            body_materials: BodyMaterials::default(),
             coating: Coating::default(),
             geometry: Geometry::default(),
         })
@@ -206,6 +212,12 @@ impl Scene {
             ));
         }
         self.material.validate()?;
+        if let Some(m) = &self.body_materials.slider {
+            m.validate_in("slider.material")?;
+        }
+        if let Some(m) = &self.body_materials.substrate {
+            m.validate_in("substrate.material")?;
+        }
         self.coating.validate()?;
         Ok(())
     }
@@ -244,14 +256,33 @@ impl Scene {
     }
 
     /// Hertz law of one slider–substrate sphere pair: `1/R_eff = 1/R_slider + 1/R_substrate`
-    /// (`R/2` for equal spheres), `E*` of the one material.
+    /// (`R/2` for equal spheres), `E*` of the two bodies' materials ([`Scene::e_star`]).
     pub fn hertz(&self) -> Hertz {
-        match self.geometry.slider_sphere_radius {
+        let mut h = match self.geometry.slider_sphere_radius {
             Some(r) if r != self.sphere_radius => {
                 Hertz::spheres(r, self.sphere_radius, &self.material)
             }
             _ => Hertz::equal_spheres(self.sphere_radius, &self.material),
-        }
+        };
+        h.e_star = self.e_star();
+        h
+    }
+
+    /// Material of the slider's spheres (Pa, kg/m³): `[slider.material]`, else the shared one.
+    pub fn slider_material(&self) -> Material {
+        self.body_materials.slider.unwrap_or(self.material)
+    }
+
+    /// Material of the substrate's spheres: `[substrate.material]`, else the shared one.
+    pub fn substrate_material(&self) -> Material {
+        self.body_materials.substrate.unwrap_or(self.material)
+    }
+
+    /// Hertz effective modulus E* (Pa) of a slider–substrate pair:
+    /// `1/E* = (1 − ν_sl²)/E_sl + (1 − ν_sb²)/E_sb`, `E/(2(1 − ν²))` for one material. O(1).
+    pub fn e_star(&self) -> f64 {
+        self.slider_material()
+            .e_star_with(&self.substrate_material())
     }
 
     /// Radius (m) of a slider sphere (`sphere_radius` unless the geometry gives its own).

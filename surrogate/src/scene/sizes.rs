@@ -60,10 +60,15 @@ impl Scene {
     /// sizes. O(N).
     pub fn slider_spheres_mass(&self) -> f64 {
         match self.slider_radii() {
-            Some(r) => r.iter().map(|&ri| self.material.sphere_mass(ri)).sum(),
+            Some(r) => {
+                let m = self.slider_material();
+                r.iter().map(|&ri| m.sphere_mass(ri)).sum()
+            }
             None => {
                 self.slider_sites_local().len() as f64
-                    * self.material.sphere_mass(self.slider_sphere_radius())
+                    * self
+                        .slider_material()
+                        .sphere_mass(self.slider_sphere_radius())
             }
         }
     }

@@ -1,11 +1,11 @@
 //! The reverse of [`SceneFile::into_scene`]: a [`Scene`] (SI) back to its file form in user
 //! units, recorded in every output's sidecar and reloadable to the identical scene.
 
-use super::Lattice;
 use super::{
     CoatingFile, LatticeFile, MaterialFile, Mount, Outline, OutlineFile, Scene, SceneFile,
     SliderFile, SubstrateFile,
 };
+use super::{Lattice, Material};
 use crate::units::{
     gcm3_to_kgm3, gpa_to_pa, kgm3_to_gcm3, m_to_um, pa_to_gpa, rad_to_deg, um_to_m,
 };
@@ -78,6 +78,15 @@ fn outline_file(o: &Outline) -> Option<OutlineFile> {
     }
 }
 
+/// A material in user units, every field written.
+fn material_file(m: &Material) -> MaterialFile {
+    MaterialFile {
+        youngs_gpa: Some(exact_user(m.youngs, pa_to_gpa, gpa_to_pa)),
+        poisson: Some(m.poisson),
+        density_g_cm3: Some(exact_user(m.density, kgm3_to_gcm3, gcm3_to_kgm3)),
+    }
+}
+
 /// A lattice in user units: its named kind when it is exactly that kind's lattice, else oblique.
 fn lattice_file(l: &Lattice) -> LatticeFile {
     let s = um(l.a1[0]);
@@ -142,6 +151,7 @@ pub fn scene_file(s: &Scene) -> SceneFile {
             offset_um: Some(um2(s.slider.offset)),
             tilt: Some(tilt.into()),
             tilt_k1_n_m: k1,
+            material: s.body_materials.slider.as_ref().map(material_file),
         },
         substrate: SubstrateFile {
             lattice: (custom_lattices && g.substrate_sites.is_none())
@@ -151,18 +161,34 @@ pub fn scene_file(s: &Scene) -> SceneFile {
             size_um: Some(um2(s.substrate.size)),
             sigma_h_um: Some(um(s.substrate.sigma_h)),
             seed: Some(s.substrate.seed),
+            material: s.body_materials.substrate.as_ref().map(material_file),
         },
-        material: MaterialFile {
-            youngs_gpa: Some(exact_user(s.material.youngs, pa_to_gpa, gpa_to_pa)),
-            poisson: Some(s.material.poisson),
-            density_g_cm3: Some(exact_user(s.material.density, kgm3_to_gcm3, gcm3_to_kgm3)),
-        },
+        material: material_file(&s.material),
         coating: CoatingFile {
             p_crit_gpa: Some(exact_user(s.coating.p_crit, pa_to_gpa, gpa_to_pa)),
             mu1: Some(s.coating.mu1),
             mu2: Some(s.coating.mu2),
         },
     }
+}
+
+/// [`scene_file`] with both bodies' lattices written even where the preset defines them (not
+/// for a body from a site file), so that a lattice field (`slider.lattice.spacing_um`) can be
+/// changed in the file form. Reloads to the same scene, its pattern marked as changed
+/// (`square-tri*`).
+pub fn scene_file_with_lattices(s: &Scene) -> SceneFile {
+    let mut f = scene_file(s);
+    let g = &s.geometry;
+    if f.slider.lattice.is_none() && g.slider_sites.is_none() {
+        f.slider.lattice = Some(with_basis(lattice_file(&s.slider.lattice), &g.slider_basis));
+    }
+    if f.substrate.lattice.is_none() && g.substrate_sites.is_none() {
+        f.substrate.lattice = Some(with_basis(
+            lattice_file(&s.substrate.lattice),
+            &g.substrate_basis,
+        ));
+    }
+    f
 }
 
 impl From<&Scene> for SceneFile {

@@ -63,7 +63,7 @@ impl Sizes {
             slider: fill(scene.slider_radii(), n_slider, scene.slider_sphere_radius()),
             substrate: fill(scene.substrate_radii(), n_substrate, scene.sphere_radius),
             r_sl: scene.slider_sphere_radius(),
-            e_star: scene.material.e_star(),
+            e_star: scene.e_star(),
         })
     }
 

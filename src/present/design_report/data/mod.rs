@@ -48,6 +48,8 @@ pub struct ReportData {
     pub compared: Vec<super::patterns::PatternLine>,
     /// The fairness rule of the comparison, one sentence ([`super::patterns::fairness`]).
     pub fairness: String,
+    /// The recipes of `design --vary` ([`super::recipes::section`]); `None` without recipes.
+    pub recipes: Option<super::recipes::RecipeSection>,
     /// The best patterns with a contact map (`contacts_<p>.png`), best first.
     pub contact_maps: Vec<String>,
     /// Whether the DEM stage ran.
@@ -319,6 +321,7 @@ impl ReportData {
             fairness: pats
                 .as_ref()
                 .map_or(String::new(), |rows| super::patterns::fairness(o, rows)),
+            recipes: pats.as_ref().and_then(|rows| super::recipes::section(rows)),
             compared: pats
                 .as_ref()
                 .map_or(Vec::new(), |rows| rows.iter().map(Into::into).collect()),
