@@ -27,6 +27,7 @@ mod sweep_args;
 mod tolerance;
 mod tolerance_args;
 mod value_enums;
+mod work_precision;
 
 pub use crate::study::range::parse_list_or_range;
 pub use scene_args::{SceneArgs, SceneOverrides};
