@@ -21,7 +21,10 @@ pub fn process_cpu_s() -> f64 {
     if rc != 0 {
         return 0.0;
     }
-    let tv = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+    let tv = |t: libc::timeval| {
+        std::time::Duration::new(t.tv_sec.max(0) as u64, (t.tv_usec.max(0) as u32) * 1000)
+            .as_secs_f64()
+    };
     tv(u.ru_utime) + tv(u.ru_stime)
 }
 
