@@ -77,3 +77,28 @@ fn quick_set_converges_and_keeps_its_defaults_on_the_front() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The checks on a finished full set: `WP_DIR=figures/work_precision cargo test --release
+/// --test work_precision_cli -- --ignored --nocapture` prints every finding (the full set is
+/// not asserted: its findings are the recommendations of docs/validation/work-precision.md).
+#[test]
+#[ignore]
+fn full_set_findings() {
+    let dir = std::path::PathBuf::from(
+        std::env::var("WP_DIR").unwrap_or("figures/work_precision".into()),
+    );
+    let mut all = Vec::new();
+    for tier in Tier::ALL {
+        let csv = dir.join(format!("{}.csv", tier.stem()));
+        if csv.exists() {
+            all.extend(read(&csv));
+        }
+    }
+    let front = check::default_front(&all);
+    println!("not exercised: {:#?}", front.not_exercised);
+    println!("unresolved: {:#?}", front.unresolved);
+    println!("moves: {:#?}", front.moves);
+    println!("monotone: {:#?}", check::monotone(&all));
+    println!("DEM default step: {:#?}", check::dem_default_step(&all));
+    println!("speed only: {:#?}", check::speed_only_identical(&all));
+}
