@@ -74,6 +74,8 @@ pub struct Args {
     force: bool,
     #[command(flatten)]
     campaign: CampaignArgs,
+    #[command(flatten)]
+    work_precision: super::work_precision::WorkPrecisionArgs,
 }
 
 /// `base` + `.ext` (unlike `Path::with_extension`, keeps a dotted number such as `1.4mN`).
@@ -92,6 +94,13 @@ pub fn run(a: Args) -> Result<()> {
             .clone()
             .unwrap_or_else(|| PathBuf::from("figures/friction"));
         return super::campaign::run(&dir, &a.campaign);
+    }
+    if a.work_precision.work_precision {
+        let dir = a
+            .out_dir
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("figures/work_precision"));
+        return super::work_precision::run(&dir, &a.work_precision);
     }
     let out_dir = a
         .out_dir

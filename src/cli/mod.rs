@@ -29,6 +29,7 @@ mod tolerance;
 mod tolerance_args;
 mod value_enums;
 mod verdict_args;
+mod work_precision;
 
 pub use crate::study::range::parse_list_or_range;
 pub use scene_args::{SceneArgs, SceneOverrides};

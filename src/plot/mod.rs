@@ -11,6 +11,7 @@ pub mod friction;
 mod heat_map;
 mod line_plot;
 pub mod tolerance;
+pub mod work_precision;
 
 pub use colormap::viridis;
 pub use contact_map::{contact_map, ContactMapData};

@@ -18,6 +18,7 @@
 //! | equilibrate | [`equilibrate::equilibrate`] | [`dem_run::DemParams`] | time series + [`rows::EquilibrateReport`] |
 //! | slide | [`slide::slide`] | [`dem_run::DemParams`] | time series + [`rows::SlideReport`] |
 //! | slide batch | [`batch::run_batch_with`] (runs), [`batch::run_part`] (a shard's part + every row) | [`batch::SlideJob`]s + [`batch::BatchOptions`] | per run `runs/<name>/` files; [`rows::BatchRow`]s, [`rows::ConfigStatsRow`]s |
+//! | work-precision diagrams | [`work_precision::work_precision`] | [`work_precision::WorkPrecisionParams`] | [`work_precision::WorkPrecisionRow`]s per tier |
 //! | friction campaign | [`campaign::CampaignParams::plan`] → [`batch::run_part`] → [`campaign::figure_rows`] | [`campaign::CampaignParams`] | `runs.csv`, per figure [`rows::ConfigStatsRow`]s + PNG |
 //!
 //! Shared pieces of this layer: [`record`] (parameters in user units for the sidecar), [`rows`]
@@ -115,3 +116,4 @@ pub mod screen;
 pub mod slide;
 pub mod tolerance;
 pub mod verdict;
+pub mod work_precision;

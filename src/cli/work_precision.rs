@@ -1,0 +1,92 @@
+//! `superlube figures --work-precision`: flags → [`crate::study::work_precision::work_precision`]
+//! → per tier `work_precision_<tier>.csv` and `.png` (and their sidecars), written as soon as
+//! the tier is done.
+
+use crate::plot::work_precision::work_precision_png;
+use crate::runs::progress::{Progress, Reporter};
+use crate::runs::sink::csv_bytes;
+use crate::runs::{meta::Inputs, output::check_outputs, output::Outputs};
+use crate::study::work_precision::{work_precision, Tier, WorkPrecisionParams};
+use anyhow::Result;
+use std::path::Path;
+
+/// Which tier (`--tier`).
+#[derive(clap::ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TierArg {
+    /// Solver model, landscape grid, corrugation path step.
+    ScreenMap,
+    /// Friction estimate: path step, length, transverse search, inertial starts, segment.
+    Friction,
+    /// Tolerance search: θ and direction sampling steps.
+    Tolerance,
+    /// DEM: step, model, tangential history, window, active set.
+    Dem,
+}
+
+impl TierArg {
+    fn tier(self) -> Tier {
+        match self {
+            TierArg::ScreenMap => Tier::ScreenMap,
+            TierArg::Friction => Tier::Friction,
+            TierArg::Tolerance => Tier::Tolerance,
+            TierArg::Dem => Tier::Dem,
+        }
+    }
+}
+
+/// Options of the work-precision diagrams (`figures --work-precision`).
+#[derive(clap::Args, Debug, Default)]
+pub struct WorkPrecisionArgs {
+    /// Draw the work-precision diagrams (CPU cost against error for every accuracy knob of each
+    /// tier, on the study's three scenes) instead of the screening figures; default `--out-dir
+    /// figures/work_precision`. ~30 min on 2 cores (docs/validation/work-precision.md).
+    #[arg(long = "work-precision", conflicts_with = "friction")]
+    pub work_precision: bool,
+    /// The quick set: a 10 µm slider, short paths and a 40 µs DEM slide (about a minute; what CI
+    /// checks).
+    #[arg(long, requires = "work_precision")]
+    pub quick: bool,
+    /// Only these tiers (comma-separated) [default: all].
+    #[arg(long, value_enum, value_delimiter = ',', requires = "work_precision")]
+    pub tier: Vec<TierArg>,
+}
+
+/// Runs the diagrams into `dir`.
+pub fn run(dir: &Path, a: &WorkPrecisionArgs) -> Result<()> {
+    let mut tiers: Vec<Tier> = if a.tier.is_empty() {
+        Tier::ALL.to_vec()
+    } else {
+        a.tier.iter().map(|t| t.tier()).collect()
+    };
+    tiers.dedup();
+    let params = WorkPrecisionParams {
+        quick: a.quick,
+        tiers,
+    };
+    check_outputs(&[("--out-dir", Some(&dir.join("x.csv")))])?;
+    let rep = Reporter::stderr();
+    let mut outs = Outputs::new(
+        Inputs {
+            workflow: "work-precision".into(),
+            scene: None,
+            params: params.record(),
+        },
+        vec![],
+    );
+    work_precision(&params, &rep, &mut |tier, rows| {
+        let base = dir.join(tier.stem());
+        let (csv, png) = (base.with_extension("csv"), base.with_extension("png"));
+        outs.write(
+            "--out-dir",
+            Some(&csv),
+            csv_bytes(&rows),
+            Some(rows.len() as u64),
+        );
+        outs.attempt("--out-dir", &png, || {
+            work_precision_png(&png, &format!("work-precision, {}", tier.name()), &rows)
+        });
+        rep.note(&format!("wrote {} and {}", csv.display(), png.display()));
+        Ok(())
+    })?;
+    outs.finish()
+}
