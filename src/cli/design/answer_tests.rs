@@ -205,10 +205,10 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
     // rank 1's corner (+0.1°, −0.5°) fails at its limit load: contradicted, naming the corner;
     // a corner failing only at the next load above does not count
     let corner_fails = |e: &DemEntry| {
-        let at_limit = label(n_to_mn(e.load)) == 0.06;
-        let named = e.theta_offset_deg == 0.1 && e.direction_offset_deg == -0.5;
-        let fails = (named && at_limit) || (e.theta_offset_deg != 0.0 && !at_limit);
-        if e.rank == 1 && fails {
+        let at_limit = label(n_to_mn(e.run.load)) == 0.06;
+        let named = e.run.theta_offset_deg == 0.1 && e.run.direction_offset_deg == -0.5;
+        let fails = (named && at_limit) || (e.run.theta_offset_deg != 0.0 && !at_limit);
+        if e.run.rank == 1 && fails {
             0.05
         } else {
             0.01
@@ -227,7 +227,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
     assert!(matches!(a.check, Check::Confirmed(_)));
     // only the failures above the limit: confirmed
     let above = |e: &DemEntry| {
-        if e.rank == 1 && e.theta_offset_deg != 0.0 && label(n_to_mn(e.load)) == 0.09 {
+        if e.run.rank == 1 && e.run.theta_offset_deg != 0.0 && label(n_to_mn(e.run.load)) == 0.09 {
             0.05
         } else {
             0.01
@@ -240,7 +240,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
     // no corner run at all: not confirmed
     let centre_only: Vec<DemEntry> = all_ok
         .into_iter()
-        .filter(|e| e.theta_offset_deg == 0.0 && e.direction_offset_deg == 0.0)
+        .filter(|e| e.run.theta_offset_deg == 0.0 && e.run.direction_offset_deg == 0.0)
         .collect();
     assert_eq!(check(&pr, 1, &centre_only, &p), Check::Unchecked);
     // the answer's words: the corners of the answer's own box

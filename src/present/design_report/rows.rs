@@ -134,21 +134,23 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
     o.dem
         .iter()
         .map(|e| {
-            let pr = o.patterns.iter().find(|pr| pr.scene.name == e.pattern);
-            let w = label(n_to_mn(e.load));
-            let corner = e.theta_offset_deg != 0.0 || e.direction_offset_deg != 0.0;
+            let pr = o.patterns.iter().find(|pr| pr.scene.name == e.run.pattern);
+            let w = label(n_to_mn(e.run.load));
+            let corner = e.run.theta_offset_deg != 0.0 || e.run.direction_offset_deg != 0.0;
             // a corner run: the estimate its design's robust search made at that corner and
             // load (none where the search did not estimate it there); else the design's own
             let fr = pr.and_then(|pr| {
                 if corner {
                     pr.ranking
-                        .get(e.rank.wrapping_sub(1))
-                        .filter(|c| e.theta_deg == label(c.theta_deg + e.theta_offset_deg))
-                        .and_then(|c| c.corner_row(e.theta_offset_deg, e.direction_offset_deg, w))
+                        .get(e.run.rank.wrapping_sub(1))
+                        .filter(|c| e.run.theta_deg == label(c.theta_deg + e.run.theta_offset_deg))
+                        .and_then(|c| {
+                            c.corner_row(e.run.theta_offset_deg, e.run.direction_offset_deg, w)
+                        })
                 } else {
                     pr.ranking
                         .iter()
-                        .find(|c| c.theta_deg == e.theta_deg && c.alpha_deg == e.alpha_deg)
+                        .find(|c| c.theta_deg == e.run.theta_deg && c.alpha_deg == e.run.alpha_deg)
                         .and_then(|c| row_at(c, w))
                 }
             });
@@ -163,14 +165,14 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
                 .zip(p_crit)
                 .map(|(f, pc)| crate::study::verdict::superlubric(f, pc, p.mu_superlubric));
             DemRow {
-                pattern: e.pattern.clone(),
-                rank: e.rank,
-                theta_deg: e.theta_deg,
-                alpha_deg: e.alpha_deg,
-                theta_offset_deg: e.theta_offset_deg,
-                direction_offset_deg: e.direction_offset_deg,
+                pattern: e.run.pattern.clone(),
+                rank: e.run.rank,
+                theta_deg: e.run.theta_deg,
+                alpha_deg: e.run.alpha_deg,
+                theta_offset_deg: e.run.theta_offset_deg,
+                direction_offset_deg: e.run.direction_offset_deg,
                 load_mN: w,
-                protocol: if e.study_protocol {
+                protocol: if e.run.study_protocol {
                     DemProtocol::Study
                 } else {
                     DemProtocol::Design

@@ -52,7 +52,7 @@ pub fn dem_superlubric(e: &DemEntry, p_crit: f64, mu_sl: f64) -> Result<(), Stri
     crate::study::verdict::dem_superlubric(
         e.outcome.result.as_ref(),
         e.outcome.error.as_deref(),
-        crate::study::rows::label(n_to_mn(e.load)),
+        crate::study::rows::label(n_to_mn(e.run.load)),
         p_crit,
         mu_sl,
     )
@@ -67,20 +67,20 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
         return Check::Unchecked;
     };
     let p_crit = pr.scene.scene.coating.p_crit;
-    let w_mn = |e: &DemEntry| crate::study::load::Load::from_n(e.load).mn();
-    let corner = |e: &DemEntry| e.theta_offset_deg != 0.0 || e.direction_offset_deg != 0.0;
+    let w_mn = |e: &DemEntry| crate::study::load::Load::from_n(e.run.load).mn();
+    let corner = |e: &DemEntry| e.run.theta_offset_deg != 0.0 || e.run.direction_offset_deg != 0.0;
     let mut runs: Vec<&DemEntry> = dem
         .iter()
         .filter(|e| {
-            e.pattern == pr.scene.name
-                && !e.study_protocol
+            e.run.pattern == pr.scene.name
+                && !e.run.study_protocol
                 && !corner(e)
-                && e.theta_deg == c.theta_deg
-                && e.alpha_deg == c.alpha_deg
+                && e.run.theta_deg == c.theta_deg
+                && e.run.alpha_deg == c.alpha_deg
                 && w_mn(e) <= c.score.superlubric_to_mn
         })
         .collect();
-    runs.sort_by(|a, b| a.load.total_cmp(&b.load));
+    runs.sort_by(|a, b| a.run.load.total_cmp(&b.run.load));
     if runs.is_empty() {
         return Check::Unchecked;
     }
@@ -93,11 +93,12 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
         let corners: Vec<&DemEntry> = dem
             .iter()
             .filter(|e| {
-                e.pattern == pr.scene.name
-                    && !e.study_protocol
+                e.run.pattern == pr.scene.name
+                    && !e.run.study_protocol
                     && corner(e)
-                    && e.rank == rank
-                    && e.theta_deg == crate::study::rows::label(c.theta_deg + e.theta_offset_deg)
+                    && e.run.rank == rank
+                    && e.run.theta_deg
+                        == crate::study::rows::label(c.theta_deg + e.run.theta_offset_deg)
                     && w_mn(e) == c.score.superlubric_to_mn
             })
             .collect();
@@ -108,7 +109,7 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
             if let Err(why) = dem_superlubric(e, p_crit, p.mu_superlubric) {
                 return Check::Contradicted(format!(
                     "{why} at its tolerance corner δθ = {:+}°, δdir = {:+}°",
-                    e.theta_offset_deg, e.direction_offset_deg
+                    e.run.theta_offset_deg, e.run.direction_offset_deg
                 ));
             }
         }

@@ -382,16 +382,6 @@ pub fn to_entries(entries: &[ConfirmEntry], outcomes: &[SlideOutcome]) -> Vec<De
         .iter()
         .cloned()
         .zip(outcomes.iter().cloned())
-        .map(|(e, outcome)| DemEntry {
-            pattern: e.pattern,
-            rank: e.rank,
-            theta_deg: e.theta_deg,
-            alpha_deg: e.alpha_deg,
-            load: e.load,
-            study_protocol: e.study_protocol,
-            theta_offset_deg: e.theta_offset_deg,
-            direction_offset_deg: e.direction_offset_deg,
-            outcome,
-        })
+        .map(|(run, outcome)| DemEntry { run, outcome })
         .collect()
 }

@@ -108,22 +108,8 @@ pub struct PatternResult {
 /// One DEM confirmation run and what it is compared with.
 #[derive(Debug, Clone)]
 pub struct DemEntry {
-    /// Pattern name.
-    pub pattern: String,
-    /// Rank of the design within its pattern.
-    pub rank: usize,
-    /// θ (degrees).
-    pub theta_deg: f64,
-    /// α (degrees).
-    pub alpha_deg: f64,
-    /// Load (N).
-    pub load: f64,
-    /// The study's protocol (the protocol-check run) rather than the design's.
-    pub study_protocol: bool,
-    /// θ offset (degrees) from the design for a tolerance-corner run (0: the design itself).
-    pub theta_offset_deg: f64,
-    /// Pull-direction offset (degrees, substrate frame) for a tolerance-corner run.
-    pub direction_offset_deg: f64,
+    /// Which design the run checks, where and how.
+    pub run: super::confirm::ConfirmEntry,
     /// The run.
     pub outcome: SlideOutcome,
 }

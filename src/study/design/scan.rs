@@ -27,13 +27,13 @@
 use super::params::DesignParams;
 use super::symmetry::PairSymmetry;
 use crate::study::corrugation::contact_line;
-use crate::study::rows::{clean, label, CorrugationRow, FrictionRow};
+use crate::study::rows::{clean, CorrugationRow, FrictionRow};
 use anyhow::Result;
 use serde::{Deserialize, Serialize};
 use surrogate::friction::estimate_friction_loads;
 use surrogate::map::{corrugation_direct, MapParams};
 use surrogate::solver::Solver;
-use surrogate::units::{deg_to_rad, n_to_mn, rad_to_deg};
+use surrogate::units::deg_to_rad;
 use surrogate::Scene;
 
 /// The evaluation of one orientation (user units, as stored in the design's stage files).
@@ -107,31 +107,6 @@ pub fn paths_per_scan(p: &DesignParams, sym: &PairSymmetry) -> usize {
         prev = r;
     }
     n
-}
-
-/// Evaluates orientation `theta_deg` of `scene` (see the module docs): the α scan at
-/// `scan_load` (N, [`scan_alpha`]), then the friction estimate at every load of `p`
-/// ([`estimate`]). `tick` is called once per scanned path and once per friction path.
-#[allow(clippy::too_many_arguments)]
-pub fn evaluate(
-    solver: &Solver,
-    scene: &Scene,
-    theta_deg: f64,
-    scan_load: f64,
-    p: &DesignParams,
-    sym: &PairSymmetry,
-    tick: &(dyn Fn() + Sync),
-) -> Result<ThetaEval> {
-    let scan = scan_alpha(solver, scene, theta_deg, scan_load, p, sym, tick)?;
-    let friction = estimate(solver, scene, theta_deg, scan_load, &scan, p, tick)?;
-    Ok(ThetaEval {
-        theta_deg: label(theta_deg),
-        scan_load_mN: label(n_to_mn(scan_load)),
-        line_deg: rad_to_deg(scan.line),
-        scan: scan.scan,
-        alphas_deg: scan.alphas_deg,
-        friction,
-    })
 }
 
 /// The α scan of one orientation (the stage before the estimate).

@@ -274,7 +274,7 @@ impl ReportData {
             .zip(&o.dem)
             .filter_map(|(d, e)| {
                 let pr = o.patterns.iter().find(|pr| pr.scene.name == d.pattern)?;
-                Some(slide_command(pr, d, e.study_protocol, p))
+                Some(slide_command(pr, d, e.run.study_protocol, p))
             })
             .collect();
         ReportData {
