@@ -18,9 +18,10 @@ use crate::contact::CandidatePair;
 use crate::scene::place;
 use std::cell::RefCell;
 
-/// The buffers of a [`PathChunk`], kept per thread between chunks and paths: a chunk allocates
-/// nothing once they have grown to the scene's size (a fresh mapping of these ≈ 1 MB per chunk
-/// cost more than its search, in page faults).
+/// The buffers of a [`PathChunk`], kept per thread between chunks and paths: its swept search
+/// and lists allocate nothing once they have grown to the scene's size (a fresh mapping of these
+/// ≈ 1 MB per chunk cost more than its search, in page faults); only the one fresh search of
+/// its first sample's top, and a sample solved on every pair, take a list of their own.
 #[derive(Default)]
 struct Buffers {
     wide: PairSet,
