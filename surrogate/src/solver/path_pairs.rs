@@ -64,6 +64,12 @@ struct Above {
     q: [f64; 3],
 }
 
+/// The first search of a chunk covers the pairs whose touch height can rise within this many
+/// contact distances (plus the band) of the ceiling of every touch height
+/// ([`Solver::touch_ceiling`]): 0.5 µm on the study's 3 µm spheres, where an incommensurate
+/// top lies within tens of nm of the ceiling (speed only).
+const FIRST_DEPTH: f64 = 1.0 / 6.0;
+
 /// Relative margin on the windows and lateral thresholds (far above the round-off of positions
 /// ≈ 1e-16 of the substrate size): a pair is kept a little longer than it needs to be, never
 /// dropped while it can matter.
@@ -136,9 +142,30 @@ impl<'a> PathChunk<'a> {
             above: std::mem::take(&mut buf.above),
             live: std::mem::take(&mut buf.live),
         };
-        chunk.top0 = chunk.top_at(a);
+        // one search serves the first sample's top and the chunk's list: the pairs that can
+        // rise above FIRST_DEPTH + band below the ceiling of every touch height; the top at the
+        // first sample is the highest of their heights there when it lies above that floor
+        // (a top further down, e.g. commensurate hollows, takes a fresh search and a wider one)
+        let first = solver.touch_ceiling() - FIRST_DEPTH * solver.touch_reach() - band;
+        chunk.search(first);
+        let top = chunk.top_of_tracks(a);
+        chunk.top0 = if top > first { top } else { chunk.top_at(a) };
         chunk.set_floor(chunk.top0 - band);
         chunk
+    }
+
+    /// The highest touch height (m) at sample `si` of the pairs of the last search (−∞ without
+    /// one touching): that of a fresh search where it lies above the searched floor (to the
+    /// round-off of the tracks' lateral distances; it only places the floor). O(candidates).
+    fn top_of_tracks(&self, si: f64) -> f64 {
+        self.tracks
+            .iter()
+            .filter_map(|t| {
+                let ds = si - t.s_star;
+                let r2 = t.rp2 + ds * ds;
+                (r2 < t.d2).then(|| t.top + (t.d2 - r2).sqrt())
+            })
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// Runs the chunk's candidate search for pairs that can rise above `floor` (m, absolute)

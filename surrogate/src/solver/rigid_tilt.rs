@@ -322,4 +322,4 @@ pub(crate) fn max_lever(ctx: &Ctx, ps: &PairSet) -> f64 {
 
 /// Width of the tilt Newton's working set in units of the deepest rigid-z overlap (see
 /// [`NearSet`]). Only a speed knob: the result is verified on every pair.
-const NEAR_BAND: f64 = 3.0;
+const NEAR_BAND: f64 = 1.0;

@@ -447,6 +447,19 @@ impl Solver {
         }
     }
 
+    /// The largest contact distance (m) of any pair: the candidate search's reach.
+    #[inline]
+    pub(crate) fn touch_reach(&self) -> f64 {
+        self.reach
+    }
+
+    /// A bound (m, absolute) above every pair's touch height `h + drop + √(d² − r²)`: the
+    /// highest substrate centre plus the largest slider drop plus the largest contact distance.
+    #[inline]
+    pub(crate) fn touch_ceiling(&self) -> f64 {
+        self.top_base + self.reach
+    }
+
     /// The Hertz law of the scene (its `overlap_for_force` sets the z root's first bracket).
     pub(crate) fn hertz(&self) -> &Hertz {
         &self.hertz

@@ -42,6 +42,11 @@ struct Sorted<R> {
     cut: f64,
 }
 
+/// How far below a requested floor the sorted prefix grows, in units of the floor's depth below
+/// the top: a warm-started bracket rarely steps down, so a small margin sorts fewer rows (the
+/// order, and so every sum, is the same for any value; speed only).
+const GROW: f64 = 0.25;
+
 impl<R: Row> Sorted<R> {
     fn new() -> Self {
         Sorted {
@@ -51,12 +56,12 @@ impl<R: Row> Sorted<R> {
     }
 
     /// The number of sorted rows with c > `floor`, first growing the prefix down to `floor`
-    /// (to twice its depth below the top `c_max`, so a bracket stepping down by doubling grows
-    /// it a few times only). O(P + new·log new) when it grows, O(log P) else.
+    /// (and [`GROW`] of its depth below the top `c_max` further, so a bracket stepping down by
+    /// doubling grows it a few times only). O(P + new·log new) when it grows, O(log P) else.
     fn upto(&mut self, all: &[R], c_max: f64, floor: f64) -> usize {
         if floor < self.cut {
             let cut = if floor.is_finite() && c_max.is_finite() {
-                floor - (c_max - floor).max(0.0)
+                floor - GROW * (c_max - floor).max(0.0)
             } else {
                 f64::NEG_INFINITY
             };
