@@ -4,6 +4,10 @@ use super::ctx::Ctx;
 use super::law::{BodyPair, Law};
 use super::{ContactInfo, Equilibrium, Model, PairSet};
 
+/// Most contacts [`assemble`] reserves room for at once (an unwatched list may hold every
+/// candidate pair above its floor; speed only).
+const CONTACTS_RESERVE_MAX: usize = 4096;
+
 /// Builds the [`Equilibrium`] from the body state `q = [ζ, L·t_x, L·t_y]` (z = z_ref + ζ):
 /// every pair with δ > 0 becomes a [`ContactInfo`] whose point is the midpoint of the two sphere
 /// centres; the residuals are recomputed from the contact forces: the force residual
@@ -27,7 +31,10 @@ pub(crate) fn assemble<L: Law>(
     floor: f64,
 ) -> Equilibrium {
     let (k, two_r) = (ctx.hertz.k(), ctx.two_r);
-    let mut contacts = Vec::new();
+    // room for every pair above the floor (a superset of the contacts on a watched list), so
+    // the list is not regrown push by push
+    let above = bp.iter().filter(|b| b.c > floor).count();
+    let mut contacts = Vec::with_capacity(above.min(CONTACTS_RESERVE_MAX));
     let mut p_max: f64 = 0.0;
     let mut fsum = 0.0;
     let mut mom = [0.0; 2];

@@ -246,7 +246,10 @@ impl<L: Law> NearSet<L> {
         let band = NEAR_BAND * (-z0).max(0.0);
         let floor = z0 - band;
         ctx.rely(floor);
-        let pairs: Vec<BodyPair<L>> = bp.iter().filter(|p| p.c > floor).copied().collect();
+        // counted first: the set is not regrown push by push
+        let n = bp.iter().filter(|p| p.c > floor).count();
+        let mut pairs: Vec<BodyPair<L>> = Vec::with_capacity(n);
+        pairs.extend(bp.iter().filter(|p| p.c > floor).copied());
         NearSet {
             complete: (pairs.len() == bp.len() && ctx.watch.is_none()) || band == 0.0,
             pairs,
