@@ -2,7 +2,9 @@
 //! their sidecars, and the convergence checks on the quick set: each knob's error falls as it
 //! is refined (within the stated noise), the DEM's error at the default step is below the
 //! friction window's standard error, no default has a coarser neighbour with the same error
-//! within noise, and the speed-only knobs change nothing. The full set is
+//! within noise, the speed-only knobs change nothing, and the tiers diagram is ordered (the
+//! screen cheaper than the estimate, the estimate than the DEM, whose error is the smallest;
+//! LAMMPS left out here: `tests/lammps_export.rs` runs it). The full set is
 //! `superlube figures --work-precision` (docs/validation/work-precision.md).
 
 mod common;
@@ -18,7 +20,13 @@ fn read(path: &std::path::Path) -> Vec<WorkPrecisionRow> {
 fn quick_set_converges_and_keeps_its_defaults_on_the_front() {
     let dir = tmpdir("work-precision");
     let out = bin()
-        .args(["figures", "--work-precision", "--quick", "--out-dir"])
+        .args([
+            "figures",
+            "--work-precision",
+            "--quick",
+            "--no-lammps",
+            "--out-dir",
+        ])
         .arg(&dir)
         .output()
         .unwrap();
@@ -64,6 +72,7 @@ fn quick_set_converges_and_keeps_its_defaults_on_the_front() {
         ("DEM default step", check::dem_default_step(&all)),
         ("default front", front.moves),
         ("speed only", check::speed_only_identical(&all)),
+        ("tiers ordered", check::tiers_ordered(&all)),
     ];
     for (name, f) in &findings {
         eprintln!("{name}: {} finding(s)", f.len());
@@ -101,4 +110,5 @@ fn full_set_findings() {
     println!("monotone: {:#?}", check::monotone(&all));
     println!("DEM default step: {:#?}", check::dem_default_step(&all));
     println!("speed only: {:#?}", check::speed_only_identical(&all));
+    println!("tiers ordered: {:#?}", check::tiers_ordered(&all));
 }

@@ -2,7 +2,8 @@
 //! docs/validation/work-precision.md): every model (full, reduced, full-explicit) settles with
 //! its contact force balancing the load on the hardest scenes the tool meets — commensurate
 //! tri-tri 0° at the study's highest load per sphere (3.86 mN), the coating-failure scene
-//! (tri-tri 30° at 3.86 mN), a rough substrate (σ_h = 0.01 µm) at two seeds — and at a step
+//! (tri-tri 30° at 3.86 mN), the stick-slip scene's equilibrium (square-tri 0° at 1.4 mN), a
+//! rough substrate (σ_h = 0.01 µm) at two seeds — and at a step
 //! 0.9 of the stable estimate; at 1.1 of it the full model refuses before any step, and the
 //! explicit models either run with the same balance or stop with the unstable-run error
 //! (measured: both stop — the reduced model's slider falls through the substrate at 0.2 µs,
@@ -86,6 +87,11 @@ fn hard_scenes() -> Vec<(&'static str, Scene, f64)> {
             "tri-tri 30° coating failure, 3.86 mN",
             small("tri-tri", 12.0, 30.0),
             3.86,
+        ),
+        (
+            "square-tri 0° (the stick-slip scene), 1.4 mN",
+            small("square-tri", 12.0, 0.0),
+            1.4,
         ),
         ("square-tri 0°, σ_h 0.01 µm seed 1", rough(1), 1.4),
         ("square-tri 0°, σ_h 0.01 µm seed 2", rough(2), 1.4),

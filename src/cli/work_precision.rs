@@ -21,6 +21,8 @@ pub enum TierArg {
     Tolerance,
     /// DEM: step, model, tangential history, window, active set.
     Dem,
+    /// The tiers on one diagram: screen, estimate, DEM, LAMMPS against the best reference.
+    Tiers,
 }
 
 impl TierArg {
@@ -30,6 +32,7 @@ impl TierArg {
             TierArg::Friction => Tier::Friction,
             TierArg::Tolerance => Tier::Tolerance,
             TierArg::Dem => Tier::Dem,
+            TierArg::Tiers => Tier::Tiers,
         }
     }
 }
@@ -49,6 +52,10 @@ pub struct WorkPrecisionArgs {
     /// Only these tiers (comma-separated) [default: all].
     #[arg(long, value_enum, value_delimiter = ',', requires = "work_precision")]
     pub tier: Vec<TierArg>,
+    /// Leave LAMMPS out of the tiers diagram even where `lmp` is found (its run of the full
+    /// set's 30 µm scenes takes about an hour each on one core).
+    #[arg(long, requires = "work_precision")]
+    pub no_lammps: bool,
 }
 
 /// Runs the diagrams into `dir`.
@@ -58,10 +65,12 @@ pub fn run(dir: &Path, a: &WorkPrecisionArgs) -> Result<()> {
     } else {
         a.tier.iter().map(|t| t.tier()).collect()
     };
+    tiers.sort_by_key(|t| Tier::ALL.iter().position(|x| x == t));
     tiers.dedup();
     let params = WorkPrecisionParams {
         quick: a.quick,
         tiers,
+        lammps: !a.no_lammps,
     };
     check_outputs(&[("--out-dir", Some(&dir.join("x.csv")))])?;
     let rep = Reporter::stderr();
@@ -83,7 +92,12 @@ pub fn run(dir: &Path, a: &WorkPrecisionArgs) -> Result<()> {
             Some(rows.len() as u64),
         );
         outs.attempt("--out-dir", &png, || {
-            work_precision_png(&png, &format!("work-precision, {}", tier.name()), &rows)
+            work_precision_png(
+                &png,
+                &format!("work-precision, {}", tier.name()),
+                tier,
+                &rows,
+            )
         });
         rep.note(&format!("wrote {} and {}", csv.display(), png.display()));
         Ok(())

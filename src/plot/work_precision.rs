@@ -1,12 +1,13 @@
 //! Work-precision diagrams: per scene a panel of log₁₀ CPU cost against log₁₀ relative error,
 //! one line per knob (its settings in refinement order), the default ringed, the noise of each
 //! point (the DEM window's standard error) drawn as a vertical bar, errors below the floor
-//! drawn at the floor (the reference itself, and speed-only knobs, whose error is 0).
+//! drawn at the floor (the reference itself, and speed-only knobs, whose error is 0). The tiers
+//! diagram draws each method (each setting of its one knob) as its own labelled point.
 
 use super::line_plot::PALETTE;
 use super::{perr, png_atomic, FONT};
 use crate::study::work_precision::check::larger_is_finer;
-use crate::study::work_precision::WorkPrecisionRow;
+use crate::study::work_precision::{Tier, WorkPrecisionRow};
 use anyhow::Result;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -15,8 +16,34 @@ use std::path::Path;
 /// Errors below this (relative) are drawn at it.
 pub const ERROR_FLOOR: f64 = 1e-7;
 
-/// Draws the diagram of one tier's `rows` into the PNG `path` (one panel per scene).
-pub fn work_precision_png(path: &Path, title: &str, rows: &[WorkPrecisionRow]) -> Result<()> {
+/// Draws the diagram of one tier's `rows` into the PNG `path` (one panel per scene; the tiers
+/// diagram one series per method, the others one per knob).
+pub fn work_precision_png(
+    path: &Path,
+    title: &str,
+    tier: Tier,
+    rows: &[WorkPrecisionRow],
+) -> Result<()> {
+    let rows: Vec<WorkPrecisionRow> = if tier == Tier::Tiers {
+        // one series per method: the method is the series' name
+        rows.iter()
+            .map(|r| WorkPrecisionRow {
+                knob: r.setting.clone(),
+                ..r.clone()
+            })
+            .collect()
+    } else {
+        rows.to_vec()
+    };
+    let rows = &rows;
+    // the tiers diagram's points run from the upper left (cheap, rough) to the lower right
+    let legend = || {
+        if tier == Tier::Tiers {
+            SeriesLabelPosition::LowerLeft
+        } else {
+            SeriesLabelPosition::UpperRight
+        }
+    };
     let mut scenes: Vec<&str> = Vec::new();
     for r in rows {
         if !scenes.contains(&r.scene.as_str()) {
@@ -30,7 +57,7 @@ pub fn work_precision_png(path: &Path, title: &str, rows: &[WorkPrecisionRow]) -
         let areas = root.split_evenly((nrows, cols));
         for (area, scene) in areas.iter().zip(&scenes) {
             let rs: Vec<&WorkPrecisionRow> = rows.iter().filter(|r| r.scene == *scene).collect();
-            panel(area, &format!("{title}: {scene}"), &rs)?;
+            panel(area, &format!("{title}: {scene}"), &rs, legend())?;
         }
         Ok(())
     })
@@ -44,6 +71,7 @@ fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     rows: &[&WorkPrecisionRow],
+    legend: SeriesLabelPosition,
 ) -> Result<()> {
     let mut knobs: Vec<&str> = Vec::new();
     for r in rows {
@@ -149,7 +177,7 @@ fn panel<DB: DrawingBackend>(
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font((FONT, 13))
-        .position(SeriesLabelPosition::UpperRight)
+        .position(legend)
         .draw()
         .map_err(perr("legend"))?;
     Ok(())

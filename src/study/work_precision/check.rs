@@ -4,7 +4,7 @@
 //! same error within noise, nor an error that changes the reference's verdict. Each check
 //! returns its findings in words (empty: the check holds).
 
-use super::WorkPrecisionRow;
+use super::{Tier, WorkPrecisionRow};
 
 /// Relative difference below which two errors of a deterministic tier are equal: the solver's
 /// tolerances (force 1e-12, moment 1e-10 relative) leave ~1e-9 in P_max and μ; 1e-6 is well
@@ -194,16 +194,93 @@ pub fn dem_default_step(rows: &[WorkPrecisionRow]) -> Vec<String> {
         .collect()
 }
 
-/// The speed-only knobs change nothing: every setting's error is within
-/// [`DETERMINISTIC_NOISE`].
+/// The tolerance of [`speed_only_identical`] for a row: [`DETERMINISTIC_NOISE`], or for the
+/// DEM the larger of it and the window's standard error (`noise_rel`). The active set is exact
+/// to round-off, not bit-identical (it sums forces in another order); a chaotic slide
+/// (stick-slip) grows any round-off difference into another slip sequence — a load changed by
+/// 10⁻¹⁵ does the same, measured in docs/validation/work-precision.md — so there the two runs
+/// are two samples of the same slide and can only agree within the window's noise.
+pub fn speed_only_tolerance(r: &WorkPrecisionRow) -> f64 {
+    if r.tier == Tier::Dem.name() {
+        r.noise_rel.max(DETERMINISTIC_NOISE)
+    } else {
+        DETERMINISTIC_NOISE
+    }
+}
+
+/// The speed-only knobs change nothing: every setting's error is within its
+/// [`speed_only_tolerance`] (stated in each finding).
 pub fn speed_only_identical(rows: &[WorkPrecisionRow]) -> Vec<String> {
     rows.iter()
-        .filter(|r| r.knob.contains("speed only") && r.error_rel > DETERMINISTIC_NOISE)
+        .filter(|r| r.knob.contains("speed only") && r.error_rel > speed_only_tolerance(r))
         .map(|r| {
             format!(
-                "{}, {} = {}: the output moved by {:.3e}",
-                r.scene, r.knob, r.setting, r.error_rel
+                "{}, {} = {}: the output moved by {:.3e} (tolerance {:.1e})",
+                r.scene,
+                r.knob,
+                r.setting,
+                r.error_rel,
+                speed_only_tolerance(r)
             )
         })
         .collect()
+}
+
+/// The tiers diagram is ordered as the README's tier table says: on every scene the screen
+/// costs less CPU than the estimate, the estimate less than the full DEM at its default step,
+/// and in every quantity a cheaper tier gives (the screen: P_max; the estimate: μ and P_max)
+/// the full DEM's error against the best reference is below the cheaper tier's.
+pub fn tiers_ordered(rows: &[WorkPrecisionRow]) -> Vec<String> {
+    use super::tiers::Method;
+    let mut out = Vec::new();
+    let mut scenes: Vec<&str> = Vec::new();
+    for r in rows.iter().filter(|r| r.tier == Tier::Tiers.name()) {
+        if !scenes.contains(&r.scene.as_str()) {
+            scenes.push(&r.scene);
+        }
+    }
+    for scene in scenes {
+        let find = |m: Method| {
+            rows.iter().find(|r| {
+                r.tier == Tier::Tiers.name()
+                    && r.scene == scene
+                    && Method::parse(&r.setting) == Some(m)
+            })
+        };
+        let (Some(sc), Some(es), Some(de)) = (
+            find(Method::Screen),
+            find(Method::Estimate),
+            find(Method::DemFull),
+        ) else {
+            out.push(format!(
+                "{scene}: the screen, estimate or DEM row is missing"
+            ));
+            continue;
+        };
+        for (a, b) in [(sc, es), (es, de)] {
+            if a.cost_cpu_s >= b.cost_cpu_s {
+                out.push(format!(
+                    "{scene}: {} costs {:.3e} s CPU, not less than {}'s {:.3e} s",
+                    a.setting, a.cost_cpu_s, b.setting, b.cost_cpu_s
+                ));
+            }
+        }
+        for cheaper in [sc, es] {
+            let pairs = [
+                ("μ", cheaper.err_mu_rel, de.err_mu_rel),
+                ("P_max", cheaper.err_p_max_rel, de.err_p_max_rel),
+            ];
+            for (q, c, d) in pairs {
+                let Some(c) = c else { continue };
+                match d {
+                    Some(d) if d < c => {}
+                    _ => out.push(format!(
+                        "{scene}: the DEM's {q} error {d:?} is not below the {}'s {c:.3e}",
+                        cheaper.setting
+                    )),
+                }
+            }
+        }
+    }
+    out
 }

@@ -1,5 +1,6 @@
 //! What a setting costs: the process's CPU time (user + system, every thread, from
-//! `getrusage(RUSAGE_SELF)`) and the wall time of one closure. CPU time is the cost the diagrams
+//! `getrusage(RUSAGE_SELF)`, plus its waited-for child processes', `RUSAGE_CHILDREN`: the
+//! LAMMPS run of the tiers diagram) and the wall time of one closure. CPU time is the cost the diagrams
 //! plot: the machine the study runs on is shared, so wall time measures the neighbours too.
 
 use std::time::Instant;
@@ -13,11 +14,17 @@ pub struct Cost {
     pub wall_s: f64,
 }
 
-/// CPU seconds used by this process so far (user + system, every thread).
+/// CPU seconds used so far by this process (user + system, every thread) and by the child
+/// processes it has waited for.
 pub fn process_cpu_s() -> f64 {
-    // SAFETY: getrusage writes into the zeroed struct we own; RUSAGE_SELF is always valid.
+    usage_s(libc::RUSAGE_SELF) + usage_s(libc::RUSAGE_CHILDREN)
+}
+
+fn usage_s(who: libc::c_int) -> f64 {
+    // SAFETY: getrusage writes into the zeroed struct we own; RUSAGE_SELF and RUSAGE_CHILDREN
+    // are always valid.
     let mut u: libc::rusage = unsafe { std::mem::zeroed() };
-    let rc = unsafe { libc::getrusage(libc::RUSAGE_SELF, &mut u) };
+    let rc = unsafe { libc::getrusage(who, &mut u) };
     if rc != 0 {
         return 0.0;
     }

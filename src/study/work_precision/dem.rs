@@ -83,34 +83,40 @@ pub fn protocol(quick: bool) -> Protocol {
     }
 }
 
+/// Mean and standard error of `x` from ten block means (`NaN` with fewer than ten values): the
+/// noise of a window average of a correlated time series.
+pub fn block_mean_se(x: &[f64]) -> [f64; 2] {
+    let blocks = 10usize;
+    if x.len() < blocks {
+        return [f64::NAN, f64::NAN];
+    }
+    let means: Vec<f64> = (0..blocks)
+        .map(|b| {
+            let (a, z) = (b * x.len() / blocks, (b + 1) * x.len() / blocks);
+            x[a..z].iter().sum::<f64>() / (z - a) as f64
+        })
+        .collect();
+    let m = means.iter().sum::<f64>() / blocks as f64;
+    let var = means.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (blocks - 1) as f64;
+    [m, (var / blocks as f64).sqrt()]
+}
+
 /// Mean and standard error of the spring force (mN) and of the contacts over the window of the
-/// last 2/3 of the slide, from ten block means.
+/// last 2/3 of the slide, from ten block means ([`block_mean_se`]).
 pub fn window_stats(samples: &[Sample], t0_us: f64, t1_us: f64) -> ([f64; 2], [f64; 2]) {
     let w: Vec<&Sample> = samples
         .iter()
         .filter(|s| s.t_us >= t0_us - 1e-9 && s.t_us <= t1_us + 1e-9)
         .collect();
-    let blocks = 10usize;
-    let stat = |f: &dyn Fn(&Sample) -> f64| -> [f64; 2] {
-        if w.len() < blocks {
-            return [f64::NAN, f64::NAN];
-        }
-        let means: Vec<f64> = (0..blocks)
-            .map(|b| {
-                let (a, z) = (b * w.len() / blocks, (b + 1) * w.len() / blocks);
-                w[a..z].iter().map(|s| f(s)).sum::<f64>() / (z - a) as f64
-            })
-            .collect();
-        let m = means.iter().sum::<f64>() / blocks as f64;
-        let var = means.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (blocks - 1) as f64;
-        [m, (var / blocks as f64).sqrt()]
-    };
-    (stat(&|s| s.spring_force_mn), stat(&|s| s.contacts as f64))
+    let f: Vec<f64> = w.iter().map(|s| s.spring_force_mn).collect();
+    let c: Vec<f64> = w.iter().map(|s| s.contacts as f64).collect();
+    (block_mean_se(&f), block_mean_se(&c))
 }
 
-/// Runs the slide of `s` with `d` and measures it.
-pub fn run_one(s: &StudyScene, pr: &Protocol, d: &DemSetting, setting: Setting) -> Measured {
-    let sim = SimParams {
+/// The engine's parameters of one setting `d` on scene `s` under protocol `pr` (the pulling
+/// direction is `s.direction`, set by the caller).
+pub fn sim_params(s: &StudyScene, pr: &Protocol, d: &DemSetting) -> SimParams {
+    SimParams {
         dt_safety: d.dt_fraction,
         tangential: d.tangential,
         load: s.load,
@@ -120,7 +126,12 @@ pub fn run_one(s: &StudyScene, pr: &Protocol, d: &DemSetting, setting: Setting) 
         support_speed: pr.speed,
         sample_interval: pr.sample,
         ..SimParams::default()
-    };
+    }
+}
+
+/// Runs the slide of `s` with `d` and measures it.
+pub fn run_one(s: &StudyScene, pr: &Protocol, d: &DemSetting, setting: Setting) -> Measured {
+    let sim = sim_params(s, pr, d);
     let p = DemParams {
         sim,
         alpha: s.direction,
@@ -192,18 +203,69 @@ pub fn run_one(s: &StudyScene, pr: &Protocol, d: &DemSetting, setting: Setting) 
 /// reference flags).
 type KnobPlan = (&'static str, Vec<(DemSetting, Setting)>);
 
-fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
-    let default = DemSetting {
+/// The code's default DEM setting under protocol `pr`: the full model at the default step
+/// fraction, Mindlin history, the protocol's slide, active set on.
+pub fn default_setting(pr: &Protocol) -> DemSetting {
+    DemSetting {
         dt_fraction: SimParams::default().dt_safety,
         model: ModelRequest::Full,
         tangential: Tangential::Mindlin,
         slide_time: pr.slide,
         active_set: true,
-    };
-    let reference = DemSetting {
-        dt_fraction: default.dt_fraction / 4.0,
-        ..default
-    };
+    }
+}
+
+/// The reference of the DEM tier (and the best reference of the tiers diagram): the default
+/// setting at a quarter of its step.
+pub fn reference_setting(pr: &Protocol) -> DemSetting {
+    let d = default_setting(pr);
+    DemSetting {
+        dt_fraction: d.dt_fraction / 4.0,
+        ..d
+    }
+}
+
+/// The small slider of the DEM tier (and the tiers diagram): (radius, substrate side) in µm.
+pub fn small_slider(quick: bool) -> (f64, f64) {
+    if quick {
+        (10.0, 60.0)
+    } else {
+        (30.0, 200.0)
+    }
+}
+
+/// The DEM runs of a set, by scene and setting: a run shared by several knobs, or by the DEM
+/// tier and the tiers diagram, runs once (its cost is reported on every row that uses it).
+#[derive(Debug, Default)]
+pub struct DemRuns {
+    runs: HashMap<String, Measured>,
+}
+
+impl DemRuns {
+    /// The run of setting `d` on scene `s` under `pr`, run now unless it already ran; the copy
+    /// returned is labelled `setting`.
+    pub fn get(
+        &mut self,
+        s: &StudyScene,
+        pr: &Protocol,
+        d: &DemSetting,
+        setting: Setting,
+    ) -> Measured {
+        let key = format!("{}|{}", s.name, d.key());
+        let m = self
+            .runs
+            .entry(key)
+            .or_insert_with(|| run_one(s, pr, d, setting.clone()));
+        Measured {
+            setting,
+            ..m.clone()
+        }
+    }
+}
+
+fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
+    let default = default_setting(pr);
+    let reference = reference_setting(pr);
     let num = |v: f64, d: f64, r: f64| Setting::num(v, d, r);
     let fractions: Vec<f64> = if quick {
         vec![0.5, 0.25, 0.125, 0.0625]
@@ -309,29 +371,26 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
 }
 
 /// Runs the tier (see the module docs). Runs shared by several knobs (the default, the
-/// reference) run once; their cost is reported on every row that uses them.
-pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>> {
+/// reference) run once, kept in `runs` for the tiers diagram.
+pub fn run(
+    quick: bool,
+    progress: &dyn Progress,
+    runs: &mut DemRuns,
+) -> Result<Vec<WorkPrecisionRow>> {
     let pr = protocol(quick);
-    let small = if quick { (10.0, 60.0) } else { (30.0, 200.0) };
-    let ss = scenes(Some(small))?;
+    let ss = scenes(Some(small_slider(quick)))?;
     let (default, knobs) = plan(quick, &pr);
     let total: usize = knobs.iter().map(|k| k.1.len()).sum::<usize>() * ss.len();
     progress.stage("work-precision: DEM", total as u64, "runs");
     let mut rows = Vec::new();
     for s in &ss {
-        let mut done: HashMap<String, Measured> = HashMap::new();
         for (knob, settings) in &knobs {
             let ms: Vec<Measured> = settings
                 .iter()
                 .map(|(d, setting)| {
-                    let m = done
-                        .entry(d.key())
-                        .or_insert_with(|| run_one(s, &pr, d, setting.clone()));
+                    let m = runs.get(s, &pr, d, setting.clone());
                     progress.advance(1);
-                    Measured {
-                        setting: setting.clone(),
-                        ..m.clone()
-                    }
+                    m
                 })
                 .collect();
             rows.extend(compare(Tier::Dem, &s.name, knob, &ms));

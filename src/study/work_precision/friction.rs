@@ -85,8 +85,9 @@ fn knobs(quick: bool) -> Vec<Knob> {
     ]
 }
 
-/// The estimate of `s` with `knobs` as one measured setting.
-fn one(solver: &Solver, s: &StudyScene, knobs: &FrictionParams, setting: Setting) -> Measured {
+/// The estimate of `s` with `knobs` as one measured setting (μ_est with its spread/√starts,
+/// the path's largest P_max, the mean contacts, the band rule's verdict).
+pub fn one(solver: &Solver, s: &StudyScene, knobs: &FrictionParams, setting: Setting) -> Measured {
     let (r, cost) = measure(|| {
         estimate_friction_loads(solver, s.scene.slider.theta, s.direction, &[s.load], knobs)
     });

@@ -6,7 +6,8 @@
 //! reference setting on the same scene (the finest setting, or the richest model): the
 //! work-precision diagram of numerical ODE benchmarking (log cost against log error, one line
 //! per knob, each point a setting). One tier per file: [`screen`], [`friction`], [`tolerance`],
-//! [`dem`]; their rows are [`WorkPrecisionRow`]s ([`row::compare`] makes them). [`check`] holds
+//! [`dem`]; [`tiers`] puts the tiers themselves on one diagram against the best reference (with
+//! [`lammps`]'s point where LAMMPS is installed); their rows are [`WorkPrecisionRow`]s ([`row::compare`] makes them). [`check`] holds
 //! the convergence checks of the quick set (each knob's error falls as it is refined, within
 //! noise; the DEM's default step is below the window's noise; no default has a coarser
 //! neighbour of the same error) — asserted in CI by `tests/work_precision_cli.rs`.
@@ -21,8 +22,10 @@ pub mod check;
 pub mod cost;
 pub mod dem;
 pub mod friction;
+pub mod lammps;
 pub mod row;
 pub mod screen;
+pub mod tiers;
 pub mod tolerance;
 
 pub use row::{Measured, Setting, Values, WorkPrecisionRow};
@@ -47,11 +50,20 @@ pub enum Tier {
     Tolerance,
     /// Tier 3 DEM: time step, model, tangential history, friction window, active set.
     Dem,
+    /// The tiers on one diagram: screen, estimate, DEM (reduced, full), LAMMPS, against the
+    /// best reference (the full DEM at a quarter of the default step).
+    Tiers,
 }
 
 impl Tier {
     /// Every tier, in run order.
-    pub const ALL: [Tier; 4] = [Tier::ScreenMap, Tier::Friction, Tier::Tolerance, Tier::Dem];
+    pub const ALL: [Tier; 5] = [
+        Tier::ScreenMap,
+        Tier::Friction,
+        Tier::Tolerance,
+        Tier::Dem,
+        Tier::Tiers,
+    ];
 
     /// The kebab-case name (file names `work_precision_<name>.csv`).
     pub fn name(self) -> &'static str {
@@ -60,6 +72,7 @@ impl Tier {
             Tier::Friction => "friction",
             Tier::Tolerance => "tolerance",
             Tier::Dem => "dem",
+            Tier::Tiers => "tiers",
         }
     }
 
@@ -76,6 +89,8 @@ pub struct WorkPrecisionParams {
     pub quick: bool,
     /// The tiers to run, in order.
     pub tiers: Vec<Tier>,
+    /// Whether the tiers diagram runs LAMMPS where it is found ([`lammps::find_lmp`]).
+    pub lammps: bool,
 }
 
 impl WorkPrecisionParams {
@@ -84,6 +99,7 @@ impl WorkPrecisionParams {
         serde_json::json!({
             "quick": self.quick,
             "tiers": self.tiers.iter().map(|t| t.name()).collect::<Vec<_>>(),
+            "lammps": self.lammps,
         })
     }
 }
@@ -141,7 +157,8 @@ pub fn scenes(small: Option<(f64, f64)>) -> Result<Vec<StudyScene>> {
         .collect()
 }
 
-/// Runs the tiers of `p` one after the other and hands each tier's rows to `emit` as soon as
+/// Runs the tiers of `p` one after the other (the DEM runs the tiers diagram shares with the
+/// DEM tier run once) and hands each tier's rows to `emit` as soon as
 /// the tier is done (the command writes its CSV and PNG then). Errors: a scene or a run that
 /// cannot start; a setting that fails is a row with its reason in `note`.
 pub fn work_precision(
@@ -149,12 +166,24 @@ pub fn work_precision(
     progress: &dyn Progress,
     emit: &mut dyn FnMut(Tier, Vec<WorkPrecisionRow>) -> Result<()>,
 ) -> Result<()> {
+    let mut runs = dem::DemRuns::default();
+    let lmp = if p.lammps && p.tiers.contains(&Tier::Tiers) {
+        let found = lammps::find_lmp();
+        if found.is_none() {
+            progress
+                .note("work-precision: LAMMPS (`lmp`) not found; the tiers diagram leaves it out");
+        }
+        found
+    } else {
+        None
+    };
     for &tier in &p.tiers {
         let rows = match tier {
             Tier::ScreenMap => screen::run(p.quick, progress)?,
             Tier::Friction => friction::run(p.quick, progress)?,
             Tier::Tolerance => tolerance::run(p.quick, progress)?,
-            Tier::Dem => dem::run(p.quick, progress)?,
+            Tier::Dem => dem::run(p.quick, progress, &mut runs)?,
+            Tier::Tiers => tiers::run(p.quick, lmp.as_deref(), progress, &mut runs)?,
         };
         emit(tier, rows)?;
     }

@@ -221,10 +221,15 @@ pub fn compare(tier: Tier, scene: &str, knob: &str, ms: &[Measured]) -> Vec<Work
             ];
             let error_rel = errs.iter().flatten().fold(0.0f64, |a, &b| a.max(b));
             let q = |x: f64, se: f64, rse: f64| (se * se + rse * rse).sqrt() / x.abs().max(1e-300);
-            let noise_mu = rv.mu.map_or(0.0, |x| q(x, v.mu_se, rv.mu_se));
-            let noise_c = rv
-                .contacts
-                .map_or(0.0, |x| q(x, v.contacts_se, rv.contacts_se));
+            // a quantity this setting does not give adds no noise (the screen has no μ)
+            let noise_mu = match (v.mu, rv.mu) {
+                (Some(_), Some(x)) => q(x, v.mu_se, rv.mu_se),
+                _ => 0.0,
+            };
+            let noise_c = match (v.contacts, rv.contacts) {
+                (Some(_), Some(x)) => q(x, v.contacts_se, rv.contacts_se),
+                _ => 0.0,
+            };
             let verdict_changed = match (v.verdict, rv.verdict) {
                 (Some(a), Some(b)) => a != b,
                 _ => false,
