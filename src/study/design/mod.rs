@@ -46,6 +46,7 @@ mod outcome;
 pub mod params;
 pub mod pipeline;
 pub mod rank;
+pub mod recipe_answer;
 pub mod robust;
 pub mod scan;
 pub mod shortlist;
