@@ -2,7 +2,8 @@
 //! slider of E = 50 GPa; the band was measured at 100 GPa) gets the DEM at its centre and at
 //! the corners of its tolerance box before it is named, with the model `auto` where `reduced`
 //! was asked; a recipe inside the range keeps the design's model. Without the DEM the report
-//! calls the flagged recipe unconfirmed. A small scene and a very short DEM protocol (fast).
+//! calls the flagged recipe unconfirmed. The report gives the best recipe's robust limit at
+//! P_crit = 3.6, 4 and 4.4 GPa, monotone in P_crit. A small scene and a very short DEM protocol (fast).
 
 mod common;
 use common::{assert_ok, bin, tmpdir};

@@ -16,8 +16,10 @@ use crate::study::design::recipe_answer::{self, Naming, RecipeDecision};
 use crate::study::design::store::Store;
 use crate::study::design::DesignOutcome;
 use crate::study::recipe::parse_name;
+use crate::study::rows::label;
 use anyhow::Result;
 use serde::Serialize;
+use surrogate::units::pa_to_gpa;
 
 /// One recipe of the table (cells as printed).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -125,6 +127,24 @@ pub struct RecipeSection {
     /// Whether `coating.p_crit_GPa` is among the fields (its chart is the limit's dependence on
     /// the coating's strength).
     pub p_crit_varied: bool,
+    /// The best named recipe (`base: field = value, …`, θ and pull) whose limit the P_crit
+    /// lines give; empty without them.
+    pub p_crit_recipe: String,
+    /// Its robust limit at each coating strength ([`crate::study::design::p_crit`]).
+    pub p_crit: Vec<PCritLine>,
+}
+
+/// The best recipe's robust limit at one coating strength (cells as printed).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PCritLine {
+    /// P_crit (GPa).
+    pub p_crit_gpa: String,
+    /// The robust limit (mN).
+    pub limit_mn: String,
+    /// The worst verdict up to it.
+    pub verdict: String,
+    /// Whether it is the design's own P_crit (its score, not a new search).
+    pub own: bool,
 }
 
 /// One recipe row: its `patterns.csv` row, the pattern it was made from and its values.
@@ -280,7 +300,32 @@ pub fn section(rows: &[PatternRow], o: &DesignOutcome, top: &[TopRow]) -> Option
     } else {
         Vec::new()
     };
+    let (p_crit_recipe, p_crit) = match &o.p_crit {
+        Some(sw) => (
+            format!(
+                "{} at θ = {}°, pull {}° from x",
+                parse_name(&sw.pattern).map_or(sw.pattern.clone(), |(b, v)| format!(
+                    "{b}: {}",
+                    values_text(&v)
+                )),
+                sw.theta_deg,
+                fmt_g(sw.direction_deg, 4)
+            ),
+            sw.limits
+                .iter()
+                .map(|l| PCritLine {
+                    p_crit_gpa: format!("{}", label(pa_to_gpa(l.p_crit))),
+                    limit_mn: format!("{}", l.superlubric_to_mn),
+                    verdict: l.verdict.to_string(),
+                    own: l.own,
+                })
+                .collect(),
+        ),
+        None => (String::new(), Vec::new()),
+    };
     Some(RecipeSection {
+        p_crit_recipe,
+        p_crit,
         p_crit_varied: fields.iter().any(|f| f == "coating.p_crit_GPa"),
         charts: fields
             .iter()

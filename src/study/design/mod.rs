@@ -43,6 +43,7 @@ pub mod confirm;
 mod domain;
 pub mod observer;
 mod outcome;
+pub mod p_crit;
 pub mod params;
 pub mod pipeline;
 pub mod rank;
