@@ -265,6 +265,18 @@ fn flags(command: &str) -> PyResult<Vec<(String, bool)>> {
         .collect())
 }
 
+/// The long options of command `command` that may be given more than once (`design --vary`,
+/// `--scene`): a list of values for one of them is one flag per value.
+#[pyfunction]
+fn repeated(command: &str) -> PyResult<Vec<String>> {
+    let sub = subcommand(command)?;
+    Ok(sub
+        .get_arguments()
+        .filter(|a| matches!(a.get_action(), clap::ArgAction::Append))
+        .filter_map(|a| a.get_long().map(str::to_string))
+        .collect())
+}
+
 /// The renamed options of command `command` as (old name, current name) pairs, e.g.
 /// `("model", "solver")` for `screen`: the hidden clap aliases that `superlube` still accepts
 /// for a release with a note (`cli::renamed`).
@@ -318,6 +330,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     quiet_cancel_panics();
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(flags, m)?)?;
+    m.add_function(wrap_pyfunction!(repeated, m)?)?;
     m.add_function(wrap_pyfunction!(renamed, m)?)?;
     m.add_function(wrap_pyfunction!(scene, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -16,6 +16,9 @@ def run(
 def flags(command: str) -> List[Tuple[str, bool]]:
     """Long options of `command` as (name, takes a value)."""
 
+def repeated(command: str) -> List[str]:
+    """Long options of `command` that may be given more than once (`design`'s `vary`)."""
+
 def renamed(command: str) -> List[Tuple[str, str]]:
     """Renamed options of `command` as (old name, current name), e.g. ("model", "solver"):
     the old names the command still accepts for a release."""

@@ -86,10 +86,13 @@ def renamed_keywords(command: str, kwargs: Dict[str, Any]) -> Dict[str, Any]:
 def to_argv(command: str, kwargs: Dict[str, Any], allow_scene_flags: bool = False) -> List[str]:
     """``superlube COMMAND`` flags from snake-case keywords: ``load_mN=[1.4, 2.1]`` →
     ``--load-mn=1.4,2.1``, ``theta_deg=(0, 30, 0.1)``… (a str is passed as is, e.g. a range
-    ``"0:30:0.1"``); True → a switch, False/None → left out; an old option name → its current
-    one, with a DeprecationWarning. Unknown keyword → ValueError."""
+    ``"0:30:0.1"``); True → a switch, False/None → left out; an option that may be repeated
+    (``design``'s ``vary``) takes a dict ``{"FIELD": values}`` or a list of ``"FIELD=LIST"``
+    strings, one flag per entry; an old option name → its current one, with a
+    DeprecationWarning. Unknown keyword → ValueError."""
     kwargs = renamed_keywords(command, kwargs)
     known = dict(_native.flags(command))
+    repeated = set(_native.repeated(command))
     argv: List[str] = []
     for key, value in kwargs.items():
         if value is None or value is False:
@@ -107,7 +110,13 @@ def to_argv(command: str, kwargs: Dict[str, Any], allow_scene_flags: bool = Fals
                 f"{command}: `{key}` is a scene field: give it to the Scene "
                 f"(superlube.Scene(..., {key}=...)) or use scene.replace({key}=...)"
             )
-        if value is True and not known[name]:
+        if name in repeated and isinstance(value, dict):
+            # `vary={"slider.sphere_diameter_um": [2.5, 3], …}`: one flag per FIELD=LIST
+            argv.extend(f"--{name}={k}={_flag_value(v, key)}" for k, v in value.items())
+        elif name in repeated and isinstance(value, (list, tuple)):
+            # `vary=["slider.sphere_diameter_um=2.5,3", …]`: one flag per item
+            argv.extend(f"--{name}={_flag_value(v, key)}" for v in value)
+        elif value is True and not known[name]:
             argv.append(f"--{name}")
         elif not known[name]:
             raise ValueError(f"`{key}`: a switch: give True or False")

@@ -251,6 +251,33 @@ def test_design_on_scenes_returns_ranking_and_answer():
     assert summary["report_md"].startswith("# superlube design")
 
 
+def test_design_vary_is_repeatable_and_equals_cli(cli_bin, tmp_path):
+    """`vary` as a dict (or a list of FIELD=LIST strings) gives one `--vary` per field: the
+    recipes and their limits are those of the command line with the same flags."""
+    k = dict(radius_um=9, size_um=[100, 100])
+    opts = dict(load_mN="0.35,1.4", theta_deg="0:15:5", theta_tol_deg=0, direction_tol_deg=0,
+                no_dem=True)  # fmt: skip
+    vary = {"slider.sphere_diameter_um": [2.5, 3], "slider.material.youngs_GPa": "50,100"}
+    ranking, _ = superlube.design(superlube.Scene("tri-tri", **k), vary=vary, **opts)
+    assert len(set(ranking["pattern"])) == 4
+    assert "tri-tri+slider.sphere_diameter_um=2.5+slider.material.youngs_GPa=50" in set(
+        ranking["pattern"])  # fmt: skip
+    as_list = ["slider.sphere_diameter_um=2.5,3", "slider.material.youngs_GPa=50,100"]
+    ranking2, _ = superlube.design(superlube.Scene("tri-tri", **k), vary=as_list, **opts)
+    assert list(ranking2["superlubric_to_mN"]) == list(ranking["superlubric_to_mN"])
+    superlube.Scene("tri-tri", **k).write(tmp_path / "tri-tri.toml")
+    subprocess.run([cli_bin, "design", "--scene", tmp_path / "tri-tri.toml", "--load-mn",
+                    "0.35,1.4", "--theta", "0:15:5", "--theta-tol-deg", "0", "--direction-tol-deg",
+                    "0", "--no-dem", "--vary", "slider.sphere_diameter_um=2.5,3", "--vary",
+                    "slider.material.youngs_GPa=50,100", "--out-dir", tmp_path / "cli"],
+                   check=True, capture_output=True)  # fmt: skip
+    import csv
+    with open(tmp_path / "cli" / "ranking.csv") as f:
+        cli = list(csv.DictReader(f))
+    assert [float(r["superlubric_to_mN"]) for r in cli] == list(ranking["superlubric_to_mN"])
+    assert [r["pattern"] for r in cli] == list(ranking["pattern"])
+
+
 def test_tolerance_map_equals_cli(cli_bin, tmp_path):
     scene = superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60])
     opts = dict(theta_deg=30, alpha=0, load_mN="0.05,0.1", theta_range_deg=0.2, theta_points=3,

@@ -79,6 +79,7 @@ impl RecipeArgs {
                     .with_context(|| format!("cannot write {}", path.display()))?;
                 let mut warnings = ds.warnings.clone();
                 warnings.extend(recipe::outside_validated_range(&v.scene));
+                let outside = recipe::validated_range(&v.scene);
                 all.push(DesignScene {
                     name: v.name,
                     scene: v.scene,
@@ -87,6 +88,10 @@ impl RecipeArgs {
                     facts: Some(crate::study::patterns::CandidateFacts {
                         normalize: format!("recipe-{}", fair.name()),
                         ..ds.facts.clone().unwrap_or_default()
+                    }),
+                    recipe: Some(recipe::RecipeFacts {
+                        base: ds.name.clone(),
+                        outside,
                     }),
                 });
             }

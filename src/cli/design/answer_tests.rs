@@ -250,6 +250,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
         dem_ran: true,
         answers: vec![a.clone()],
         maps: vec![None],
+        p_crit: None,
     };
     let rows = dem_rows(&o, &p);
     let line = answer_line(&pr, &a, &rows, &p, 0.09);

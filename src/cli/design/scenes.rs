@@ -73,6 +73,7 @@ pub(super) fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             flags,
             warnings: r.warnings,
             facts: None,
+            recipe: None,
         });
     }
     for f in &files {
@@ -103,6 +104,7 @@ pub(super) fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             flags,
             warnings: r.warnings,
             facts,
+            recipe: None,
         });
     }
     for (k, s) in out.iter().enumerate() {

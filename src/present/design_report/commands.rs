@@ -39,8 +39,9 @@ pub fn loads_text(p: &DesignParams) -> String {
         .join(",")
 }
 
-/// The DEM protocol flags of the design's runs (or the study's).
-pub fn protocol_flags(p: &DesignParams, study: bool) -> String {
+/// The DEM protocol flags of the design's runs (or the study's), with the model `model` (the
+/// design's, or `auto` for a recipe the DEM decides: `confirm::dem_model`).
+pub fn protocol_flags(p: &DesignParams, study: bool, model: dem::ModelRequest) -> String {
     let s = &p.dem.sim;
     let mut f = String::new();
     if !study {
@@ -56,7 +57,11 @@ pub fn protocol_flags(p: &DesignParams, study: bool) -> String {
     if let Some(dt) = s.dt {
         let _ = write!(f, " --dt-us {}", label(s_to_us(dt)));
     }
-    f += &p.dem_flags;
+    if model == p.dem.model.request {
+        f += &p.dem_flags;
+    } else {
+        let _ = write!(f, " --model {}", model.name());
+    }
     f
 }
 
@@ -125,7 +130,13 @@ pub fn slide_command(pr: &PatternResult, d: &DemRow, study: bool, p: &DesignPara
         d.alpha_deg,
         d.load_mN,
         line_flag(p),
-        protocol_flags(p, study),
+        protocol_flags(
+            p,
+            study,
+            pr.ranking.get(d.rank.saturating_sub(1)).map_or(p.dem.model.request, |c| {
+                crate::study::design::confirm::dem_model(pr, c, p).request
+            })
+        ),
         d.run_dir,
         d.run_dir
     )

@@ -200,6 +200,14 @@ pub fn line(e: &Event<'_>) -> Option<String> {
             stop_text(stop, skipped, floor_mn)
         ),
         Event::DemNothing => "DEM: nothing to confirm (no ranked design)".to_string(),
+        Event::PCritSweep { pattern } => format!(
+            "{pattern}: the best recipe's robust limit at P_crit = {} GPa",
+            crate::study::design::p_crit::P_CRIT_SWEEP_GPA
+                .iter()
+                .map(|v| v.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
         Event::DemRuns {
             runs,
             side_by_side,

@@ -1,16 +1,25 @@
 //! The report's recipe section (`design --vary`): the robust limit against each varied field
 //! (one chart per field, `recipe_<k>.png`, the other fields at the best recipe's values), the
-//! best recipe per pattern and the recipe table. Built from `patterns.csv`'s rows and the
-//! recipes' names ([`crate::study::recipe::parse_name`]).
+//! best recipe per pattern as the DEM decided it (a recipe outside the validated range is named
+//! only when the DEM confirmed it, [`crate::study::design::recipe_answer`]), the DEM
+//! confirmation of the best recipes at their tolerance-box corners and the recipe table. Built
+//! from `patterns.csv`'s rows, the recipes' names ([`crate::study::recipe::parse_name`]) and
+//! the answer table.
 
 use super::patterns::PatternRow;
+use super::top::TopRow;
 use super::words::fmt_g;
 use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
 use crate::runs::output::Outputs;
+use crate::study::design::answer::Check;
+use crate::study::design::recipe_answer::{self, Naming, RecipeDecision};
 use crate::study::design::store::Store;
+use crate::study::design::DesignOutcome;
 use crate::study::recipe::parse_name;
+use crate::study::rows::label;
 use anyhow::Result;
 use serde::Serialize;
+use surrogate::units::pa_to_gpa;
 
 /// One recipe of the table (cells as printed).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -29,20 +38,113 @@ pub struct RecipeLine {
     pub load_per_sphere_un: String,
 }
 
+/// How the named recipe of a pattern stands (the template words it).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Standing {
+    /// Inside the validated range: the surrogate's answer.
+    Surrogate,
+    /// Outside it; the DEM confirmed it at its centre and its tolerance-box corners.
+    DemConfirmed,
+    /// Outside it; the DEM did not run (`--no-dem`): unconfirmed.
+    Unconfirmed,
+}
+
+/// One recipe in words (cells as printed).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RecipeWords {
+    /// `field = value, …`.
+    pub values: String,
+    /// Robust limit (mN), `≤ x` for an upper bound.
+    pub limit_mn: String,
+    /// Slider spheres.
+    pub spheres: usize,
+    /// Mean pressure at the limit (kPa).
+    pub mean_pressure_kpa: String,
+    /// Load per sphere at the limit (µN).
+    pub load_per_sphere_un: String,
+    /// Why it lies outside the validated range (empty: inside).
+    pub outside: String,
+    /// What the DEM said of it, where it refused it (empty otherwise).
+    pub dem_says: String,
+}
+
+/// The best recipe of one pattern, as the DEM decided it
+/// ([`crate::study::design::recipe_answer`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BestRecipe {
+    /// The pattern the recipes were made from.
+    pub base: String,
+    /// The named recipe (`None`: no recipe of the pattern can be named).
+    pub named: Option<RecipeWords>,
+    /// How it stands.
+    pub standing: Option<Standing>,
+    /// Better-ranked recipes outside the validated range that the DEM did not confirm.
+    pub refused: Vec<RecipeWords>,
+    /// Without the DEM, when the named recipe is unconfirmed: the best recipe inside the
+    /// validated range, if any.
+    pub inside: Option<RecipeWords>,
+}
+
+/// One row of the DEM confirmation of the best recipes (cells as printed).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RecipeDemLine {
+    /// `field = value, …` of the recipe (and its base pattern).
+    pub recipe: String,
+    /// θ ± tolerance, pull from x ± tolerance, α, the robust limit, the verdict, the DEM at the
+    /// design and at its box corners: the answer table's cells ([`super::top::TopRow`]).
+    pub theta: String,
+    /// See [`RecipeDemLine::theta`].
+    pub pull_x: String,
+    /// See [`RecipeDemLine::theta`].
+    pub limit_mn: String,
+    /// See [`RecipeDemLine::theta`].
+    pub verdict: String,
+    /// See [`RecipeDemLine::theta`].
+    pub dem_centre: String,
+    /// See [`RecipeDemLine::theta`].
+    pub dem_corners: String,
+    /// Why it lies outside the validated range (`inside` when it does not).
+    pub range: String,
+    /// `named`, `named, unconfirmed`, `not named: …` or `–` (not the best of its pattern).
+    pub decision: String,
+}
+
 /// The recipe section of the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RecipeSection {
     /// The varied fields (dotted scene-file paths, user units).
     pub fields: Vec<String>,
-    /// One sentence per pattern: its best recipe and limit.
-    pub best: Vec<String>,
+    /// Per pattern: its best recipe as the DEM decided it.
+    pub best: Vec<BestRecipe>,
     /// Every recipe, best first.
     pub table: Vec<RecipeLine>,
+    /// The DEM confirmation of the best recipes (the first [`DEM_RECIPES`] with a design, and
+    /// every one the DEM refused before a named one); empty without the DEM.
+    pub dem: Vec<RecipeDemLine>,
     /// The charts, one per field (`recipe_<k>.png`), with the field each shows.
     pub charts: Vec<(String, String)>,
     /// Whether `coating.p_crit_GPa` is among the fields (its chart is the limit's dependence on
     /// the coating's strength).
     pub p_crit_varied: bool,
+    /// The best named recipe (`base: field = value, …`, θ and pull) whose limit the P_crit
+    /// lines give; empty without them.
+    pub p_crit_recipe: String,
+    /// Its robust limit at each coating strength ([`crate::study::design::p_crit`]).
+    pub p_crit: Vec<PCritLine>,
+}
+
+/// The best recipe's robust limit at one coating strength (cells as printed).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PCritLine {
+    /// P_crit (GPa).
+    pub p_crit_gpa: String,
+    /// The robust limit (mN).
+    pub limit_mn: String,
+    /// The worst verdict up to it.
+    pub verdict: String,
+    /// Whether it is the design's own P_crit (its score, not a new search).
+    pub own: bool,
 }
 
 /// One recipe row: its `patterns.csv` row, the pattern it was made from and its values.
@@ -61,45 +163,169 @@ fn recipes(rows: &[PatternRow]) -> Vec<Recipe<'_>> {
         .collect()
 }
 
-/// The section, when the design's patterns are recipes. Cost: one pass over the rows.
-pub fn section(rows: &[PatternRow]) -> Option<RecipeSection> {
+/// Recipes of the report's DEM table (best first), besides the ones refused before a named one.
+pub const DEM_RECIPES: usize = crate::study::design::best::BEST_PATTERNS;
+
+/// `field = value, …` of a recipe's values.
+fn values_text(values: &[(String, f64)]) -> String {
+    values
+        .iter()
+        .map(|(f, v)| format!("{f} = {}", crate::study::recipe::value_text(*v)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn limit(r: &PatternRow) -> String {
+    if r.robust_exact {
+        fmt_g(r.superlubric_to_mN, 3)
+    } else {
+        format!("≤ {}", fmt_g(r.superlubric_to_mN, 3))
+    }
+}
+
+/// The reasons in one phrase (`slider E = 50 GPa, in the mount's resonance band`).
+fn reasons(v: &[crate::study::recipe::Outside]) -> String {
+    v.iter()
+        .map(|o| o.to_string())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// What the DEM said of a recipe it did not confirm.
+fn dem_says(c: &Check) -> String {
+    match c {
+        Check::Contradicted(why) => format!("the DEM contradicted it: {why}"),
+        Check::Unchecked => "the DEM did not check it at its limit and box corners".into(),
+        Check::NoDem | Check::Confirmed(_) => String::new(),
+    }
+}
+
+/// The section, when the design's patterns are recipes: `rows` best first (`patterns.csv`),
+/// `top` the answer table's rows in the outcome's pattern order. Cost: one pass over the rows
+/// and the recipes.
+pub fn section(rows: &[PatternRow], o: &DesignOutcome, top: &[TopRow]) -> Option<RecipeSection> {
     let rec = recipes(rows);
     let first = rec.first()?;
     let fields: Vec<String> = first.values.iter().map(|(f, _)| f.clone()).collect();
-    let limit = |r: &PatternRow| {
-        if r.robust_exact {
-            fmt_g(r.superlubric_to_mN, 3)
-        } else {
-            format!("≤ {}", fmt_g(r.superlubric_to_mN, 3))
-        }
+    let decisions = recipe_answer::decisions(o);
+    let words = |d: &RecipeDecision| -> Option<RecipeWords> {
+        let name = &o.patterns[d.pattern].scene.name;
+        let r = rec.iter().find(|r| &r.row.pattern == name)?;
+        Some(RecipeWords {
+            values: values_text(&r.values),
+            limit_mn: limit(r.row),
+            spheres: r.row.spheres,
+            mean_pressure_kpa: fmt_g(r.row.mean_pressure_kPa, 3),
+            load_per_sphere_un: fmt_g(r.row.load_per_sphere_uN, 3),
+            outside: reasons(&d.outside),
+            dem_says: if d.naming.nameable() {
+                String::new()
+            } else {
+                dem_says(&d.check)
+            },
+        })
     };
-    let mut best = Vec::new();
-    for Recipe {
-        row: r,
-        base,
-        values,
-    } in &rec
-    {
-        if best.iter().any(|(b, _): &(String, String)| b == base) {
-            continue;
+    let mut bases: Vec<&str> = Vec::new();
+    for r in &rec {
+        if !bases.contains(&r.base.as_str()) {
+            bases.push(&r.base);
         }
-        let v: Vec<String> = values
-            .iter()
-            .map(|(f, v)| format!("{f} = {}", crate::study::recipe::value_text(*v)))
-            .collect();
-        best.push((
-            base.clone(),
-            format!(
-                "**{base}**: best recipe {} — robust limit {} mN ({} spheres, {} kPa, {} µN per sphere)",
-                v.join(", "),
-                limit(r),
-                r.spheres,
-                fmt_g(r.mean_pressure_kPa, 3),
-                fmt_g(r.load_per_sphere_uN, 3)
-            ),
-        ));
     }
+    let mut best = Vec::new();
+    let mut dem_names: Vec<usize> = Vec::new();
+    for base in bases {
+        let (named, refused) = recipe_answer::named(&decisions, base);
+        let standing = named.map(|d| match d.naming {
+            Naming::DemConfirmed => Standing::DemConfirmed,
+            Naming::Unconfirmed => Standing::Unconfirmed,
+            Naming::Surrogate | Naming::Refused => Standing::Surrogate,
+        });
+        let inside = (standing == Some(Standing::Unconfirmed))
+            .then(|| {
+                decisions
+                    .iter()
+                    .find(|d| d.base == base && d.naming == Naming::Surrogate)
+            })
+            .flatten();
+        dem_names.extend(refused.iter().map(|d| d.pattern));
+        dem_names.extend(named.map(|d| d.pattern));
+        best.push(BestRecipe {
+            base: base.to_string(),
+            named: named.and_then(&words),
+            standing,
+            refused: refused.iter().filter_map(|d| words(d)).collect(),
+            inside: inside.and_then(&words),
+        });
+    }
+    for d in decisions.iter().take(DEM_RECIPES) {
+        if !dem_names.contains(&d.pattern) {
+            dem_names.push(d.pattern);
+        }
+    }
+    let dem = if o.dem_ran {
+        decisions
+            .iter()
+            .filter(|d| dem_names.contains(&d.pattern))
+            .filter_map(|d| {
+                let t = top.get(d.pattern)?;
+                let named = best.iter().any(|b| {
+                    b.named.is_some()
+                        && recipe_answer::named(&decisions, &b.base)
+                            .0
+                            .is_some_and(|n| n.pattern == d.pattern)
+                });
+                Some(RecipeDemLine {
+                    recipe: format!("{}: {}", d.base, words(d)?.values),
+                    theta: t.theta.clone(),
+                    pull_x: t.pull_x.clone(),
+                    limit_mn: t.limit_mn.clone(),
+                    verdict: t.verdict.clone(),
+                    dem_centre: t.dem_centre.clone(),
+                    dem_corners: t.dem_corners.clone(),
+                    range: if d.outside.is_empty() {
+                        "inside".into()
+                    } else {
+                        reasons(&d.outside)
+                    },
+                    decision: if named {
+                        "named".into()
+                    } else if !d.naming.nameable() {
+                        format!("not named: {}", dem_says(&d.check))
+                    } else {
+                        "–".into()
+                    },
+                })
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let (p_crit_recipe, p_crit) = match &o.p_crit {
+        Some(sw) => (
+            format!(
+                "{} at θ = {}°, pull {}° from x",
+                parse_name(&sw.pattern).map_or(sw.pattern.clone(), |(b, v)| format!(
+                    "{b}: {}",
+                    values_text(&v)
+                )),
+                sw.theta_deg,
+                fmt_g(sw.direction_deg, 4)
+            ),
+            sw.limits
+                .iter()
+                .map(|l| PCritLine {
+                    p_crit_gpa: format!("{}", label(pa_to_gpa(l.p_crit))),
+                    limit_mn: format!("{}", l.superlubric_to_mn),
+                    verdict: l.verdict.to_string(),
+                    own: l.own,
+                })
+                .collect(),
+        ),
+        None => (String::new(), Vec::new()),
+    };
     Some(RecipeSection {
+        p_crit_recipe,
+        p_crit,
         p_crit_varied: fields.iter().any(|f| f == "coating.p_crit_GPa"),
         charts: fields
             .iter()
@@ -107,7 +333,8 @@ pub fn section(rows: &[PatternRow]) -> Option<RecipeSection> {
             .map(|(k, f)| (format!("recipe_{k}.png"), f.clone()))
             .collect(),
         fields,
-        best: best.into_iter().map(|(_, s)| s).collect(),
+        best,
+        dem,
         table: rec
             .iter()
             .map(|c| RecipeLine {
@@ -190,6 +417,17 @@ pub fn field_chart(rows: &[PatternRow], k: usize) -> Option<Chart> {
     })
 }
 
+/// The chart files `recipe_<k>.png`, one per varied field; `None` without recipes.
+fn section_fields(rows: &[PatternRow]) -> Option<Vec<String>> {
+    let rec = recipes(rows);
+    let first = rec.first()?;
+    Some(
+        (0..first.values.len())
+            .map(|k| format!("recipe_{k}.png"))
+            .collect(),
+    )
+}
+
 /// Writes `recipe_<k>.png` for every varied field, each redrawn when missing or when
 /// `patterns.csv` changed. Cost: one chart per field.
 pub fn write_figures(
@@ -198,11 +436,11 @@ pub fn write_figures(
     wrote: &mut Vec<String>,
     rows: &[PatternRow],
 ) -> Result<()> {
-    let Some(s) = section(rows) else {
+    let Some(s) = section_fields(rows) else {
         return Ok(());
     };
     let changed = wrote.iter().any(|w| w == "patterns.csv");
-    for (k, (file, _)) in s.charts.iter().enumerate() {
+    for (k, file) in s.iter().enumerate() {
         if let Some(c) = field_chart(rows, k) {
             super::redraw(store, outs, wrote, file, changed, |path| {
                 chart_png(path, &c)

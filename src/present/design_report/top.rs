@@ -429,7 +429,11 @@ pub fn answer_run(pr: &PatternResult, c: &Candidate, p: &DesignParams) -> Answer
     let slide = format!(
         "superlube slide --scene {file} --alpha {} --load-mn {w}{line}{} --json answer_{name}/slide.json --out answer_{name}/slide.csv",
         c.alpha_deg,
-        protocol_flags(p, false)
+        protocol_flags(
+            p,
+            false,
+            crate::study::design::confirm::dem_model(pr, c, p).request
+        )
     );
     let range = |tol: f64, min: f64| label((2.0 * tol).max(min));
     let f = &p.friction;

@@ -19,7 +19,9 @@
 //! (`--no-dem`), the surrogate's best. Its load is the estimate's `superlubric_to` (the DEM
 //! checks it at the confirmation loads up to that load and at that load itself, not in between).
 
+use super::rank::Candidate;
 use super::{tolerance_box, DemEntry, DesignParams, PatternResult};
+use crate::study::recipe::Outside;
 use surrogate::units::n_to_mn;
 
 /// What the DEM says about one design.
@@ -152,4 +154,22 @@ pub fn answer(pr: &PatternResult, dem: &[DemEntry], dem_ran: bool, p: &DesignPar
         check: first,
         others: passed.into_iter().skip(1).collect(),
     }
+}
+
+/// Why the design `c` of `pr` lies outside the range the verdict band was measured at, when
+/// `pr` is a recipe (`design --vary`): its scene's reasons
+/// ([`crate::study::recipe::validated_range`]) and [`Outside::MountResonance`] where one of its
+/// friction rows is in the mount's resonance band. Empty for a pattern that is not a recipe,
+/// and for a recipe inside the range: then the surrogate's verdict stands as for any pattern;
+/// otherwise the DEM decides (its runs first, `auto` for `reduced`: [`super::confirm`]).
+/// O(rows of `c`).
+pub fn outside_range(pr: &PatternResult, c: &Candidate) -> Vec<Outside> {
+    let Some(r) = &pr.scene.recipe else {
+        return Vec::new();
+    };
+    let mut v = r.outside.clone();
+    if c.friction.iter().any(|r| r.mount_resonance == Some(true)) {
+        v.push(Outside::MountResonance);
+    }
+    v
 }

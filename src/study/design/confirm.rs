@@ -46,6 +46,37 @@ pub fn dem_params(
     d
 }
 
+/// The DEM parameters of a confirmation run of the design `c` of `pr` ([`dem_params`]): for a
+/// recipe outside the validated range ([`answer::outside_range`]) the model `auto` where
+/// `reduced` was asked, so that the DEM that decides it uses rigid-z only inside that model's
+/// own measured limits (`dem::reduction`: κ, coating near failure, stick-slip), the full model
+/// elsewhere.
+pub fn design_dem_params(
+    pr: &PatternResult,
+    c: &Candidate,
+    p: &DesignParams,
+    alpha_deg: f64,
+    load: f64,
+    study: bool,
+) -> crate::study::dem_run::DemParams {
+    let mut d = dem_params(p, alpha_deg, load, study);
+    d.model = dem_model(pr, c, p);
+    d
+}
+
+/// The DEM model of the runs of the design `c` of `pr` (see [`design_dem_params`]).
+pub fn dem_model(
+    pr: &PatternResult,
+    c: &Candidate,
+    p: &DesignParams,
+) -> crate::study::dem_run::ModelSpec {
+    let mut m = p.dem.model;
+    if m.request == dem::ModelRequest::Reduced && !answer::outside_range(pr, c).is_empty() {
+        m.request = dem::ModelRequest::Auto;
+    }
+    m
+}
+
 /// The run directory name of a confirmation run.
 pub fn run_name(pattern: &str, theta_deg: f64, alpha_deg: f64, load: f64, study: bool) -> String {
     format!(
@@ -172,23 +203,26 @@ pub struct ConfirmEntry {
 
 /// The confirmation runs (top `confirm` designs × confirmation loads, and the corners of each
 /// one's tolerance box, `corner_jobs`), with what each one is; the runs of borderline designs
-/// first, else in ranking order.
+/// and of recipes outside the validated range ([`answer::outside_range`]: the DEM decides
+/// them) first, else in ranking order.
 pub fn confirm_jobs(
     patterns: &[PatternResult],
     p: &DesignParams,
 ) -> (Vec<SlideJob>, Vec<ConfirmEntry>) {
-    // (borderline first, job, entry): DEM runs go first to borderline designs
+    // (not first, job, entry): DEM runs go first to borderline designs and to recipes the
+    // DEM decides
     let mut all: Vec<(bool, SlideJob, ConfirmEntry)> = Vec::new();
     for pr in patterns {
         for (k, c) in pr.ranking.iter().take(p.confirm).enumerate() {
-            let borderline = c.score.verdict == crate::study::verdict::Verdict::Borderline;
+            let borderline = c.score.verdict == crate::study::verdict::Verdict::Borderline
+                || !answer::outside_range(pr, c).is_empty();
             for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
                 all.push((
                     !borderline,
                     SlideJob {
                         name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, false),
                         scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
-                        params: dem_params(p, c.alpha_deg, w, false),
+                        params: design_dem_params(pr, c, p, c.alpha_deg, w, false),
                     },
                     ConfirmEntry {
                         pattern: pr.scene.name.clone(),
@@ -241,7 +275,7 @@ pub(super) fn corner_jobs(
                 SlideJob {
                     name: run_name(&pr.scene.name, theta, alpha, w, false),
                     scene,
-                    params: dem_params(p, alpha, w, false),
+                    params: design_dem_params(pr, c, p, alpha, w, false),
                 },
                 ConfirmEntry {
                     pattern: pr.scene.name.clone(),
@@ -298,7 +332,7 @@ pub(super) fn confirm_stage(
             let job = SlideJob {
                 name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
                 scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
-                params: dem_params(p, c.alpha_deg, w, true),
+                params: design_dem_params(pr, c, p, c.alpha_deg, w, true),
             };
             obs.event(&Event::ProtocolCheck {
                 pattern: &pr.scene.name,

@@ -171,6 +171,12 @@ pub enum Event<'a> {
         /// Points of the map.
         points: u64,
     },
+    /// The best recipe's limit is re-evaluated at the coating strengths of
+    /// [`super::p_crit::P_CRIT_SWEEP_GPA`].
+    PCritSweep {
+        /// Pattern (recipe) name.
+        pattern: &'a str,
+    },
     /// No ranked design: nothing for the DEM to confirm.
     DemNothing,
     /// The DEM batch begins.

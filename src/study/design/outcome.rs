@@ -129,6 +129,9 @@ pub struct DesignOutcome {
     /// Per pattern, the tolerance map around its answer (θ points per row, rows) when the
     /// design has a tolerance ([`super::answer_map`]).
     pub maps: Vec<Option<AnswerMap>>,
+    /// With recipes (`--vary`): the best named recipe's robust limit at each coating strength
+    /// of [`super::p_crit::P_CRIT_SWEEP_GPA`] ([`super::p_crit`]).
+    pub p_crit: Option<super::p_crit::PCritSweep>,
 }
 
 /// The tolerance map around a pattern's answer (`tolerance_<pattern>.csv/.png`).

@@ -18,6 +18,10 @@ pub struct DesignScene {
     pub warnings: Vec<String>,
     /// What `superlube patterns` recorded of it, when it comes from an `index.csv`.
     pub facts: Option<crate::study::patterns::CandidateFacts>,
+    /// What the design knows of it as a recipe of `design --vary` (why it lies outside the
+    /// validated range; the DEM decides such a recipe, [`super::confirm`]); `None`: not a
+    /// recipe.
+    pub recipe: Option<crate::study::recipe::RecipeFacts>,
 }
 
 /// Every knob of a design (SI inside; angles as the degree decimals the user meant, so that

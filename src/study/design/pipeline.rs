@@ -431,6 +431,7 @@ impl<'a> Pipeline<'a> {
             dem_ran: false,
             answers: Vec::new(),
             maps: Vec::new(),
+            p_crit: None,
         })
     }
 
@@ -454,6 +455,7 @@ impl<'a> Pipeline<'a> {
             dem_ran: !p.no_dem,
             answers,
             maps: Vec::new(),
+            p_crit: None,
         };
         let mapped = best::best_order(&o, best::BEST_PATTERNS);
         for (i, (pr, a)) in o.patterns.iter().zip(&o.answers).enumerate() {
@@ -468,6 +470,16 @@ impl<'a> Pipeline<'a> {
                 }
                 _ => None,
             });
+        }
+        // the best named recipe's limit against the coating's strength
+        let decisions = super::recipe_answer::decisions(&o);
+        if let Some(d) = decisions.iter().find(|d| d.naming.nameable()) {
+            let pr = &o.patterns[d.pattern];
+            let c = &pr.ranking[d.design];
+            self.obs.event(&Event::PCritSweep {
+                pattern: &pr.scene.name,
+            });
+            o.p_crit = Some(super::p_crit::p_crit_sweep(&pr.scene, c, p, self.store)?);
         }
         Ok(o)
     }

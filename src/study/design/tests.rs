@@ -42,6 +42,7 @@ fn pattern(name: &str, n: usize) -> PatternResult {
             flags: vec![],
             warnings: vec![],
             facts: None,
+            recipe: None,
         },
         sym,
         ranking,

@@ -15,17 +15,24 @@
 //! area, the default), or its outline is scaled so that it holds the base slider's sphere count
 //! ([`Fair::Count`], as `superlube patterns --normalize spheres`).
 //!
-//! **Validated range** ([`outside_validated_range`]): the surrogate's verdict band was measured
-//! at the study's sphere size (3 µm) and modulus (100 GPa, docs/validation/verdict-band.md); a
-//! recipe outside them is flagged so that the DEM, not the surrogate, names it.
+//! **Validated range** ([`validated_range`]): the surrogate's verdict band was measured at the
+//! study's sphere size (3 µm) and modulus (100 GPa, docs/validation/verdict-band.md); a recipe
+//! outside them, or whose design lies in the mount-resonance band, is flagged ([`Outside`]) so
+//! that the DEM, not the surrogate, names it (`crate::study::design::confirm`).
 //!
 //! Cost: one scene build per variant (plus about 40 per variant with [`Fair::Count`]).
 
 use anyhow::{anyhow, bail, Result};
 use surrogate::{Scene, SceneFile};
 
+mod range;
 #[cfg(test)]
 mod tests;
+
+pub use range::{
+    outside_validated_range, validated_range, Body, Outside, RecipeFacts, VALIDATED_DIAMETER,
+    VALIDATED_YOUNGS,
+};
 
 /// Most variants a grid may have (a design screens each one).
 pub const MAX_VARIANTS: usize = 1000;
@@ -296,46 +303,6 @@ pub fn variants(
         );
     }
     Ok(out)
-}
-
-/// The study's sphere diameter (m) and Young's modulus (Pa) at which the verdict band was
-/// measured (docs/validation/verdict-band.md).
-pub const VALIDATED_DIAMETER: f64 = 3e-6;
-/// See [`VALIDATED_DIAMETER`].
-pub const VALIDATED_YOUNGS: f64 = 100e9;
-
-/// Why `s` lies outside the range the verdict band was measured at (the study's 3 µm spheres
-/// and E = 100 GPa for both bodies, docs/validation/verdict-band.md), or `None` inside it.
-/// O(1).
-pub fn outside_validated_range(s: &Scene) -> Option<String> {
-    use surrogate::units::{pa_to_gpa, um_text};
-    let mut why = Vec::new();
-    for (body, r) in [
-        ("slider", s.slider_sphere_radius()),
-        ("substrate", s.sphere_radius),
-    ] {
-        if (2.0 * r / VALIDATED_DIAMETER - 1.0).abs() > 1e-9 {
-            why.push(format!("{body} spheres of {} µm", um_text(2.0 * r)));
-        }
-    }
-    for (body, m) in [
-        ("slider", s.slider_material()),
-        ("substrate", s.substrate_material()),
-    ] {
-        let e = m.youngs;
-        if (e / VALIDATED_YOUNGS - 1.0).abs() > 1e-9 {
-            why.push(format!(
-                "{body} E = {} GPa",
-                super::rows::label(pa_to_gpa(e))
-            ));
-        }
-    }
-    (!why.is_empty()).then(|| {
-        format!(
-            "outside the validated range ({}; the verdict band was measured at 3 µm spheres and E = 100 GPa): the DEM confirmation decides",
-            why.join(", ")
-        )
-    })
 }
 
 /// The base name and the varied values of a recipe's name `<base>+FIELD=VALUE+…` (as

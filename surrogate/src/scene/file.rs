@@ -35,9 +35,11 @@
 //! mu2 = 0.5
 //! ```
 
-use super::{BodyMaterials, Lattice, Material, Mount, Outline, Scene, SiteList};
+pub use super::material_file::MaterialFile;
+use super::material_file::{materials, overlay_bodies};
+use super::{Lattice, Mount, Outline, Scene, SiteList};
 use crate::error::SceneError;
-use crate::units::{deg_to_rad, gcm3_to_kgm3, gpa_to_pa, um_text, um_to_m};
+use crate::units::{deg_to_rad, gpa_to_pa, um_text, um_to_m};
 use serde::{Deserialize, Serialize};
 
 /// A lattice in user units. `kind` is `triangular`, `square`, `rectangular` (needs
@@ -283,58 +285,6 @@ pub struct SubstrateFile {
     pub material: Option<MaterialFile>,
 }
 
-/// Material overrides (user units).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct MaterialFile {
-    /// Young's modulus (GPa).
-    #[serde(rename = "youngs_GPa")]
-    pub youngs_gpa: Option<f64>,
-    /// Poisson ratio.
-    pub poisson: Option<f64>,
-    /// Density (g/cm³).
-    pub density_g_cm3: Option<f64>,
-}
-
-impl MaterialFile {
-    /// `base` (SI) with every field given here overriding it.
-    pub fn apply(&self, mut base: Material) -> Material {
-        if let Some(v) = self.youngs_gpa {
-            base.youngs = gpa_to_pa(v);
-        }
-        if let Some(v) = self.poisson {
-            base.poisson = v;
-        }
-        if let Some(v) = self.density_g_cm3 {
-            base.density = gcm3_to_kgm3(v);
-        }
-        base
-    }
-
-    /// Overlays the fields set in `other` (`other` wins).
-    fn merged(&self, other: &MaterialFile) -> MaterialFile {
-        MaterialFile {
-            youngs_gpa: other.youngs_gpa.or(self.youngs_gpa),
-            poisson: other.poisson.or(self.poisson),
-            density_g_cm3: other.density_g_cm3.or(self.density_g_cm3),
-        }
-    }
-
-    /// This body override less the fields that `shared` sets: a shared value given later (a
-    /// flag such as `--youngs-gpa`) is the shorthand for both bodies. `None` when nothing is
-    /// left.
-    fn without(&self, shared: &MaterialFile) -> Option<MaterialFile> {
-        let f = MaterialFile {
-            youngs_gpa: self.youngs_gpa.filter(|_| shared.youngs_gpa.is_none()),
-            poisson: self.poisson.filter(|_| shared.poisson.is_none()),
-            density_g_cm3: self
-                .density_g_cm3
-                .filter(|_| shared.density_g_cm3.is_none()),
-        };
-        (f != MaterialFile::default()).then_some(f)
-    }
-}
-
 /// Coating overrides (user units).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -448,19 +398,11 @@ impl SceneFile {
         take!(material.youngs_gpa);
         take!(material.poisson);
         take!(material.density_g_cm3);
-        // a shared material value given in `other` is the shorthand for both bodies: it
-        // replaces the bodies' own values of that field; a body's own table in `other` wins
-        for (mine, theirs) in [
-            (&mut self.slider.material, &other.slider.material),
-            (&mut self.substrate.material, &other.substrate.material),
-        ] {
-            let kept = mine.as_ref().and_then(|m| m.without(&other.material));
-            *mine = match (kept, theirs) {
-                (Some(m), Some(t)) => Some(m.merged(t)),
-                (None, Some(t)) => Some(t.clone()),
-                (m, None) => m,
-            };
-        }
+        overlay_bodies(
+            [&mut self.slider.material, &mut self.substrate.material],
+            [&other.slider.material, &other.substrate.material],
+            &other.material,
+        );
         take!(coating.p_crit_gpa);
         take!(coating.mu1);
         take!(coating.mu2);
@@ -508,22 +450,12 @@ impl SceneFile {
         if let Some(v) = self.substrate.seed {
             s.substrate.seed = v;
         }
-        s.material = self.material.apply(s.material);
-        s.material.validate()?;
-        let body =
-            |f: &Option<MaterialFile>, table: &str| -> Result<Option<Material>, SceneError> {
-                f.as_ref()
-                    .map(|f| {
-                        let m = f.apply(s.material);
-                        m.validate_in(table).map(|_| m)
-                    })
-                    .transpose()
-            };
-        let bodies = BodyMaterials {
-            slider: body(&self.slider.material, "slider.material")?,
-            substrate: body(&self.substrate.material, "substrate.material")?,
-        };
-        (s.material, s.body_materials) = bodies.normalized(s.material);
+        (s.material, s.body_materials) = materials(
+            s.material,
+            &self.material,
+            &self.slider.material,
+            &self.substrate.material,
+        )?;
         if let Some(v) = self.coating.p_crit_gpa {
             s.coating.p_crit = gpa_to_pa(v);
         }

@@ -4,6 +4,7 @@
 mod file;
 mod lattice;
 mod material;
+mod material_file;
 mod mount;
 mod pattern;
 #[allow(clippy::module_inception)]

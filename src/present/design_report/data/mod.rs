@@ -277,6 +277,10 @@ impl ReportData {
                 Some(slide_command(pr, d, e.run.study_protocol, p))
             })
             .collect();
+        let top = super::top::top_rows(o, p, &dem);
+        let recipes = pats
+            .as_ref()
+            .and_then(|rows| super::recipes::section(rows, o, &top));
         ReportData {
             patterns: o
                 .patterns
@@ -286,7 +290,7 @@ impl ReportData {
                 .join(", "),
             loads_mn: loads_text(p),
             mu_superlubric: format!("{}", p.mu_superlubric),
-            top: super::top::top_rows(o, p, &dem),
+            top,
             answers: o
                 .patterns
                 .iter()
@@ -321,7 +325,7 @@ impl ReportData {
             fairness: pats
                 .as_ref()
                 .map_or(String::new(), |rows| super::patterns::fairness(o, rows)),
-            recipes: pats.as_ref().and_then(|rows| super::recipes::section(rows)),
+            recipes,
             compared: pats
                 .as_ref()
                 .map_or(Vec::new(), |rows| rows.iter().map(Into::into).collect()),

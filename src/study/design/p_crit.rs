@@ -1,0 +1,149 @@
+//! How the best recipe's robust limit moves with the coating's strength P_crit (the study calls
+//! its 4 GPa "somewhat arbitrary"): its answer's design re-evaluated over its tolerance box at
+//! P_crit = 3.6, 4.0 and 4.4 GPa ([`P_CRIT_SWEEP_GPA`]).
+//!
+//! A new search per value, not a re-reading of the design's rows: above P_crit a contact's
+//! coating fails and its friction switches from μ1 to μ2, so μ_est itself depends on P_crit,
+//! and the design's robust search stopped at its first failing sample, so the loads above its
+//! limit (which a stronger coating may hold) were never estimated there. The value equal to the
+//! scene's own P_crit reuses the design's score. Stored under `stages/<pattern>/p_crit.json`.
+//! Cost: one robust search per other value (about as much as the design's own search of that
+//! design: seconds to tens of seconds on the study scenes, docs/validation/tolerance-cost.md).
+
+use super::rank::Candidate;
+use super::stages::{limit_record, seed_solvers};
+use super::store::Store;
+use super::{tolerance_box, DesignParams, DesignScene};
+use crate::runs::meta::{scene_file, Inputs};
+use crate::study::load::Load;
+use crate::study::rows::label;
+use crate::study::tolerance::{placement_intact, rows_upto, superlubric_count, LimitParams};
+use crate::study::tolerance::{RobustSearch, ToleranceBox};
+use crate::study::verdict::Verdict;
+use anyhow::Result;
+use serde::{Deserialize, Serialize};
+use serde_json::json;
+use surrogate::units::{deg_to_rad, gpa_to_pa, n_to_mn, pa_to_gpa};
+
+/// The coating strengths (GPa) of the sweep: the study's 4 GPa and ±10 %.
+pub const P_CRIT_SWEEP_GPA: [f64; 3] = [3.6, 4.0, 4.4];
+
+/// The robust limit of one design at one P_crit.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PCritLimit {
+    /// The coating's strength (Pa).
+    pub p_crit: f64,
+    /// The robust limit (mN; 0: superlubric at no load of the list).
+    pub superlubric_to_mn: f64,
+    /// The worst verdict up to it (the band is relative to this P_crit).
+    pub verdict: Verdict,
+    /// The design's own score (the scene's P_crit), not a new search.
+    pub own: bool,
+}
+
+/// The sweep of one design: which, and its limit at each P_crit.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PCritSweep {
+    /// The pattern (recipe) name.
+    pub pattern: String,
+    /// θ of the design (degrees).
+    pub theta_deg: f64,
+    /// Its pull direction from the substrate x axis (degrees).
+    pub direction_deg: f64,
+    /// Its limit at each value of [`P_CRIT_SWEEP_GPA`], in that order.
+    pub limits: Vec<PCritLimit>,
+}
+
+/// The robust limit (load count) and verdict of the design (θ, direction) on `ds`'s scene at
+/// its own P_crit, over the box `bx` and every seed of `p`.
+fn robust_limit(
+    ds: &DesignScene,
+    theta_deg: f64,
+    direction_deg: f64,
+    guess: usize,
+    bx: &ToleranceBox,
+    p: &DesignParams,
+    limit: &LimitParams,
+) -> Result<(usize, Verdict)> {
+    let solvers = seed_solvers(ds, p, None)?;
+    let cap = placement_intact(&solvers[0], deg_to_rad(theta_deg), &p.loads);
+    let (rows, _) = rows_upto(&solvers[0], theta_deg, direction_deg, cap, guess, limit)?;
+    let p_crit = ds.scene.coating.p_crit;
+    if bx.is_point() {
+        let n = superlubric_count(&rows, p_crit, p.mu_superlubric);
+        let v = Verdict::worst(rows.iter().take(n), p.mu_superlubric, p_crit);
+        return Ok((n, if n == 0 { Verdict::Not } else { v }));
+    }
+    let mut s = RobustSearch::new(&solvers, theta_deg, direction_deg, &rows, bx, limit);
+    s.run_above(0)?;
+    let r = s.result();
+    Ok((r.superlubric_to, r.verdict))
+}
+
+/// The sweep of the design `c` of `ds` (see the module docs); stored in `store` and reused.
+pub fn p_crit_sweep(
+    ds: &DesignScene,
+    c: &Candidate,
+    p: &DesignParams,
+    store: &Store,
+) -> Result<PCritSweep> {
+    let bx = tolerance_box(p);
+    let inputs = Inputs {
+        workflow: "design/p-crit".into(),
+        scene: Some(scene_file(&ds.scene.with_theta(deg_to_rad(c.theta_deg)))),
+        params: json!({
+            "theta_deg": c.theta_deg,
+            "direction_deg": c.direction_deg,
+            "p_crit_GPa": P_CRIT_SWEEP_GPA,
+            "theta_tol_deg": p.theta_tol_deg,
+            "direction_tol_deg": p.direction_tol_deg,
+            "theta_tol_step_deg": p.theta_tol_step_deg,
+            "direction_tol_step_deg": p.direction_tol_step_deg,
+            "seeds": p.seeds,
+            "limit": limit_record(p),
+        }),
+    };
+    let rel = format!("stages/{}/p_crit.json", ds.name);
+    if let Some(s) = store.load_json::<PCritSweep>(&rel, &inputs)? {
+        return Ok(s);
+    }
+    let limit = LimitParams {
+        loads: p.loads.clone(),
+        mu_superlubric: p.mu_superlubric,
+        line: p.line,
+        friction: p.friction,
+    };
+    let guess = Load::position(&p.loads, c.score.superlubric_to_mn).map_or(0, |k| k + 1);
+    let mut limits = Vec::new();
+    for gpa in P_CRIT_SWEEP_GPA {
+        let p_crit = gpa_to_pa(gpa);
+        let own = (pa_to_gpa(ds.scene.coating.p_crit) - gpa).abs() < 1e-9;
+        let (to_mn, verdict) = if own {
+            (c.score.superlubric_to_mn, c.score.verdict)
+        } else {
+            let mut d = ds.clone();
+            d.scene.coating.p_crit = p_crit;
+            let (n, v) = robust_limit(&d, c.theta_deg, c.direction_deg, guess, &bx, p, &limit)?;
+            let mn = if n == 0 {
+                0.0
+            } else {
+                label(n_to_mn(p.loads[n - 1]))
+            };
+            (mn, v)
+        };
+        limits.push(PCritLimit {
+            p_crit,
+            superlubric_to_mn: to_mn,
+            verdict,
+            own,
+        });
+    }
+    let s = PCritSweep {
+        pattern: ds.name.clone(),
+        theta_deg: c.theta_deg,
+        direction_deg: c.direction_deg,
+        limits,
+    };
+    store.save_json(&rel, &inputs, &s)?;
+    Ok(s)
+}
