@@ -309,6 +309,29 @@ fn bad_input_names_the_flag() {
         "{err}"
     );
     assert!(!out.exists(), "nothing may be written");
+    // a slider that fits at its placement but leaves the substrate along a 12 µm path
+    let e = bin()
+        .args([
+            "design",
+            "--slider-radius-um",
+            "15",
+            "--substrate-um",
+            "40x40",
+            "--theta",
+            "0:30:1",
+            "--out",
+            o,
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&e.stderr);
+    assert!(
+        !e.status.success()
+            && err.contains("friction.length_um")
+            && err.contains("pattern `square-tri`"),
+        "{err}"
+    );
+    assert!(!out.exists(), "nothing may be written before the paths are checked");
     std::fs::remove_dir_all(&d).ok();
 }
 

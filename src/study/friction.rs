@@ -151,6 +151,29 @@ pub fn check(scene: &Scene, p: &FrictionSweepParams) -> Result<()> {
     Ok(())
 }
 
+/// Checks that the slider stays over the substrate along the estimate's path in every direction
+/// (every 0.5° of the full circle, each at its own [`path_length`]): a superset of any α scan
+/// and tolerance box, for workflows that choose the directions as they go (`design`). Field
+/// `friction.length_um` named otherwise. No solve; O(720).
+pub fn check_every_direction(scene: &Scene, knobs: &FrictionParams) -> Result<()> {
+    knobs.validate()?;
+    for k in 0..720 {
+        let d = surrogate::units::deg_to_rad(0.5 * k as f64);
+        let e = [d.cos(), d.sin()];
+        let l = path_length(scene, e, knobs);
+        let end = [l * e[0], l * e[1]];
+        check_slider_stays_on_substrate(
+            scene,
+            [
+                [end[0].min(0.0), end[1].min(0.0)],
+                [end[0].max(0.0), end[1].max(0.0)],
+            ],
+            "friction.length_um",
+        )?;
+    }
+    Ok(())
+}
+
 /// Runs the items `items` (a sub-range of `0..p.items()`: a shard, or what a resumed run has
 /// left) of the friction sweep of `scene`, pushing `p.loads.len()` [`FrictionRow`]s per item in
 /// order. Errors: bad knobs, a path off the substrate, a failing sink, or (when every row of

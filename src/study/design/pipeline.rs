@@ -70,6 +70,11 @@ impl<'a> Pipeline<'a> {
     /// confirmation and the report data.
     pub fn run(&self, scenes: &[DesignScene], on_pattern: PatternHook) -> Result<DesignOutcome> {
         let p = self.p;
+        // every pattern's paths fit on its substrate, checked before any work
+        for ds in scenes {
+            crate::study::friction::check_every_direction(&ds.scene, &p.friction)
+                .map_err(|e| anyhow::anyhow!("pattern `{}`: {e:#}", ds.name))?;
+        }
         if self.store.claim(&inputs(scenes, p, false))? {
             self.obs.event(&Event::Reusing {
                 dir: self.store.dir(),
