@@ -4,27 +4,11 @@
 //! to an uninterrupted one, and bad input refused naming the flag. Small scenes (a 15 µm slider).
 
 mod common;
-use common::{assert_ok, bin, fails_naming, tmpdir};
+use common::{assert_ok, bin, fails_naming, run_small, tmpdir, SMALL_SCENE};
 use std::path::Path;
 
-const SMALL: [&str; 6] = [
-    "--pattern",
-    "square-tri",
-    "--slider-radius-um",
-    "15",
-    "--substrate-um",
-    "60x60",
-];
-
 fn friction(extra: &[&str], out: &Path) -> std::process::Output {
-    bin()
-        .arg("friction")
-        .args(SMALL)
-        .args(extra)
-        .arg("--out")
-        .arg(out)
-        .output()
-        .unwrap()
+    run_small("friction", &[extra], out)
 }
 
 /// The cell of row `i` (0 = first data row) in column `name` of the CSV at `path`.
@@ -181,7 +165,7 @@ fn shards_merge_byte_identically_and_resume_equals_whole() {
     let resumed = d.join("resumed.csv");
     let o = bin()
         .arg("friction")
-        .args(SMALL)
+        .args(SMALL_SCENE)
         .args(args)
         .arg("--out")
         .arg(&resumed)
@@ -206,7 +190,7 @@ fn bad_input_names_the_flag() {
     let out = out.to_str().unwrap();
     let base = |extra: &[&'static str]| -> Vec<String> {
         let mut v: Vec<String> = vec!["friction".into()];
-        v.extend(SMALL.iter().map(|s| s.to_string()));
+        v.extend(SMALL_SCENE.iter().map(|s| s.to_string()));
         v.extend(extra.iter().map(|s| s.to_string()));
         v.extend(["--out".to_string(), out.to_string()]);
         v

@@ -4,17 +4,11 @@
 //! counted with `--skip-invalid`.
 
 mod common;
-use common::{assert_ok, bin, fails_naming, tmpdir};
+use common::{assert_ok, bin, fails_naming, run_small, tmpdir, SMALL_SCENE};
 use std::path::Path;
 
-/// A 15 µm slider on a 60 µm substrate, a few θ and loads (fast).
-const SMALL: [&str; 12] = [
-    "--pattern",
-    "square-tri",
-    "--slider-radius-um",
-    "15",
-    "--substrate-um",
-    "60x60",
+/// On the small scene (a 15 µm slider on a 60 µm substrate): a few θ and loads (fast).
+const SMALL: [&str; 6] = [
     "--theta",
     "0:15:3",
     "--load-mn",
@@ -24,15 +18,11 @@ const SMALL: [&str; 12] = [
 ];
 
 fn design(extra: &[&str], out: &Path) -> std::process::Output {
-    bin()
-        .arg("design")
-        .args(SMALL)
-        .args(["--direction-tol-deg", "0", "--no-dem"])
-        .args(extra)
-        .arg("--out")
-        .arg(out)
-        .output()
-        .unwrap()
+    run_small(
+        "design",
+        &[&SMALL, &["--direction-tol-deg", "0", "--no-dem"], extra],
+        out,
+    )
 }
 
 /// The rows of a CSV without the column `drop` (the pattern's name).
@@ -79,7 +69,8 @@ fn a_varied_field_gives_the_rows_of_the_scene_file_written_with_it() {
     let out = d.join("file");
     let o2 = bin()
         .arg("design")
-        .args(&SMALL[2..])
+        .args(&SMALL_SCENE[2..])
+        .args(SMALL)
         .args([
             "--scene",
             f,

@@ -6,17 +6,12 @@
 //! P_crit = 3.6, 4 and 4.4 GPa, monotone in P_crit. A small scene and a very short DEM protocol (fast).
 
 mod common;
-use common::{assert_ok, bin, tmpdir};
+use common::{assert_ok, run_small, tmpdir};
 use std::path::Path;
 
-/// A 15 µm slider on a 60 µm substrate, a few θ and loads, a 3 × 3 tolerance box.
-const SMALL: [&str; 20] = [
-    "--pattern",
-    "square-tri",
-    "--slider-radius-um",
-    "15",
-    "--substrate-um",
-    "60x60",
+/// On the small scene (a 15 µm slider on a 60 µm substrate): a few θ and loads, a 3 × 3
+/// tolerance box.
+const SMALL: [&str; 14] = [
     "--theta",
     "0:15:3",
     "--load-mn",
@@ -52,14 +47,7 @@ const DEM: [&str; 14] = [
 ];
 
 fn design(extra: &[&str], out: &Path) -> std::process::Output {
-    bin()
-        .arg("design")
-        .args(SMALL)
-        .args(extra)
-        .arg("--out")
-        .arg(out)
-        .output()
-        .unwrap()
+    run_small("design", &[&SMALL, extra], out)
 }
 
 const SOFT: &str = "square-tri+slider.material.youngs_GPa=50";

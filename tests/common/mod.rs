@@ -1,12 +1,28 @@
 //! Helpers shared by the command-line integration tests.
 #![allow(dead_code)] // each test binary uses a subset
 
-use std::path::PathBuf;
+mod small_scene;
+
+pub use small_scene::SMALL_SCENE;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 /// The `superlube` binary under test.
 pub fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_superlube"))
+}
+
+/// Runs `superlube <command>` on the small scene: [`SMALL_SCENE`], then each of `flags` in
+/// order, then `--out out`.
+pub fn run_small(command: &str, flags: &[&[&str]], out: &Path) -> Output {
+    bin()
+        .arg(command)
+        .args(SMALL_SCENE)
+        .args(flags.concat())
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
 }
 
 /// A fresh scratch directory for one test (per process, so parallel test binaries do not clash).

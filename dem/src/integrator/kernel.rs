@@ -1,8 +1,8 @@
 //! The leaf of the engine: the small kernels every pass uses (kicks, the NaN-propagating max,
 //! the pulling spring's stretch) and the active set's derived [`Index`]. It imports no sibling
 //! that knows [`super::Sim`], so the files that add `impl Sim` blocks (`sim.rs`, `build.rs`,
-//! `step.rs`, `forces.rs`, `active.rs`, `observe.rs`) and the mount (`mount.rs`) share these
-//! without importing each other.
+//! `step.rs`, `forces.rs`, `active.rs`, `active_select.rs`, `active_index.rs`, `observe.rs`)
+//! and the mount (`mount.rs`) share these without importing each other.
 
 use super::chunks::Chunking;
 use crate::params::SimParams;

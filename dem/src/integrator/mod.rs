@@ -1,7 +1,8 @@
 //! The velocity-Verlet engine ([`Sim`]): its state (`sim.rs`), its construction (`build.rs`),
 //! the step pipeline (`step.rs`), the slider body and the control layer's generalized
 //! coordinates (`body.rs`), the force passes (`forces.rs`), the implicit mount step of the full
-//! model (`mount.rs`), the active set (`active.rs`), observables and checks (`observe.rs`), the
+//! model (`mount.rs`), the active set (`active.rs`, its selection `active_select.rs` and its
+//! dense packing and index `active_index.rs`), observables and checks (`observe.rs`), the
 //! kernels and index the passes share (`kernel.rs`), the work chunking (`chunks.rs`) and the
 //! team of threads that runs the passes (`team.rs`).
 //!
@@ -10,6 +11,8 @@
 //! blocks and import `sim.rs` and the leaves (`step.rs` also `forces.rs`).
 
 pub(crate) mod active;
+mod active_index;
+mod active_select;
 pub(crate) mod body;
 mod build;
 pub(crate) mod chunks;

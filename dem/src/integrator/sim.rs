@@ -3,7 +3,8 @@
 //!
 //! The engine's other files add to it: `build.rs` creates it ([`Sim::new`]), `step.rs` runs the
 //! velocity-Verlet step, `forces.rs` the force passes, `mount.rs` the implicit mount, `active.rs`
-//! the active set and `observe.rs` the observables; the kernels they share are in `kernel.rs`.
+//! (with `active_select.rs` and `active_index.rs`) the active set and `observe.rs` the
+//! observables; the kernels they share are in `kernel.rs`.
 
 use super::body::Body;
 use super::chunks::Tuner;

@@ -2,6 +2,7 @@
 //! runs are made and in which order, how the tolerance corners enter the DEM's check, and the
 //! headline of a borderline answer.
 
+use super::test_args::{design_args, SMALL_SCENE};
 use super::*;
 use crate::present::design_report::{dem_rows, words::answer_line};
 use crate::study::design::answer::{answer, check, Check};
@@ -10,26 +11,12 @@ use crate::study::design::rank::{Candidate, CornerEstimate, Score};
 use crate::study::design::{DemEntry, DesignParams, DesignScene, PatternResult};
 use crate::study::rows::{label, FrictionRow};
 use crate::study::verdict::Verdict;
-use clap::Parser;
 use surrogate::units::n_to_mn;
-
-#[derive(Parser)]
-struct Cli {
-    #[command(flatten)]
-    a: Args,
-}
 
 /// The scenes and parameters of a small square-tri design with the DEM (`extra` appended).
 fn params(extra: &[&str]) -> (Vec<DesignScene>, DesignParams) {
     let dir = std::env::temp_dir().join(format!("superlube-answer-{}", std::process::id()));
-    let mut v: Vec<String> = [
-        "design",
-        "--pattern",
-        "square-tri",
-        "--slider-radius-um",
-        "15",
-        "--substrate-um",
-        "60x60",
+    let flags = [
         "--load-mn",
         "0.01,0.03,0.06,0.09",
         "--confirm-loads-mn",
@@ -40,14 +27,8 @@ fn params(extra: &[&str]) -> (Vec<DesignScene>, DesignParams) {
         "0.1",
         "--direction-tol-deg",
         "0.5",
-    ]
-    .iter()
-    .map(|s| s.to_string())
-    .collect();
-    v.extend(extra.iter().map(|s| s.to_string()));
-    v.push("--out-dir".into());
-    v.push(dir.display().to_string());
-    prepare(&Cli::try_parse_from(v).unwrap().a).unwrap()
+    ];
+    prepare(&design_args(&[&SMALL_SCENE, &flags, extra], &dir)).unwrap()
 }
 
 /// A friction row at `w_mn` with μ_est `mu` and path P_max 3 GPa.

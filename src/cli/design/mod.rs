@@ -312,3 +312,6 @@ mod tests;
 
 #[cfg(test)]
 mod answer_tests;
+
+#[cfg(test)]
+mod test_args;

@@ -2,24 +2,17 @@
 //! complete pattern as it finishes, the rest from the trimmed outcome; every output must be the
 //! one the untrimmed outcome gives when written at once.
 
+use super::test_args::design_args;
 use super::*;
 use crate::present::design_report::{self, Writer};
 use crate::runs::progress::Silent;
 use crate::study::design::{inputs, PatternResult};
-use clap::Parser;
 use std::cell::RefCell;
 use std::path::Path;
 
-#[derive(Parser)]
-struct Cli {
-    #[command(flatten)]
-    a: Args,
-}
-
 /// A small two-pattern design without the DEM into `out` (`extra` flags appended).
 fn args(out: &Path, extra: &[&str]) -> Args {
-    let mut v: Vec<String> = [
-        "design",
+    let flags = [
         "--pattern",
         "square-tri,tri-tri",
         "--no-dem",
@@ -31,14 +24,8 @@ fn args(out: &Path, extra: &[&str]) -> Args {
         "60x60",
         "--load-mn",
         "0.01,0.03,0.06",
-    ]
-    .iter()
-    .map(|s| s.to_string())
-    .collect();
-    v.extend(extra.iter().map(|s| s.to_string()));
-    v.push("--out-dir".into());
-    v.push(out.display().to_string());
-    Cli::try_parse_from(v).unwrap().a
+    ];
+    design_args(&[&flags, extra], out)
 }
 
 /// The files under `dir` (relative paths, sorted), sidecars and stage files left out: the

@@ -1,11 +1,15 @@
 //! The scene: slider pattern over substrate pattern, material and coating. Shared by the
 //! screening tier ([`crate::solver`]) and the dynamic tier (crate `dem`).
 
+mod body_file;
+mod coating_file;
 mod file;
 mod lattice;
+mod lattice_file;
 mod material;
 mod material_file;
 mod mount;
+mod outline_file;
 mod pattern;
 #[allow(clippy::module_inception)]
 mod scene;
@@ -13,13 +17,16 @@ mod sites;
 mod sizes;
 pub mod symmetry;
 mod to_file;
+mod validate;
 
-pub use file::{
-    CoatingFile, LatticeFile, MaterialFile, OutlineFile, SceneFile, SliderFile, SubstrateFile,
-};
+pub use body_file::{SliderFile, SubstrateFile};
+pub use coating_file::CoatingFile;
+pub use file::{MaterialFile, SceneFile};
 pub use lattice::Lattice;
+pub use lattice_file::LatticeFile;
 pub use material::{BodyMaterials, Coating, Material};
 pub use mount::{rotate_tilt_stiffness, Mount, STUDY_K1};
+pub use outline_file::OutlineFile;
 pub use pattern::{
     check_basis, closest_sites, min_site_distance, overlaps, rebased, sites_in_outline,
     ClosestSites, Geometry, Outline, TOUCH_TOL,

@@ -22,6 +22,8 @@ mod params;
 mod path_pairs;
 mod rigid_tilt;
 mod rigid_z;
+mod search;
+mod solve;
 #[allow(clippy::module_inception)]
 mod solver;
 mod z_root;
@@ -31,5 +33,5 @@ pub use equilibrium::{ContactInfo, Equilibrium};
 pub use model::Model;
 pub use pair_set::PairSet;
 pub use params::SolverParams;
-pub(crate) use solver::Warm;
+pub(crate) use solve::Warm;
 pub use solver::{Pose, SearchKind, Solver};
