@@ -331,7 +331,10 @@ fn bad_input_names_the_flag() {
             && err.contains("pattern `square-tri`"),
         "{err}"
     );
-    assert!(!out.exists(), "nothing may be written before the paths are checked");
+    assert!(
+        !out.exists(),
+        "nothing may be written before the paths are checked"
+    );
     std::fs::remove_dir_all(&d).ok();
 }
 

@@ -361,7 +361,9 @@ mod tests {
     fn key_sort_is_the_stable_descending_sort() {
         let mut seed = 12345u64;
         let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             seed >> 33
         };
         for n in [0usize, 1, 2, 7, 300, 1500] {
