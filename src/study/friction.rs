@@ -134,18 +134,7 @@ pub fn check(scene: &Scene, p: &FrictionSweepParams) -> Result<()> {
     for &theta in &p.thetas {
         let line = line_at(scene, theta, p.line).angle;
         for &alpha in &p.alphas {
-            let d = line + alpha;
-            let e = [d.cos(), d.sin()];
-            let l = path_length(scene, e, &p.knobs);
-            let end = [l * e[0], l * e[1]];
-            check_slider_stays_on_substrate(
-                scene,
-                [
-                    [end[0].min(0.0), end[1].min(0.0)],
-                    [end[0].max(0.0), end[1].max(0.0)],
-                ],
-                "friction.length_um",
-            )?;
+            check_path(scene, line + alpha, &p.knobs)?;
         }
     }
     Ok(())
@@ -158,19 +147,25 @@ pub fn check(scene: &Scene, p: &FrictionSweepParams) -> Result<()> {
 pub fn check_every_direction(scene: &Scene, knobs: &FrictionParams) -> Result<()> {
     knobs.validate()?;
     for k in 0..720 {
-        let d = surrogate::units::deg_to_rad(0.5 * k as f64);
-        let e = [d.cos(), d.sin()];
-        let l = path_length(scene, e, knobs);
-        let end = [l * e[0], l * e[1]];
-        check_slider_stays_on_substrate(
-            scene,
-            [
-                [end[0].min(0.0), end[1].min(0.0)],
-                [end[0].max(0.0), end[1].max(0.0)],
-            ],
-            "friction.length_um",
-        )?;
+        check_path(scene, surrogate::units::deg_to_rad(0.5 * k as f64), knobs)?;
     }
+    Ok(())
+}
+
+/// Whether the slider stays over the substrate along the estimate's path in direction `d`
+/// (rad from the substrate x axis), of its [`path_length`]; field `friction.length_um`.
+fn check_path(scene: &Scene, d: f64, knobs: &FrictionParams) -> Result<()> {
+    let e = [d.cos(), d.sin()];
+    let l = path_length(scene, e, knobs);
+    let end = [l * e[0], l * e[1]];
+    check_slider_stays_on_substrate(
+        scene,
+        [
+            [end[0].min(0.0), end[1].min(0.0)],
+            [end[0].max(0.0), end[1].max(0.0)],
+        ],
+        "friction.length_um",
+    )?;
     Ok(())
 }
 

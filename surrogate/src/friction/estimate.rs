@@ -8,7 +8,7 @@ use super::transverse::{leaves_crest, lowest};
 use super::FrictionParams;
 use crate::error::SceneError;
 use crate::map::check_slider_stays_on_substrate;
-use crate::solver::Solver;
+use crate::solver::{check_load, Solver};
 use serde::{Deserialize, Serialize};
 
 /// The surrogate friction estimate of one (scene, θ, pulling direction, W) (SI). See the module
@@ -115,18 +115,6 @@ pub fn estimate_friction(
     check_load(load)?;
     let mut one = estimate_friction_loads(solver, theta, direction, &[load], params)?;
     one.pop().expect("one result per load")
-}
-
-fn check_load(load: f64) -> Result<(), SceneError> {
-    if load.is_finite() && load > 0.0 {
-        Ok(())
-    } else {
-        Err(SceneError::invalid(
-            "load_mN",
-            load * 1e3,
-            "must be a positive number",
-        ))
-    }
 }
 
 /// [`estimate_friction`] at several loads `loads` (N) of one (θ, direction): one path, whose

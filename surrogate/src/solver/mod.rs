@@ -33,5 +33,5 @@ pub use equilibrium::{ContactInfo, Equilibrium};
 pub use model::Model;
 pub use pair_set::PairSet;
 pub use params::SolverParams;
-pub(crate) use solve::Warm;
+pub(crate) use solve::{check_load, Warm};
 pub use solver::{Pose, SearchKind, Solver};

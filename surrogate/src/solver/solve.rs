@@ -221,7 +221,8 @@ fn solve_one_of_many<L: Law>(
     }
 }
 
-fn check_load(load: f64) -> Result<(), SceneError> {
+/// Refuses a load (N) that is not a positive finite number, naming `load_mN`.
+pub(crate) fn check_load(load: f64) -> Result<(), SceneError> {
     if load.is_finite() && load > 0.0 {
         Ok(())
     } else {
