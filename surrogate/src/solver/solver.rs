@@ -7,6 +7,7 @@ use crate::contact::{BvhSearch, CandidateSearch, GridSearch, Hertz};
 use crate::error::SceneError;
 use crate::scene::{rotate_tilt_stiffness, Scene};
 use crate::solver::ContactInfo;
+use std::sync::OnceLock;
 
 /// Lateral pose of the slider: rotation θ (rad) and in-plane shift (m) of its centre from the
 /// scene's offset.
@@ -29,14 +30,18 @@ pub enum SearchKind {
     Bvh,
 }
 
-/// A scene prepared for repeated solves: substrate spheres indexed once (grid and parry3d BVH),
-/// slider sites generated once, Hertz law cached. `Sync`: share one `Solver` across rayon threads.
+/// A scene prepared for repeated solves: substrate spheres indexed once in a grid (and in a
+/// parry3d BVH on the first [`SearchKind::Bvh`] search), slider sites generated once, Hertz law
+/// cached. `Sync`: share one `Solver` across rayon threads.
 pub struct Solver {
     pub(super) scene: Scene,
     hertz: Hertz,
     pub(super) substrate: Vec<[f64; 3]>,
     pub(super) grid: GridSearch,
-    bvh: BvhSearch,
+    /// The parry3d BVH over the substrate spheres, built on first use by
+    /// [`Solver::candidate_search`] with [`SearchKind::Bvh`] (O(N log N) once; the grid path
+    /// never pays for it).
+    bvh: OnceLock<BvhSearch>,
     pub(super) local: Vec<[f64; 2]>,
     /// Per-sphere radii when the scene has per-site sizes (`None`: one size per body, the fast
     /// path: one Hertz law and one contact distance for every pair).
@@ -55,8 +60,9 @@ pub struct Solver {
 }
 
 impl Solver {
-    /// Validates `scene`, indexes its substrate spheres (grid O(N), BVH O(N log N)) and
-    /// generates the slider's sites (and, with per-site sizes, every sphere's radius).
+    /// Validates `scene`, indexes its substrate spheres in a grid (O(N); the BVH is built only
+    /// when first searched, see [`Solver::candidate_search`]) and generates the slider's sites
+    /// (and, with per-site sizes, every sphere's radius).
     pub fn new(scene: &Scene) -> Result<Solver, SceneError> {
         scene.validate()?;
         let spheres = scene.substrate_spheres();
@@ -82,7 +88,7 @@ impl Solver {
             scene: scene.clone(),
             hertz: scene.hertz(),
             grid: GridSearch::new(&spheres, reach),
-            bvh: BvhSearch::new(&spheres, 0.5 * reach),
+            bvh: OnceLock::new(),
             substrate: spheres,
             local,
             params: SolverParams::default(),
@@ -105,11 +111,15 @@ impl Solver {
         self.local.len()
     }
 
-    /// The candidate search selected by [`Solver::search`].
+    /// The candidate search selected by [`Solver::search`]. O(1), except the first call with
+    /// [`SearchKind::Bvh`], which builds the BVH over the substrate spheres (leaf radius half
+    /// the reach; O(N log N), thread-safe: one build however many threads ask).
     pub fn candidate_search(&self) -> &dyn CandidateSearch {
         match self.search {
             SearchKind::Grid => &self.grid,
-            SearchKind::Bvh => &self.bvh,
+            SearchKind::Bvh => self
+                .bvh
+                .get_or_init(|| BvhSearch::new(&self.substrate, 0.5 * self.reach)),
         }
     }
 
@@ -238,10 +248,12 @@ mod tests {
     use super::*;
 
     fn assert_sync<T: Sync>() {}
+    fn assert_send<T: Send>() {}
 
     #[test]
     fn solver_is_sync() {
         assert_sync::<Solver>();
+        assert_send::<Solver>();
     }
 
     #[test]
