@@ -54,7 +54,14 @@ fn assert_same(a: &Equilibrium, b: &Equilibrium, rim: f64, what: &str) {
             .collect()
     };
     assert_eq!(firm(a), firm(b), "{what}: contacts");
-    assert_eq!(a.model, b.model, "{what}: model");
+    // a continued path stays on the tilt model once a sample escalated; where a fresh solve
+    // finds the untilted state balanced, the tilt model's answer is that state (checked above)
+    assert!(
+        a.model == b.model || (a.model == Model::RigidTilt && b.model == Model::RigidZ),
+        "{what}: model {:?} vs {:?}",
+        a.model,
+        b.model
+    );
     for e in [a, b] {
         assert!(
             e.residual_rel() <= 2e-12,

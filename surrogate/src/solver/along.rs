@@ -63,8 +63,11 @@ impl Solver {
     }
 
     /// [`Solver::solve_along`] for several loads (N) at once. Each sample continues from the
-    /// previous one: its z root and tilt start from the previous equilibrium of the same load,
-    /// so each equilibrium equals [`Solver::solve_loads_pairs`] on a fresh search
+    /// previous one: its z root starts from the previous equilibrium of the same load, and once
+    /// a sample escalated to the tilt model ([`Model::Auto`]) the next ones solve the tilt model
+    /// directly, from the last two tilted states extrapolated (no rigid-z solve first; where the
+    /// untilted state balances, that model's answer is it). So each equilibrium equals
+    /// [`Solver::solve_loads_pairs`] on a fresh search
     /// ([`Solver::pairs_at`]) to the solver's tolerances (`force_rtol`, `moment_rtol`), and is
     /// bit-identical whatever the thread count and whichever other loads share the path.
     /// Returns, per load (in the order of `loads`), the mapped samples `f(s, load index, eq)` in

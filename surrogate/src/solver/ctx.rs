@@ -21,6 +21,11 @@ pub(crate) struct Watch {
     pub guess: Cell<f64>,
     /// The untilted z root last found (m, relative to z_ref; NaN: none).
     pub root: Cell<f64>,
+    /// Warm start of the tilt Newton (NaN: none): the previous sample's tilted state
+    /// `[ζ, L·t_x, L·t_y]` (m, ζ relative to z_ref) where that sample escalated to the tilt model.
+    pub tilt_guess: Cell<[f64; 3]>,
+    /// The tilted state last found, likewise (NaN: none, or the untilted state was the answer).
+    pub tilt_root: Cell<[f64; 3]>,
 }
 
 impl Watch {
@@ -31,6 +36,8 @@ impl Watch {
             lowest: Cell::new(f64::INFINITY),
             guess: Cell::new(f64::NAN),
             root: Cell::new(f64::NAN),
+            tilt_guess: Cell::new([f64::NAN; 3]),
+            tilt_root: Cell::new([f64::NAN; 3]),
         }
     }
 }

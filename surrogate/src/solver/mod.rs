@@ -3,7 +3,7 @@
 //! at which the vertical Hertz forces of all sphere contacts carry W.
 //!
 //! Models (see [`Model`]): rigid-z (1-D safeguarded Newton), rigid-tilt (3 unknowns,
-//! damped Newton with faer), compliant (3 + n unknowns, sparse Newton with faer's
+//! damped Newton, 3 × 3 Cholesky), compliant (3 + n unknowns, sparse Newton with faer's
 //! sparse Cholesky). The tilt models obey the scene's slider mount ([`crate::Mount`]): the
 //! moment balance is `M_c = K_t·t` with the mount's rotational stiffness K_t (zero for `free`);
 //! a `locked` mount has no tilt unknowns. [`Model::Auto`] solves rigid-z and escalates to

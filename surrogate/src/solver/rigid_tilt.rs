@@ -1,6 +1,6 @@
 //! Rigid slider with height and two tilts held by the scene's mount: damped Newton on the three
 //! balance equations (ΣF_z = W and the moment balance `M_c = K_t·t` about the disc centre, with
-//! `K_t` = 0 for a free mount), solved with faer.
+//! `K_t` = 0 for a free mount), solved by a 3 × 3 Cholesky factorisation.
 
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
@@ -13,8 +13,6 @@ use super::law::{body_pairs, BodyPair, Law};
 use super::z_root::ZRoot;
 use super::{Equilibrium, Model, PairSet};
 use crate::error::SceneError;
-use faer::linalg::solvers::Solve;
-use faer::{Col, Mat, Side};
 
 /// Potential `Π(q) = Σ Φ_j + W (z − z_ref) + ½ q₁₂ᵀ K_q q₁₂` (the last term the mount's
 /// `½ tᵀ K_t t`, `K_q = K_t/L²`), its gradient
@@ -59,6 +57,29 @@ fn eval<L: Law>(
     (pi, g, h)
 }
 
+/// The Newton step `x = −(H + μI)⁻¹ g` of the symmetric 3×3 `h` (lower triangle read) by
+/// Cholesky factorisation `H + μI = L Lᵀ`, `None` where a pivot is not positive (H + μI not
+/// positive definite, or not finite). O(1): 3 square roots, ≈ 30 flops, no allocation (a
+/// general dense factorisation cost more than its evaluation of a few hundred pairs:
+/// `docs/validation/path-solve.md`).
+fn cholesky_solve3(h: &[[f64; 3]; 3], mu: f64, g: &[f64; 3]) -> Option<[f64; 3]> {
+    let pivot = |a: f64| (a > 0.0 && a.is_finite()).then(|| a.sqrt());
+    let l00 = pivot(h[0][0] + mu)?;
+    let l10 = h[1][0] / l00;
+    let l20 = h[2][0] / l00;
+    let l11 = pivot(h[1][1] + mu - l10 * l10)?;
+    let l21 = (h[2][1] - l20 * l10) / l11;
+    let l22 = pivot(h[2][2] + mu - l20 * l20 - l21 * l21)?;
+    // L y = −g, then Lᵀ x = y
+    let y0 = -g[0] / l00;
+    let y1 = (-g[1] - l10 * y0) / l11;
+    let y2 = (-g[2] - l20 * y0 - l21 * y1) / l22;
+    let x2 = y2 / l22;
+    let x1 = (y1 - l21 * x2) / l11;
+    let x0 = (y0 - l10 * x1 - l20 * x2) / l00;
+    Some([x0, x1, x2])
+}
+
 /// Damped (Levenberg–Marquardt regularised, trust-capped, Armijo line-searched) Newton on the
 /// convex potential Π from `q0`. Returns the converged `q`, the iteration count and whether the
 /// force balance already holds to `force_rtol` (false only after a round-off stall).
@@ -98,16 +119,9 @@ pub(crate) fn tilt_newton<L: Law>(
         let dmax = h[0][0].max(h[1][1]).max(h[2][2]).max(f64::MIN_POSITIVE);
         let mut mu = 1e-10 * dmax;
         let step = loop {
-            let m = Mat::from_fn(3, 3, |a, b| h[a][b] + if a == b { mu } else { 0.0 });
-            match m.llt(Side::Lower) {
-                Ok(llt) => {
-                    let mut x = Col::from_fn(3, |a| -g[a]);
-                    llt.solve_in_place(&mut x);
-                    break [x[0], x[1], x[2]];
-                }
-                Err(_) => {
-                    mu = (mu * 100.0).max(1e-30);
-                }
+            match cholesky_solve3(&h, mu, &g) {
+                Some(x) => break x,
+                None => mu = (mu * 100.0).max(1e-30),
             }
         };
         let norm = (step[0] * step[0] + step[1] * step[1] + step[2] * step[2]).sqrt();
@@ -219,7 +233,7 @@ pub(crate) fn rigid_tilt_state<L: Law>(
     let zr = ZRoot::new(bp, [0.0, 0.0], ctx.two_r, ctx.hertz.k());
     let (z0, it0) = zr.solve(ctx, load)?;
     let near = NearSet::new(ctx, bp, z0, ctx.lever_bound(ps));
-    let (q, it1) = tilt_from(ctx, bp, &near, load, z0)?;
+    let (q, it1) = tilt_from(ctx, bp, &near, load, z0, None)?;
     Ok((q, it0 + it1))
 }
 
@@ -270,10 +284,11 @@ impl<L: Law> NearSet<L> {
     }
 }
 
-/// Tilt Newton from the rigid-z state ζ = `z0` (t = 0), then, only if Newton stalled before the
-/// force balance held, a 1-D z polish at the final tilt so ΣF_z = W holds to `force_rtol`.
-/// Returns `[ζ, L·t_x, L·t_y]` and the iterations. If the rigid-z state already balances the
-/// moments to `moment_rtol`·W·L this returns it unchanged after one evaluation.
+/// Tilt Newton from `warm` (a path's previous tilted state, extrapolated) or else the rigid-z
+/// state ζ = `z0` (t = 0), then, only if Newton stalled before the force balance held, a 1-D z
+/// polish at the final tilt so ΣF_z = W holds to `force_rtol`. Returns `[ζ, L·t_x, L·t_y]` and
+/// the iterations. If the start already balances the moments to `moment_rtol`·W·L this returns
+/// it unchanged after one evaluation.
 ///
 /// Newton first runs on the working set `near` (see [`NearSet`]); the answer is then verified on
 /// every pair: if a left-out pair touches at the final state, or if Newton on the set fails (a
@@ -286,11 +301,11 @@ pub(crate) fn tilt_from<L: Law>(
     near: &NearSet<L>,
     load: f64,
     z0: f64,
+    warm: Option<[f64; 3]>,
 ) -> Result<([f64; 3], usize), SceneError> {
     debug_assert!(ctx.tilts, "tilt model under a locked mount");
-    // from the rigid-z state: on a path, the previous sample's tilted state was measured to
-    // start worse (docs/validation/path-solve.md)
-    let start = [z0, 0.0, 0.0];
+    let cold = [z0, 0.0, 0.0];
+    let start = warm.unwrap_or(cold);
     let (q, it1, force_ok) = if near.complete {
         tilt_newton(ctx, bp, load, start, true)?
     } else {
@@ -300,7 +315,7 @@ pub(crate) fn tilt_from<L: Law>(
                 let (q2, it2, ok2) = tilt_newton(ctx, bp, load, q, true)?;
                 (q2, it + it2, ok2)
             }
-            Err(_) => tilt_newton(ctx, bp, load, start, true)?,
+            Err(_) => tilt_newton(ctx, bp, load, cold, true)?,
         }
     };
     if force_ok {

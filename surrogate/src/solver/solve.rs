@@ -160,6 +160,17 @@ fn solve_many_partial<L: Law>(
             watch.lowest.set(f64::INFINITY);
             watch.guess.set(warm.z0 - rz.zref);
             watch.root.set(f64::NAN);
+            // the previous tilted state, extrapolated linearly from the one before where known
+            // (the untilted root's estimate moved with it)
+            let (t, b) = (warm.tilt, warm.tilt_before);
+            let t = if b.iter().all(|v| v.is_finite()) {
+                watch.guess.set(watch.guess.get() + t[0] - b[0]);
+                [2.0 * t[0] - b[0], 2.0 * t[1] - b[1], 2.0 * t[2] - b[2]]
+            } else {
+                t
+            };
+            watch.tilt_guess.set([t[0] - rz.zref, t[1], t[2]]);
+            watch.tilt_root.set([f64::NAN; 3]);
             let eq = solve_one_of_many(ctx, ps, &rz, w, model);
             let ok = eq.is_ok() && watch.lowest.get() > floor_rel;
             *warm = if ok {
@@ -167,6 +178,11 @@ fn solve_many_partial<L: Law>(
                     z0: rz.zref + watch.root.get(),
                     depth: -watch.root.get(),
                     need: rz.zref + watch.lowest.get(),
+                    tilt: {
+                        let t = watch.tilt_root.get();
+                        [rz.zref + t[0], t[1], t[2]]
+                    },
+                    tilt_before: warm.tilt,
                 }
             } else {
                 Warm::default()
@@ -184,6 +200,11 @@ pub(crate) struct Warm {
     pub depth: f64,
     /// The lowest height (m, absolute) the solve relied on (NaN: none).
     pub need: f64,
+    /// The tilted state `[ζ, L·t_x, L·t_y]` (m, ζ absolute; NaN: none, or the sample did not
+    /// escalate): the next sample's start ([`super::ctx::Watch::tilt_guess`]).
+    pub tilt: [f64; 3],
+    /// The sample before's tilted state, likewise (the start extrapolates linearly from both).
+    pub tilt_before: [f64; 3],
 }
 
 impl Default for Warm {
@@ -192,6 +213,8 @@ impl Default for Warm {
             z0: f64::NAN,
             depth: f64::NAN,
             need: f64::NAN,
+            tilt: [f64::NAN; 3],
+            tilt_before: [f64::NAN; 3],
         }
     }
 }
@@ -213,7 +236,7 @@ fn solve_one_of_many<L: Law>(
                 _ => {
                     let (z0, it0) = rz.zr.solve(ctx, w)?;
                     let near = NearSet::new(ctx, &rz.bp, z0, ctx.lever_bound(ps));
-                    let (q, it1) = tilt_from(ctx, &rz.bp, &near, w, z0)?;
+                    let (q, it1) = tilt_from(ctx, &rz.bp, &near, w, z0, None)?;
                     Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
                 }
             }
