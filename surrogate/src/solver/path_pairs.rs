@@ -13,6 +13,8 @@
 //! ([`Solver::solve_loads_partial`]); where it did, that sample is solved on every pair and the
 //! floor is lowered, so every result is bit-identical to a solve on the full list.
 
+mod kept;
+
 use super::{PairSet, Pose, Solver};
 use crate::contact::CandidatePair;
 use crate::scene::place;
@@ -83,6 +85,8 @@ pub(crate) struct PathChunk<'a> {
     sin_cos: (f64, f64),
     origin: [f64; 2],
     e: [f64; 2],
+    /// The first and last sample (m of path).
+    span: [f64; 2],
     /// The middle of the chunk (m of path) and the half-span vector (m) its search sweeps.
     mid: f64,
     half: [f64; 2],
@@ -131,6 +135,7 @@ impl<'a> PathChunk<'a> {
             sin_cos: theta.sin_cos(),
             origin,
             e,
+            span: [a, b],
             mid: 0.5 * (a + b),
             half: [half * e[0], half * e[1]],
             searched: f64::INFINITY,
@@ -173,7 +178,17 @@ impl<'a> PathChunk<'a> {
     fn search(&mut self, floor: f64) {
         let solver = self.solver;
         let pose = self.pose(self.mid);
-        solver.pairs_swept_into(pose, self.half, floor, &mut self.wide);
+        self.searched = floor;
+        if let Some(covered) = kept::take(self, floor) {
+            // a kept search of a nearby direction: its pairs, this direction's positions
+            self.wide.centre = solver.fill_slider_xy(pose, &mut self.wide.slider_xy);
+            self.wide.theta = pose.theta;
+            self.searched = covered;
+        } else {
+            let extra = self.reach_out() * kept::SHARE_CHORD;
+            solver.pairs_swept_into(pose, self.half, floor, extra, &mut self.wide);
+            kept::keep(self, floor);
+        }
         let (mid, e) = (self.mid, self.e);
         let sub = solver.substrate();
         self.tracks.clear();
@@ -190,7 +205,13 @@ impl<'a> PathChunk<'a> {
                 d2: solver.pair_reach2(c.slider, c.substrate),
             }
         }));
-        self.searched = floor;
+    }
+
+    /// The farthest path coordinate |s| (m) of the chunk from the path's origin: a direction
+    /// turned by a chord c moves its poses by at most this times c.
+    fn reach_out(&self) -> f64 {
+        let h = self.half[0].hypot(self.half[1]);
+        self.mid.abs() + h
     }
 
     fn pose(&self, si: f64) -> Pose {
@@ -327,8 +348,64 @@ mod tests {
         (c.slider, c.substrate, c.r2.to_bits(), c.h.to_bits())
     }
 
+    /// Every sample's list of `pc` (pairs and their slider positions), lowering the floor by
+    /// `lower` (m) halfway.
+    fn lists(pc: &mut PathChunk, s: &[f64], lower: f64) -> Vec<(Vec<(u32, u32, u64, u64)>, u64)> {
+        let mut out = Vec::new();
+        for (k, &si) in s.iter().enumerate() {
+            if k == s.len() / 2 {
+                let f = pc.floor - lower;
+                pc.set_floor(f);
+            }
+            pc.refresh(si, si);
+            let ps = pc.partial_at(si);
+            let xy: u64 = ps
+                .pairs
+                .iter()
+                .map(|c| ps.slider_xy[c.slider as usize])
+                .fold(0, |h, p| {
+                    h.rotate_left(7) ^ p[0].to_bits() ^ p[1].to_bits().rotate_left(3)
+                });
+            out.push((ps.pairs.iter().map(key).collect(), xy));
+        }
+        out
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(24))]
+        /// A chunk that reuses the search kept by a chunk of a nearby direction (same slider,
+        /// θ, origin and span) gives every sample the same list, bit for bit, as a chunk with
+        /// nothing kept, also after its floor is lowered.
+        #[test]
+        fn a_kept_search_gives_the_same_lists(
+            theta_deg in 0.0f64..60.0,
+            dir_deg in 0.0f64..360.0,
+            turn_deg in -2.0f64..2.0,
+            second in any::<bool>(),
+            band in 5e-9f64..600e-9,
+            lower in 0.0f64..900e-9,
+            rough in any::<bool>(),
+        ) {
+            let mut sc = Scene::preset("square-tri").unwrap();
+            sc.slider.radius = 12e-6;
+            sc.substrate.size = [80e-6, 80e-6];
+            sc.substrate.sigma_h = if rough { 0.01e-6 } else { 0.0 };
+            let solver = Solver::new(&sc).unwrap();
+            let theta = theta_deg.to_radians();
+            let dir = |d: f64| [d.to_radians().cos(), d.to_radians().sin()];
+            // the second chunk of a 12 µm path, or the first
+            let s: Vec<f64> = (0..=20).map(|k| (k as f64 + if second { 100.0 } else { 0.0 }) * 0.06e-6).collect();
+            let origin = [0.2e-6, -0.1e-6];
+            kept::clear();
+            let fresh = lists(&mut PathChunk::new(&solver, theta, origin, dir(dir_deg), &s, band), &s, lower);
+            kept::clear();
+            drop(PathChunk::new(&solver, theta, origin, dir(dir_deg + turn_deg), &s, band));
+            let before = kept::reused();
+            let again = lists(&mut PathChunk::new(&solver, theta, origin, dir(dir_deg), &s, band), &s, lower);
+            prop_assert!(kept::reused() > before, "the kept search was not reused");
+            prop_assert_eq!(fresh, again);
+        }
+
         /// After any sequence of moves along the path, shorter and longer than the skin (the
         /// window a pair is kept beyond its closest approach), a sample's list holds exactly the
         /// pairs of a fresh search that touch above the floor (plus, within the margin, a few

@@ -16,7 +16,7 @@ impl Solver {
 
     /// Replaces `out` with the slider sphere centres `[x, y]` (m) at `pose` ([`place`] of each
     /// site) and returns the disc centre. O(N_slider), no allocation once `out` has grown.
-    fn fill_slider_xy(&self, pose: Pose, out: &mut Vec<[f64; 2]>) -> [f64; 2] {
+    pub(super) fn fill_slider_xy(&self, pose: Pose, out: &mut Vec<[f64; 2]>) -> [f64; 2] {
         let centre = self.centre_at(pose);
         let sc = pose.theta.sin_cos();
         out.clear();
@@ -76,11 +76,15 @@ impl Solver {
     /// `h + drop + √(d² − r²)` can rise above it are needed, so the capsules shrink to the
     /// lateral distance `ρ = √(d² − (floor − h_max − drop_max)²)` below which any pair can
     /// (with a margin); a superset of the pairs a floor at or above `floor` keeps.
+    ///
+    /// `extra` (m, ≥ 0) widens every capsule: the pairs of every stretch whose poses lie within
+    /// `extra` of this one's (a path in a nearby direction).
     pub(crate) fn pairs_swept_into(
         &self,
         pose: Pose,
         half: [f64; 2],
         floor: f64,
+        extra: f64,
         out: &mut PairSet,
     ) {
         out.centre = self.fill_slider_xy(pose, &mut out.slider_xy);
@@ -96,7 +100,7 @@ impl Solver {
             self.reach
         };
         self.grid
-            .pairs_swept(slider_xy, half, reach + margin, pairs);
+            .pairs_swept(slider_xy, half, reach + margin + extra, pairs);
         if let Some(s) = &self.sizes {
             // each pair's own reach r_i + r_j, swept
             let h2 = half[0] * half[0] + half[1] * half[1];
@@ -104,7 +108,7 @@ impl Solver {
                 let p = slider_xy[c.slider as usize];
                 let q = self.substrate[c.substrate as usize];
                 let v = [q[0] - p[0], q[1] - p[1]];
-                let d = s.distance(c.slider, c.substrate) + margin;
+                let d = s.distance(c.slider, c.substrate) + margin + extra;
                 swept_distance2(v, half, h2) < d * d
             });
         }

@@ -57,7 +57,13 @@ pub struct Solver {
     pub params: SolverParams,
     /// Candidate search used by [`Solver::pairs_at`].
     pub search: SearchKind,
+    /// A number no other `Solver` of this process has: names its searches kept for reuse
+    /// (`path_pairs.rs`).
+    pub(super) id: u64,
 }
+
+/// The next [`Solver::id`].
+static NEXT_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 
 impl Solver {
     /// Validates `scene`, indexes its substrate spheres in a grid (O(N); the BVH is built only
@@ -93,6 +99,7 @@ impl Solver {
             local,
             params: SolverParams::default(),
             search: SearchKind::default(),
+            id: NEXT_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
         })
     }
 
