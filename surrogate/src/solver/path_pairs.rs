@@ -348,9 +348,11 @@ mod tests {
         (c.slider, c.substrate, c.r2.to_bits(), c.h.to_bits())
     }
 
-    /// Every sample's list of `pc` (pairs and their slider positions), lowering the floor by
-    /// `lower` (m) halfway.
-    fn lists(pc: &mut PathChunk, s: &[f64], lower: f64) -> Vec<(Vec<(u32, u32, u64, u64)>, u64)> {
+    /// One sample's list: its pairs' keys and a hash of their slider positions.
+    type List = (Vec<(u32, u32, u64, u64)>, u64);
+
+    /// Every sample's list of `pc`, lowering the floor by `lower` (m) halfway.
+    fn lists(pc: &mut PathChunk, s: &[f64], lower: f64) -> Vec<List> {
         let mut out = Vec::new();
         for (k, &si) in s.iter().enumerate() {
             if k == s.len() / 2 {
