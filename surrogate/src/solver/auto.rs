@@ -31,8 +31,8 @@ pub(crate) fn moment_negligible(ctx: &Ctx, load: f64, m: [f64; 2]) -> bool {
 /// O(few hundred)) and a second assembly.
 ///
 /// On a path ([`Ctx::watch`]) whose previous sample escalated, the rigid-z solve is skipped: the
-/// tilt Newton starts from that sample's tilted state ([`Watch::tilt_guess`]), so the sample
-/// costs the tilt Newton and one assembly. Its answer is the tilt model's equilibrium to the
+/// tilt Newton starts from the previous tilted states, extrapolated ([`Watch::tilt_guess`]), so
+/// the sample costs the tilt Newton and one assembly. Its answer is the tilt model's equilibrium to the
 /// solver's tolerances, which is the rigid-z answer (to the same tolerances) wherever that one
 /// balances the moments (`docs/validation/path-solve.md`).
 pub(crate) fn solve_auto<L: Law>(
