@@ -87,11 +87,16 @@ impl CellList {
     /// Calls `f(index)` for every binned point in the cells that meet the box `[lo, hi]` (m),
     /// row by row, in binning order within a cell (a superset of the points inside the box).
     pub fn for_in_box(&self, lo: [f64; 2], hi: [f64; 2], mut f: impl FnMut(u32)) {
-        let Some([i0, i1, j0, j1]) = self.box_cells(lo, hi) else {
-            return;
-        };
+        if let Some(cells) = self.box_cells(lo, hi) {
+            self.for_rows(cells, &mut f);
+        }
+    }
+
+    /// Calls `f(index)` for the points of the cells `[i0, i1, j0, j1]` (inclusive), row by row.
+    #[inline(always)]
+    fn for_rows(&self, [i0, i1, j0, j1]: [usize; 4], f: &mut impl FnMut(u32)) {
         for j in j0..=j1 {
-            self.for_row(j, i0, i1, &mut f);
+            self.for_row(j, i0, i1, f);
         }
     }
 
@@ -153,15 +158,13 @@ impl CellList {
         let ext = [half[0].abs() + reach, half[1].abs() + reach];
         let lo = [p[0] - ext[0], p[1] - ext[1]];
         let hi = [p[0] + ext[0], p[1] + ext[1]];
-        let Some([i0, i1, j0, j1]) = self.box_cells(lo, hi) else {
+        let Some(cells) = self.box_cells(lo, hi) else {
             return;
         };
+        let [i0, i1, j0, j1] = cells;
         // the slab skips two columns per row only in a box four or more columns wide
         if i1 - i0 < 3 {
-            for j in j0..=j1 {
-                self.for_row(j, i0, i1, &mut f);
-            }
-            return;
+            return self.for_rows(cells, &mut f);
         }
         let h2 = half[0] * half[0] + half[1] * half[1];
         // the unit normal, oriented to n_x ≥ 0
@@ -176,10 +179,7 @@ impl CellList {
         let slope = -n[1] / n[0] * inv_cell;
         let row_cols = 2.0 * w * inv_cell + slope.abs() * self.cell + 2.0;
         if !(h2 >= f64::MIN_POSITIVE && n[0] > 0.01 && row_cols + 2.0 <= (i1 - i0 + 1) as f64) {
-            for j in j0..=j1 {
-                self.for_row(j, i0, i1, &mut f);
-            }
-            return;
+            return self.for_rows(cells, &mut f);
         }
         // the slab's edges on the line y = p_y, in cells from the grid's origin
         let e_lo = (p[0] - self.origin[0] - w) * inv_cell;

@@ -17,9 +17,11 @@ pub(crate) struct Watch {
     /// Lowest height (m, relative to z_ref) a model relied on since the last reset.
     pub lowest: Cell<f64>,
     /// Warm start of the untilted z root (m, relative to z_ref; NaN: none): the previous
-    /// sample's root on a path.
+    /// sample's root on a path, or its estimate where that sample continued the tilt model
+    /// (moved by the extrapolation of the tilted state; it also places the tilt working set).
     pub guess: Cell<f64>,
-    /// The untilted z root last found (m, relative to z_ref; NaN: none).
+    /// The untilted z root last found (m, relative to z_ref; NaN: none); on a sample that
+    /// continued the tilt model, its estimate (the guess moved as the tilted height moved).
     pub root: Cell<f64>,
     /// Warm start of the tilt Newton (NaN: none): the previous sample's tilted state
     /// `[ζ, L·t_x, L·t_y]` (m, ζ relative to z_ref) where that sample escalated to the tilt model.

@@ -228,18 +228,14 @@ fn solve_one_of_many<L: Law>(
     model: Model,
 ) -> Result<Equilibrium, SceneError> {
     check_load(w)?;
-    {
-        {
-            match model {
-                Model::Auto => solve_auto(ctx, ps, rz, w),
-                Model::RigidZ => rz.solve(ctx, ps, w),
-                _ => {
-                    let (z0, it0) = rz.zr.solve(ctx, w)?;
-                    let near = NearSet::new(ctx, &rz.bp, z0, ctx.lever_bound(ps));
-                    let (q, it1) = tilt_from(ctx, &rz.bp, &near, w, z0, None)?;
-                    Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
-                }
-            }
+    match model {
+        Model::Auto => solve_auto(ctx, ps, rz, w),
+        Model::RigidZ => rz.solve(ctx, ps, w),
+        _ => {
+            let (z0, it0) = rz.zr.solve(ctx, w)?;
+            let near = NearSet::new(ctx, &rz.bp, z0, ctx.lever_bound(ps));
+            let (q, it1) = tilt_from(ctx, &rz.bp, &near, w, z0, None)?;
+            Ok(assemble_tilt(ctx, ps, &rz.bp, rz.zref, w, q, it0 + it1))
         }
     }
 }
