@@ -12,6 +12,7 @@
 mod along;
 mod assemble;
 mod auto;
+mod columns;
 mod compliant;
 mod ctx;
 mod equilibrium;

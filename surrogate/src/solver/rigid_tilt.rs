@@ -6,6 +6,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::assemble::assemble;
+use super::columns::Columns;
 use super::ctx::Ctx;
 #[allow(unused_imports)]
 use super::ctx::Watch;
@@ -18,43 +19,84 @@ use crate::error::SceneError;
 /// `½ tᵀ K_t t`, `K_q = K_t/L²`), its gradient
 /// `[W − ΣF_z, −ΣF_z gx + (K_q q₁₂)₀, −ΣF_z gy + (K_q q₁₂)₁]` (N) and Hessian
 /// `Σ s_j v_j v_jᵀ + diag(0, K_q)` (N/m), `v_j = [1, g_j]`. Π is convex wherever every s_j ≥ 0.
-fn eval<L: Law>(
-    ctx: &Ctx,
-    tp: &[BodyPair<L>],
-    load: f64,
-    q: [f64; 3],
-) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+fn eval<L: Law>(ctx: &Ctx, tp: &[BodyPair<L>], load: f64, q: [f64; 3]) -> Potential {
     let k = ctx.hertz.k();
-    let kq = ctx.kq();
-    let kq1 = [
-        kq[0][0] * q[1] + kq[0][1] * q[2],
-        kq[1][0] * q[1] + kq[1][1] * q[2],
-    ];
-    let mut pi = load * q[0] + 0.5 * (q[1] * kq1[0] + q[2] * kq1[1]);
-    let mut g = [load, kq1[0], kq1[1]];
-    let mut h = [[0.0; 3], [0.0, kq[0][0], 0.0], [0.0, kq[1][0], kq[1][1]]];
+    let mut acc = Potential::mount(ctx, load, q);
     for p in tp {
         let dz = q[0] + q[1] * p.g[0] + q[2] * p.g[1] - p.c;
         let r = p.response(k, ctx.two_r, dz);
-        if r.fz == 0.0 && r.s == 0.0 {
-            continue;
+        acc.add(r.fz, r.s, r.phi, p.g);
+    }
+    acc.finish()
+}
+
+/// [`eval`] of the pairs held in `cols` (the scene's one law): every pair's response in one
+/// vectorised pass ([`Columns::respond`]), then the same sums in the same order (same bits).
+fn eval_columns(ctx: &Ctx, cols: &mut Columns, load: f64, q: [f64; 3]) -> Potential {
+    cols.respond(ctx.hertz.k(), ctx.two_r, q);
+    let mut acc = Potential::mount(ctx, load, q);
+    for j in 0..cols.len() {
+        acc.add(cols.fz[j], cols.s[j], cols.phi[j], cols.g(j));
+    }
+    acc.finish()
+}
+
+/// Π (J), its gradient (N) and Hessian (N/m) at one state, as [`eval`] sums them.
+type Potential = (f64, [f64; 3], [[f64; 3]; 3]);
+
+/// The sums of [`eval`], term by term.
+trait Sums {
+    /// The mount's terms at `q` and the load's: `Π = W ζ + ½ q₁₂ᵀ K_q q₁₂`, its gradient and
+    /// Hessian (lower triangle).
+    fn mount(ctx: &Ctx, load: f64, q: [f64; 3]) -> Self;
+    /// Adds one pair of lever `g` with force `fz` (N), stiffness `s` (N/m) and energy `phi` (J);
+    /// a pair with neither force nor stiffness is skipped.
+    fn add(&mut self, fz: f64, s: f64, phi: f64, g: [f64; 2]);
+    /// Copies the lower triangle of the Hessian to the upper.
+    fn finish(self) -> Self;
+}
+
+impl Sums for Potential {
+    #[inline]
+    fn mount(ctx: &Ctx, load: f64, q: [f64; 3]) -> Self {
+        let kq = ctx.kq();
+        let kq1 = [
+            kq[0][0] * q[1] + kq[0][1] * q[2],
+            kq[1][0] * q[1] + kq[1][1] * q[2],
+        ];
+        let pi = load * q[0] + 0.5 * (q[1] * kq1[0] + q[2] * kq1[1]);
+        let g = [load, kq1[0], kq1[1]];
+        let h = [[0.0; 3], [0.0, kq[0][0], 0.0], [0.0, kq[1][0], kq[1][1]]];
+        (pi, g, h)
+    }
+
+    #[inline(always)]
+    fn add(&mut self, fz: f64, s: f64, phi: f64, g: [f64; 2]) {
+        if fz == 0.0 && s == 0.0 {
+            return;
         }
-        pi += r.phi;
-        let v = [1.0, p.g[0], p.g[1]];
-        let s = r.s.max(0.0);
+        let (pi, gr, h) = self;
+        *pi += phi;
+        let v = [1.0, g[0], g[1]];
+        let s = s.max(0.0);
         for a in 0..3 {
-            g[a] -= r.fz * v[a];
+            gr[a] -= fz * v[a];
             for b in 0..=a {
                 h[a][b] += s * v[a] * v[b];
             }
         }
     }
-    for a in 0..3 {
-        for b in 0..a {
-            h[b][a] = h[a][b];
+
+    #[inline]
+    fn finish(mut self) -> Self {
+        let h = &mut self.2;
+        for a in 0..3 {
+            for b in 0..a {
+                h[b][a] = h[a][b];
+            }
         }
+        self
     }
-    (pi, g, h)
 }
 
 /// The Newton step `x = −(H + μI)⁻¹ g` of the symmetric 3×3 `h` (lower triangle read) by
@@ -93,6 +135,9 @@ fn cholesky_solve3(h: &[[f64; 3]; 3], mu: f64, g: &[f64; 3]) -> Option<[f64; 3]>
 ///
 /// `whole`: `tp` is every pair of the list (not a working set): each state it evaluates is
 /// recorded with [`Ctx::rely_tilted`].
+///
+/// With the scene's one law the pairs are evaluated as [`Columns`] (a vectorised pass, same
+/// bits); with per-site sizes pair by pair.
 pub(crate) fn tilt_newton<L: Law>(
     ctx: &Ctx,
     tp: &[BodyPair<L>],
@@ -100,18 +145,44 @@ pub(crate) fn tilt_newton<L: Law>(
     q0: [f64; 3],
     whole: bool,
 ) -> Result<([f64; 3], usize, bool), SceneError> {
-    let params = ctx.params;
-    let mut q = q0;
-    let eval = |ctx: &Ctx, tp: &[BodyPair<L>], load: f64, q: [f64; 3]| {
+    if L::SIZED {
+        return newton(ctx, load, q0, |q| {
+            if whole {
+                ctx.rely_tilted(q);
+            }
+            eval(ctx, tp, load, q)
+        });
+    }
+    let mut cols = COLUMNS.with(|c| c.take());
+    cols.fill(tp);
+    let out = newton(ctx, load, q0, |q| {
         if whole {
             ctx.rely_tilted(q);
         }
-        eval(ctx, tp, load, q)
-    };
+        eval_columns(ctx, &mut cols, load, q)
+    });
+    COLUMNS.with(|c| c.replace(cols));
+    out
+}
+
+thread_local! {
+    /// The columns of [`tilt_newton`], kept per thread (no allocation per solve).
+    static COLUMNS: std::cell::RefCell<Columns> = std::cell::RefCell::new(Columns::default());
+}
+
+/// The damped Newton of [`tilt_newton`] on the potential `eval` (Π, gradient, Hessian at a state).
+fn newton(
+    ctx: &Ctx,
+    load: f64,
+    q0: [f64; 3],
+    mut eval: impl FnMut([f64; 3]) -> Potential,
+) -> Result<([f64; 3], usize, bool), SceneError> {
+    let params = ctx.params;
+    let mut q = q0;
     let tol_f = params.force_rtol * load;
     let tol_m = params.moment_rtol * load;
     let mut rho = ctx.two_r; // trust radius (m) on the step
-    let (mut pi, mut g, mut h) = eval(ctx, tp, load, q);
+    let (mut pi, mut g, mut h) = eval(q);
     for it in 1..=params.max_iter {
         if g[0].abs() <= tol_f && g[1].abs() <= tol_m && g[2].abs() <= tol_m {
             return Ok((q, it, true));
@@ -141,7 +212,7 @@ pub(crate) fn tilt_newton<L: Law>(
                 q[1] + alpha * d[1],
                 q[2] + alpha * d[2],
             ];
-            let (pn, gn, hn) = eval(ctx, tp, load, qn);
+            let (pn, gn, hn) = eval(qn);
             let slack = 1e-13 * (pi.abs() + load * ctx.two_r * 1e-6);
             // Energy (Armijo) test; near convergence Π is flat to round-off, so a step that
             // halves the gradient is accepted too.
