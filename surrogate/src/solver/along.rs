@@ -163,26 +163,57 @@ impl Solver {
                         // the lowest height the full solves of the missed loads relied on
                         let mut need = f64::INFINITY;
                         if !missing.is_empty() {
-                            // every pair, from the same warm start: the answer does not depend
-                            // on the list (nor, so, on the other loads or the floor)
-                            let full = pc.full_at(si);
+                            // from the same warm start, on a longer list: the answer does not
+                            // depend on the list (nor, so, on the other loads or the floor).
+                            // First every pair of the chunk's search (no new search), then,
+                            // for the loads that still missed, every pair
                             let w: Vec<f64> = missing.iter().map(|&j| loads[j]).collect();
                             let mut wm: Vec<Warm> = missing.iter().map(|&j| before[j]).collect();
-                            let r = self.solve_loads_partial(
-                                &full,
-                                &w,
-                                model,
-                                f64::NEG_INFINITY,
-                                gmax,
-                                &mut wm,
-                            );
+                            let deeper = pc.searched();
+                            let mut r = if deeper < floor {
+                                pc.set_floor(deeper);
+                                pc.refresh(si, end);
+                                self.solve_loads_partial(
+                                    pc.partial_at(si),
+                                    &w,
+                                    model,
+                                    deeper,
+                                    gmax,
+                                    &mut wm,
+                                )
+                            } else {
+                                vec![None; missing.len()]
+                            };
+                            let still: Vec<usize> =
+                                (0..missing.len()).filter(|&m| r[m].is_none()).collect();
+                            let full = (!still.is_empty()).then(|| pc.full_at(si));
+                            if let Some(full) = &full {
+                                let ws: Vec<f64> = still.iter().map(|&m| w[m]).collect();
+                                let mut wms: Vec<Warm> =
+                                    still.iter().map(|&m| before[missing[m]]).collect();
+                                let rs = self.solve_loads_partial(
+                                    full,
+                                    &ws,
+                                    model,
+                                    f64::NEG_INFINITY,
+                                    gmax,
+                                    &mut wms,
+                                );
+                                for ((&m, eq), wj) in still.iter().zip(rs).zip(wms) {
+                                    r[m] = eq;
+                                    wm[m] = wj;
+                                }
+                            }
                             for ((&j, eq), wj) in missing.iter().zip(r).zip(wm) {
                                 need = need.min(wj.need);
                                 warm[j] = wj;
-                                redone.push(match eq {
-                                    Some(eq) => Ok(f(si, j, eq)),
+                                redone.push(match (eq, &full) {
+                                    (Some(eq), _) => Ok(f(si, j, eq)),
                                     // the error a fresh solve gives
-                                    None => solve_full(&full, si, &[j]).pop().expect("one"),
+                                    (None, Some(full)) => {
+                                        solve_full(full, si, &[j]).pop().expect("one")
+                                    }
+                                    (None, None) => unreachable!("every miss is solved on all"),
                                 });
                             }
                         }

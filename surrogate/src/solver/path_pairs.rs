@@ -209,6 +209,12 @@ impl<'a> PathChunk<'a> {
         }));
     }
 
+    /// The lowest floor (m, absolute) the chunk's last candidate search covers: setting the
+    /// floor down to it takes no new search.
+    pub fn searched(&self) -> f64 {
+        self.searched
+    }
+
     /// The farthest path coordinate |s| (m) of the chunk from the path's origin: a direction
     /// turned by a chord c moves its poses by at most this times c.
     fn reach_out(&self) -> f64 {
