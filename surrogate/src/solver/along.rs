@@ -77,7 +77,8 @@ impl Solver {
     /// (m); a chunk runs one candidate search (each sphere's swept capsule) and keeps, per segment,
     /// the pairs that can touch above a height floor (`PathChunk`): a sample filters and
     /// solves a few hundred pairs, not every slider sphere's. A sample whose solve would need a
-    /// pair below the floor is solved on every pair and the floor lowered. Parallel over
+    /// pair below the floor is solved again on every pair of the chunk's search where that
+    /// reaches deep enough, else on every pair, and the floor lowered. Parallel over
     /// chunks (rayon), deterministic. Cost (study's 3505-sphere slider, 1.75 mN): see
     /// `docs/validation/path-solve.md`.
     pub fn solve_along_loads<T, F>(

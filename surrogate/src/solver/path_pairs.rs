@@ -10,8 +10,9 @@
 //! any pair can rise above F), keeps the pairs that can rise above F somewhere, and
 //! per sub-chunk the ones whose window meets it; a sample then looks at a few hundred pairs
 //! instead of every slider sphere. The solve checks that it never relied on a pair below F
-//! ([`Solver::solve_loads_partial`]); where it did, that sample is solved on every pair and the
-//! floor is lowered, so every result is bit-identical to a solve on the full list.
+//! ([`Solver::solve_loads_partial`]); where it did, that sample is solved again on a longer list
+//! (the chunk's whole search, else every pair) and the floor is lowered, so every result is
+//! bit-identical to a solve on the full list.
 
 mod kept;
 
