@@ -208,13 +208,13 @@ impl Solver {
                             for ((&j, eq), wj) in missing.iter().zip(r).zip(wm) {
                                 need = need.min(wj.need);
                                 warm[j] = wj;
-                                redone.push(match (eq, &full) {
-                                    (Some(eq), _) => Ok(f(si, j, eq)),
+                                redone.push(match eq {
+                                    Some(eq) => Ok(f(si, j, eq)),
                                     // the error a fresh solve gives
-                                    (None, Some(full)) => {
+                                    None => {
+                                        let full = full.as_ref().expect("solved on every pair");
                                         solve_full(full, si, &[j]).pop().expect("one")
                                     }
-                                    (None, None) => unreachable!("every miss is solved on all"),
                                 });
                             }
                         }

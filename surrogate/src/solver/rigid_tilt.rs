@@ -41,22 +41,17 @@ fn eval_columns(ctx: &Ctx, cols: &mut Columns, load: f64, q: [f64; 3]) -> Potent
     acc.finish()
 }
 
-/// Π (J), its gradient (N) and Hessian (N/m) at one state, as [`eval`] sums them.
-type Potential = (f64, [f64; 3], [[f64; 3]; 3]);
-
-/// The sums of [`eval`], term by term.
-trait Sums {
-    /// The mount's terms at `q` and the load's: `Π = W ζ + ½ q₁₂ᵀ K_q q₁₂`, its gradient and
-    /// Hessian (lower triangle).
-    fn mount(ctx: &Ctx, load: f64, q: [f64; 3]) -> Self;
-    /// Adds one pair of lever `g` with force `fz` (N), stiffness `s` (N/m) and energy `phi` (J);
-    /// a pair with neither force nor stiffness is skipped.
-    fn add(&mut self, fz: f64, s: f64, phi: f64, g: [f64; 2]);
-    /// Copies the lower triangle of the Hessian to the upper.
-    fn finish(self) -> Self;
+/// Π (J), its gradient (N) and Hessian (N/m) at one state, summed term by term as [`eval`]
+/// describes.
+struct Potential {
+    pi: f64,
+    grad: [f64; 3],
+    hess: [[f64; 3]; 3],
 }
 
-impl Sums for Potential {
+impl Potential {
+    /// The mount's terms at `q` and the load's: `Π = W ζ + ½ q₁₂ᵀ K_q q₁₂`, its gradient and
+    /// Hessian (lower triangle).
     #[inline]
     fn mount(ctx: &Ctx, load: f64, q: [f64; 3]) -> Self {
         let kq = ctx.kq();
@@ -64,35 +59,37 @@ impl Sums for Potential {
             kq[0][0] * q[1] + kq[0][1] * q[2],
             kq[1][0] * q[1] + kq[1][1] * q[2],
         ];
-        let pi = load * q[0] + 0.5 * (q[1] * kq1[0] + q[2] * kq1[1]);
-        let g = [load, kq1[0], kq1[1]];
-        let h = [[0.0; 3], [0.0, kq[0][0], 0.0], [0.0, kq[1][0], kq[1][1]]];
-        (pi, g, h)
+        Potential {
+            pi: load * q[0] + 0.5 * (q[1] * kq1[0] + q[2] * kq1[1]),
+            grad: [load, kq1[0], kq1[1]],
+            hess: [[0.0; 3], [0.0, kq[0][0], 0.0], [0.0, kq[1][0], kq[1][1]]],
+        }
     }
 
+    /// Adds one pair of lever `g` with force `fz` (N), stiffness `s` (N/m) and energy `phi` (J);
+    /// a pair with neither force nor stiffness is skipped.
     #[inline(always)]
     fn add(&mut self, fz: f64, s: f64, phi: f64, g: [f64; 2]) {
         if fz == 0.0 && s == 0.0 {
             return;
         }
-        let (pi, gr, h) = self;
-        *pi += phi;
+        self.pi += phi;
         let v = [1.0, g[0], g[1]];
         let s = s.max(0.0);
         for a in 0..3 {
-            gr[a] -= fz * v[a];
+            self.grad[a] -= fz * v[a];
             for b in 0..=a {
-                h[a][b] += s * v[a] * v[b];
+                self.hess[a][b] += s * v[a] * v[b];
             }
         }
     }
 
+    /// Copies the lower triangle of the Hessian to the upper.
     #[inline]
     fn finish(mut self) -> Self {
-        let h = &mut self.2;
         for a in 0..3 {
             for b in 0..a {
-                h[b][a] = h[a][b];
+                self.hess[b][a] = self.hess[a][b];
             }
         }
         self
@@ -145,23 +142,23 @@ pub(crate) fn tilt_newton<L: Law>(
     q0: [f64; 3],
     whole: bool,
 ) -> Result<([f64; 3], usize, bool), SceneError> {
-    if L::SIZED {
-        return newton(ctx, load, q0, |q| {
-            if whole {
-                ctx.rely_tilted(q);
-            }
-            eval(ctx, tp, load, q)
-        });
-    }
-    let mut cols = COLUMNS.with(|c| c.take());
-    cols.fill(tp);
+    let mut cols = (!L::SIZED).then(|| {
+        let mut c = COLUMNS.with(|c| c.take());
+        c.fill(tp);
+        c
+    });
     let out = newton(ctx, load, q0, |q| {
         if whole {
             ctx.rely_tilted(q);
         }
-        eval_columns(ctx, &mut cols, load, q)
+        match &mut cols {
+            Some(cols) => eval_columns(ctx, cols, load, q),
+            None => eval(ctx, tp, load, q),
+        }
     });
-    COLUMNS.with(|c| c.replace(cols));
+    if let Some(cols) = cols {
+        COLUMNS.with(|c| c.replace(cols));
+    }
     out
 }
 
@@ -182,7 +179,11 @@ fn newton(
     let tol_f = params.force_rtol * load;
     let tol_m = params.moment_rtol * load;
     let mut rho = ctx.two_r; // trust radius (m) on the step
-    let (mut pi, mut g, mut h) = eval(q);
+    let Potential {
+        mut pi,
+        grad: mut g,
+        hess: mut h,
+    } = eval(q);
     for it in 1..=params.max_iter {
         if g[0].abs() <= tol_f && g[1].abs() <= tol_m && g[2].abs() <= tol_m {
             return Ok((q, it, true));
@@ -212,7 +213,11 @@ fn newton(
                 q[1] + alpha * d[1],
                 q[2] + alpha * d[2],
             ];
-            let (pn, gn, hn) = eval(qn);
+            let Potential {
+                pi: pn,
+                grad: gn,
+                hess: hn,
+            } = eval(qn);
             let slack = 1e-13 * (pi.abs() + load * ctx.two_r * 1e-6);
             // Energy (Armijo) test; near convergence Π is flat to round-off, so a step that
             // halves the gradient is accepted too.
