@@ -96,7 +96,6 @@ fn continued_path_equals_fresh_solves() {
             e: [dir.cos(), dir.sin()],
             s: &s,
             segment: 0.5e-6,
-            chunk: None,
         };
         let along = solver.solve_along_loads(path, &loads, Model::Auto, |_, _, eq| eq);
         let rim = sc.slider.radius;
@@ -141,7 +140,6 @@ fn path_solve_is_deterministic() {
         e: [(82.5 * DEG).cos(), (82.5 * DEG).sin()],
         s: &s,
         segment: 0.5e-6,
-        chunk: None,
     };
     let loads = [0.35e-3, 1.75e-3, 3.86e-3];
     let run = |threads: usize, loads: &[f64]| {

@@ -215,7 +215,7 @@ pub fn estimate_friction_loads(
         let y = j as f64 * h_side;
         let group_loads: Vec<f64> = members.iter().map(|&i| valid[i]).collect();
         let origin = [y * e_perp[0], y * e_perp[1]];
-        let path = solve_samples(solver, theta, origin, e, &group_loads, &s, None, params);
+        let path = solve_samples(solver, theta, origin, e, &group_loads, &s, params);
         for (&i, r) in members.iter().zip(path) {
             solved[i] = Some(r);
         }
@@ -275,9 +275,7 @@ fn transverse_starts(
     if coarse.last() != s.last() {
         coarse.push(*s.last().expect("a path has samples"));
     }
-    // few samples: one search and one cold start for the whole path
-    let whole = Some(f64::INFINITY);
-    let along = solve_samples(solver, theta, [0.0, 0.0], e, loads, &coarse, whole, params);
+    let along = solve_samples(solver, theta, [0.0, 0.0], e, loads, &coarse, params);
     let pushed = |r: &Result<Vec<Sample>, SceneError>, w: f64| {
         r.as_ref()
             .is_ok_and(|x| x.iter().any(|x| x.f_perp.abs() > tol_f(w)))
@@ -296,7 +294,6 @@ fn transverse_starts(
         e_perp,
         loads,
         &[0.0, h, 2.0 * h],
-        whole,
         params,
     );
     let distance = params.speed * params.slide_time;
@@ -326,7 +323,7 @@ fn transverse_starts(
         }
         let w_side: Vec<f64> = which.iter().map(|&i| loads[i]).collect();
         let dir = [sign * e_perp[0], sign * e_perp[1]];
-        let line = solve_samples(solver, theta, [0.0, 0.0], dir, &w_side, &y, whole, params);
+        let line = solve_samples(solver, theta, [0.0, 0.0], dir, &w_side, &y, params);
         for (&i, r) in which.iter().zip(line) {
             let Ok(r) = r else { continue };
             let u: Vec<f64> = r

@@ -62,9 +62,7 @@ pub(crate) struct Sample {
 /// along the unit direction `e` at rotation `theta` (rad) for each load of `loads` (N) with
 /// [`Model::Auto`] ([`Solver::solve_along_loads`]: one candidate search per `params.segment` of path and one
 /// pair list per sample serve every load; parallel, deterministic), and reduces each equilibrium
-/// to a [`Sample`]. `chunk`: the length (m) of path sharing one search and one chain of warm
-/// starts ([`StraightPath::chunk`]). Per load (in order): its samples, or its first failed solve.
-#[allow(clippy::too_many_arguments)]
+/// to a [`Sample`]. Per load (in order): its samples, or its first failed solve.
 pub(crate) fn solve_samples(
     solver: &Solver,
     theta: f64,
@@ -72,7 +70,6 @@ pub(crate) fn solve_samples(
     e: [f64; 2],
     loads: &[f64],
     s: &[f64],
-    chunk: Option<f64>,
     params: &FrictionParams,
 ) -> Vec<Result<Vec<Sample>, SceneError>> {
     let scene = solver.scene();
@@ -85,7 +82,6 @@ pub(crate) fn solve_samples(
         e,
         s,
         segment: params.segment,
-        chunk,
     };
     solver.solve_along_loads(path, loads, Model::Auto, |_, j, eq| {
         let load = loads[j];

@@ -145,7 +145,6 @@ pub fn path_profile(
         e,
         s: &s,
         segment: params.segment,
-        chunk: None,
     };
     let rows = solver.solve_along(path, load, Model::Auto, |_, eq| {
         let mut f = 0.0;

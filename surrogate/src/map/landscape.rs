@@ -164,7 +164,6 @@ pub fn compute_landscape(
                 e,
                 s: &s,
                 segment: params.segment,
-                chunk: None,
             };
             solver.solve_along(path, load, Model::Auto, |_, eq| {
                 progress();

@@ -37,16 +37,9 @@ pub struct StraightPath<'a> {
     pub e: [f64; 2],
     /// Distances s (m) of the samples along the path, ascending.
     pub s: &'a [f64],
-    /// Length (m) of path whose samples share one refresh of the pair list (speed only; any
-    /// value > 0 gives the same results).
+    /// Length (m) of path sharing one candidate search (speed only; any value > 0 gives the
+    /// same results).
     pub segment: f64,
-    /// Length (m) of path sharing one candidate search and one chain of warm starts (a chunk,
-    /// solved by one thread); `None`: [`CHUNK_SEGMENTS`] segments. A path of few samples (the
-    /// drift model's every-tenth-sample copy of a path) takes `Some(f64::INFINITY)`: one search
-    /// and one cold start instead of one per 6 µm. The chunks are cut by the path, never by the
-    /// threads; a different cut gives the same equilibria to the solver's tolerances, not bit
-    /// for bit (each chunk's first sample starts cold).
-    pub chunk: Option<f64>,
 }
 
 impl Solver {
@@ -105,7 +98,6 @@ impl Solver {
             e,
             s,
             segment,
-            chunk: chunk_length,
         } = path;
         let spacing = if s.len() > 1 {
             (s[s.len() - 1] - s[0]) / (s.len() - 1) as f64
@@ -137,16 +129,8 @@ impl Solver {
                 .collect::<Vec<_>>()
         };
         let all: Vec<usize> = (0..loads.len()).collect();
-        // chunks of about CHUNK_SEGMENTS segments (or `chunk`), of equal size (no stub of one
-        // sample)
-        let per_chunk = match chunk_length {
-            None => per * CHUNK_SEGMENTS,
-            Some(c) if spacing > 0.0 && c / spacing < s.len() as f64 => {
-                ((c / spacing).round() as usize).max(1)
-            }
-            Some(_) => s.len(),
-        };
-        let n_chunks = s.len().div_ceil(per_chunk.max(1)).max(1);
+        // chunks of about CHUNK_SEGMENTS segments, of equal size (no stub of one sample)
+        let n_chunks = s.len().div_ceil(per * CHUNK_SEGMENTS).max(1);
         let size = s.len().div_ceil(n_chunks).max(1);
         let chunks: Vec<Solved<T>> = s
             .par_chunks(size)

@@ -1,13 +1,7 @@
-//! Swept candidate searches kept per thread, so that a later chunk of the same slider, rotation
-//! and origin, within the stretch of path a kept search swept, reuses one instead of scanning
-//! every slider sphere's capsule again: the same path solved again at other loads (a tolerance
-//! search's disproof, then its verification), the paths of nearby directions (a tolerance box's
-//! direction offsets), and the chunks of a path after the one search of its every-tenth-sample
-//! copy (the drift model's, [`super::super::StraightPath::chunk`]).
-//!
-//! A kept search over path coordinates [A, B] covers every pair within reach of a pose
-//! `origin + s·e_ref` with s in [A, B], so it is a superset of the search of any chunk whose
-//! samples lie in [A, B].
+//! Swept candidate searches kept per thread, so that a later chunk of the same slider, rotation,
+//! origin and span reuses one instead of scanning every slider sphere's capsule again: the same
+//! path solved again at other loads (a tolerance search's disproof, then its verification), and
+//! the paths of nearby directions (a tolerance box's direction offsets).
 //!
 //! A search kept for direction e_ref is widened by `r·c` (r the chunk's farthest path
 //! coordinate from the origin, c = [`SHARE_CHORD`]): every pose `origin + s·e` of a direction
@@ -34,10 +28,6 @@ const KEEP: usize = 8;
 /// One kept search: what names it and its pairs.
 struct Kept {
     key: Key,
-    /// Its path's origin (m).
-    origin: [f64; 2],
-    /// The first and last path coordinate (m) it sweeps.
-    span: [f64; 2],
     /// Its direction e_ref.
     e: [f64; 2],
     /// The floor (m, absolute) it covers.
@@ -45,8 +35,8 @@ struct Kept {
     pairs: Vec<CandidatePair>,
 }
 
-/// The solver and θ (bits) a search is kept for.
-type Key = (u64, u64);
+/// The solver, θ, origin and span (bits) a search is kept for.
+type Key = (u64, u64, [u64; 2], [u64; 2]);
 
 thread_local! {
     static KEPT: RefCell<Vec<Kept>> = const { RefCell::new(Vec::new()) };
@@ -56,11 +46,16 @@ thread_local! {
 }
 
 fn key(c: &PathChunk) -> Key {
-    (c.solver.id, c.theta.to_bits())
+    (
+        c.solver.id,
+        c.theta.to_bits(),
+        c.origin.map(f64::to_bits),
+        c.span.map(f64::to_bits),
+    )
 }
 
-/// Fills `c.wide.pairs` from a kept search for its key and origin, over a span containing the
-/// chunk's and a direction within [`SHARE_CHORD`], that covers `floor` (m, absolute), and returns the floor that search covers;
+/// Fills `c.wide.pairs` from a kept search for its key and a direction within
+/// [`SHARE_CHORD`] that covers `floor` (m, absolute), and returns the floor that search covers;
 /// `None` (nothing written) where none is kept. O(pairs).
 pub(super) fn take(c: &mut PathChunk, floor: f64) -> Option<f64> {
     let k = key(c);
@@ -68,12 +63,7 @@ pub(super) fn take(c: &mut PathChunk, floor: f64) -> Option<f64> {
     KEPT.with(|kept| {
         let mut kept = kept.borrow_mut();
         let i = kept.iter().rposition(|x| {
-            x.key == k
-                && x.origin == c.origin
-                && x.span[0] <= c.span[0]
-                && c.span[1] <= x.span[1]
-                && x.floor <= floor
-                && (x.e[0] - e[0]).hypot(x.e[1] - e[1]) <= SHARE_CHORD
+            x.key == k && x.floor <= floor && (x.e[0] - e[0]).hypot(x.e[1] - e[1]) <= SHARE_CHORD
         })?;
         // the most recently used last
         let x = kept.remove(i);
@@ -103,8 +93,6 @@ pub(super) fn keep(c: &PathChunk, floor: f64) {
         pairs.extend_from_slice(&c.wide.pairs);
         kept.push(Kept {
             key: k,
-            origin: c.origin,
-            span: c.span,
             e: c.e,
             floor,
             pairs,
