@@ -16,9 +16,11 @@ pub(crate) struct Columns {
     c: Vec<f64>,
     r2: Vec<f64>,
     ut: Vec<f64>,
-    /// Vertical force (N), −dF_z/du (N/m) and energy (J) of each pair at the last state.
+    /// Vertical force F_z (N) of each pair at the last state.
     pub fz: Vec<f64>,
+    /// Stiffness s = −dF_z/du (N/m) of each pair at the last state.
     pub s: Vec<f64>,
+    /// Energy Φ (J) of each pair at the last state.
     pub phi: Vec<f64>,
 }
 
@@ -95,7 +97,10 @@ impl Columns {
         let (fz, s, phi) = (&mut self.fz[..n], &mut self.s[..n], &mut self.phi[..n]);
         for j in 0..n {
             // the operations of `pair_response`, in its order (same bits); inactive lanes
-            // compute NaN or garbage and are replaced by zero
+            // compute NaN or garbage and are replaced by zero. Written out here rather than
+            // calling a shared helper: with the call inlined, LLVM no longer vectorises the loop
+            // (measured: scalar square roots, 7 % slower per path sample); the property test
+            // below keeps the two equal bit for bit.
             let dz = q[0] + q[1] * g0[j] + q[2] * g1[j] - c[j];
             let u = ut[j] + dz;
             let active = !(dz >= 0.0 || u <= 0.0);
