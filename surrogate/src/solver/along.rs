@@ -168,38 +168,30 @@ impl Solver {
                             // depend on the list (nor, so, on the other loads or the floor).
                             // First every pair of the chunk's search (no new search), then,
                             // for the loads that still missed, every pair
-                            let w: Vec<f64> = missing.iter().map(|&j| loads[j]).collect();
-                            let mut wm: Vec<Warm> = missing.iter().map(|&j| before[j]).collect();
+                            // the loads `which` (indices into `loads`) solved on `ps` from
+                            // their warm starts before this sample
+                            let redo = |ps: &super::PairSet, which: &[usize], floor: f64| {
+                                let w: Vec<f64> = which.iter().map(|&j| loads[j]).collect();
+                                let mut wm: Vec<Warm> = which.iter().map(|&j| before[j]).collect();
+                                let r =
+                                    self.solve_loads_partial(ps, &w, model, floor, gmax, &mut wm);
+                                (r, wm)
+                            };
                             let deeper = pc.searched();
-                            let mut r = if deeper < floor {
+                            let (mut r, mut wm) = if deeper < floor {
                                 pc.set_floor(deeper);
                                 pc.refresh(si, end);
-                                self.solve_loads_partial(
-                                    pc.partial_at(si),
-                                    &w,
-                                    model,
-                                    deeper,
-                                    gmax,
-                                    &mut wm,
-                                )
+                                redo(pc.partial_at(si), &missing, deeper)
                             } else {
-                                vec![None; missing.len()]
+                                let wm = missing.iter().map(|&j| before[j]).collect();
+                                (vec![None; missing.len()], wm)
                             };
                             let still: Vec<usize> =
                                 (0..missing.len()).filter(|&m| r[m].is_none()).collect();
                             let full = (!still.is_empty()).then(|| pc.full_at(si));
                             if let Some(full) = &full {
-                                let ws: Vec<f64> = still.iter().map(|&m| w[m]).collect();
-                                let mut wms: Vec<Warm> =
-                                    still.iter().map(|&m| before[missing[m]]).collect();
-                                let rs = self.solve_loads_partial(
-                                    full,
-                                    &ws,
-                                    model,
-                                    f64::NEG_INFINITY,
-                                    gmax,
-                                    &mut wms,
-                                );
+                                let which: Vec<usize> = still.iter().map(|&m| missing[m]).collect();
+                                let (rs, wms) = redo(full, &which, f64::NEG_INFINITY);
                                 for ((&m, eq), wj) in still.iter().zip(rs).zip(wms) {
                                     r[m] = eq;
                                     wm[m] = wj;
