@@ -169,7 +169,8 @@ impl Sim {
             .sl_dev
             .iter()
             .map(|d| {
-                let lat = amplitude(d[0], d[3], w_xy).hypot(amplitude(d[1], d[4], w_xy));
+                let (ax, ay) = (amplitude(d[0], d[3], w_xy), amplitude(d[1], d[4], w_xy));
+                let lat = (ax * ax + ay * ay).sqrt();
                 let z = if d[2] == 0.0 && d[5] == 0.0 {
                     0.0
                 } else {
@@ -181,7 +182,10 @@ impl Sim {
         let sub = r
             .sub_dev
             .iter()
-            .map(|d| f_b * amplitude(d[0], d[2], w_b).hypot(amplitude(d[1], d[3], w_b)))
+            .map(|d| {
+                let (ax, ay) = (amplitude(d[0], d[2], w_b), amplitude(d[1], d[3], w_b));
+                f_b * (ax * ax + ay * ay).sqrt()
+            })
             .fold(0.0, f64::max);
         [2.0 * sl, 2.0 * sub]
     }

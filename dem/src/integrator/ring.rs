@@ -134,15 +134,50 @@ mod tests {
                     let (x0, v0) = (rnd() * 1e-10, rnd() * 1e-10 * w2.sqrt());
                     let (mut x, mut v) = (x0, v0);
                     let bound = bound_factor(w2, dt) * amplitude(x0, v0, w2);
-                    for _ in 0..500 {
+                    // the speed bound of `Sim::ring_since_mark`: ω × the position bound
+                    let speed = w2.sqrt() * bound;
+                    for n in 1..=500 {
                         let f = -w2 * x - v * it;
                         v += dt * f;
                         x += dt * v;
                         assert!(x.abs() <= bound, "ωdt {wdt} Q {q}: {x} > {bound}");
+                        assert!(v.abs() <= speed, "ωdt {wdt} Q {q}: speed {v} > {speed}");
+                        let moved = (x - x0).abs();
+                        assert!(moved <= n as f64 * dt * speed, "ωdt {wdt} Q {q}: {moved}");
                     }
                     let (y, u) = m.pow(500).apply(x0, v0);
                     assert!((y - x).abs() <= 1e-9 * bound, "{y} vs {x}");
                     assert!((u - v).abs() <= 1e-9 * bound * w2.sqrt(), "{u} vs {v}");
+                }
+            }
+        }
+    }
+
+    /// The implicit mount's map keeps |δ| and |δv|/ω within `IMPLICIT_BOUND_FACTOR` × the
+    /// amplitude, so the speed bound of `Sim::ring_since_mark` holds for it too.
+    #[test]
+    fn the_implicit_map_keeps_position_and_speed_bounds() {
+        for wdt in [0.01, 0.3, 1.0, 3.0] {
+            let (dt, w2) = (1e-10, (wdt / 1e-10f64).powi(2));
+            for it in [0.0, 1e6, 1e8] {
+                let m = StepMap::implicit(w2, it, dt);
+                for (x0, v0) in [
+                    (1e-9, 0.0),
+                    (0.0, 1e-9 * w2.sqrt()),
+                    (-3e-10, 7e-10 * w2.sqrt()),
+                ] {
+                    let bound = IMPLICIT_BOUND_FACTOR * amplitude(x0, v0, w2);
+                    let (mut x, mut v) = (x0, v0);
+                    for n in 1..=300 {
+                        (x, v) = m.apply(x, v);
+                        assert!(x.abs() <= bound, "ωdt {wdt}: {x} > {bound}");
+                        assert!(v.abs() <= w2.sqrt() * bound, "ωdt {wdt}: speed {v}");
+                        let moved = (x - x0).abs();
+                        assert!(
+                            moved <= n as f64 * dt * w2.sqrt() * bound,
+                            "ωdt {wdt}: {moved}"
+                        );
+                    }
                 }
             }
         }
