@@ -83,22 +83,15 @@ fn new_contacts_are_picked_up_before_they_touch() {
         .sim;
     let at_start: BTreeSet<u32> = sim.state.act.sub.iter().copied().collect();
     let mut touched: BTreeSet<u32> = BTreeSet::new();
-    let (ne, nr, ns, _) = dem::protocol::step_counts(&sim, RunKind::Slide);
-    for k in 0..ne + nr + ns {
-        if k == ne {
-            sim.attach_spring();
-        }
-        if k == ne + nr {
-            sim.start_support();
-        }
-        sim.step().unwrap();
+    dem::protocol::step_slide(&mut sim, |sim| {
         let s = &sim.state;
         for (q, o) in sim.pair_results().iter().enumerate() {
             if o.delta > 0.0 {
                 touched.insert(s.pairs.j[s.act.pairs[q] as usize]);
             }
         }
-    }
+    })
+    .unwrap();
     let new: Vec<&u32> = touched.difference(&at_start).collect();
     eprintln!(
         "{} substrate spheres active at the start, {} touched, {} of them new; late pairs {}",

@@ -607,17 +607,8 @@ mod tests {
             let mut sim = crate::prepare(&scene, p, crate::Start::Surrogate, None)
                 .unwrap()
                 .sim;
-            let (ne, nr, ns, _) =
-                crate::protocol::step_counts(&sim, crate::protocol::RunKind::Slide);
             let (mut worst, mut speed_part, mut ringing) = (0.0f64, 0u64, 0u64);
-            for k in 0..ne + nr + ns {
-                if k == ne {
-                    sim.attach_spring();
-                }
-                if k == ne + nr {
-                    sim.start_support();
-                }
-                sim.step().unwrap();
+            crate::protocol::step_slide(&mut sim, |sim| {
                 let s = &sim.state;
                 let n = s.step - s.mark.step;
                 let bound = sim.ring_since_mark(n);
@@ -636,7 +627,8 @@ mod tests {
                     ringing += 1;
                     speed_part += u64::from(bound[0] < s.mark.ring[0]);
                 }
-            }
+            })
+            .unwrap();
             eprintln!(
                 "rigid_z {rigid_z}: {ringing} steps with ringing spheres, the speed part decided on {speed_part}; worst moved / bound {worst:.3}; {} evaluations",
                 sim.state.stats.evaluations

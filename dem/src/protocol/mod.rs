@@ -11,6 +11,6 @@ pub mod xyz;
 
 pub use equilibrate::{equilibrate_summary, settle_time, EquilibrateSummary};
 pub use lock_in::{lock_in, LockIn};
-pub use run::{run, step_counts, Phase, Progress, RunIo, RunKind};
+pub use run::{run, step_counts, step_slide, Phase, Progress, RunIo, RunKind};
 pub use sample::Sample;
 pub use slide::{slide_summary, SlideSummary};

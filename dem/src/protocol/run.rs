@@ -62,6 +62,26 @@ pub fn step_counts(sim: &Sim, kind: RunKind) -> (u64, u64, u64, u64) {
     (n(p.equilibrate_time), r, s, n(p.sample_interval).max(1))
 }
 
+/// Steps a fresh `sim` through the slide protocol one [`Sim::step`] at a time, with the phase
+/// changes of [`run`] (the pulling spring attached after the equilibration, the support started
+/// after the relaxation), calling `after` with the engine after each step: for checks that look
+/// inside every step. No samples, checkpoints or snapshots. Cost: the protocol's steps, on the
+/// calling thread.
+pub fn step_slide(sim: &mut Sim, mut after: impl FnMut(&Sim)) -> Result<(), DemError> {
+    let (ne, nr, ns, _) = step_counts(sim, RunKind::Slide);
+    for k in 0..ne + nr + ns {
+        if k == ne {
+            sim.attach_spring();
+        }
+        if k == ne + nr {
+            sim.start_support();
+        }
+        sim.step()?;
+        after(sim);
+    }
+    Ok(())
+}
+
 /// Runs (or continues, if `sim.state.step > 0` after a checkpoint load) the protocol `kind`,
 /// appending samples to `samples` and calling `progress` after each sample. Phase changes
 /// happen at fixed step numbers, so a resumed run is bit-identical to an uninterrupted one.
