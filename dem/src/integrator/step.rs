@@ -33,16 +33,6 @@ use crate::DemError;
 const MIN_TEAM_STEPS: u64 = 16;
 
 impl Sim {
-    /// Half-displacement limit (m) that triggers an active-set evaluation.
-    #[inline]
-    fn trigger(&self) -> f64 {
-        if self.params.active_set {
-            0.5 * self.params.active_margin
-        } else {
-            0.5 * self.params.skin
-        }
-    }
-
     /// One velocity-Verlet step (see the module doc), on the calling thread. Errors with
     /// [`DemError::Unstable`] when a position or the control layer's state is no longer
     /// finite.
@@ -373,63 +363,6 @@ impl Sim {
             .fold(0.0, |a, &b| nan_max(a, b))
     }
 
-    /// Upper bound (m) of how far the ringing deviation of an inactive slider / substrate
-    /// sphere has moved in the `steps` steps since the last evaluation: the smaller of twice its
-    /// largest amplitude (`mark.ring`) and `steps·dt` times its largest speed. A free
-    /// deviation's speed is at most ω times the same bound as its position (the step maps keep
-    /// `ω²δ² + δv² − dt ω² δ δv`, symmetric in ωδ and δv; `ring.rs`), so the speed bound is
-    /// `ω·ring/2`, ω the largest of the sphere's free modes. Right after a slip, when the
-    /// spheres that left contact ring by tens of nm, this lets the set go several steps
-    /// between evaluations instead of one (docs/validation/dem-engine.md, "The active set").
-    /// O(1).
-    fn ring_since_mark(&self, steps: u64) -> [f64; 2] {
-        let mk = &self.state.mark;
-        let [w_xy, w_z, w_b] = self.free_omega2();
-        let w_sl = if self.params.rigid_z {
-            w_xy
-        } else {
-            w_xy.max(w_z)
-        };
-        let t = steps as f64 * self.dt;
-        [
-            mk.ring[0].min(t * w_sl.sqrt() * 0.5 * mk.ring[0]),
-            mk.ring[1].min(t * w_b.sqrt() * 0.5 * mk.ring[1]),
-        ]
-    }
-
-    /// Upper bound of the displacement (m) of every inactive particle since the last
-    /// evaluation: slider spheres move with the control layer and the common mode, plus their
-    /// ringing deviation ([`Self::ring_since_mark`]); substrate spheres by their ringing
-    /// deviation only.
-    fn frame_disp(&self) -> f64 {
-        let s = &self.state;
-        let mk = &s.mark;
-        let lat = [
-            s.cl_x[0] - mk.cl[0] + s.common.u[0] - mk.u[0],
-            s.cl_x[1] - mk.cl[1] + s.common.u[1] - mk.u[1],
-        ];
-        let mut dq = [
-            s.cl_x[2] - mk.cl[2],
-            s.tilt[0] - mk.tilt[0],
-            s.tilt[1] - mk.tilt[1],
-        ];
-        if !self.params.rigid_z {
-            for k in 0..3 {
-                dq[k] += s.common.w[k] - mk.w[k];
-            }
-        }
-        let [ax, ay] = self.body.arm;
-        let z = dq[0].abs() + dq[1].abs() * ay + dq[2].abs() * ax;
-        let ring = self.ring_since_mark(s.step + 1 - mk.step);
-        let d = (lat[0] * lat[0] + lat[1] * lat[1] + z * z).sqrt() + ring[0];
-        let d = d.max(ring[1]);
-        if d.is_nan() {
-            f64::INFINITY
-        } else {
-            d
-        }
-    }
-
     /// The implicit mount's step ([`super::mount::Mount::step`]) of the z network; no-op
     /// without the implicit mount.
     pub(crate) fn mount_step(&mut self) {
@@ -577,71 +510,5 @@ mod tests {
             x.is_nan() || x.abs() >= 1e3 * xs,
             "velocity-Verlet stayed bounded at ω·dt = 20: {x}"
         );
-    }
-
-    /// The bound of [`Sim::ring_since_mark`] holds on a slide where spheres leave contact
-    /// ringing: a small slider with every contact failed (μ = 0.5, so the spheres deflect far
-    /// and ring when a contact breaks), reduced and full model, pulled at 1 m/s. After every
-    /// step, each ringing inactive sphere's deviation has moved from its value at the last
-    /// evaluation by at most the bound, and the bound's speed part (`steps·dt·ω·ring/2`) is
-    /// the smaller one on some steps, so it is what this checks.
-    #[test]
-    fn ringing_spheres_move_within_the_bound_between_evaluations() {
-        let mut scene = surrogate::Scene::preset("square-tri").unwrap();
-        scene.slider.radius = 12e-6;
-        scene.slider.theta = 10.2f64.to_radians();
-        scene.substrate.size = [60e-6, 60e-6];
-        scene.coating.p_crit = 1e6;
-        for rigid_z in [true, false] {
-            let p = SimParams {
-                load: 1.4e-3 / 3505.0 * scene.slider_sites().len() as f64,
-                prune_substrate: true,
-                active_set: true,
-                rigid_z,
-                equilibrate_time: 0.2e-6,
-                relax_time: 0.2e-6,
-                slide_time: 3e-6,
-                support_speed: 1.0,
-                ..SimParams::default()
-            };
-            let mut sim = crate::prepare(&scene, p, crate::Start::Surrogate, None)
-                .unwrap()
-                .sim;
-            let (mut worst, mut speed_part, mut ringing) = (0.0f64, 0u64, 0u64);
-            crate::protocol::step_slide(&mut sim, |sim| {
-                let s = &sim.state;
-                let n = s.step - s.mark.step;
-                let bound = sim.ring_since_mark(n);
-                let maps = sim.ring_maps(n);
-                for d in &s.ringing.sl_dev {
-                    let e = sim.advance_sl(&maps, *d);
-                    let moved = (0..3).map(|c| (e[c] - d[c]).powi(2)).sum::<f64>().sqrt();
-                    worst = worst.max(moved / bound[0]);
-                }
-                for d in &s.ringing.sub_dev {
-                    let e = Sim::advance_sub(&maps, *d);
-                    let moved = ((e[0] - d[0]).powi(2) + (e[1] - d[1]).powi(2)).sqrt();
-                    worst = worst.max(moved / bound[1]);
-                }
-                if !s.ringing.sl.is_empty() {
-                    ringing += 1;
-                    speed_part += u64::from(bound[0] < s.mark.ring[0]);
-                }
-            })
-            .unwrap();
-            eprintln!(
-                "rigid_z {rigid_z}: {ringing} steps with ringing spheres, the speed part decided on {speed_part}; worst moved / bound {worst:.3}; {} evaluations",
-                sim.state.stats.evaluations
-            );
-            assert!(
-                worst <= 1.0,
-                "rigid_z {rigid_z}: a ringing sphere moved {worst} × its bound"
-            );
-            assert!(
-                speed_part > 0,
-                "rigid_z {rigid_z}: the speed bound was never used"
-            );
-            assert_eq!(sim.state.stats.late_pairs, 0);
-        }
     }
 }
