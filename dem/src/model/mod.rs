@@ -4,6 +4,7 @@
 
 pub mod constant;
 pub mod contact;
+pub mod contact_batch;
 pub mod friction;
 pub mod hertz;
 pub mod mindlin;
@@ -15,6 +16,7 @@ pub mod tangential;
 
 pub use constant::Constant;
 pub use contact::{reduced_mass, ContactModel, PairOut};
+pub use contact_batch::{BatchPair, ContactBatch, BATCH};
 pub use friction::{Friction, FrictionLaw};
 pub use hertz::HertzNormal;
 pub use mindlin::Mindlin;
