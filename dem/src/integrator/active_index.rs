@@ -8,7 +8,7 @@
 use super::body::g_of;
 use super::chunks::Chunking;
 use super::sim::Sim;
-use crate::model::PairOut;
+use crate::model::{ContactBatch, PairOut};
 
 impl Sim {
     /// Packs the active particles and pairs densely (positions at this evaluation become the
@@ -141,5 +141,9 @@ impl Sim {
         );
         idx.parts.clear();
         idx.parts.resize(idx.chunks.n_sl_chunks(na), [0.0; 6]);
+        if idx.batches.len() < idx.parts.len() {
+            idx.batches
+                .resize_with(idx.parts.len(), ContactBatch::default);
+        }
     }
 }

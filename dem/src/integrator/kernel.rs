@@ -5,6 +5,7 @@
 //! and the mount (`mount.rs`) share these without importing each other.
 
 use super::chunks::Chunking;
+use crate::model::ContactBatch;
 use crate::params::SimParams;
 
 /// Half kick `v += h·f/m` (m/s, N, s, kg).
@@ -65,4 +66,7 @@ pub(crate) struct Index {
     /// Per slider chunk: its reaction on the control layer (lateral x, y; generalized z, t_x,
     /// t_y) and the largest p0 (Pa) of its pairs.
     pub parts: Vec<[f64; 6]>,
+    /// Per slider chunk: the pass's scratch [`ContactBatch`] (empty between passes; kept so
+    /// that no pass zeroes one).
+    pub batches: Vec<ContactBatch>,
 }

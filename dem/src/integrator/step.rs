@@ -255,9 +255,9 @@ impl Sim {
             // every other chunk), and the pass runs each chunk once.
             let (x, v, slot) = unsafe { (slx.range(a, b), slv.range(a, b), d2s.range(c, c + 1)) };
             let (f, x0, ids) = (&sl_f[a..a + x.len()], &sl_x0[a..], &sl_ids[a..]);
-            // largest squared displacement; the plain sum only flags a non-finite value (two
-            // independent accumulators, no NaN-aware max in the loop's dependency chain)
-            let (mut d2, mut sum) = (0.0f64, 0.0f64);
+            // largest squared displacement, and a flag for a non-finite one (no NaN-aware max
+            // and no running sum in the loop's dependency chains)
+            let (mut d2, mut bad) = (0.0f64, false);
             let it = x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0).zip(ids);
             // one loop body, expanded twice so that each loop stays monomorphic (one size: the
             // body's mass, no anchor offset; per-site sizes: each sphere's own mass and anchor
@@ -284,7 +284,7 @@ impl Sim {
                         }
                         let d = [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]];
                         let m = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-                        sum += m;
+                        bad |= !m.is_finite();
                         if m > d2 {
                             d2 = m;
                         }
@@ -295,7 +295,7 @@ impl Sim {
                 Some(z) => advance!(|i: usize| h / z.sl_m[i], |i: usize| z.sl_dz[i]),
                 None => advance!(|_: usize| hm),
             }
-            slot[0] = if sum.is_finite() { d2 } else { f64::NAN };
+            slot[0] = if bad { f64::NAN } else { d2 };
         };
         let substrate = |k: usize| {
             let (a, b) = (k * sub, (k + 1) * sub);
@@ -312,7 +312,7 @@ impl Sim {
             if fused {
                 sf.chunk_with(a, sub_ids, out, v, f, x);
             }
-            let (mut d2, mut sum) = (0.0f64, 0.0f64);
+            let (mut d2, mut bad) = (0.0f64, false);
             let it = x
                 .iter_mut()
                 .zip(v.iter_mut())
@@ -328,12 +328,12 @@ impl Sim {
                     x[1] += dt * v[1];
                     let d = [x[0] - x0[0], x[1] - x0[1]];
                     let m = d[0] * d[0] + d[1] * d[1];
-                    sum += m;
+                    bad |= !m.is_finite();
                     if m > d2 {
                         d2 = m;
                     }
                 }
-                slot[0] = if sum.is_finite() { d2 } else { f64::NAN };
+                slot[0] = if bad { f64::NAN } else { d2 };
                 return;
             }
             for (((x, v), f), x0) in it {
@@ -343,12 +343,12 @@ impl Sim {
                 x[1] += dt * v[1];
                 let d = [x[0] - x0[0], x[1] - x0[1]];
                 let m = d[0] * d[0] + d[1] * d[1];
-                sum += m;
+                bad |= !m.is_finite();
                 if m > d2 {
                     d2 = m;
                 }
             }
-            slot[0] = if sum.is_finite() { d2 } else { f64::NAN };
+            slot[0] = if bad { f64::NAN } else { d2 };
         };
         exec.pass(par, [n_sl, n_sub], &|c| {
             if c < n_sl {

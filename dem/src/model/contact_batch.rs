@@ -14,7 +14,7 @@ pub const BATCH: usize = 32;
 /// time with AVX2 where the CPU has it (checked once per process; no FMA), else 2. Cost O(n),
 /// five square roots and six divisions a pair, the slip ones computed for every lane.
 /// Why: `docs/validation/dem-engine.md`, "The contact law in lanes".
-#[derive(Clone)]
+#[derive(Debug, Clone)]
 pub struct ContactBatch {
     n: usize,
     /// The caller's index of each pair.
@@ -248,37 +248,19 @@ impl ContactBatch {
     }
 }
 
+/// Shared by the tests of the batch and of the slider pass.
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::model::{Constant, HertzNormal, Mindlin, PressureSwitched};
+pub(crate) mod test_support {
+    use crate::model::{ContactModel, Friction, HertzNormal, Mindlin, PressureSwitched};
     use crate::params::Tangential;
     use surrogate::contact::Hertz;
     use surrogate::Material;
 
-    /// A small deterministic generator (xorshift) for the inputs.
-    struct Rng(u64);
-    impl Rng {
-        fn unit(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn sym(&mut self) -> f64 {
-            2.0 * self.unit() - 1.0
-        }
-    }
-
-    /// The batch gives the scalar law's bits, output and history, for touching pairs that
-    /// stick and slip, with and without history, per-pair sizes, both friction laws, in
-    /// batches of every length up to [`BATCH`].
-    #[test]
-    fn the_batch_gives_the_scalar_laws_bits() {
+    /// The study's pair law (100 GPa, ν 0.3, μ 0.01 → 0.5 above 4 GPa) for two spheres of
+    /// radius `r` (m), with damping γ_n 0.3, γ_t 0.2.
+    pub(crate) fn study_model(r: f64) -> ContactModel {
         let mat = Material::default();
-        let r = 1.5e-6;
-        let m = 1.0e-14;
-        let base = ContactModel {
+        ContactModel {
             normal: HertzNormal {
                 hertz: Hertz::equal_spheres(r, &mat),
                 gamma_n: 0.3,
@@ -291,7 +273,42 @@ mod tests {
                 mu2: 0.5,
             }),
             radius_sum: 2.0 * r,
-        };
+        }
+    }
+
+    /// A small deterministic generator (xorshift64).
+    pub(crate) struct Rng(pub u64);
+
+    impl Rng {
+        /// Uniform in [0, 1).
+        pub(crate) fn unit(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+
+        /// Uniform in [−1, 1).
+        pub(crate) fn sym(&mut self) -> f64 {
+            2.0 * self.unit() - 1.0
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::test_support::{study_model, Rng};
+    use super::*;
+    use crate::model::Constant;
+
+    /// The batch gives the scalar law's bits, output and history, for touching pairs that
+    /// stick and slip, with and without history, per-pair sizes, both friction laws, in
+    /// batches of every length up to [`BATCH`].
+    #[test]
+    fn the_batch_gives_the_scalar_laws_bits() {
+        let r = 1.5e-6;
+        let m = 1.0e-14;
+        let base = study_model(r);
         let constant = ContactModel {
             friction: Friction::Constant(Constant { mu: 0.1 }),
             ..base
