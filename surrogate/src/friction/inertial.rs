@@ -32,7 +32,7 @@
 //! the next well and the spring unloads further than in the overdamped jump; the mean force
 //! falls below the quasi-static one.
 
-/// Knobs of [`run`] (SI).
+/// Knobs of a run ([`Runner`]) (SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Inertial {
     /// Mass M of the sliding body (kg).
@@ -49,7 +49,7 @@ pub(crate) struct Inertial {
     pub window_start: f64,
 }
 
-/// Result of [`run`] (SI).
+/// Result of a run ([`Runner`]) (SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct InertialRun {
     /// Mean spring force over the window (N).
@@ -106,19 +106,30 @@ impl<'a> Lin<'a> {
     }
 }
 
-/// The mean of [`run`] over `starts` runs starting in steady sliding at `x = j·n·h/starts`,
+/// The mean of the runs ([`Runner`]) over `starts` starts in steady sliding at `x = j·n·h/starts`,
 /// `j = 0..starts` (evenly spread over the profile): the stick-slip of an underdamped slider is
 /// chaotic, and a single run's window mean scatters by ±20–30 % with its start. Returns the
 /// runs' mean friction and its standard deviation (N) — the scatter a single DEM run of the
-/// same length has to expect. Parallel over the starts (rayon), deterministic.
+/// same length has to expect. Parallel over groups of [`INTERLEAVE`] starts (rayon), each group
+/// stepped in turn on one thread ([`Runner`]: one run's step is a chain of dependent
+/// divisions, and independent runs fill its latency); deterministic, each run's result the
+/// same bits as when run alone.
 pub(crate) fn ensemble(f: &[f64], c: &[f64], h: f64, p: &Inertial, starts: usize) -> (f64, f64) {
     use rayon::prelude::*;
     let starts = starts.max(1);
     let n = (f.len() - 1) as f64;
-    let friction: Vec<f64> = (0..starts)
+    let x_start = |j: usize| j as f64 * n * h / starts as f64;
+    let groups: Vec<Vec<f64>> = (0..starts.div_ceil(INTERLEAVE))
         .into_par_iter()
-        .map(|j| run(f, c, h, p, j as f64 * n * h / starts as f64).friction)
+        .map(|g| {
+            let js = g * INTERLEAVE..((g + 1) * INTERLEAVE).min(starts);
+            let mut runners: Vec<Runner> =
+                js.map(|j| Runner::new(f, c, h, p, x_start(j))).collect();
+            while runners.iter_mut().fold(false, |any, r| r.advance() | any) {}
+            runners.iter().map(|r| r.result().friction).collect()
+        })
         .collect();
+    let friction: Vec<f64> = groups.into_iter().flatten().collect();
     let k = friction.len() as f64;
     let mean = friction.iter().sum::<f64>() / k;
     let var = friction
@@ -138,86 +149,154 @@ fn in_window(t0: f64, t1: f64, t_w: f64) -> f64 {
 
 /// Runs the model on the force profile `f` (= V', N) and Coulomb profile `c` (N, ≥ 0), both
 /// sampled at `s_k = k·h`, `k = 0..=n` (see the module documentation), starting in steady
-/// sliding at `x_start` (m).
+/// sliding at `x_start` (m). (The tests' single run; [`ensemble`] interleaves several.)
+#[cfg(test)]
 pub(crate) fn run(f: &[f64], c: &[f64], h: f64, p: &Inertial, x_start: f64) -> InertialRun {
-    assert!(f.len() == c.len() && f.len() >= 2);
-    let mut prof = Lin::new(h, f, c);
-    // the fastest natural frequency sets the largest step; a moving slider also crosses at most
-    // half a sample per step
-    let slope = f
-        .windows(2)
-        .map(|w| ((w[1] - w[0]) / h).abs())
-        .fold(0.0f64, f64::max);
-    let omega = ((p.k + slope) / p.mass).sqrt();
-    let dt_max = (0.05 / omega).min(p.duration / 1e4);
-    let (m, g, k, v) = (p.mass, p.gamma, p.k, p.speed);
-    let (t_end, t_w) = (p.duration, p.window_start);
-    // steady sliding at x_start
-    let mut x = x_start;
-    let mut u = v;
-    let (f0, c0) = prof.at(x_start);
-    let x0_support = x_start + (f0 + c0) / k;
-    let spring = |t: f64, x: f64| k * (x0_support + v * t - x);
-    let mut t = 0.0f64;
-    let mut sum = 0.0; // ∫ s dt over the window
-    let mut sticks = 0usize;
-    while t < t_end {
-        let (fx, coulomb) = prof.at(x);
-        if u == 0.0 {
+    let mut r = Runner::new(f, c, h, p, x_start);
+    while r.advance() {}
+    r.result()
+}
+
+/// Starts of [`ensemble`] stepped in turn on one thread.
+const INTERLEAVE: usize = 4;
+
+/// One run of the model from steady sliding (see the module documentation), advanced step by
+/// step ([`Runner::advance`]) so that several can be interleaved on one thread.
+struct Runner<'a> {
+    prof: Lin<'a>,
+    /// Constants: mass, damping, spring, speed (SI); end of the run and start of the window
+    /// (s); the largest step (s); half a sample (m); the support's start (m).
+    m: f64,
+    g: f64,
+    k: f64,
+    v: f64,
+    t_end: f64,
+    t_w: f64,
+    dt_max: f64,
+    h: f64,
+    x0_support: f64,
+    /// State: position (m), velocity (m/s), time (s), ∫ spring force dt over the window
+    /// (N·s), times stuck in the window.
+    x: f64,
+    u: f64,
+    t: f64,
+    sum: f64,
+    sticks: usize,
+}
+
+impl<'a> Runner<'a> {
+    /// The run from steady sliding at `x_start` (m). O(n) (the profile's largest slope).
+    fn new(f: &'a [f64], c: &'a [f64], h: f64, p: &Inertial, x_start: f64) -> Runner<'a> {
+        assert!(f.len() == c.len() && f.len() >= 2);
+        let mut prof = Lin::new(h, f, c);
+        // the fastest natural frequency sets the largest step; a moving slider also crosses at
+        // most half a sample per step
+        let slope = f
+            .windows(2)
+            .map(|w| ((w[1] - w[0]) / h).abs())
+            .fold(0.0f64, f64::max);
+        let omega = ((p.k + slope) / p.mass).sqrt();
+        let dt_max = (0.05 / omega).min(p.duration / 1e4);
+        // steady sliding at x_start
+        let (f0, c0) = prof.at(x_start);
+        Runner {
+            prof,
+            m: p.mass,
+            g: p.gamma,
+            k: p.k,
+            v: p.speed,
+            t_end: p.duration,
+            t_w: p.window_start,
+            dt_max,
+            h,
+            x0_support: x_start + (f0 + c0) / p.k,
+            x: x_start,
+            u: p.speed,
+            t: 0.0,
+            sum: 0.0,
+            sticks: 0,
+        }
+    }
+
+    /// The spring force (N) at time `t` (s) with the slider at `x` (m).
+    #[inline(always)]
+    fn spring(&self, t: f64, x: f64) -> f64 {
+        self.k * (self.x0_support + self.v * t - x)
+    }
+
+    /// One step (a stuck phase skipped in closed form, then one step from rest; or one
+    /// sliding step); false once the run has ended (and then a no-op). O(1).
+    #[inline(always)]
+    fn advance(&mut self) -> bool {
+        let (m, g, k, v) = (self.m, self.g, self.k, self.v);
+        let (t_end, t_w) = (self.t_end, self.t_w);
+        // the run's loop test `t < t_end` (a NaN time ends it too)
+        let running = self.t < t_end;
+        if !running {
+            return false;
+        }
+        let (fx, coulomb) = self.prof.at(self.x);
+        if self.u == 0.0 {
             // stuck: the drive K(X − x) − F(x) + γv grows at K·v; it frees the slider when it
             // leaves [−C, C]
-            let drive = spring(t, x) - fx + g * v;
+            let drive = self.spring(self.t, self.x) - fx + g * v;
             let wait = if drive.abs() > coulomb {
                 0.0
             } else {
                 (coulomb - drive) / (k * v)
             };
             if wait > 0.0 {
-                let t2 = (t + wait).min(t_end);
+                let t2 = (self.t + wait).min(t_end);
                 // the spring force is linear in t while stuck: integrate it exactly
-                let (a, b) = (t.max(t_w), t2);
+                let (a, b) = (self.t.max(t_w), t2);
                 if b > a {
-                    let (sa, sb) = (spring(a, x), spring(b, x));
-                    sum += 0.5 * (sa + sb) * (b - a);
+                    let (sa, sb) = (self.spring(a, self.x), self.spring(b, self.x));
+                    self.sum += 0.5 * (sa + sb) * (b - a);
                 }
-                t = t2;
-                if t >= t_end {
-                    break;
+                self.t = t2;
+                if self.t >= t_end {
+                    return false;
                 }
             }
             // free: one step from rest in the direction of the drive (x has not moved)
-            let drive = spring(t, x) - fx + g * v;
-            let dt = dt_max.min(t_end - t);
-            u = (drive - coulomb.copysign(drive)) / m * dt;
+            let drive = self.spring(self.t, self.x) - fx + g * v;
+            let dt = self.dt_max.min(t_end - self.t);
+            self.u = (drive - coulomb.copysign(drive)) / m * dt;
             if (drive.abs() - coulomb) <= 0.0 {
-                u = 0.0;
+                self.u = 0.0;
             }
-            x += u * dt;
-            let t0 = t;
-            t += dt;
-            sum += spring(t, x) * in_window(t0, t, t_w);
-            continue;
+            self.x += self.u * dt;
+            let t0 = self.t;
+            self.t += dt;
+            self.sum += self.spring(self.t, self.x) * in_window(t0, self.t, t_w);
+            return true;
         }
-        let dt = dt_max.min(0.5 * h / u.abs()).min(t_end - t);
-        let drive = spring(t, x) - fx - g * (u - v);
+        let u = self.u;
+        let dt = self.dt_max.min(0.5 * self.h / u.abs()).min(t_end - self.t);
+        let drive = self.spring(self.t, self.x) - fx - g * (u - v);
         let un = u + (drive - coulomb.copysign(u)) / m * dt;
         if un * u <= 0.0 {
-            u = 0.0;
-            if t > t_w {
-                sticks += 1;
+            self.u = 0.0;
+            if self.t > t_w {
+                self.sticks += 1;
             }
         } else {
-            u = un;
+            self.u = un;
         }
-        x += u * dt;
-        let t0 = t;
-        t += dt;
-        sum += spring(t, x) * in_window(t0, t, t_w);
+        self.x += self.u * dt;
+        let t0 = self.t;
+        self.t += dt;
+        self.sum += self.spring(self.t, self.x) * in_window(t0, self.t, t_w);
+        true
     }
-    let span = (t_end - t_w).max(f64::MIN_POSITIVE);
-    InertialRun {
-        friction: sum / span,
-        sticks,
+
+    /// The run's result (valid once [`Runner::advance`] returned false).
+    fn result(&self) -> InertialRun {
+        let span = (self.t_end - self.t_w).max(f64::MIN_POSITIVE);
+        InertialRun {
+            friction: self.sum / span,
+            sticks: self.sticks,
+        }
     }
 }
 
@@ -282,5 +361,38 @@ mod tests {
         };
         let r2 = run(&sinus(f0), &c, h, &heavy, 0.0);
         assert!(r2.friction > r.friction, "{r2:?} vs {r:?}");
+    }
+
+    /// The ensemble's interleaved runs give the bits of the same runs alone: the mean and
+    /// spread of 11 stick-slip runs (groups of 4, 4 and 3), with a Coulomb profile.
+    #[test]
+    fn interleaved_runs_give_the_bits_of_runs_alone() {
+        let a = 3e-6;
+        let n = 120;
+        let h = a / n as f64;
+        let p = study();
+        let f0 = 10.0 * p.k * a / (2.0 * PI);
+        let f: Vec<f64> = (0..=n)
+            .map(|j| f0 * (2.0 * PI * j as f64 / n as f64).sin())
+            .collect();
+        let c: Vec<f64> = (0..=n)
+            .map(|j| 0.05 * f0 * (1.0 + (4.0 * PI * j as f64 / n as f64).cos()))
+            .collect();
+        let starts = 11;
+        let alone: Vec<InertialRun> = (0..starts)
+            .map(|j| run(&f, &c, h, &p, j as f64 * n as f64 * h / starts as f64))
+            .collect();
+        assert!(alone.iter().all(|r| r.sticks > 0), "stick-slip expected");
+        let k = starts as f64;
+        let mean = alone.iter().map(|r| r.friction).sum::<f64>() / k;
+        let var = alone
+            .iter()
+            .map(|r| (r.friction - mean) * (r.friction - mean))
+            .sum::<f64>()
+            / (k - 1.0);
+        let (m, sd) = ensemble(&f, &c, h, &p, starts);
+        assert_eq!(m.to_bits(), mean.to_bits());
+        assert_eq!(sd.to_bits(), var.sqrt().to_bits());
+        assert!(sd > 0.0);
     }
 }
