@@ -12,7 +12,7 @@ pub const BATCH: usize = 32;
 /// [`ContactModel::pair`] with [`super::Mindlin`] history, so the same bits. The branches of
 /// the scalar law (history rotation, slip) become selects, so the loop runs 4 pairs at a
 /// time with AVX2 where the CPU has it (checked once per process; no FMA), else 2. Cost O(n),
-/// five square roots and six divisions a pair, the slip ones computed for every lane.
+/// six square roots and seven divisions a pair, the slip ones computed for every lane.
 /// Why: `docs/validation/dem-engine.md`, "The contact law in lanes".
 #[derive(Debug, Clone)]
 pub struct ContactBatch {

@@ -165,7 +165,7 @@ const INTERLEAVE: usize = 4;
 struct Runner<'a> {
     prof: Lin<'a>,
     /// Constants: mass, damping, spring, speed (SI); end of the run and start of the window
-    /// (s); the largest step (s); half a sample (m); the support's start (m).
+    /// (s); the largest step (s); the support's start (m). (The sample spacing is `prof.h`.)
     m: f64,
     g: f64,
     k: f64,
@@ -173,7 +173,6 @@ struct Runner<'a> {
     t_end: f64,
     t_w: f64,
     dt_max: f64,
-    h: f64,
     x0_support: f64,
     /// State: position (m), velocity (m/s), time (s), ∫ spring force dt over the window
     /// (N·s), times stuck in the window.
@@ -208,7 +207,6 @@ impl<'a> Runner<'a> {
             t_end: p.duration,
             t_w: p.window_start,
             dt_max,
-            h,
             x0_support: x_start + (f0 + c0) / p.k,
             x: x_start,
             u: p.speed,
@@ -272,7 +270,10 @@ impl<'a> Runner<'a> {
             return true;
         }
         let u = self.u;
-        let dt = self.dt_max.min(0.5 * self.h / u.abs()).min(t_end - self.t);
+        let dt = self
+            .dt_max
+            .min(0.5 * self.prof.h / u.abs())
+            .min(t_end - self.t);
         let drive = self.spring(self.t, self.x) - fx - g * (u - v);
         let un = u + (drive - coulomb.copysign(u)) / m * dt;
         if un * u <= 0.0 {
@@ -334,17 +335,22 @@ mod tests {
         assert_eq!(r.sticks, 0);
     }
 
+    /// Period (m) and samples of the sinusoidal test profiles.
+    const A: f64 = 3e-6;
+    const N: usize = 120;
+
+    /// `F0 sin(2π s/A)` (N) at the `N + 1` samples of one period.
+    fn sinus(f0: f64) -> Vec<f64> {
+        (0..=N)
+            .map(|j| f0 * (2.0 * PI * j as f64 / N as f64).sin())
+            .collect()
+    }
+
     #[test]
     fn weak_corrugation_adds_no_mean_force_and_strong_corrugation_sticks_and_slips() {
-        let a = 3e-6;
-        let n = 120;
+        let (a, n) = (A, N);
         let h = a / n as f64;
         let p = study();
-        let sinus = |f0: f64| -> Vec<f64> {
-            (0..=n)
-                .map(|j| f0 * (2.0 * PI * j as f64 / n as f64).sin())
-                .collect()
-        };
         let c = vec![0.0; n + 1];
         // η = 2π F0/(K a) = 0.5: smooth sliding, mean force ≈ 0 (only the damping's)
         let f0 = 0.5 * p.k * a / (2.0 * PI);
@@ -367,14 +373,11 @@ mod tests {
     /// spread of 11 stick-slip runs (groups of 4, 4 and 3), with a Coulomb profile.
     #[test]
     fn interleaved_runs_give_the_bits_of_runs_alone() {
-        let a = 3e-6;
-        let n = 120;
+        let (a, n) = (A, N);
         let h = a / n as f64;
         let p = study();
         let f0 = 10.0 * p.k * a / (2.0 * PI);
-        let f: Vec<f64> = (0..=n)
-            .map(|j| f0 * (2.0 * PI * j as f64 / n as f64).sin())
-            .collect();
+        let f = sinus(f0);
         let c: Vec<f64> = (0..=n)
             .map(|j| 0.05 * f0 * (1.0 + (4.0 * PI * j as f64 / n as f64).cos()))
             .collect();
