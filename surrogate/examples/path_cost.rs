@@ -4,7 +4,9 @@
 //! with the slider's size. Prints one line per scene and a digest of the results (so two builds
 //! can be compared for identical answers).
 //!
-//! Run: `cargo run --release -p surrogate --example path_cost [-- --sizes] [-- --reps N]`
+//! Run: `cargo run --release -p surrogate --example path_cost [-- --sizes] [-- --reps N]
+//! [-- --cold]` (`--cold`: each repetition at a θ offset by 1e-9 rad, so no kept search is
+//! reused, as on a first path)
 use std::time::Instant;
 use surrogate::friction::{estimate_friction_loads, FrictionParams};
 use surrogate::map::{contact_line_direction, MapParams};
@@ -23,8 +25,12 @@ fn time(s: &Solver, theta: f64, dir: f64, loads: &[f64], reps: usize) -> (f64, u
     let p = FrictionParams::default();
     let t = Instant::now();
     let mut out = Vec::new();
-    for _ in 0..reps {
-        out = estimate_friction_loads(s, theta, dir, loads, &p).unwrap();
+    let cold = std::env::args().any(|a| a == "--cold");
+    for k in 0..reps {
+        // --cold: each repetition at θ offset by k·1e-9 rad, so no search kept by the last
+        // repetition is reused (a first path's cost)
+        let th = if cold { theta + k as f64 * 1e-9 } else { theta };
+        out = estimate_friction_loads(s, th, dir, loads, &p).unwrap();
     }
     let dt = t.elapsed().as_secs_f64() / reps as f64;
     let e = out.pop().unwrap().unwrap();

@@ -49,6 +49,9 @@ struct Track {
     top: f64,
     /// Contact distance² d² (m²).
     d2: f64,
+    /// The substrate sphere `[x, y, h]` (m), copied here by the search that reads it, so that
+    /// setting a floor streams the tracks instead of gathering from the whole substrate.
+    q: [f64; 3],
 }
 
 /// A pair that can rise above the floor, with what a sample needs of it (one contiguous
@@ -65,6 +68,17 @@ struct Above {
     d2: f64,
     local: [f64; 2],
     q: [f64; 3],
+}
+
+/// How far a [`PathChunk`] has taken the pairs above its current floor from its tracks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Taken {
+    /// The floor was just set: nothing taken.
+    NotYet,
+    /// One refresh took its live pairs straight from the tracks.
+    Once,
+    /// `above` holds every pair above the floor.
+    Kept,
 }
 
 /// The first search of a chunk covers the pairs whose touch height can rise within this many
@@ -104,6 +118,8 @@ pub(crate) struct PathChunk<'a> {
     /// The highest touch height (m, absolute) at the chunk's first sample.
     pub top0: f64,
     above: Vec<Above>,
+    /// How far the pairs above the current floor have been taken from the tracks.
+    taken: Taken,
     /// Of `above`, those whose window meets the current sub-chunk.
     live: Vec<Above>,
     /// The current sample's partial list (positions filled only for its pairs).
@@ -148,6 +164,7 @@ impl<'a> PathChunk<'a> {
             floor: f64::NEG_INFINITY,
             top0: f64::NEG_INFINITY,
             above: std::mem::take(&mut buf.above),
+            taken: Taken::Kept,
             live: std::mem::take(&mut buf.live),
         };
         // one search serves the first sample's top and the chunk's list: the pairs that can
@@ -206,6 +223,7 @@ impl<'a> PathChunk<'a> {
                 rp2: (v[0] * v[0] + v[1] * v[1] - along * along).max(0.0),
                 top: c.h + solver.slider_drop(c.slider),
                 d2: solver.pair_reach2(c.slider, c.substrate),
+                q,
             }
         }));
     }
@@ -247,49 +265,80 @@ impl<'a> PathChunk<'a> {
         top
     }
 
-    /// Sets the floor (m) and keeps the pairs that can rise above it, with their windows (a
-    /// new candidate search first where the floor falls below what the last one covered).
-    /// O(candidates). The live set must be refreshed after.
+    /// Sets the floor (m): the pairs that can rise above it are taken from the tracks by the next
+    /// [`PathChunk::refresh`] (a new candidate search first where the floor falls below what the
+    /// last one covered). O(1) but for that search. The live set must be refreshed after.
     pub fn set_floor(&mut self, floor: f64) {
         if floor < self.searched {
             self.search(floor);
         }
         self.floor = floor;
         self.above.clear();
-        for (k, t) in self.tracks.iter().enumerate() {
-            let rise = floor - t.top;
-            let rho2 = if rise > 0.0 {
-                if rise * rise >= t.d2 * (1.0 + MARGIN) {
-                    continue;
-                }
-                t.d2 - rise * rise
-            } else {
-                t.d2
-            };
-            let rho2 = rho2 * (1.0 + MARGIN) + MARGIN * MARGIN * t.d2;
-            if rho2 <= t.rp2 {
-                continue;
-            }
-            let w = (rho2 - t.rp2).sqrt() + MARGIN * t.d2.sqrt();
-            let c = &self.wide.pairs[k];
-            self.above.push(Above {
-                slider: c.slider,
-                substrate: c.substrate,
-                lo: t.s_star - w,
-                hi: t.s_star + w,
-                rho2,
-                d2: t.d2,
-                local: self.solver.slider_local(c.slider),
-                q: self.solver.substrate()[c.substrate as usize],
-            });
-        }
+        self.taken = Taken::NotYet;
         self.live.clear();
     }
 
+    /// The pair of track `k` if it can rise above the floor, with its window. O(1).
+    #[inline]
+    fn above_of(&self, k: usize, t: &Track) -> Option<Above> {
+        let rise = self.floor - t.top;
+        let rho2 = if rise > 0.0 {
+            if rise * rise >= t.d2 * (1.0 + MARGIN) {
+                return None;
+            }
+            t.d2 - rise * rise
+        } else {
+            t.d2
+        };
+        let rho2 = rho2 * (1.0 + MARGIN) + MARGIN * MARGIN * t.d2;
+        if rho2 <= t.rp2 {
+            return None;
+        }
+        let w = (rho2 - t.rp2).sqrt() + MARGIN * t.d2.sqrt();
+        let c = &self.wide.pairs[k];
+        Some(Above {
+            slider: c.slider,
+            substrate: c.substrate,
+            lo: t.s_star - w,
+            hi: t.s_star + w,
+            rho2,
+            d2: t.d2,
+            local: self.solver.slider_local(c.slider),
+            q: t.q,
+        })
+    }
+
     /// Keeps, of the pairs above the floor, those whose window meets `[a, b]` (m of path): the
-    /// list every sample of that sub-chunk filters. O(pairs above the floor).
+    /// list every sample of that sub-chunk filters. The first refresh after the floor is set
+    /// takes them straight from the tracks (a floor often serves one sub-chunk: the chunk's
+    /// first, solved cold); the second keeps every pair above the floor for the next ones.
+    /// O(candidates) for those two, then O(pairs above the floor); the same list either way.
     pub fn refresh(&mut self, a: f64, b: f64) {
         self.live.clear();
+        if self.taken == Taken::NotYet {
+            self.taken = Taken::Once;
+            let mut live = std::mem::take(&mut self.live);
+            live.extend(
+                self.tracks
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(k, t)| self.above_of(k, t))
+                    .filter(|x| x.hi >= a && x.lo <= b),
+            );
+            self.live = live;
+            return;
+        }
+        if self.taken == Taken::Once {
+            self.taken = Taken::Kept;
+            let mut above = std::mem::take(&mut self.above);
+            above.extend(
+                self.tracks
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(k, t)| self.above_of(k, t)),
+            );
+            self.above = above;
+        }
         self.live
             .extend(self.above.iter().filter(|x| x.hi >= a && x.lo <= b));
     }
