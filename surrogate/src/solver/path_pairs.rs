@@ -278,34 +278,39 @@ impl<'a> PathChunk<'a> {
         self.live.clear();
     }
 
-    /// The pair of track `k` if it can rise above the floor, with its window. O(1).
-    #[inline]
-    fn above_of(&self, k: usize, t: &Track) -> Option<Above> {
-        let rise = self.floor - t.top;
-        let rho2 = if rise > 0.0 {
-            if rise * rise >= t.d2 * (1.0 + MARGIN) {
-                return None;
-            }
-            t.d2 - rise * rise
-        } else {
-            t.d2
-        };
-        let rho2 = rho2 * (1.0 + MARGIN) + MARGIN * MARGIN * t.d2;
-        if rho2 <= t.rp2 {
-            return None;
-        }
-        let w = (rho2 - t.rp2).sqrt() + MARGIN * t.d2.sqrt();
-        let c = &self.wide.pairs[k];
-        Some(Above {
-            slider: c.slider,
-            substrate: c.substrate,
-            lo: t.s_star - w,
-            hi: t.s_star + w,
-            rho2,
-            d2: t.d2,
-            local: self.solver.slider_local(c.slider),
-            q: t.q,
-        })
+    /// The pairs of the tracks that can rise above the floor, with their windows, in the
+    /// search's order. O(1) each.
+    fn above_tracks(&self) -> impl Iterator<Item = Above> + '_ {
+        let floor = self.floor;
+        self.tracks
+            .iter()
+            .zip(&self.wide.pairs)
+            .filter_map(move |(t, c)| {
+                let rise = floor - t.top;
+                let rho2 = if rise > 0.0 {
+                    if rise * rise >= t.d2 * (1.0 + MARGIN) {
+                        return None;
+                    }
+                    t.d2 - rise * rise
+                } else {
+                    t.d2
+                };
+                let rho2 = rho2 * (1.0 + MARGIN) + MARGIN * MARGIN * t.d2;
+                if rho2 <= t.rp2 {
+                    return None;
+                }
+                let w = (rho2 - t.rp2).sqrt() + MARGIN * t.d2.sqrt();
+                Some(Above {
+                    slider: c.slider,
+                    substrate: c.substrate,
+                    lo: t.s_star - w,
+                    hi: t.s_star + w,
+                    rho2,
+                    d2: t.d2,
+                    local: self.solver.slider_local(c.slider),
+                    q: t.q,
+                })
+            })
     }
 
     /// Keeps, of the pairs above the floor, those whose window meets `[a, b]` (m of path): the
@@ -314,33 +319,25 @@ impl<'a> PathChunk<'a> {
     /// first, solved cold); the second keeps every pair above the floor for the next ones.
     /// O(candidates) for those two, then O(pairs above the floor); the same list either way.
     pub fn refresh(&mut self, a: f64, b: f64) {
-        self.live.clear();
-        if self.taken == Taken::NotYet {
-            self.taken = Taken::Once;
-            let mut live = std::mem::take(&mut self.live);
-            live.extend(
-                self.tracks
-                    .iter()
-                    .enumerate()
-                    .filter_map(|(k, t)| self.above_of(k, t))
-                    .filter(|x| x.hi >= a && x.lo <= b),
-            );
-            self.live = live;
-            return;
+        let meets = |x: &Above| x.hi >= a && x.lo <= b;
+        let mut live = std::mem::take(&mut self.live);
+        live.clear();
+        match self.taken {
+            Taken::NotYet => {
+                self.taken = Taken::Once;
+                live.extend(self.above_tracks().filter(meets));
+            }
+            Taken::Once | Taken::Kept => {
+                if self.taken == Taken::Once {
+                    self.taken = Taken::Kept;
+                    let mut above = std::mem::take(&mut self.above);
+                    above.extend(self.above_tracks());
+                    self.above = above;
+                }
+                live.extend(self.above.iter().filter(|x| meets(x)));
+            }
         }
-        if self.taken == Taken::Once {
-            self.taken = Taken::Kept;
-            let mut above = std::mem::take(&mut self.above);
-            above.extend(
-                self.tracks
-                    .iter()
-                    .enumerate()
-                    .filter_map(|(k, t)| self.above_of(k, t)),
-            );
-            self.above = above;
-        }
-        self.live
-            .extend(self.above.iter().filter(|x| x.hi >= a && x.lo <= b));
+        self.live = live;
     }
 
     /// The partial pair list at sample `si` (m): every pair within contact distance whose touch
