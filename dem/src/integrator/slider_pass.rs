@@ -101,15 +101,18 @@ impl SliderPass<'_> {
                     x[2] - self.sub_h[self.sub_ids[b] as usize],
                 ];
                 let vr = [v[l][0] - vb[0], v[l][1] - vb[1], vz];
-                // the pair's own contact distance, R_eff and reduced mass with sizes
-                let mut model = *self.model;
-                let m_eff = if SIZED {
+                // the pair's own contact distance, R_eff and reduced mass with sizes (a copy of
+                // the model only then)
+                let sized;
+                let (model, m_eff) = if SIZED {
                     let (rs, r_eff, m_eff) = self.sizes.unwrap().pair(gi, self.sub_ids[b] as usize);
-                    model.radius_sum = rs;
-                    model.normal.hertz.r_eff = r_eff;
-                    m_eff
+                    let mut own = *self.model;
+                    own.radius_sum = rs;
+                    own.normal.hertz.r_eff = r_eff;
+                    sized = own;
+                    (&sized, m_eff)
                 } else {
-                    self.m_eff
+                    (self.model, self.m_eff)
                 };
                 let hp = &mut hist[p - pbase];
                 let rs = model.radius_sum;
