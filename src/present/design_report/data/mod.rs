@@ -34,7 +34,7 @@ pub struct ReportData {
     /// The superlubric limit on μ.
     pub mu_superlubric: String,
     /// What a limit between two loads of the ladder means, on this design's numbers
-    /// ([`limit_example`]).
+    /// (`limit_example`).
     pub limit_example: String,
     /// The answer table: one row per pattern ([`super::top::top_rows`]).
     pub top: Vec<super::top::TopRow>,
