@@ -404,7 +404,7 @@ mod tests {
         let md = render(&small(false, 2)).unwrap();
         assert!(md.starts_with("# superlube design: square-tri, tri-tri\n\nMade by superlube 0.1.0 on 2026-11-28 12:55 UTC with `superlube design --pattern square-tri,tri-tri`\n\nLoads 0.01,0.09 mN."), "{md}");
         assert!(md.contains(
-            "## Answer\n\n| pattern | θ (°) | pull from x (°) | pull from contact line α (°) | robust limit (mN) | verdict | DEM at the design | DEM at the box corners | nominal optimum |\n|---|---|---|---|---|---|---|---|---|\n| square-tri | 10 ± 0.1 | 146 ± 0.5 | 146 | 0.09 | superlubric | held at 0.09 mN | 4 of 4 held at 0.09 mN | the same design |\n\nThe DEM did not run (`--no-dem`): the DEM columns are empty and the answers are the surrogate's.\n\n**square-tri**: make the slider at θ = 10°\n\n**tri-tri**: no design\n\n"
+            "## Answer\n\n| pattern | θ (°) | pull from x (°) | pull from contact line α (°) | robust limit (mN) | verdict | DEM at the design | DEM at the box corners | nominal optimum |\n|---|---|---|---|---|---|---|---|---|\n| square-tri | 10 ± 0.1 | 146 ± 0.5 | 146 | 0.09 | superlubric | held at 0.09 mN | 4 of 4 held at 0.09 mN | the same design |\n\nThe DEM did not run (`--no-dem`): the answers are the surrogate's alone.\n\n**square-tri**: make the slider at θ = 10°\n\n**tri-tri**: no design\n\n"
         ), "{md}");
         assert!(md.contains("**square-tri** (`answer_square-tri.toml`):\n\n```sh\nsuperlube slide --scene answer_square-tri.toml --alpha 146\nsuperlube tolerance --scene answer_square-tri.toml\nsuperlube export-lammps --scene answer_square-tri.toml\n```\n\n![square-tri:"), "{md}");
         // the definitions once, in "How to read this", linked from the top
