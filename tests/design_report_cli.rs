@@ -112,6 +112,24 @@ fn the_answer_table_matches_the_csvs_and_its_commands_run_the_answer() {
         .unwrap();
     assert_ok(&o);
     let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    // the report says what made it and defines its angles, and names the DEM protocol and
+    // model beside its DEM columns
+    let stamp = report.lines().nth(2).unwrap();
+    assert!(stamp.starts_with("Made by superlube "), "{report}");
+    assert!(
+        stamp.contains("UTC with `superlube design --pattern square-tri --theta 0:30:1"),
+        "{stamp}"
+    );
+    for needle in [
+        "At **θ = 0** the slider's lattice vector a₁",
+        "x runs along the substrate's first side",
+        "θ > 0 turns the slider counter-clockwise seen from above",
+        "0° moves the slider towards +x, 90° towards +y",
+        "The DEM columns are Tier 3 DEM runs of equilibrate 0.1 + relax 0.05 + slide 0.3 µs at 0.1 m/s",
+        "DEM model: reduced model",
+    ] {
+        assert!(report.contains(needle), "{needle}: {report}");
+    }
     let table = answer_table(&report);
     assert_eq!(table.len(), 1, "{report}");
     let t = &table[0];

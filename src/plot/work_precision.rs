@@ -1,8 +1,12 @@
 //! Work-precision diagrams: per scene a panel of log₁₀ CPU cost against log₁₀ relative error,
-//! one line per knob (its settings in refinement order), the default ringed, the noise of each
-//! point (the DEM window's standard error) drawn as a vertical bar, errors below the floor
-//! drawn at the floor (the reference itself, and speed-only knobs, whose error is 0). The tiers
-//! diagram draws each method (each setting of its one knob) as its own labelled point.
+//! one line per knob (its settings in refinement order), the default ringed. Each point is one of
+//! three [`Mark`]s: **resolved** (its error stands above its noise, the DEM window's standard
+//! error: a filled dot with a ± noise whisker), **unresolved** (the error is within its noise: a
+//! hollow dot with a whisker up to error + noise and an arrow down, the error could be 0) or
+//! **exact** (error 0: the reference itself and speed-only knobs, a cross on a strip marked
+//! "exact" below the measured errors, never drawn as if a small error had been measured). The
+//! legend names the three. The tiers diagram draws each method (each setting of its one knob) as
+//! its own labelled point.
 
 use super::line_plot::PALETTE;
 use super::{perr, png_atomic, FONT};
@@ -13,8 +17,54 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 
-/// Errors below this (relative) are drawn at it.
-pub const ERROR_FLOOR: f64 = 1e-7;
+/// How a point of the diagram is drawn: what its error against its noise says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mark {
+    /// Error above its noise (or a noiseless, deterministic error): measured.
+    Resolved,
+    /// Error within its noise: only an upper bound, error + noise, is measured.
+    Unresolved,
+    /// Error exactly 0 (the reference, a speed-only knob).
+    Exact,
+}
+
+impl Mark {
+    /// The mark of a point with relative error `error` and noise `noise` (both ≥ 0).
+    pub fn of(error: f64, noise: f64) -> Mark {
+        if error == 0.0 {
+            Mark::Exact
+        } else if noise > 0.0 && error <= noise {
+            Mark::Unresolved
+        } else {
+            Mark::Resolved
+        }
+    }
+}
+
+/// The y range of a panel (log₁₀ relative error) and the height of its "exact" strip: the
+/// measured range spans every nonzero error, error + noise and resolved error − noise of
+/// `points` ((error, noise) pairs) with a margin; the strip lies 0.6 below it. Without any
+/// nonzero value the measured range is [−3, 0].
+pub fn error_range(points: &[(f64, f64)]) -> (f64, f64, f64) {
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    for &(e, n) in points {
+        for v in [e, e + n] {
+            if v > 0.0 {
+                lo = lo.min(v.log10());
+                hi = hi.max(v.log10());
+            }
+        }
+        if Mark::of(e, n) == Mark::Resolved && n > 0.0 {
+            lo = lo.min((e - n).log10());
+        }
+    }
+    if !lo.is_finite() {
+        (lo, hi) = (-3.0, 0.0);
+    }
+    let (lo, hi) = (lo - 0.3, hi + 0.5);
+    (lo - 0.9, hi, lo - 0.6)
+}
 
 /// Draws the diagram of one tier's `rows` into the PNG `path` (one panel per scene; the tiers
 /// diagram one series per method, the others one per knob).
@@ -63,10 +113,6 @@ pub fn work_precision_png(
     })
 }
 
-fn y_of(e: f64) -> f64 {
-    e.max(ERROR_FLOOR).log10()
-}
-
 fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
@@ -79,21 +125,11 @@ fn panel<DB: DrawingBackend>(
             knobs.push(&r.knob);
         }
     }
-    let pts: Vec<(f64, f64)> = rows
-        .iter()
-        .filter(|r| r.cost_cpu_s > 0.0)
-        .map(|r| (r.cost_cpu_s.log10(), y_of(r.error_rel)))
-        .collect();
-    let (mut x0, mut x1, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, ERROR_FLOOR.log10());
-    for &(x, y) in &pts {
-        x0 = x0.min(x);
-        x1 = x1.max(x);
-        y1 = y1.max(y);
-    }
-    for r in rows {
-        if r.noise_rel > 0.0 {
-            y1 = y1.max(y_of(r.error_rel + r.noise_rel));
-        }
+    let costed: Vec<&&WorkPrecisionRow> = rows.iter().filter(|r| r.cost_cpu_s > 0.0).collect();
+    let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
+    for r in &costed {
+        x0 = x0.min(r.cost_cpu_s.log10());
+        x1 = x1.max(r.cost_cpu_s.log10());
     }
     if !x0.is_finite() {
         (x0, x1) = (-3.0, 0.0);
@@ -101,8 +137,10 @@ fn panel<DB: DrawingBackend>(
     if x1 - x0 < 0.5 {
         (x0, x1) = (x0 - 0.25, x1 + 0.25);
     }
-    let y0 = ERROR_FLOOR.log10() - 0.3;
-    let y1 = y1 + 0.5;
+    let pairs: Vec<(f64, f64)> = costed.iter().map(|r| (r.error_rel, r.noise_rel)).collect();
+    let (y0, y1, y_exact) = error_range(&pairs);
+    // a point's height: its error, or the strip for an exact one
+    let y_of = |e: f64| if e > 0.0 { e.log10() } else { y_exact };
     let mut chart = ChartBuilder::on(area)
         .caption(title, (FONT, 20))
         .margin(12)
@@ -119,12 +157,26 @@ fn panel<DB: DrawingBackend>(
         .light_line_style(RGBColor(235, 235, 235))
         .draw()
         .map_err(perr("work-precision axes"))?;
+    // the "exact" strip: below a dashed rule, labelled, no error scale
+    let (xl, xr) = (x0 - 0.15, x1 + 0.15);
+    let rule = y_exact + 0.3;
+    let dash = (xr - xl) / 80.0;
+    chart
+        .draw_series((0..80).step_by(2).map(|k| {
+            let a = xl + k as f64 * dash;
+            PathElement::new(vec![(a, rule), (a + dash, rule)], BLACK.mix(0.5))
+        }))
+        .map_err(perr("exact rule"))?;
+    chart
+        .draw_series([Text::new(
+            "exact (error 0)",
+            (xl + 0.02 * (xr - xl), rule - 0.08),
+            (FONT, 13).into_font().color(&BLACK.mix(0.7)),
+        )])
+        .map_err(perr("exact label"))?;
     for (k, knob) in knobs.iter().enumerate() {
         let c = PALETTE[k % PALETTE.len()];
-        let mut v: Vec<&&WorkPrecisionRow> = rows
-            .iter()
-            .filter(|r| r.knob == *knob && r.cost_cpu_s > 0.0)
-            .collect();
+        let mut v: Vec<&&&WorkPrecisionRow> = costed.iter().filter(|r| r.knob == *knob).collect();
         if let Some(up) = larger_is_finer(knob) {
             v.sort_by(|a, b| {
                 let (x, y) = (
@@ -138,25 +190,68 @@ fn panel<DB: DrawingBackend>(
                 }
             });
         }
+        // the knob's line joins its measured points; an exact point stands on the strip alone
         let line: Vec<(f64, f64)> = v
             .iter()
-            .map(|r| (r.cost_cpu_s.log10(), y_of(r.error_rel)))
+            .filter(|r| r.error_rel > 0.0)
+            .map(|r| (r.cost_cpu_s.log10(), r.error_rel.log10()))
             .collect();
         chart
-            .draw_series(LineSeries::new(line.clone(), c.stroke_width(2)))
+            .draw_series(LineSeries::new(line, c.stroke_width(2)))
             .map_err(perr("series"))?
             .label(*knob)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], c.stroke_width(3)));
-        chart
-            .draw_series(line.iter().map(|&p| Circle::new(p, 4, c.filled())))
-            .map_err(perr("markers"))?;
-        for (r, &(x, y)) in v.iter().zip(&line) {
-            if r.noise_rel > 0.0 {
-                let lo = y_of((r.error_rel - r.noise_rel).max(0.0));
-                let hi = y_of(r.error_rel + r.noise_rel);
-                chart
-                    .draw_series([PathElement::new(vec![(x, lo), (x, hi)], c.stroke_width(1))])
-                    .map_err(perr("noise bars"))?;
+        for r in &v {
+            let (x, y) = (r.cost_cpu_s.log10(), y_of(r.error_rel));
+            let (e, n) = (r.error_rel, r.noise_rel);
+            let cap = |yy: f64| {
+                EmptyElement::at((x, yy))
+                    + PathElement::new(vec![(-4, 0), (4, 0)], c.stroke_width(1))
+            };
+            match Mark::of(e, n) {
+                Mark::Resolved => {
+                    if n > 0.0 {
+                        let (lo, hi) = ((e - n).log10(), (e + n).log10());
+                        chart
+                            .draw_series([PathElement::new(
+                                vec![(x, lo), (x, hi)],
+                                c.stroke_width(1),
+                            )])
+                            .map_err(perr("noise whisker"))?;
+                        chart
+                            .draw_series([cap(lo), cap(hi)])
+                            .map_err(perr("noise caps"))?;
+                    }
+                    chart
+                        .draw_series([Circle::new((x, y), 4, c.filled())])
+                        .map_err(perr("markers"))?;
+                }
+                Mark::Unresolved => {
+                    let hi = (e + n).log10();
+                    chart
+                        .draw_series([PathElement::new(vec![(x, y), (x, hi)], c.stroke_width(1))])
+                        .map_err(perr("noise whisker"))?;
+                    chart.draw_series([cap(hi)]).map_err(perr("noise caps"))?;
+                    chart
+                        .draw_series([EmptyElement::at((x, y))
+                            + PathElement::new(vec![(0, 6), (0, 18)], c.stroke_width(1))
+                            + PathElement::new(
+                                vec![(-3, 13), (0, 18), (3, 13)],
+                                c.stroke_width(1),
+                            )])
+                        .map_err(perr("arrows"))?;
+                    chart
+                        .draw_series([
+                            Circle::new((x, y), 4, WHITE.filled()),
+                            Circle::new((x, y), 4, c.stroke_width(2)),
+                        ])
+                        .map_err(perr("markers"))?;
+                }
+                Mark::Exact => {
+                    chart
+                        .draw_series([Cross::new((x, y), 5, c.stroke_width(2))])
+                        .map_err(perr("markers"))?;
+                }
             }
             if r.is_default {
                 chart
@@ -172,6 +267,28 @@ fn panel<DB: DrawingBackend>(
                 .map_err(perr("labels"))?;
         }
     }
+    // what the marks mean, in the legend (grey: every knob's colour)
+    let grey = RGBColor(90, 90, 90);
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+        .map_err(perr("legend"))?
+        .label("resolved: error > noise, whisker ± noise")
+        .legend(move |(x, y)| Circle::new((x + 11, y), 4, grey.filled()));
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+        .map_err(perr("legend"))?
+        .label("unresolved: error ≤ noise, up to error + noise, could be 0")
+        .legend(move |(x, y)| Circle::new((x + 11, y), 4, grey.stroke_width(2)));
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+        .map_err(perr("legend"))?
+        .label("exact: error 0 (the reference, a speed-only knob)")
+        .legend(move |(x, y)| Cross::new((x + 11, y), 5, grey.stroke_width(2)));
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+        .map_err(perr("legend"))?
+        .label("ring: the default setting")
+        .legend(move |(x, y)| Circle::new((x + 11, y), 7, grey.stroke_width(2)));
     chart
         .configure_series_labels()
         .background_style(WHITE.mix(0.85))
@@ -181,4 +298,55 @@ fn panel<DB: DrawingBackend>(
         .draw()
         .map_err(perr("legend"))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn marks_tell_resolved_unresolved_and_exact_points() {
+        assert_eq!(Mark::of(0.0, 0.0), Mark::Exact);
+        assert_eq!(Mark::of(0.0, 0.1), Mark::Exact);
+        assert_eq!(Mark::of(0.01, 0.0), Mark::Resolved);
+        assert_eq!(Mark::of(0.2, 0.05), Mark::Resolved);
+        assert_eq!(Mark::of(0.05, 0.05), Mark::Unresolved);
+        assert_eq!(Mark::of(0.01, 0.24), Mark::Unresolved);
+    }
+
+    /// Redraws the committed diagrams (`figures/work_precision/*.png`) from their committed CSVs,
+    /// the rows unchanged (the full set takes half an hour to measure again):
+    /// `cargo test --lib redraw_committed_work_precision_figures -- --ignored`.
+    #[test]
+    #[ignore = "rewrites figures/work_precision/*.png"]
+    fn redraw_committed_work_precision_figures() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("figures/work_precision");
+        for tier in Tier::ALL {
+            let base = dir.join(tier.stem());
+            let mut r = csv::Reader::from_path(base.with_extension("csv")).unwrap();
+            let rows: Vec<WorkPrecisionRow> = r.deserialize().map(Result::unwrap).collect();
+            work_precision_png(
+                &base.with_extension("png"),
+                &format!("work-precision, {}", tier.name()),
+                tier,
+                &rows,
+            )
+            .unwrap();
+        }
+    }
+
+    /// The exact strip lies below every measured error and whisker end; a tiny measured error
+    /// (1e-14) is on the error scale, not on the strip.
+    #[test]
+    fn the_exact_strip_lies_below_every_measured_error() {
+        let pts = [(0.0, 0.0), (1e-14, 0.0), (0.2, 0.05), (0.01, 0.24)];
+        let (y0, y1, strip) = error_range(&pts);
+        assert!(strip < -14.0 && y0 < strip, "{y0} {strip}");
+        assert!(strip + 0.3 < -14.0);
+        assert!(y1 > 0.25f64.log10(), "{y1}");
+        assert!((0.2f64 - 0.05).log10() > strip);
+        // nothing measured: the default range, strip below it
+        let (y0, y1, strip) = error_range(&[(0.0, 0.0)]);
+        assert!(y0 < strip && strip < -3.0 && y1 > 0.0);
+    }
 }

@@ -32,6 +32,7 @@ pub mod pattern_files;
 pub mod patterns;
 pub mod recipes;
 pub mod rows;
+pub mod stamp;
 pub mod top;
 pub mod words;
 
@@ -255,7 +256,10 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
             wrote.push(rel);
         }
     }
-    let md = markdown(o, p)?;
+    let md = stamp::keep_stamp(
+        std::fs::read_to_string(store.path("report.md")).ok(),
+        markdown(o, p)?,
+    );
     if store.write_if_changed(&mut outs, "report.md", Ok(md.into_bytes()), None) {
         wrote.push("report.md".into());
     }
@@ -280,6 +284,12 @@ mod tests {
     fn small(dem: bool, levels: usize) -> ReportData {
         let s = |v: &str| v.to_string();
         ReportData {
+            made: super::stamp::Made {
+                version: s("0.1.0"),
+                date_utc: s("2026-11-28 12:55"),
+                command: s("superlube design --pattern square-tri,tri-tri"),
+            },
+            limit_example: s("a limit of 0.09 mN means superlubric at 0.09 mN and at every load below it, and not at the next load tried, 0.1 mN"),
             patterns: s("square-tri, tri-tri"),
             loads_mn: s("0.01,0.09"),
             mu_superlubric: s("0.02"),
@@ -392,9 +402,9 @@ mod tests {
     #[test]
     fn the_template_renders_the_answer_first_and_each_branch() {
         let md = render(&small(false, 2)).unwrap();
-        assert!(md.starts_with("# superlube design: square-tri, tri-tri\n\nLoads 0.01,0.09 mN."));
+        assert!(md.starts_with("# superlube design: square-tri, tri-tri\n\nMade by superlube 0.1.0 on 2026-11-28 12:55 UTC with `superlube design --pattern square-tri,tri-tri`\n\nLoads 0.01,0.09 mN."), "{md}");
         assert!(md.contains(
-            "## Answer\n\n| pattern | θ (°) | pull from x (°) | pull from contact line α (°) | robust limit (mN) | verdict | DEM at the design | DEM at the box corners | nominal optimum |\n|---|---|---|---|---|---|---|---|---|\n| square-tri | 10 ± 0.1 | 146 ± 0.5 | 146 | 0.09 | superlubric | held at 0.09 mN | 4 of 4 held at 0.09 mN | the same design |\n\n**square-tri**: make the slider at θ = 10°\n\n**tri-tri**: no design\n\n"
+            "## Answer\n\n| pattern | θ (°) | pull from x (°) | pull from contact line α (°) | robust limit (mN) | verdict | DEM at the design | DEM at the box corners | nominal optimum |\n|---|---|---|---|---|---|---|---|---|\n| square-tri | 10 ± 0.1 | 146 ± 0.5 | 146 | 0.09 | superlubric | held at 0.09 mN | 4 of 4 held at 0.09 mN | the same design |\n\nThe DEM did not run (`--no-dem`): the answers are the surrogate's alone.\n\n**square-tri**: make the slider at θ = 10°\n\n**tri-tri**: no design\n\n"
         ), "{md}");
         assert!(md.contains("**square-tri** (`answer_square-tri.toml`):\n\n```sh\nsuperlube slide --scene answer_square-tri.toml --alpha 146\nsuperlube tolerance --scene answer_square-tri.toml\nsuperlube export-lammps --scene answer_square-tri.toml\n```\n\n![square-tri:"), "{md}");
         // the definitions once, in "How to read this", linked from the top
@@ -412,7 +422,10 @@ mod tests {
             "Screened 16 θ (0° … 15°) × 2 loads. Shortlist levels (coating intact up to W_c at the screened placement): 0.09 mN: 9 θ (5 kept, evaluated); 0.08 mN: 8 θ (5 kept). every level evaluated.\n\n## Wall time per tier"
         ), "{md}");
         assert!(md.contains("```sh\nsuperlube slide --pattern square-tri --theta 10\n```\n"));
-        assert!(md.ends_with("\"Files … and columns\".\n"), "{md}");
+        assert!(
+            md.ends_with("(\"Files … and columns\") in the superlube sources.\n"),
+            "{md}"
+        );
         assert!(!md.contains("README"));
         assert!(!md.contains("{{") && !md.contains("{%"));
         assert!(
@@ -521,6 +534,39 @@ mod tests {
         );
         assert!(md.contains("|---|\n| 1 | p001 | disc r=100 | 3505 | 31416 | 0 | 90 | 3.86 | 3.86 | 123 | 1.10 | directional |\n\n!["), "{md}");
         assert!(!md.contains("\n\n\n"), "{md}");
+    }
+
+    /// "How to read this" defines the axes, θ = 0, the pull direction's sense and what a limit
+    /// between two loads of the ladder means, in the report itself; the answer table says which
+    /// DEM protocol and model its DEM columns ran, or that the DEM did not run.
+    #[test]
+    fn the_report_defines_its_angles_and_names_the_dem_protocol() {
+        for dem in [false, true] {
+            let md = render(&small(dem, 0)).unwrap();
+            let how = &md[md.find("## How to read this").unwrap()..md.find("## How sure").unwrap()];
+            for needle in [
+                "x runs along the substrate's first side",
+                "At **θ = 0** the slider's lattice vector a₁",
+                "lies along the substrate's a₁ row, that is along x",
+                "θ > 0 turns the slider counter-clockwise seen from above",
+                "0° moves the slider towards +x, 90° towards +y",
+                "pull = contact line + α",
+                "ladder (0.01,0.09 mN)",
+                "not at the next load tried, 0.1 mN: the true limit lies between the two",
+            ] {
+                assert!(how.contains(needle), "{needle}: {how}");
+            }
+            let top = &md[md.find("## Answer").unwrap()..md.find("## How to read this").unwrap()];
+            if dem {
+                assert!(top.contains("The DEM columns are Tier 3 DEM runs of equilibrate 0.1 + relax 0.05 + slide 0.3 µs at 0.1 m/s (shorter than the study's 10 + 10 + 300 µs; its measured difference: [How sure](#how-sure-surrogate-estimate-against-the-dem)); DEM model: reduced.\n"), "{top}");
+            } else {
+                assert!(top.contains("The DEM did not run (`--no-dem`)"), "{top}");
+            }
+            // the only repository paths are "more: …" pointers
+            for l in md.lines().filter(|l| l.contains("docs/")) {
+                assert!(l.contains("in the superlube sources"), "{l}");
+            }
+        }
     }
 
     #[test]

@@ -25,12 +25,17 @@ use surrogate::units::n_to_mn;
 /// Everything `report.md` shows, in its order.
 #[derive(Debug, Clone, Serialize)]
 pub struct ReportData {
+    /// The version, date and command line that made the report ([`super::stamp::Made`]).
+    pub made: super::stamp::Made,
     /// The pattern names, comma separated.
     pub patterns: String,
     /// The loads (mN), comma separated.
     pub loads_mn: String,
     /// The superlubric limit on μ.
     pub mu_superlubric: String,
+    /// What a limit between two loads of the ladder means, on this design's numbers
+    /// (`limit_example`).
+    pub limit_example: String,
     /// The answer table: one row per pattern ([`super::top::top_rows`]).
     pub top: Vec<super::top::TopRow>,
     /// One short paragraph per pattern's answer ([`super::top::paragraph`]).
@@ -132,6 +137,31 @@ fn band_text(o: &DesignOutcome, p: &DesignParams) -> String {
         }
     }
     parts.join("; ")
+}
+
+/// What a limit between two loads of the ladder means, in words, on the first answer whose limit
+/// lies below the top load (`a limit of 1.75 mN means superlubric at 1.75 mN and every load
+/// below it, not at the next load tried, 2.1 mN`), else on the ladder's first two loads.
+fn limit_example(o: &DesignOutcome, p: &DesignParams) -> String {
+    let ladder: Vec<f64> = p.loads.iter().map(|&w| label(n_to_mn(w))).collect();
+    let said = |l: f64, next: f64| {
+        format!(
+            "a limit of {l} mN means superlubric at {l} mN and at every load below it, and not at the next load tried, {next} mN"
+        )
+    };
+    for (pr, a) in o.patterns.iter().zip(&o.answers) {
+        let Some(c) = a.index.and_then(|i| pr.ranking.get(i)) else {
+            continue;
+        };
+        let l = c.score.superlubric_to_mn;
+        if let Some(&next) = ladder.iter().find(|&&x| x > l).filter(|_| l > 0.0) {
+            return said(l, next);
+        }
+    }
+    match ladder.as_slice() {
+        [a, b, ..] => said(*a, *b),
+        _ => String::new(),
+    }
 }
 
 impl ReportData {
@@ -282,6 +312,8 @@ impl ReportData {
             .as_ref()
             .and_then(|rows| super::recipes::section(rows, o, &top));
         ReportData {
+            made: super::stamp::Made::now(),
+            limit_example: limit_example(o, p),
             patterns: o
                 .patterns
                 .iter()
