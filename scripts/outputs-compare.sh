@@ -9,7 +9,7 @@ a=$1; b=$2; bad=0; same=0; timed=0
 blank() {
     sed -E -e 's/"(wall_s|particle_steps_per_s|elapsed_s|seconds)": *[-0-9.eE+]+/"\1": T/g' \
         -e 's/[0-9]+(\.[0-9]+)? ?(s|ms|min)\b/T/g' -e 's/ETA [^ ]+/ETA T/g' \
-        -e '/^\| [0-9]+\. /s/[0-9]+\.[0-9]+/T/g' "$1"
+        -e '/^\| [0-9]+\. /s/[0-9]+\.[0-9]+/T/g' -e 's/^Made by superlube .*/STAMP/' "$1"
 }
 while IFS= read -r f; do
     rel=${f#"$a"/}
