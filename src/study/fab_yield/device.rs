@@ -61,7 +61,8 @@ impl Device {
                     .into_iter()
                     .flatten()
                     .filter(|&x| x < f)
-                    .fold(f * (1.0 - resolution), f64::max);
+                    .reduce(f64::max)
+                    .unwrap_or(f * (1.0 - resolution));
             }
         }
         if let Some(h) = held {
