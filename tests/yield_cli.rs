@@ -210,7 +210,20 @@ fn the_dem_decides_the_band_and_checks_the_quoted_load() {
         if r["decided_by"] == "dem" {
             assert!(in_band && !r["dem_loads_mN"].is_empty(), "{r:?}");
         }
+        // the critical load agrees with every DEM decision on the device
+        let c = num(r, "critical_load_mN");
+        if !r["dem_loads_mN"].is_empty() {
+            for (w, ok) in r["dem_loads_mN"]
+                .split(';')
+                .zip(r["dem_superlubric"].split(';'))
+            {
+                let w: f64 = w.parse().unwrap();
+                assert_eq!(ok == "true", c >= w, "{r:?}");
+            }
+        }
     }
+    // on this scene the path P_max band spans more than a rung: the DEM has work
+    assert!(s["dem_runs"].as_u64().unwrap() >= 1);
     assert_eq!(s["dem_check_total"].as_u64(), Some(2));
     assert!(s["dem_check_passed"].as_u64().unwrap() <= 2);
     assert_eq!(s["dem_check_interval"].as_array().unwrap().len(), 2);
