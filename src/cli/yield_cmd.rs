@@ -129,6 +129,14 @@ pub struct Args {
     /// Fresh devices run with the DEM at the quoted load as a check (0: none).
     #[arg(long = "dem-check", value_name = "N", default_value_t = 10)]
     dem_check: usize,
+    /// Load in mN of the DEM check [default: the quoted load]: compares the yield the
+    /// estimate predicts at another load with the DEM's.
+    #[arg(
+        long = "dem-check-load-mn",
+        value_name = "MN",
+        allow_hyphen_values = true
+    )]
+    dem_check_load_mn: Option<f64>,
     /// Estimate only: no DEM decisions and no DEM check.
     #[arg(long = "no-dem")]
     no_dem: bool,
@@ -218,6 +226,10 @@ pub fn run(a: Args) -> Result<()> {
             })
             .collect::<Result<_>>()?,
     };
+    let check_load = a
+        .dem_check_load_mn
+        .map(|w| checks::positive(w, "--dem-check-load-mn").map(surrogate::units::mn_to_n))
+        .transpose()?;
     let dem = if a.no_dem {
         None
     } else {
@@ -293,6 +305,7 @@ pub fn run(a: Args) -> Result<()> {
         dem: dem.map(|(params, jobs)| YieldDem {
             params,
             check: a.dem_check,
+            check_load,
             jobs,
             dir: a.out.join("dem"),
             max_rounds: 4,
@@ -334,6 +347,7 @@ pub fn run(a: Args) -> Result<()> {
                 "friction": record::friction_knobs(&params.limit.friction),
                 "dem": dem_record,
                 "dem_check": params.dem.as_ref().map(|d| d.check),
+                "dem_check_load_mN": check_load.map(|w| label(n_to_mn(w))),
             }),
         },
         sc.warnings.clone(),
@@ -373,8 +387,10 @@ pub fn run(a: Args) -> Result<()> {
     }
     if s.dem_check_total > 0 {
         rep.note(&format!(
-            "yield: DEM check at the quoted load: {}/{} devices superlubric",
-            s.dem_check_passed, s.dem_check_total
+            "yield: DEM check at {} mN: {}/{} devices superlubric",
+            s.dem_check_load_mN.unwrap_or(0.0),
+            s.dem_check_passed,
+            s.dem_check_total
         ));
     }
     outs.finish()

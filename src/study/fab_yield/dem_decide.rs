@@ -29,8 +29,10 @@ use surrogate::Scene;
 pub struct YieldDem {
     /// The protocol and model of every run (load, α and line are set per run).
     pub params: DemParams,
-    /// Fresh devices run at the quoted load for the check (0: no check).
+    /// Fresh devices run with the DEM for the check (0: no check).
     pub check: usize,
+    /// Load (N) of the check; `None`: the quoted load.
+    pub check_load: Option<f64>,
     /// Runs side by side (one thread each).
     pub jobs: usize,
     /// Folder of the runs.

@@ -14,7 +14,7 @@
 //! 4. **DEM** — devices whose bracket contains W_q get a DEM run there ([`dem_decide`]), which
 //!    decides them (every such device is run, so the yield at W_q is one binomial count of
 //!    estimate- and DEM-decided devices); then a DEM check of `check` fresh devices at the
-//!    final W_q gives passed/total with its interval.
+//!    final W_q (or a load of its own) gives passed/total with its interval.
 //!
 //! Same inputs and seed give the same result whatever the number of threads: each device's
 //! draw comes from its own stream, its estimates depend on it alone, and the DEM's do not
@@ -190,7 +190,8 @@ pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Res
     let curve: Vec<CurvePoint> = at.iter().map(|&w| point(w)).collect();
     // the DEM check on fresh devices at the quoted load
     let mut check_runs = Vec::new();
-    if let (Some(dd), Some(w)) = (&decider, w_q) {
+    let check_load = decider.as_ref().and_then(|dd| dd.dem.check_load.or(w_q));
+    if let (Some(dd), Some(w)) = (&decider, check_load) {
         let fresh: Vec<Sample> = (n..n + dd.dem.check)
             .map(|i| p.fabrication.sample(scene, i))
             .collect();
@@ -247,6 +248,7 @@ pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Res
             [lo, hi]
         }),
         dem_check_runs: check_runs,
+        dem_check_load_mN: check_load.filter(|_| total > 0).map(mn),
         dem: decider.is_some(),
         censored: devices.iter().filter(|d| d.estimate.censored).count(),
         fabrication: p.fabrication.record(scene),

@@ -124,7 +124,9 @@ pub struct YieldSummary {
     pub dem_runs: usize,
     /// Rounds of DEM decisions (the quoted load moves when the DEM overrules the estimate).
     pub dem_rounds: usize,
-    /// Devices of the DEM check at the quoted load that held.
+    /// Load of the DEM check (mN; the quoted load unless asked otherwise; `null`: no check).
+    pub dem_check_load_mN: Option<f64>,
+    /// Devices of the DEM check that held.
     pub dem_check_passed: usize,
     /// Devices in the DEM check.
     pub dem_check_total: usize,
