@@ -45,6 +45,7 @@ __all__ = [
     "corrugation",
     "friction",
     "tolerance",
+    "yield_",
     "design",
     "equilibrate",
     "slide",
@@ -176,6 +177,37 @@ def tolerance(scene: SceneLike = None, *, progress: Any = None,
     try:
         p = os.path.join(paths["out-dir"], "map.csv")
         return _run._attach(_run.read_table(p), p)
+    finally:
+        _run.remove(tmp)
+
+
+def yield_(scene: SceneLike = None, *, progress: Any = None, threads: Optional[int] = None,
+           **options: Any) -> Tuple[Any, Dict[str, Any]]:  # fmt: skip
+    """Yield of one design (``superlube yield``; ``yield`` is a Python keyword): the fraction
+    of fabricated devices (θ and pull-direction offsets within the tolerance, a fresh substrate
+    each) that stay superlubric at a load, the load a fraction q of them hold (mN) and its
+    one-sided confidence bound; the DEM decides the devices the estimate cannot.
+
+    Options (``superlube yield --help``): ``theta_deg``, ``direction_deg`` (degrees from x),
+    ``theta_tol_deg``, ``direction_tol_deg``, ``theta_sigma_deg``, ``direction_sigma_deg``,
+    ``sphere_diameter_cv``, ``p_crit_sigma_GPa``, ``samples`` (59), ``quantile`` (0.95),
+    ``confidence`` (0.95), ``resolution`` (0.01), ``sample_seed``, ``searched_seeds``,
+    ``load_mN``, ``no_dem``, ``dem_check``, the ``dem_…`` protocol options, ``jobs`` and
+    ``out_dir`` (a directory, kept: yield.csv, summary.json, yield.png, dem/). Cost: about 0.6 s
+    of estimates per device on the study's scenes, plus one DEM run per device in the band.
+
+    Returns ``(devices, summary)``: ``yield.csv`` as a DataFrame (one row per device:
+    ``sample, theta_offset_deg, direction_offset_deg, seed, …, critical_load_mN,
+    critical_load_low_mN, critical_load_high_mN, decided_by``) and ``summary.json`` as a dict
+    (``load_at_quantile_mN``, ``load_at_quantile_bound_mN``, ``dem_check_passed``,
+    ``dem_check_total``, ``fabrication``, ``curve`` …).
+    """
+    tmp, paths = _go("yield", [_scene(scene)], options, {"out-dir": "yield"}, progress, threads)
+    try:
+        out = paths["out-dir"]
+        rows = os.path.join(out, "yield.csv")
+        return (_run._attach(_run.read_table(rows), rows),
+                _run.read_json(os.path.join(out, "summary.json")))  # fmt: skip
     finally:
         _run.remove(tmp)
 

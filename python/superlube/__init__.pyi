@@ -115,6 +115,19 @@ def tolerance(
     threads: Optional[int] = None,
     **options: Any,
 ) -> Table: ...
+def yield_(
+    scene: SceneLike = None,
+    *,
+    theta_deg: Optional[float] = None,
+    direction_deg: Optional[float] = None,
+    samples: Optional[int] = None,
+    quantile: Optional[float] = None,
+    load_mN: Optional[Values] = None,
+    out_dir: Optional[str] = None,
+    progress: ProgressArg = None,
+    threads: Optional[int] = None,
+    **options: Any,
+) -> Tuple[Table, Dict[str, Any]]: ...
 def equilibrate(
     scene: SceneLike = None,
     *,

@@ -293,3 +293,20 @@ def test_tolerance_map_equals_cli(cli_bin, tmp_path):
     with open(tmp_path / "cli" / "map.csv") as f:
         cli = list(csv.DictReader(f))
     assert [float(r["superlubric_to_mN"]) for r in cli] == list(m["superlubric_to_mN"])
+
+
+def test_yield_equals_cli(cli_bin, tmp_path):
+    scene = superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60], sigma_h_um=0.002)
+    opts = dict(theta_deg=30, direction_deg=0, load_mN="0.02,0.05,0.1", samples=4, no_dem=True)
+    devices, summary = superlube.yield_(scene, **opts)
+    assert len(devices) == 4 and "critical_load_mN" in devices.columns
+    assert summary["samples"] == 4 and summary["dem"] is False
+    scene.write(tmp_path / "s.toml")
+    subprocess.run([cli_bin, "yield", "--scene", tmp_path / "s.toml", "--theta-deg", "30",
+                    "--direction-deg", "0", "--load-mn", "0.02,0.05,0.1", "--samples", "4",
+                    "--no-dem", "--out-dir", tmp_path / "cli"],
+                   check=True, capture_output=True)  # fmt: skip
+    import csv
+    with open(tmp_path / "cli" / "yield.csv") as f:
+        cli = list(csv.DictReader(f))
+    assert [float(r["critical_load_mN"]) for r in cli] == list(devices["critical_load_mN"])

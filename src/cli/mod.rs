@@ -8,6 +8,7 @@ mod checks;
 mod corrugation;
 mod dem_args;
 mod design;
+mod design_dem_args;
 mod equilibrate;
 mod export_lammps;
 mod figures;
@@ -30,6 +31,7 @@ mod tolerance_args;
 mod value_enums;
 mod verdict_args;
 mod work_precision;
+mod yield_cmd;
 
 pub use crate::study::range::parse_list_or_range;
 pub use scene_args::{SceneArgs, SceneOverrides};
@@ -64,6 +66,10 @@ enum Command {
     /// Tolerance map of one design: the superlubric limit load (friction estimate) over
     /// θ ± range × pulling direction ± range, with the fabrication tolerance box (CSV + PNG).
     Tolerance(tolerance::Args),
+    /// Yield of one design: the fraction of fabricated devices (misalignment within the
+    /// tolerance, fresh substrates) that stay superlubric at a load, the load a fraction q of
+    /// them hold with its confidence bound, the DEM deciding where the estimate cannot.
+    Yield(yield_cmd::Args),
     /// Design: screen → shortlist → α scan + friction estimate → ranking → DEM confirmation,
     /// with report.md (the best θ and α per pattern and the load up to which it stays
     /// superlubric).
@@ -122,6 +128,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Corrugation(a) => corrugation::run(a),
         Command::Friction(a) => friction::run(a),
         Command::Tolerance(a) => tolerance::run(a),
+        Command::Yield(a) => yield_cmd::run(a),
         Command::Design(a) => design::run(a),
         Command::Figures(a) => figures::run(a),
         Command::Equilibrate(a) => equilibrate::run(a),

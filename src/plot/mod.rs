@@ -12,6 +12,7 @@ mod heat_map;
 mod line_plot;
 pub mod tolerance;
 pub mod work_precision;
+pub mod yield_curve;
 
 pub use colormap::viridis;
 pub use contact_map::{contact_map, ContactMapData};

@@ -101,6 +101,7 @@ pub mod corrugation;
 pub mod dem_run;
 pub mod design;
 pub mod equilibrate;
+pub mod fab_yield;
 pub mod figures;
 pub mod friction;
 pub mod input;

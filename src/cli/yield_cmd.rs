@@ -1,0 +1,397 @@
+//! `superlube yield`: flags → [`crate::study::fab_yield::fab_yield`] → `DIR/yield.csv`,
+//! `DIR/summary.json` and `DIR/yield.png`, each with its sidecar (the DEM runs in `DIR/dem/`).
+
+use super::design::STUDY_LOADS;
+use super::design_dem_args::DesignDemArgs;
+use super::friction_args::FrictionKnobArgs;
+use super::tolerance_args::ToleranceArgs;
+use super::verdict_args::VerdictArgs;
+use super::{checks, SceneArgs};
+use crate::plot::yield_curve::yield_png;
+use crate::runs::sink::csv_bytes;
+use crate::runs::{
+    meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
+    progress::Reporter,
+};
+use crate::study::fab_yield::{fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldParams};
+use crate::study::record;
+use crate::study::rows::label;
+use crate::study::tolerance::LimitParams;
+use anyhow::{bail, Result};
+use serde_json::json;
+use std::path::PathBuf;
+use surrogate::units::{gpa_to_pa, n_to_mn, pa_to_gpa, rad_to_deg};
+
+/// Options of `superlube yield`: the fraction of fabricated devices of one design (θ, pull
+/// direction) that stay superlubric at a load, the load that a fraction q of them hold, and
+/// its one-sided confidence bound; the DEM decides the devices the estimate cannot.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Nominal slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
+    theta: Option<f64>,
+    /// Nominal pulling direction in degrees from the substrate's x axis (design's
+    /// `direction_deg`); a misaligned device keeps it in the substrate frame.
+    #[arg(long = "direction-deg", value_name = "DEG", allow_hyphen_values = true)]
+    direction_deg: f64,
+    #[command(flatten)]
+    tol: ToleranceArgs,
+    /// σ in degrees of a normal θ offset (truncated at ±3σ) instead of the uniform one over
+    /// ±--theta-tol-deg.
+    #[arg(
+        long = "theta-sigma-deg",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
+    theta_sigma_deg: Option<f64>,
+    /// σ in degrees of a normal pull-direction offset (truncated at ±3σ) instead of the
+    /// uniform one over ±--direction-tol-deg.
+    #[arg(
+        long = "direction-sigma-deg",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
+    direction_sigma_deg: Option<f64>,
+    /// Coefficient of variation of each slider sphere's diameter (normal, truncated at ±3σ; 0:
+    /// every sphere the scene's). Needs room between the spheres: refused where a sphere 3σ
+    /// large would overlap its neighbour.
+    #[arg(
+        long = "sphere-diameter-cv",
+        value_name = "CV",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    sphere_diameter_cv: f64,
+    /// σ in GPa of the coating strength P_crit around the scene's (normal, truncated at ±3σ;
+    /// 0: no spread).
+    #[arg(
+        long = "p-crit-sigma-gpa",
+        value_name = "GPA",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    p_crit_sigma_gpa: f64,
+    /// Devices drawn (≥ 1). 59 gives the one-sided 95 %/95 % bound (Wilks).
+    #[arg(long, value_name = "N", default_value_t = 59)]
+    samples: usize,
+    /// q in (0, 1): the fraction of devices the quoted load must hold.
+    #[arg(
+        long,
+        value_name = "Q",
+        default_value_t = 0.95,
+        allow_hyphen_values = true
+    )]
+    quantile: f64,
+    /// γ in (0, 1): confidence of the yield's interval and of the quoted load's bound.
+    #[arg(
+        long,
+        value_name = "G",
+        default_value_t = 0.95,
+        allow_hyphen_values = true
+    )]
+    confidence: f64,
+    /// Resolution of each device's critical load, as a fraction of the load (bisection
+    /// between two loads of --load-mn; 0 < r ≤ 0.5).
+    #[arg(
+        long,
+        value_name = "R",
+        default_value_t = 0.01,
+        allow_hyphen_values = true
+    )]
+    resolution: f64,
+    /// Seed of the devices' draws (each device its own stream: the same seed gives the same
+    /// devices).
+    #[arg(long = "sample-seed", value_name = "SEED", default_value_t = 1)]
+    sample_seed: u64,
+    /// Substrate seeds the design searched (its --seeds), never drawn for a device besides
+    /// the scene's own --seed (comma list of non-negative integers).
+    #[arg(long = "searched-seeds", value_name = "S1,S2")]
+    searched_seeds: Option<String>,
+    /// The load ladder in mN, strictly increasing: each device's critical load is found
+    /// between two of them [default: the study's 0.35 … 3.86].
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), allow_hyphen_values = true)]
+    load_mn: String,
+    #[command(flatten)]
+    verdict: VerdictArgs,
+    /// Contact-line angle in degrees from the substrate x axis (for α in the DEM runs' names)
+    /// [default: the moiré estimate at each θ].
+    #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
+    line_deg: Option<f64>,
+    #[command(flatten)]
+    knobs: FrictionKnobArgs,
+    /// Fresh devices run with the DEM at the quoted load as a check (0: none).
+    #[arg(long = "dem-check", value_name = "N", default_value_t = 10)]
+    dem_check: usize,
+    /// Load in mN of the DEM check [default: the quoted load]: compares the yield the
+    /// estimate predicts at another load with the DEM's.
+    #[arg(
+        long = "dem-check-load-mn",
+        value_name = "MN",
+        allow_hyphen_values = true
+    )]
+    dem_check_load_mn: Option<f64>,
+    /// Estimate only: no DEM decisions and no DEM check.
+    #[arg(long = "no-dem")]
+    no_dem: bool,
+    #[command(flatten)]
+    dem: DesignDemArgs,
+    /// Output folder: yield.csv (one row per device), summary.json (the quoted load, its
+    /// bound, the DEM check, the fabrication model), yield.png, each with a .meta.json
+    /// sidecar, and dem/ (the DEM runs, reused by a re-run).
+    #[arg(long = "out-dir", alias = "out", value_name = "DIR")]
+    out: PathBuf,
+}
+
+/// A fraction flag in (0, 1).
+fn fraction(v: f64, flag: &str) -> Result<f64> {
+    if v.is_finite() && v > 0.0 && v < 1.0 {
+        Ok(v)
+    } else {
+        bail!("`{flag}`: {v} must lie strictly between 0 and 1")
+    }
+}
+
+/// The offset law of one axis: normal with `sigma` (degrees) when given, else uniform over
+/// ±`tol`.
+fn law(tol: f64, sigma: Option<f64>, flag: &str) -> Result<OffsetLaw> {
+    Ok(match sigma {
+        Some(s) => OffsetLaw::Normal {
+            sigma_deg: checks::non_negative(s, flag)?,
+        },
+        None => OffsetLaw::Uniform {
+            half_width_deg: tol,
+        },
+    })
+}
+
+/// Runs `superlube yield`.
+pub fn run(a: Args) -> Result<()> {
+    // every check before any work
+    let samples = match a.samples {
+        0 => bail!("`--samples`: 0 devices; give at least 1 (59 for a 95 %/95 % bound)"),
+        n => n,
+    };
+    let quantile = fraction(a.quantile, "--quantile")?;
+    let confidence = fraction(a.confidence, "--confidence")?;
+    if !(a.resolution.is_finite() && a.resolution > 0.0 && a.resolution <= 0.5) {
+        bail!(
+            "`--resolution`: {} must lie in (0, 0.5] (a fraction of the load)",
+            a.resolution
+        );
+    }
+    let (theta_tol, direction_tol) = a.tol.checked()?;
+    let theta_law = law(theta_tol, a.theta_sigma_deg, "--theta-sigma-deg")?;
+    let direction_law = law(
+        direction_tol,
+        a.direction_sigma_deg,
+        "--direction-sigma-deg",
+    )?;
+    let cv = checks::non_negative(a.sphere_diameter_cv, "--sphere-diameter-cv")?;
+    let p_sigma = gpa_to_pa(checks::non_negative(
+        a.p_crit_sigma_gpa,
+        "--p-crit-sigma-gpa",
+    )?);
+    if !a.direction_deg.is_finite() {
+        bail!(
+            "`--direction-deg`: {} is not a finite angle",
+            a.direction_deg
+        );
+    }
+    let loads = checks::loads(&a.load_mn)?;
+    if loads.windows(2).any(|w| w[1] <= w[0]) {
+        bail!("`--load-mn`: the loads must be strictly increasing");
+    }
+    let mu_superlubric = a.verdict.mu_superlubric()?;
+    let line = checks::line_deg(a.line_deg)?;
+    let knobs = a.knobs.params()?;
+    knobs.validate()?;
+    let searched: Vec<u64> = match &a.searched_seeds {
+        None => Vec::new(),
+        Some(t) => t
+            .split(',')
+            .map(|x| {
+                x.trim().parse::<u64>().map_err(|_| {
+                    anyhow::anyhow!(
+                        "`--searched-seeds`: `{}` is not a non-negative integer seed",
+                        x.trim()
+                    )
+                })
+            })
+            .collect::<Result<_>>()?,
+    };
+    let check_load = a
+        .dem_check_load_mn
+        .map(|w| checks::positive(w, "--dem-check-load-mn").map(surrogate::units::mn_to_n))
+        .transpose()?;
+    let dem = if a.no_dem {
+        None
+    } else {
+        Some(a.dem.params(line)?)
+    };
+    let sc = a.scene.resolve(a.theta)?;
+    let scene = &sc.scene;
+    let theta_deg = label(rad_to_deg(scene.slider.theta));
+    let three = crate::study::fab_yield::fabrication::TRUNCATE_SIGMA;
+    if p_sigma > 0.0 && scene.coating.p_crit - three * p_sigma <= 0.0 {
+        bail!(
+            "`--p-crit-sigma-gpa`: {} GPa reaches P_crit ≤ 0 within ±{three}σ of the scene's {} GPa; give less than {} GPa",
+            a.p_crit_sigma_gpa,
+            pa_to_gpa(scene.coating.p_crit),
+            pa_to_gpa(scene.coating.p_crit) / three
+        );
+    }
+    if cv > 0.0 {
+        if three * cv >= 1.0 {
+            bail!("`--sphere-diameter-cv`: {cv} reaches a diameter ≤ 0 within ±{three}σ; give less than {}", 1.0 / three);
+        }
+        // the largest sphere a draw can give, on every site: must not overlap a neighbour
+        let mut widest = scene.clone();
+        let r = scene.slider_sphere_radius() * (1.0 + three * cv);
+        let sites = scene.slider_sites_local();
+        widest.geometry.slider_sites = Some(surrogate::scene::SiteList {
+            path: "largest drawn spheres".into(),
+            radii: Some(vec![r; sites.len()]),
+            sites,
+            diameter: None,
+            cells: Vec::new(),
+            lines: Vec::new(),
+        });
+        if let Err(e) = widest.validate() {
+            bail!("`--sphere-diameter-cv`: {cv}: a slider sphere drawn {three}σ large would overlap its neighbour ({e}); give a smaller CV, or a slider whose spacing exceeds its sphere diameter");
+        }
+    }
+    let mut excluded = vec![scene.substrate.seed];
+    excluded.extend(&searched);
+    let csv = a.out.join("yield.csv");
+    let json_path = a.out.join("summary.json");
+    let png = a.out.join("yield.png");
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| anyhow::anyhow!("`--out-dir`: cannot create {}: {e}", a.out.display()))?;
+    check_outputs(&[
+        ("--out-dir", Some(&csv)),
+        ("--out-dir", Some(&json_path)),
+        ("--out-dir", Some(&png)),
+    ])?;
+    let fabrication = FabricationModel {
+        theta: theta_law,
+        direction: direction_law,
+        sphere_diameter_cv: cv,
+        p_crit_sigma: p_sigma,
+        seed: a.sample_seed,
+        excluded_seeds: excluded,
+    };
+    let dem_record = dem.as_ref().map(|(d, _)| record::dem(scene, d));
+    let params = YieldParams {
+        theta_deg,
+        direction_deg: a.direction_deg,
+        fabrication,
+        samples,
+        quantile,
+        confidence,
+        resolution: a.resolution,
+        limit: LimitParams {
+            loads,
+            mu_superlubric,
+            line,
+            friction: knobs,
+        },
+        dem: dem.map(|(params, jobs)| YieldDem {
+            params,
+            check: a.dem_check,
+            check_load,
+            jobs,
+            dir: a.out.join("dem"),
+            max_rounds: 4,
+        }),
+    };
+    let rep = Reporter::stderr();
+    sc.log(&rep);
+    if scene.substrate.sigma_h == 0.0 {
+        rep.note("yield: the substrate is flat (σ_h = 0): every device's substrate is the same; only the offsets and scatters vary");
+    }
+    let t0 = std::time::Instant::now();
+    let o = fab_yield(scene, &params, &rep)?;
+    let s = &o.summary;
+    rep.note(&format!(
+        "yield: {} devices ({} load estimates), {} DEM run(s) in the band and {} in the check, in {:.1} s",
+        s.samples,
+        o.estimates,
+        s.dem_runs,
+        s.dem_check_total,
+        t0.elapsed().as_secs_f64()
+    ));
+    let mut recorded = scene_file(scene);
+    recorded.slider.theta_deg = Some(theta_deg);
+    let mut outs = Outputs::new(
+        Inputs {
+            workflow: "yield".into(),
+            scene: Some(recorded),
+            params: json!({
+                "theta_deg": theta_deg,
+                "direction_deg": a.direction_deg,
+                "fabrication": params.fabrication.record(scene),
+                "samples": samples,
+                "quantile": quantile,
+                "confidence": confidence,
+                "resolution": a.resolution,
+                "load_mN": params.limit.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
+                "mu_superlubric": mu_superlubric,
+                "line_deg": line.map(rad_to_deg),
+                "friction": record::friction_knobs(&params.limit.friction),
+                "dem": dem_record,
+                "dem_check": params.dem.as_ref().map(|d| d.check),
+                "dem_check_load_mN": check_load.map(|w| label(n_to_mn(w))),
+            }),
+        },
+        sc.warnings.clone(),
+    );
+    outs.write(
+        "--out-dir",
+        Some(&csv),
+        csv_bytes(&o.rows),
+        Some(o.rows.len() as u64),
+    );
+    outs.write(
+        "--out-dir",
+        Some(&json_path),
+        serde_json::to_vec_pretty(s)
+            .map(|mut v| {
+                v.push(b'\n');
+                v
+            })
+            .map_err(Into::into),
+        None,
+    );
+    outs.attempt("--out-dir", &png, || yield_png(&png, s));
+    match (s.load_at_quantile_mN, s.load_at_quantile_bound_mN) {
+        (Some(w), Some(b)) => rep.note(&format!(
+            "yield: {:.0} % of devices hold {w} mN; at least {:.0} % hold {b} mN with {:.0} % confidence",
+            100.0 * quantile,
+            100.0 * quantile,
+            100.0 * confidence
+        )),
+        (Some(w), None) => rep.note(&format!(
+            "yield: {:.0} % of devices hold {w} mN; no confidence bound from {} devices (needs ≥ {}: --samples)",
+            100.0 * quantile,
+            s.samples,
+            s.min_samples_for_bound
+        )),
+        _ => rep.note("yield: no device is superlubric at any load"),
+    }
+    if s.dem_check_total > 0 {
+        rep.note(&format!(
+            "yield: DEM check at {} mN: {}/{} devices superlubric",
+            s.dem_check_load_mN.unwrap_or(0.0),
+            s.dem_check_passed,
+            s.dem_check_total
+        ));
+    }
+    outs.finish()
+}

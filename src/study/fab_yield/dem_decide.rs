@@ -1,0 +1,131 @@
+//! Where the estimate cannot decide, the DEM does: the DEM runs of a yield ([`DemDecider`]).
+//!
+//! A device whose band bracket (W_low, W_high] contains the quoted load W_q could hold there or
+//! not, as far as the estimate's measured error goes; it gets one DEM `slide` run at W_q with
+//! the design's protocol and model choice (the design's `--dem-model`; `auto` where the
+//! device's estimate lies in the springs mount's resonance band, as the design does for a
+//! recipe outside the validated range), on its own substrate, θ and pull direction. The DEM's
+//! verdict ([`dem_superlubric`]) overrules the estimate's: a device that fails at W_q gets a
+//! critical load below W_q, one that holds a critical load of at least W_q. Since that moves
+//! W_q, the decisions repeat at the new W_q until no device in its bracket is left undecided.
+//!
+//! The runs go through the batch runner ([`crate::study::batch`]): side by side, one thread
+//! each, reused by their input hash (a re-run costs nothing), each in `dir/<name>/`.
+
+use super::fabrication::Sample;
+use crate::runs::progress::Progress;
+use crate::study::batch::{self, run_batch_with, BatchOptions, SlideJob};
+use crate::study::corrugation::contact_line;
+use crate::study::dem_run::DemParams;
+use crate::study::rows::label;
+use crate::study::verdict::dem_superlubric;
+use anyhow::Result;
+use std::path::PathBuf;
+use surrogate::units::{deg_to_rad, n_to_mn, rad_to_deg};
+use surrogate::Scene;
+
+/// The DEM of a yield.
+#[derive(Debug, Clone)]
+pub struct YieldDem {
+    /// The protocol and model of every run (load, α and line are set per run).
+    pub params: DemParams,
+    /// Fresh devices run with the DEM for the check (0: no check).
+    pub check: usize,
+    /// Load (N) of the check; `None`: the quoted load.
+    pub check_load: Option<f64>,
+    /// Runs side by side (one thread each).
+    pub jobs: usize,
+    /// Folder of the runs.
+    pub dir: PathBuf,
+    /// Most rounds of decisions (the quoted load moves when the DEM overrules the estimate).
+    pub max_rounds: usize,
+}
+
+/// One DEM run asked for: a device at a load (N).
+pub struct Ask<'a> {
+    /// The device.
+    pub sample: &'a Sample,
+    /// Load (N).
+    pub load: f64,
+    /// Whether its estimate lies in the mount's resonance band (the DEM then chooses its
+    /// model itself).
+    pub mount_resonance: bool,
+}
+
+/// The DEM verdict of a run: superlubric, or why not.
+pub type DemVerdict = std::result::Result<(), String>;
+
+/// Runs DEM decisions for one design (scene, nominal θ and direction, degrees).
+pub struct DemDecider<'a> {
+    /// The design's scene (SI).
+    pub scene: &'a Scene,
+    /// Nominal θ (degrees).
+    pub theta_deg: f64,
+    /// Nominal pull direction from the substrate's x axis (degrees).
+    pub direction_deg: f64,
+    /// μ_sl of the verdict.
+    pub mu_superlubric: f64,
+    /// The DEM's settings.
+    pub dem: &'a YieldDem,
+}
+
+impl DemDecider<'_> {
+    /// The slide job of `ask`: the device's scene at θ + δθ, pulled along d + δd from the
+    /// substrate's x axis (α measured from the device's own contact line).
+    pub fn job(&self, ask: &Ask) -> SlideJob {
+        let s = ask.sample;
+        let theta = label(self.theta_deg + s.theta_offset_deg);
+        let direction = label(self.direction_deg + s.direction_offset_deg);
+        let scene = s.scene(self.scene).with_theta(deg_to_rad(theta));
+        let line = contact_line(&scene, self.dem.params.line);
+        let alpha = label(direction - rad_to_deg(line.angle));
+        let mut d = self.dem.params.clone();
+        d.sim.load = ask.load;
+        d.alpha = deg_to_rad(alpha);
+        if ask.mount_resonance && d.model.request == dem::ModelRequest::Reduced {
+            d.model.request = dem::ModelRequest::Auto;
+        }
+        SlideJob {
+            name: format!("s{}_{}", s.index, batch::run_name(&scene, &d)),
+            scene,
+            params: d,
+        }
+    }
+
+    /// Runs `asks` side by side under the stage `stage` and returns each one's verdict, in
+    /// order. Cost: one DEM run each (1–3 s with the design's protocol), none where reused.
+    pub fn run(
+        &self,
+        asks: &[Ask],
+        stage: &str,
+        progress: &dyn Progress,
+    ) -> Result<Vec<DemVerdict>> {
+        if asks.is_empty() {
+            return Ok(Vec::new());
+        }
+        let jobs: Vec<SlideJob> = asks.iter().map(|a| self.job(a)).collect();
+        let out = run_batch_with(
+            &jobs,
+            &BatchOptions {
+                side_by_side: self.dem.jobs.max(1),
+                stage: stage.into(),
+                run_notes: false,
+            },
+            &self.dem.dir,
+            progress,
+        )?;
+        Ok(asks
+            .iter()
+            .zip(&out)
+            .map(|(a, o)| {
+                dem_superlubric(
+                    o.result.as_ref(),
+                    o.error.as_deref(),
+                    label(n_to_mn(a.load)),
+                    a.sample.p_crit,
+                    self.mu_superlubric,
+                )
+            })
+            .collect())
+    }
+}

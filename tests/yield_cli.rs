@@ -1,0 +1,270 @@
+//! `superlube yield` on a small scene: its files and sidecars, the summary against the rows,
+//! the step of a device-independent design at the nominal critical load, identical output
+//! with 1 and 2 threads, the DEM deciding and checking, and bad input refused naming the flag
+//! before anything is written.
+
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
+use std::collections::HashMap;
+use std::path::Path;
+
+/// tri-tri at θ = 30° on a 15 µm slider (≈ 80 spheres), pulled along x, with a ladder of loads
+/// scaled to its sphere count.
+const SMALL: [&str; 12] = [
+    "--pattern",
+    "tri-tri",
+    "--slider-radius-um",
+    "15",
+    "--substrate-um",
+    "60x60",
+    "--load-mn",
+    "0.01,0.03,0.06,0.09,0.12,0.15",
+    "--theta-deg",
+    "30",
+    "--direction-deg",
+    "0",
+];
+
+fn rows(path: &Path) -> Vec<HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let h = r.headers().unwrap().clone();
+    r.records()
+        .map(|x| {
+            let x = x.unwrap();
+            h.iter()
+                .zip(x.iter())
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect()
+        })
+        .collect()
+}
+
+fn num(r: &HashMap<String, String>, k: &str) -> f64 {
+    r[k].parse().unwrap_or_else(|_| panic!("{k} = {:?}", r[k]))
+}
+
+fn summary(dir: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap()
+}
+
+/// `superlube yield` on the small scene with `extra` flags into `out`, with `threads` rayon
+/// threads.
+fn run(extra: &[&str], out: &Path, threads: &str) {
+    let o = bin()
+        .arg("yield")
+        .args(SMALL)
+        .args(extra)
+        .arg("--out-dir")
+        .arg(out)
+        .env("RAYON_NUM_THREADS", threads)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+}
+
+/// The files and sidecars; each row's bracket holds its critical load; the summary's quoted
+/// load is the ⌈q n⌉-th highest critical load, its bound absent for too few devices, and the
+/// yield there is the fraction of rows at or above it.
+#[test]
+fn files_rows_and_summary_agree() {
+    let d = tmpdir("yield-files");
+    let out = d.join("y");
+    run(
+        &["--sigma-h-um", "0.002", "--samples", "12", "--no-dem"],
+        &out,
+        "2",
+    );
+    for f in ["yield.csv", "summary.json", "yield.png"] {
+        assert!(out.join(f).exists(), "{f} missing");
+        assert!(out.join(format!("{f}.meta.json")).exists(), "{f} sidecar");
+    }
+    let m = rows(&out.join("yield.csv"));
+    assert_eq!(m.len(), 12);
+    let mut seeds: Vec<&str> = m.iter().map(|r| r["seed"].as_str()).collect();
+    seeds.sort();
+    seeds.dedup();
+    assert_eq!(seeds.len(), 12, "a fresh substrate per device");
+    for r in &m {
+        let (lo, c, hi) = (
+            num(r, "critical_load_low_mN"),
+            num(r, "critical_load_mN"),
+            num(r, "critical_load_high_mN"),
+        );
+        assert!(lo <= c && c <= hi, "{r:?}");
+        assert!(num(r, "theta_offset_deg").abs() <= 0.1);
+        assert!(num(r, "direction_offset_deg").abs() <= 0.5);
+        assert_eq!(r["decided_by"], "estimate");
+    }
+    let s = summary(&out);
+    let mut w: Vec<f64> = m.iter().map(|r| num(r, "critical_load_mN")).collect();
+    w.sort_by(f64::total_cmp);
+    // ⌈0.95 · 12⌉ = 12: the lowest
+    assert_eq!(s["load_at_quantile_mN"].as_f64(), Some(w[0]));
+    assert!(s["load_at_quantile_bound_mN"].is_null());
+    assert_eq!(s["min_samples_for_bound"].as_u64(), Some(59));
+    assert_eq!(s["yield_at_quantile_load"].as_f64(), Some(1.0));
+    assert_eq!(s["samples"].as_u64(), Some(12));
+    assert_eq!(s["dem"].as_bool(), Some(false));
+    assert_eq!(s["fabrication"]["sigma_h_um"].as_f64(), Some(0.002));
+    let meta = std::fs::read_to_string(out.join("yield.csv.meta.json")).unwrap();
+    assert!(meta.contains("\"fabrication\"") && meta.contains("\"sample_seed\""));
+}
+
+/// No randomness (flat substrate, no tolerance): every device is the nominal one, so the yield
+/// is a step from 1 to 0 at one critical load, which lies between the nominal superlubric
+/// limit of `superlube tolerance` and the next rung of the ladder.
+#[test]
+fn no_randomness_gives_a_step_at_the_nominal_critical_load() {
+    let d = tmpdir("yield-step");
+    let out = d.join("y");
+    run(
+        &[
+            "--theta-tol-deg",
+            "0",
+            "--direction-tol-deg",
+            "0",
+            "--samples",
+            "5",
+            "--no-dem",
+        ],
+        &out,
+        "2",
+    );
+    let m = rows(&out.join("yield.csv"));
+    let w: Vec<f64> = m.iter().map(|r| num(r, "critical_load_mN")).collect();
+    assert!(w.iter().all(|&x| x == w[0]), "{w:?}");
+    let s = summary(&out);
+    let curve = s["curve"].as_array().unwrap();
+    assert_eq!(curve.len(), 1);
+    assert_eq!(curve[0]["load_mN"].as_f64(), Some(w[0]));
+    assert_eq!(curve[0]["yield"].as_f64(), Some(1.0));
+    // the nominal ladder limit of `tolerance`
+    let t = d.join("t");
+    let o = bin()
+        .args(["tolerance"])
+        .args(&SMALL[..8])
+        .args(["--theta", "30", "--direction-deg", "0"])
+        .args(["--theta-range-deg", "0", "--theta-points", "1"])
+        .args(["--direction-range-deg", "0", "--direction-points", "1"])
+        .args(["--theta-tol-deg", "0", "--direction-tol-deg", "0", "--out"])
+        .arg(&t)
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    let nominal = num(&rows(&t.join("map.csv"))[0], "superlubric_to_mN");
+    let ladder = [0.01, 0.03, 0.06, 0.09, 0.12, 0.15];
+    let next = ladder
+        .iter()
+        .copied()
+        .find(|&x| x > nominal)
+        .unwrap_or(f64::INFINITY);
+    assert!(
+        nominal <= w[0] && w[0] < next,
+        "critical load {} outside [{nominal}, {next})",
+        w[0]
+    );
+}
+
+/// Same inputs and seed: identical `yield.csv` with 1 and 2 threads.
+#[test]
+fn the_same_seed_gives_the_same_rows_whatever_the_threads() {
+    let d = tmpdir("yield-threads");
+    let flags = ["--sigma-h-um", "0.002", "--samples", "6", "--no-dem"];
+    run(&flags, &d.join("one"), "1");
+    run(&flags, &d.join("two"), "2");
+    let a = std::fs::read(d.join("one/yield.csv")).unwrap();
+    let b = std::fs::read(d.join("two/yield.csv")).unwrap();
+    assert_eq!(a, b);
+}
+
+/// With the DEM: every device whose band bracket holds the quoted load is decided by a DEM run
+/// there, and the check reports passed/total on fresh devices.
+#[test]
+fn the_dem_decides_the_band_and_checks_the_quoted_load() {
+    let d = tmpdir("yield-dem");
+    let out = d.join("y");
+    run(
+        &[
+            "--sigma-h-um",
+            "0.002",
+            "--samples",
+            "6",
+            "--dem-check",
+            "2",
+            "--dem-equilibrate-us",
+            "1",
+            "--dem-relax-us",
+            "1",
+            "--dem-slide-us",
+            "10",
+        ],
+        &out,
+        "2",
+    );
+    let s = summary(&out);
+    let m = rows(&out.join("yield.csv"));
+    let quoted = s["load_at_quantile_mN"].as_f64().unwrap();
+    for r in &m {
+        let in_band =
+            num(r, "critical_load_low_mN") < quoted && quoted <= num(r, "critical_load_high_mN");
+        if r["decided_by"] == "dem" {
+            assert!(in_band && !r["dem_loads_mN"].is_empty(), "{r:?}");
+        }
+        // the critical load agrees with every DEM decision on the device
+        let c = num(r, "critical_load_mN");
+        if !r["dem_loads_mN"].is_empty() {
+            for (w, ok) in r["dem_loads_mN"]
+                .split(';')
+                .zip(r["dem_superlubric"].split(';'))
+            {
+                let w: f64 = w.parse().unwrap();
+                assert_eq!(ok == "true", c >= w, "{r:?}");
+            }
+        }
+    }
+    // on this scene the path P_max band spans more than a rung: the DEM has work
+    assert!(s["dem_runs"].as_u64().unwrap() >= 1);
+    assert_eq!(s["dem_check_total"].as_u64(), Some(2));
+    assert!(s["dem_check_passed"].as_u64().unwrap() <= 2);
+    assert_eq!(s["dem_check_interval"].as_array().unwrap().len(), 2);
+    assert!(out.join("dem").is_dir());
+}
+
+/// Bad input is refused naming the flag, before any work (nothing written).
+#[test]
+fn bad_input_is_refused_naming_the_flag() {
+    let d = tmpdir("yield-bad");
+    let out = d.join("never");
+    let o = out.to_str().unwrap();
+    let base = |extra: &[&str]| -> Vec<String> {
+        let mut v: Vec<String> = vec!["yield".into()];
+        v.extend(SMALL.iter().map(|s| s.to_string()));
+        v.extend(extra.iter().map(|s| s.to_string()));
+        v.extend(["--out-dir".to_string(), o.to_string()]);
+        v
+    };
+    for (extra, flag) in [
+        (&["--quantile", "1"][..], "--quantile"),
+        (&["--quantile", "0"][..], "--quantile"),
+        (&["--confidence", "1.5"][..], "--confidence"),
+        (&["--samples", "0"][..], "--samples"),
+        (
+            &["--sphere-diameter-cv", "-0.1"][..],
+            "--sphere-diameter-cv",
+        ),
+        (
+            &["--sphere-diameter-cv", "0.05"][..],
+            "--sphere-diameter-cv",
+        ),
+        (&["--p-crit-sigma-gpa", "-1"][..], "--p-crit-sigma-gpa"),
+        (&["--p-crit-sigma-gpa", "2"][..], "--p-crit-sigma-gpa"),
+        (&["--theta-sigma-deg", "-0.1"][..], "--theta-sigma-deg"),
+        (&["--resolution", "0"][..], "--resolution"),
+        (&["--searched-seeds", "1,x"][..], "--searched-seeds"),
+    ] {
+        let args = base(extra);
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        fails_naming(&refs, flag);
+    }
+    assert!(!out.exists(), "nothing is written for bad input");
+}
