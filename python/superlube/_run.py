@@ -23,8 +23,8 @@ SCENE_FLAGS = {
     "outline", "slider-sites", "substrate-sites", "slider-sphere-diameter-um",
     "substrate-sphere-diameter-um",
 }  # fmt: skip
-#: Unit suffixes a keyword may carry where the flag has none (``tilt_k1_N_m`` aside, every
-#: flag carries its own: ``theta_deg`` is ``--theta-deg``).
+#: Unit suffixes a keyword may carry where its flag has none: a keyword written with its unit
+#: still finds a unitless flag (every θ and α flag now carries ``-deg`` itself).
 _UNITS = ("deg", "um", "nm", "mn", "us", "gpa")
 
 
