@@ -139,8 +139,10 @@ def _overlay(fields: Dict[str, Any]) -> str:
                 except ValueError:
                     raise ValueError(f"`{key}`: `{value}` is not two numbers LXxLY") from None
         value = _spec(name, value, key)
-        if hasattr(value, "__fspath__"):
-            value = os.fspath(value)
+        if name in ("slider_sites", "substrate_sites"):
+            # relative to the working directory, as the command line's flags (the scene file
+            # a workflow runs from is written elsewhere)
+            value = os.path.abspath(os.fspath(value))
         line = f"{file_name} = {_toml_value(value, key)}"
         (top if table is None else tables[table]).append(line)
     text = "\n".join(top) + "\n"
