@@ -47,6 +47,20 @@ fn theta_out_of_range_is_refused_naming_the_flag() {
         "`--theta-deg`",
     );
     fails_naming(&["design", "--theta-deg", "-361"], "`--theta-deg`");
+    let d = tmpdir("units-theta-file");
+    let scene = d.join("theta.toml");
+    std::fs::write(&scene, "pattern = 'tri-tri'\n[slider]\ntheta_deg = 400\n").unwrap();
+    fails_naming(
+        &[
+            "landscape",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--load-mn",
+            "1",
+        ],
+        "`slider.theta_deg`",
+    );
+    std::fs::remove_dir_all(&d).ok();
     // a full turn either way is a valid orientation
     let out = bin()
         .args(["screen", "--pattern", "tri-tri", "--theta-deg", "360"])

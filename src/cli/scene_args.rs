@@ -295,6 +295,13 @@ impl SceneArgs {
         let mut file = self.scene_file()?;
         if let Some(t) = theta_deg {
             file.slider.theta_deg = Some(super::checks::theta_deg(t)?);
+        } else if let Some(t) = file.slider.theta_deg {
+            let max = super::checks::THETA_MAX_DEG;
+            if t.abs() > max {
+                bail!(
+                    "invalid value for `slider.theta_deg`: {t} (outside [-{max}, {max}] degrees)"
+                );
+            }
         }
         let scene = file.into_scene()?;
         scene.validate()?;
