@@ -342,7 +342,9 @@ mod tests {
             e.contains("slider.radius_um") && e.contains("holds 1 sphere"),
             "{e}"
         );
-        // a disc wider than a sphere holding a few: a warning naming the count
+        // a disc wider than a sphere holding a few (a square slider lattice: the centre and
+        // its four neighbours): a warning naming the count
+        let mut s = Scene::preset("square-tri").unwrap();
         s.slider.radius = 3.1e-6;
         let n = s.slider_sites_local().len();
         assert!((2..FEW_SLIDER_SPHERES).contains(&n), "{n}");
