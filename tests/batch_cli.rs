@@ -119,7 +119,7 @@ fn side_by_side_equals_one_by_one_and_a_single_run() {
         "theta_deg",
         "sigma_h_um",
         "seed",
-        "E_GPa",
+        "youngs_GPa",
         "p_crit_GPa",
         "mu1",
         "mu2",

@@ -295,7 +295,7 @@ fn the_answer_table_matches_the_csvs_and_its_commands_run_the_answer() {
         .exists());
 
     // `friction`'s verdict at the answer's (θ, α, W) equals the one design recorded
-    let needle = format!(" --theta {theta} ");
+    let needle = format!(" --theta-deg {theta} ");
     let fr: Vec<&str> = report
         .lines()
         .find(|l| l.starts_with("superlube friction ") && l.contains(&needle))

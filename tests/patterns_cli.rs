@@ -178,7 +178,7 @@ fn bad_input_is_named() {
     );
 }
 
-/// `--normalize spheres`: every candidate's outline holds about the base slider's sphere count
+/// `--fair count`: every candidate's outline holds about the base slider's sphere count
 /// (within the step one lattice row makes), while `area` keeps the outline and lets it vary.
 #[test]
 fn normalize_spheres_gives_every_candidate_the_base_sphere_count() {
@@ -290,9 +290,9 @@ fn design_over_patterns_writes_each_patterns_geometry_and_best_design() {
         .split("\n## ")
         .next()
         .unwrap();
-    // the fairness rule, from the index's sidecar (`--normalize area`, the default)
+    // the fairness rule, from the index's sidecar (`--fair area`, the default)
     assert!(
-        table.contains("Compared at **equal slider area**: the candidates were made with `superlube patterns --normalize area`"),
+        table.contains("Compared at **equal slider area**: the candidates were made with `superlube patterns --fair area`"),
         "{table}"
     );
     for row in &rows {
@@ -405,7 +405,7 @@ fn design_family_generates_and_designs_the_candidates() {
     assert!(hi <= 1.1 * lo, "{spheres:?}");
     let report = std::fs::read_to_string(dir.join("n/report.md")).unwrap();
     assert!(
-        report.contains("Compared at **equal sphere count**: the candidates were made with `superlube patterns --normalize spheres`"),
+        report.contains("Compared at **equal sphere count**: the candidates were made with `superlube patterns --fair count`"),
         "{report}"
     );
     let o = bin()
@@ -787,7 +787,7 @@ fn design_screens_the_whole_domain_without_theta_and_names_a_partial_one() {
     assert_eq!(*thetas.last().unwrap(), 360.0 - step);
     for note in [&log, &report] {
         assert!(
-            note.contains("no `--theta` given: the whole domain at 0.25°"),
+            note.contains("no `--theta-deg` given: the whole domain at 0.25°"),
             "{note}"
         );
         assert!(!note.contains("not screened"), "{note}");

@@ -171,7 +171,7 @@ fn old_flag_names_still_work_with_a_note() {
         .unwrap();
     assert_ok(&old);
     let new = bin()
-        .args(["screen", "--theta", "0", "--solver", "rigid-z"])
+        .args(["screen", "--theta-deg", "0", "--solver", "rigid-z"])
         .args(TINY)
         .output()
         .unwrap();

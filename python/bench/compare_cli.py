@@ -14,7 +14,7 @@ cases = {
         lambda: [superlube.screen(p, progress=False) for p in ("tri-tri", "square-tri")],
     ),
     "landscape 51x51": (
-        lambda d: subprocess.run([cli, "landscape", "--pattern", "square-tri", "--theta", "0",
+        lambda d: subprocess.run([cli, "landscape", "--pattern", "square-tri", "--theta-deg", "0",
                                   "--load-mn", "1.4", "--out", f"{d}/l.csv"], check=True, capture_output=True),
         lambda: superlube.landscape("square-tri", theta_deg=0, load_mN=1.4, progress=False),
     ),

@@ -3,7 +3,7 @@
 The same workflows as the ``superlube`` command line, run in process (no subprocess, the GIL
 released, rayon on every core or ``threads``): each function takes a :class:`Scene` and the
 command's options as keywords named like its flags in snake case with their unit
-(``--load-mn`` → ``load_mN``, ``--theta`` → ``theta_deg`` or ``theta``), checks them exactly as
+(``--load-mn`` → ``load_mN``, ``--theta-deg`` → ``theta_deg``), checks them exactly as
 the command does (``ValueError`` naming the bad option or field, before any work), and returns
 the command's CSV as a ``pandas.DataFrame`` with the CSV's column names (units in the names; a
 dict of numpy arrays where pandas is not installed). ``df.attrs["meta"]`` holds the output's
@@ -162,8 +162,8 @@ def tolerance(scene: SceneLike = None, *, progress: Any = None,
     θ ± range × pulling direction ± range (degrees; the pull direction is fixed in the
     substrate frame when the slider is misaligned).
 
-    Options (``superlube tolerance --help``): ``theta_deg`` (nominal θ), ``alpha`` (degrees from
-    the contact line) or ``direction_deg`` (from x), ``theta_range_deg``, ``theta_points``,
+    Options (``superlube tolerance --help``): ``theta_deg`` (nominal θ), ``alpha_deg`` (degrees
+    from the contact line; formerly ``alpha``) or ``direction_deg`` (from x), ``theta_range_deg``, ``theta_points``,
     ``direction_range_deg``, ``direction_points``, ``theta_tol_deg``, ``direction_tol_deg`` (degrees),
     ``load_mN``, ``mu_superlubric``, ``line_deg``, the path options of the estimate and
     ``out_dir`` (the command's folder: map.csv, map.png; kept).

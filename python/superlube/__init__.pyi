@@ -107,7 +107,7 @@ def tolerance(
     scene: SceneLike = None,
     *,
     theta_deg: Optional[float] = None,
-    alpha: Optional[float] = None,
+    alpha_deg: Optional[float] = None,
     direction_deg: Optional[float] = None,
     load_mN: Optional[Values] = None,
     out_dir: Optional[str] = None,

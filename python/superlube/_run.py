@@ -19,9 +19,12 @@ log = logging.getLogger("superlube")
 #: The CLI's scene override flags: given to a workflow as a keyword, they belong to the Scene.
 SCENE_FLAGS = {
     "pattern", "scene", "slider-radius-um", "substrate-um", "sigma-h-um", "seed",
-    "youngs-gpa", "p-crit-gpa", "offset-um", "tilt", "tilt-k1-n-m",
+    "youngs-gpa", "p-crit-gpa", "offset-um", "tilt", "tilt-k1-n-m", "slider-lattice",
+    "outline", "slider-sites", "substrate-sites", "slider-sphere-diameter-um",
+    "substrate-sphere-diameter-um",
 }  # fmt: skip
-#: Unit suffixes a keyword may carry where the flag has none (``theta_deg`` → ``--theta``).
+#: Unit suffixes a keyword may carry where its flag has none: a keyword written with its unit
+#: still finds a unitless flag (every θ and α flag now carries ``-deg`` itself).
 _UNITS = ("deg", "um", "nm", "mn", "us", "gpa")
 
 

@@ -21,11 +21,16 @@ FIELDS: Dict[str, Optional[str]] = {
     "tilt": "slider",
     "tilt_k1_N_m": "slider",
     "slider_lattice": "slider",
+    "outline": "slider",
+    "slider_sites": "slider",
+    "slider_sphere_diameter_um": "slider",
     "size_um": "substrate",
     "substrate_um": "substrate",
     "sigma_h_um": "substrate",
     "seed": "substrate",
     "substrate_lattice": "substrate",
+    "substrate_sites": "substrate",
+    "substrate_sphere_diameter_um": "substrate",
     "youngs_GPa": "material",
     "poisson": "material",
     "density_g_cm3": "material",
@@ -39,6 +44,10 @@ _ALIASES = {
     "substrate_um": "size_um",
     "slider_lattice": "lattice",
     "substrate_lattice": "lattice",
+    "slider_sites": "sites",
+    "substrate_sites": "sites",
+    "slider_sphere_diameter_um": "sphere_diameter_um",
+    "substrate_sphere_diameter_um": "sphere_diameter_um",
 }
 _BY_LOWER = {k.lower(): k for k in FIELDS}
 _TABLES = ("slider", "substrate", "material", "coating")
@@ -65,6 +74,41 @@ def _toml_value(v: Any, field: str) -> str:
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_toml_value(x, field) for x in v) + "]"
     raise ValueError(f"`{field}`: cannot use a {type(v).__name__} as a scene field value")
+
+
+def _number(text: str, key: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise ValueError(f"`{key}`: `{text}` is not a number (µm)") from None
+
+
+def _spec(name: str, value: Any, key: str) -> Any:
+    """The command line's text forms of the geometry flags as scene-file tables:
+    ``slider_lattice="honeycomb:6"`` (``KIND:SPACING_UM``, ``rectangular:3x3.5``) and
+    ``outline="disc:R"``, ``"rectangle:WxH"``, ``"polygon:N:R"`` (µm); a dict is kept as is."""
+    if not isinstance(value, str) or name not in ("slider_lattice", "outline"):
+        return value
+    parts = value.split(":")
+    kind = parts[0].strip()
+    if name == "slider_lattice":
+        if len(parts) != 2:
+            raise ValueError(f"`{key}`: `{value}` must be KIND:SPACING_UM, e.g. honeycomb:6")
+        if kind == "rectangular":
+            xy = parts[1].lower().split("x")
+            if len(xy) != 2:
+                raise ValueError(f"`{key}`: a rectangular lattice is rectangular:3x3.5")
+            return {"kind": kind, "spacing_um": _number(xy[0], key),
+                    "spacing_y_um": _number(xy[1], key)}  # fmt: skip
+        return {"kind": kind, "spacing_um": _number(parts[1], key)}
+    if kind == "disc" and len(parts) == 2:
+        return {"kind": kind, "radius_um": _number(parts[1], key)}
+    if kind == "rectangle" and len(parts) == 2 and len(parts[1].lower().split("x")) == 2:
+        w, h = parts[1].lower().split("x")
+        return {"kind": kind, "size_um": [_number(w, key), _number(h, key)]}
+    if kind == "polygon" and len(parts) == 3 and parts[1].strip().isdigit():
+        return {"kind": kind, "sides": int(parts[1]), "radius_um": _number(parts[2], key)}
+    raise ValueError(f"`{key}`: `{value}` must be disc:R, rectangle:WxH or polygon:N:R (µm)")
 
 
 def _overlay(fields: Dict[str, Any]) -> str:
@@ -94,6 +138,11 @@ def _overlay(fields: Dict[str, Any]) -> str:
                     value = [float(p) for p in parts]
                 except ValueError:
                     raise ValueError(f"`{key}`: `{value}` is not two numbers LXxLY") from None
+        value = _spec(name, value, key)
+        if name in ("slider_sites", "substrate_sites"):
+            # relative to the working directory, as the command line's flags (the scene file
+            # a workflow runs from is written elsewhere)
+            value = os.path.abspath(os.fspath(value))
         line = f"{file_name} = {_toml_value(value, key)}"
         (top if table is None else tables[table]).append(line)
     text = "\n".join(top) + "\n"
@@ -121,6 +170,12 @@ class Scene:
     theta_deg            slider orientation θ (degrees)
     offset_um            in-plane slider offset ``[x, y]`` (µm)
     tilt, tilt_k1_N_m    slider mount (locked/free/springs) and spring K1 (N/m)
+    slider_lattice       slider lattice, ``"honeycomb:6"`` as ``--slider-lattice`` or a dict
+    outline              slider outline, ``"disc:R"``, ``"rectangle:WxH"``, ``"polygon:N:R"``
+    slider_sites         slider site file (CSV ``x_um,y_um[,diameter_um]``)
+    substrate_sites      substrate site file (same form)
+    slider_sphere_…      ``slider_sphere_diameter_um``: slider sphere diameter (µm)
+    substrate_sphere_…   ``substrate_sphere_diameter_um``: substrate sphere diameter (µm)
     size_um              substrate rectangle ``[lx, ly]`` (µm) (or ``"364x270"``)
     sigma_h_um, seed     substrate height roughness amplitude (µm) and its seed
     youngs_GPa, poisson  Young's modulus E (GPa), Poisson ratio

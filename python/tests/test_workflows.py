@@ -23,7 +23,7 @@ def test_screen_equals_cli_row_for_row(cli_bin, tmp_path):
     thetas, loads = [0, 0.5, 10.2, 29.9], [0.35, 1.4, 3.86]
     df = superlube.screen(scene, theta_deg=thetas, load_mN=loads, out=tmp_path / "py.csv")
     subprocess.run(
-        [cli_bin, "screen", "--scene", tmp_path / "s.toml", "--theta", "0,0.5,10.2,29.9",
+        [cli_bin, "screen", "--scene", tmp_path / "s.toml", "--theta-deg", "0,0.5,10.2,29.9",
          "--load-mn", "0.35,1.4,3.86", "--out", tmp_path / "cli.csv"],
         check=True, capture_output=True,
     )  # fmt: skip
@@ -64,7 +64,7 @@ def test_bad_scene_field_raises_value_error_naming_it(fields, name):
 def test_scene_message_is_the_clis(cli_bin, tmp_path):
     with pytest.raises(ValueError) as e:
         superlube.Scene("square-tri", p_crit_GPa=-4)
-    r = subprocess.run([cli_bin, "screen", "--p-crit-gpa", "-4", "--theta", "0"],
+    r = subprocess.run([cli_bin, "screen", "--p-crit-gpa", "-4", "--theta-deg", "0"],
                        capture_output=True, text=True)  # fmt: skip
     assert r.returncode != 0
     assert str(e.value).split(": ", 1)[-1] in r.stderr
@@ -96,12 +96,29 @@ def test_old_option_names_work_with_a_warning(tmp_path):
     with pytest.raises(ValueError, match="old name"):
         superlube.screen(scene, theta_deg=[0], solver="auto", model="auto")
     # an output keyword: tolerance's folder is `out_dir`, formerly `out`
-    opts = dict(theta_deg=30, alpha=0, load_mN="0.05", theta_range_deg=0.2, theta_points=2,
+    opts = dict(theta_deg=30, alpha_deg=0, load_mN="0.05", theta_range_deg=0.2, theta_points=2,
                 direction_range_deg=0.5, direction_points=2)  # fmt: skip
     with pytest.warns(DeprecationWarning, match="`out` is now `out_dir`"):
         superlube.tolerance(superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60]),
                             out=tmp_path / "tol", **opts)  # fmt: skip
     assert (tmp_path / "tol" / "map.csv").exists()
+    # θ and α carry their unit: `alpha` (tolerance's old spelling) is `alpha_deg`
+    with pytest.warns(DeprecationWarning, match="`alpha` is now `alpha_deg`"):
+        old = superlube.tolerance(superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60]),
+                                  alpha=0, **{k: v for k, v in opts.items() if k != "alpha_deg"})  # fmt: skip
+    assert len(old) == 4
+
+
+def test_the_geometry_flags_are_scene_fields():
+    scene = superlube.Scene("square-tri", radius_um=12, size_um=[60, 60],
+                            slider_lattice="honeycomb:6", slider_sphere_diameter_um=3)  # fmt: skip
+    assert "honeycomb" in scene.to_toml()
+    disc = superlube.Scene("square-tri", size_um=[60, 60], outline="disc:9")
+    assert "outline" in disc.to_toml()
+    for key in ("slider_lattice", "outline", "slider_sites", "substrate_sites",
+                "slider_sphere_diameter_um", "substrate_sphere_diameter_um"):  # fmt: skip
+        with pytest.raises(ValueError, match="is a scene field"):
+            superlube.screen(scene, theta_deg=0, load_mN=1, **{key: "x"})
 
 
 def test_slide_returns_the_json_summary(cli_bin, tmp_path):
@@ -235,8 +252,8 @@ def test_corrugation_friction_equilibrate_columns(cli_bin, tmp_path):
     eq = superlube.equilibrate(scene, load_mN=1.4, equilibrate_us=0.1, rigid_z=True)
     assert "t_us" in eq.columns and len(eq) > 0 and "summary" in eq.attrs
     scene.write(tmp_path / "s.toml")
-    r = subprocess.run([cli_bin, "friction", "--scene", tmp_path / "s.toml", "--theta", "0",
-                        "--alpha", "0", "--load-mn", "1.4", "--length-um", "6"],
+    r = subprocess.run([cli_bin, "friction", "--scene", tmp_path / "s.toml", "--theta-deg", "0",
+                        "--alpha-deg", "0", "--load-mn", "1.4", "--length-um", "6"],
                        check=True, capture_output=True, text=True)  # fmt: skip
     assert list(fr.columns) == r.stdout.splitlines()[0].split(",")
 
@@ -267,7 +284,7 @@ def test_design_vary_is_repeatable_and_equals_cli(cli_bin, tmp_path):
     assert list(ranking2["superlubric_to_mN"]) == list(ranking["superlubric_to_mN"])
     superlube.Scene("tri-tri", **k).write(tmp_path / "tri-tri.toml")
     subprocess.run([cli_bin, "design", "--scene", tmp_path / "tri-tri.toml", "--load-mn",
-                    "0.35,1.4", "--theta", "0:15:5", "--theta-tol-deg", "0", "--direction-tol-deg",
+                    "0.35,1.4", "--theta-deg", "0:15:5", "--theta-tol-deg", "0", "--direction-tol-deg",
                     "0", "--no-dem", "--vary", "slider.sphere_diameter_um=2.5,3", "--vary",
                     "slider.material.youngs_GPa=50,100", "--out-dir", tmp_path / "cli"],
                    check=True, capture_output=True)  # fmt: skip
@@ -280,13 +297,13 @@ def test_design_vary_is_repeatable_and_equals_cli(cli_bin, tmp_path):
 
 def test_tolerance_map_equals_cli(cli_bin, tmp_path):
     scene = superlube.Scene("tri-tri", radius_um=9, size_um=[60, 60])
-    opts = dict(theta_deg=30, alpha=0, load_mN="0.05,0.1", theta_range_deg=0.2, theta_points=3,
+    opts = dict(theta_deg=30, alpha_deg=0, load_mN="0.05,0.1", theta_range_deg=0.2, theta_points=3,
                 direction_range_deg=0.5, direction_points=3, theta_tol_deg=0.1, direction_tol_deg=0.5)  # fmt: skip
     m = superlube.tolerance(scene, **opts)
     assert len(m) == 9 and "superlubric_to_mN" in m.columns
     scene.write(tmp_path / "s.toml")
-    subprocess.run([cli_bin, "tolerance", "--scene", tmp_path / "s.toml", "--theta", "30",
-                    "--alpha", "0", "--load-mn", "0.05,0.1", "--theta-range-deg", "0.2",
+    subprocess.run([cli_bin, "tolerance", "--scene", tmp_path / "s.toml", "--theta-deg", "30",
+                    "--alpha-deg", "0", "--load-mn", "0.05,0.1", "--theta-range-deg", "0.2",
                     "--theta-points", "3", "--direction-range-deg", "0.5", "--direction-points",
                     "3", "--out-dir", tmp_path / "cli"], check=True, capture_output=True)  # fmt: skip
     import csv

@@ -46,25 +46,43 @@ pub fn loads(text: &str) -> Result<Vec<f64>> {
         .collect()
 }
 
-/// `--theta` list or range (degrees) → rad.
-pub fn thetas(text: &str) -> Result<Vec<f64>> {
-    Ok(parse_list_or_range(text, "--theta")?
+/// The largest |θ| in degrees a command takes: a full turn either way, so that a sweep
+/// `0:360:1` of a pattern without symmetry is one range.
+pub const THETA_MAX_DEG: f64 = 360.0;
+
+/// One slider orientation θ in degrees, finite with |θ| ≤ [`THETA_MAX_DEG`] (θ and θ ± 360°
+/// are the same orientation, so a larger value is a typing slip); returned unchanged.
+pub fn theta_deg(v: f64) -> Result<f64> {
+    if !(v.is_finite() && v.abs() <= THETA_MAX_DEG) {
+        bail!("`--theta-deg`: {v}° is outside [-{THETA_MAX_DEG}, {THETA_MAX_DEG}] degrees");
+    }
+    Ok(v)
+}
+
+/// `--theta-deg` list or range (degrees, each checked by [`theta_deg`]), in degrees.
+pub fn thetas_deg(text: &str) -> Result<Vec<f64>> {
+    parse_list_or_range(text, "--theta-deg")?
         .into_iter()
-        .map(deg_to_rad)
-        .collect())
+        .map(theta_deg)
+        .collect()
+}
+
+/// `--theta-deg` list or range (degrees, each checked by [`theta_deg`]) → rad.
+pub fn thetas(text: &str) -> Result<Vec<f64>> {
+    Ok(thetas_deg(text)?.into_iter().map(deg_to_rad).collect())
 }
 
 /// One pulling angle α (degrees from the contact line, |α| ≤ 180) → rad.
 pub fn alpha(v: f64) -> Result<f64> {
     if !(v.is_finite() && v.abs() <= 180.0) {
-        bail!("`--alpha`: {v}° is outside [-180, 180] degrees");
+        bail!("`--alpha-deg`: {v}° is outside [-180, 180] degrees");
     }
     Ok(deg_to_rad(v))
 }
 
-/// `--alpha` list or range → rad.
+/// `--alpha-deg` list or range → rad.
 pub fn alphas(text: &str) -> Result<Vec<f64>> {
-    parse_list_or_range(text, "--alpha")?
+    parse_list_or_range(text, "--alpha-deg")?
         .into_iter()
         .map(alpha)
         .collect()

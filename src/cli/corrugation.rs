@@ -24,7 +24,12 @@ pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
     /// Slider rotation θ in degrees [default: the scene file's theta_deg, else 0].
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     theta: Option<f64>,
     /// Normal load W in mN (> 0).
     #[arg(
@@ -37,7 +42,8 @@ pub struct Args {
     /// Pulling angles α in degrees from the contact line, |α| ≤ 180: a list `0,45,90` or an
     /// inclusive range `start:stop:step`.
     #[arg(
-        long,
+        long = "alpha-deg",
+        alias = "alpha",
         value_name = "DEG",
         default_value = "0:90:5",
         allow_hyphen_values = true

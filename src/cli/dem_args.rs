@@ -81,7 +81,7 @@ impl TangentialArg {
     }
 }
 
-/// `--theta` (`None`: the scene's), `--alpha` (degrees) and `--load-mn` (mN) values.
+/// `--theta-deg` (`None`: the scene's), `--alpha-deg` (degrees) and `--load-mn` (mN) values.
 pub type Lists = (Vec<Option<f64>>, Vec<f64>, Vec<f64>);
 
 /// DEM options shared by `equilibrate` and `slide`.
@@ -91,7 +91,12 @@ pub struct DemArgs {
     pub scene: SceneArgs,
     /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0]. `slide`
     /// also takes a list `0,21.8,30` or a range `0:30:10` (a batch, see `--out-dir`).
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     pub theta: Option<String>,
     /// Normal load W in mN (> 0). `slide` also takes a list `0.35,1.4` or a range
     /// `0.35:3.5:0.35` (a batch, see `--out-dir`).
@@ -107,7 +112,8 @@ pub struct DemArgs {
     /// substrate x axis is line + α; both are printed and reported in the JSON summary. `slide`
     /// also takes a list `0,90` or a range (a batch, see `--out-dir`).
     #[arg(
-        long,
+        long = "alpha-deg",
+        alias = "alpha",
         value_name = "DEG",
         default_value = "0",
         allow_hyphen_values = true
@@ -220,17 +226,14 @@ pub struct DemArgs {
 }
 
 impl DemArgs {
-    /// The values of `--theta` (`None`: the scene's), `--alpha` (degrees) and `--load-mn`
+    /// The values of `--theta-deg` (`None`: the scene's), `--alpha-deg` (degrees) and `--load-mn`
     /// (mN) as lists (one value each for a single run); errors name the flag.
     pub fn lists(&self) -> Result<Lists> {
         let thetas = match &self.theta {
             None => vec![None],
-            Some(t) => parse_list_or_range(t, "--theta")?
-                .into_iter()
-                .map(Some)
-                .collect(),
+            Some(t) => checks::thetas_deg(t)?.into_iter().map(Some).collect(),
         };
-        let alphas = parse_list_or_range(&self.alpha, "--alpha")?;
+        let alphas = parse_list_or_range(&self.alpha, "--alpha-deg")?;
         for &a in &alphas {
             checks::alpha(a)?;
         }
@@ -243,13 +246,13 @@ impl DemArgs {
 
     /// The validated scene (θ applied) and the run parameters of a single run with the sliding
     /// `protocol` ([`ProtocolArgs::AT_REST`] for equilibrate). Every flag is checked here, and
-    /// every output path, before any work. A list in `--theta`, `--alpha` or `--load-mn` is
+    /// every output path, before any work. A list in `--theta-deg`, `--alpha-deg` or `--load-mn` is
     /// refused (naming the flag): only `slide --out-dir` runs batches.
     pub fn setup(&self, protocol: &ProtocolArgs) -> Result<(Resolved, DemParams)> {
         let (thetas, alphas, loads) = self.lists()?;
         for (n, flag) in [
-            (thetas.len(), "--theta"),
-            (alphas.len(), "--alpha"),
+            (thetas.len(), "--theta-deg"),
+            (alphas.len(), "--alpha-deg"),
             (loads.len(), "--load-mn"),
         ] {
             if n != 1 {

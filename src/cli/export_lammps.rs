@@ -17,7 +17,12 @@ pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
     /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     theta: Option<f64>,
     /// Normal load W in mN, applied to the control layer.
     #[arg(
@@ -29,7 +34,8 @@ pub struct Args {
     load_mn: f64,
     /// Pulling angle α in degrees from the slider's contact line (as in `superlube slide`).
     #[arg(
-        long,
+        long = "alpha-deg",
+        alias = "alpha",
         value_name = "DEG",
         default_value_t = 0.0,
         allow_hyphen_values = true
@@ -102,10 +108,10 @@ pub fn run(a: Args) -> Result<()> {
     let line_given = check_line_deg(a.line_deg)?;
     let file = a.scene.scene_file()?;
     let mut scene = file.into_scene()?;
-    let theta = a.theta.or(file.slider.theta_deg).unwrap_or(0.0);
-    if !theta.is_finite() {
-        bail!("`--theta`: {theta} must be finite");
-    }
+    let theta = match a.theta {
+        Some(t) => super::checks::theta_deg(t)?,
+        None => file.slider.theta_deg.unwrap_or(0.0),
+    };
     scene.slider.theta = deg_to_rad(theta);
     scene.validate()?;
     super::checks::line_for(&scene, line_given)?;

@@ -30,7 +30,8 @@ pub struct Args {
     theta_step: f64,
     /// Pulling angles α in degrees of the corrugation figure (list or start:stop:step).
     #[arg(
-        long,
+        long = "alpha-deg",
+        alias = "alpha",
         value_name = "DEG",
         default_value = "-90:90:2",
         allow_hyphen_values = true

@@ -24,12 +24,18 @@ pub struct Args {
     scene: SceneArgs,
     /// Slider orientations θ in degrees: a list `0,10.2` or an inclusive range
     /// `start:stop:step` [default: the scene file's theta_deg, else 0].
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     theta: Option<String>,
     /// Pulling angles α in degrees from the slider's contact line (as in `corrugation` and
     /// `slide`; 90 = perpendicular to the lines), |α| ≤ 180: a list `0,90` or a range.
     #[arg(
-        long,
+        long = "alpha-deg",
+        alias = "alpha",
         value_name = "DEG",
         default_value = "0",
         allow_hyphen_values = true

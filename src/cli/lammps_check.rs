@@ -43,17 +43,22 @@ pub fn run(a: Args) -> Result<()> {
             .map(|d| d.join(files::META))
             .unwrap_or_else(|| PathBuf::from(files::META)),
     };
-    let text = std::fs::read_to_string(&meta_path).with_context(|| {
-        format!(
-            "`--meta`: cannot read {} (the export.json of the export that wrote the dump)",
-            meta_path.display()
+    let text = std::fs::read_to_string(&meta_path).map_err(|e| {
+        anyhow::anyhow!(
+            "`--meta`: cannot read {}: {} (the export.json of the export that wrote the dump)",
+            meta_path.display(),
+            surrogate::io_error::plain(&e)
         )
     })?;
     let meta: ExportMeta = serde_json::from_str(&text)
         .with_context(|| format!("`--meta`: {} is not an export.json", meta_path.display()))?;
-    let input = BufReader::new(
-        std::fs::File::open(&a.dump).with_context(|| format!("`DUMP`: {}", a.dump.display()))?,
-    );
+    let input = BufReader::new(std::fs::File::open(&a.dump).map_err(|e| {
+        anyhow::anyhow!(
+            "`DUMP`: cannot read {}: {}",
+            a.dump.display(),
+            surrogate::io_error::plain(&e)
+        )
+    })?);
     // Rows go to memory-light CSV writers; files are written atomically at the end.
     let mut frames = csv::Writer::from_writer(Vec::new());
     let mut failed = csv::Writer::from_writer(Vec::new());

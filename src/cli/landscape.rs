@@ -31,7 +31,12 @@ pub struct Args {
     scene: SceneArgs,
     /// Slider rotation θ in degrees relative to the substrate lattice [default: the scene
     /// file's theta_deg, else 0].
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     theta: Option<f64>,
     /// Normal load W in mN (> 0).
     #[arg(

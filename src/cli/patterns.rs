@@ -36,10 +36,11 @@ pub struct Args {
     /// this multiple of the substrate's shortest one (higher orders lock more weakly).
     #[arg(long = "max-order", value_name = "X", default_value_t = DEFAULT_MAX_ORDER)]
     max_order: f64,
-    /// What the candidates share, so that `design --patterns` compares them fairly: `area` (the
-    /// base scene's slider outline, default) or `spheres` (each outline scaled to hold the base
-    /// slider's sphere count; the index's `spheres` column gives each count).
-    #[arg(long, value_enum, default_value_t = Normalize::Area)]
+    /// What the candidates share, so that `design --patterns` compares them fairly (as
+    /// `design --fair`): `area` (the base scene's slider outline, default) or `count` (each
+    /// outline scaled to hold the base slider's sphere count; the index's `spheres` column
+    /// gives each count).
+    #[arg(long = "fair", alias = "normalize", value_name = "RULE", value_enum, default_value_t = Normalize::Area)]
     normalize: Normalize,
     /// Output folder: DIR/<pattern_id>.toml per candidate (the base scene with the slider
     /// lattice replaced, so equal slider outline and area) and DIR/index.csv

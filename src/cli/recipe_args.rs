@@ -20,11 +20,12 @@ pub struct RecipeArgs {
     /// file is written to OUT/recipes/.
     #[arg(long = "vary", value_name = "FIELD=LIST", allow_hyphen_values = true)]
     pub vary: Vec<String>,
-    /// With --vary: what the recipes share: `area` (the base slider's outline, equal slider
-    /// area in µm², default) or `count` (each outline scaled to hold the base slider's sphere
-    /// count). patterns.csv gives each recipe's mean pressure (kPa) and load per sphere (µN)
-    /// at its limit either way.
-    #[arg(long, value_enum, value_name = "RULE", requires = "vary")]
+    /// With --vary or --family: what the recipes or candidates share (as `superlube patterns
+    /// --fair`): `area` (the base slider's outline, equal slider area in µm², default) or
+    /// `count` (each outline scaled to hold the base slider's sphere count). patterns.csv
+    /// gives each one's mean pressure (kPa) and load per sphere (µN) at its limit either way;
+    /// the report states the rule.
+    #[arg(long, alias = "normalize", value_enum, value_name = "RULE")]
     pub fair: Option<Fair>,
     /// With --vary: skip the recipes that cannot be made (overlapping spheres, a pad beyond
     /// the substrate, a value out of range) and name them in the log, instead of refusing the
@@ -58,7 +59,7 @@ impl RecipeArgs {
                 self.skip_invalid,
                 "--vary",
             )
-            .map_err(|e| anyhow::anyhow!("{e:#}").context(format!("`--vary` on {}", ds.name)))?;
+            .map_err(|e| anyhow::anyhow!("{e:#} (base scene {})", ds.name))?;
             for (name, why) in &r.skipped {
                 eprintln!("note: `--skip-invalid`: recipe {name} skipped: {why}");
             }

@@ -91,6 +91,20 @@ mod tests {
             ("tolerance", "--theta-range"),
             ("tolerance", "--direction-range"),
             ("figures", "--theta-step"),
+            // θ and α carry their unit; one name per idea (issue 48)
+            ("screen", "--theta"),
+            ("landscape", "--theta"),
+            ("corrugation", "--alpha"),
+            ("friction", "--alpha"),
+            ("tolerance", "--alpha"),
+            ("design", "--theta"),
+            ("equilibrate", "--theta"),
+            ("slide", "--alpha"),
+            ("export-lammps", "--alpha"),
+            ("figures", "--alpha"),
+            ("patterns", "--normalize"),
+            ("design", "--normalize"),
+            ("design", "--seeds"),
         ] {
             assert_eq!(
                 notes(&args(&["superlube", sub, old, "x"])).len(),

@@ -39,7 +39,12 @@ pub struct SceneOverrides {
     pub sigma_h_um: Option<f64>,
     /// Seed (a non-negative integer) of the substrate height perturbation: same seed → same
     /// heights.
-    #[arg(long, value_name = "SEED", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        value_name = "SEED",
+        allow_negative_numbers = true,
+        value_parser = seed
+    )]
     pub seed: Option<u64>,
     /// Young's modulus E in GPa (study: 100, also 50).
     #[arg(long, value_name = "GPA", allow_hyphen_values = true)]
@@ -59,11 +64,12 @@ pub struct SceneOverrides {
     /// Anti-tilt spring stiffness K1 in N/m of `--tilt springs` (study: 1e6).
     #[arg(long = "tilt-k1-n-m", value_name = "N_M", allow_hyphen_values = true)]
     pub tilt_k1_n_m: Option<f64>,
-    /// Slider lattice, `KIND:SPACING_UM`: `triangular:3`, `square:3`, `honeycomb:4.5`,
+    /// Slider lattice, `KIND:SPACING_UM`: `triangular:3`, `square:3`, `honeycomb:6`,
     /// `kagome:6` (the lattice constant s in µm; honeycomb and kagome: of their triangular
     /// lattice, with their built-in basis, nearest neighbours s/√3 and s/2 apart) or
-    /// `rectangular:3x2.6` (x and y spacings in µm); replaces a scene file's `slider.lattice`
-    /// or `slider.sites`. A basis of your own or an oblique lattice: the scene file.
+    /// `rectangular:3x3.5` (x and y spacings in µm; each example holds 3 µm spheres); replaces
+    /// a scene file's `slider.lattice` or `slider.sites`. A basis of your own or an oblique
+    /// lattice: the scene file.
     #[arg(long, value_name = "KIND:SPACING_UM")]
     pub slider_lattice: Option<String>,
     /// Slider outline: `disc:R` (radius in µm), `rectangle:WxH` (sides in µm) or
@@ -130,7 +136,9 @@ impl SceneOverrides {
     fn lattice(spec: &str) -> Result<surrogate::scene::LatticeFile> {
         let flag = "--slider-lattice";
         let Some((kind, spacing)) = spec.split_once(':') else {
-            bail!("`{flag}`: `{spec}` must be KIND:SPACING_UM, e.g. honeycomb:4.5 or rectangular:3x2.6");
+            bail!(
+                "`{flag}`: `{spec}` must be KIND:SPACING_UM, e.g. honeycomb:6 or rectangular:3x3.5"
+            );
         };
         let num = |t: &str| um_number(flag, t);
         let mut l = surrogate::scene::LatticeFile {
@@ -143,7 +151,7 @@ impl SceneOverrides {
             }
             "rectangular" => {
                 let Some((x, y)) = spacing.split_once(['x', 'X']) else {
-                    bail!("`{flag}`: a rectangular lattice needs two spacings, e.g. rectangular:3x2.6");
+                    bail!("`{flag}`: a rectangular lattice needs two spacings, e.g. rectangular:3x3.5");
                 };
                 l.spacing_um = Some(num(x)?);
                 l.spacing_y_um = Some(num(y)?);
@@ -220,7 +228,7 @@ impl SceneArgs {
     /// The [`SceneFile`] these flags describe (file, then flags on top).
     pub fn scene_file(&self) -> Result<SceneFile> {
         let f = match &self.scene {
-            Some(p) => SceneFile::read(p)?,
+            Some(p) => SceneFile::read(p).map_err(|e| anyhow::anyhow!("`--scene`: {e}"))?,
             None => SceneFile::default(),
         };
         let mut o = SceneFile {
@@ -280,24 +288,42 @@ impl SceneArgs {
     }
 
     /// THE scene resolution of every command: preset ← scene file ← flags, with `theta_deg`
-    /// (a command's `--theta` for one orientation) overriding the file's `slider.theta_deg`;
+    /// (a command's `--theta-deg` for one orientation) overriding the file's `slider.theta_deg`;
     /// validated ([`Scene::validate`]: every field, the slider must fit on the substrate), and
     /// the edge warning collected ([`Scene::edge_warning`]).
     pub fn resolve(&self, theta_deg: Option<f64>) -> Result<Resolved> {
         let mut file = self.scene_file()?;
         if let Some(t) = theta_deg {
-            if !t.is_finite() {
-                bail!("`--theta`: {t} is not a finite angle in degrees");
+            file.slider.theta_deg = Some(super::checks::theta_deg(t)?);
+        } else if let Some(t) = file.slider.theta_deg {
+            let max = super::checks::THETA_MAX_DEG;
+            if t.abs() > max {
+                bail!(
+                    "invalid value for `slider.theta_deg`: {t} (outside [-{max}, {max}] degrees)"
+                );
             }
-            file.slider.theta_deg = Some(t);
         }
         let scene = file.into_scene()?;
         scene.validate()?;
+        let small = scene.slider_size_check().map_err(|e| {
+            // the field as the user set it: the flag when one was given
+            match (&self.overrides.slider_radius_um, &self.overrides.outline) {
+                (Some(_), None) => anyhow::anyhow!("`--slider-radius-um`: {e}"),
+                _ => e.into(),
+            }
+        })?;
         Ok(Resolved {
-            warnings: scene.edge_warning().into_iter().collect(),
+            warnings: small.into_iter().chain(scene.edge_warning()).collect(),
             scene,
         })
     }
+}
+
+/// A seed (`--seed`): a whole number ≥ 0. Clap names the flag and the value before this text.
+fn seed(t: &str) -> std::result::Result<u64, String> {
+    t.trim()
+        .parse()
+        .map_err(|_| "a seed is a whole number ≥ 0 (0, 1, 2, …)".to_string())
 }
 
 /// The length (µm) written `t` in flag `flag`; the error names the flag.

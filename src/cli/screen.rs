@@ -29,7 +29,12 @@ pub struct Args {
     scene: SceneArgs,
     /// Slider orientations θ in degrees: a list `0,21.8,30` or an inclusive range
     /// `start:stop:step` [default: the scene file's theta_deg if set, else 0:30:0.1].
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     theta: Option<String>,
     /// Normal loads W in mN: a list `0.35,1.4` or a range `0.35:3.5:0.35` (each > 0).
     #[arg(long = "load-mn", value_name = "MN", default_value = DEFAULT_LOADS, allow_hyphen_values = true)]
@@ -113,7 +118,7 @@ pub fn prepare(a: Args) -> Result<Prepared> {
     };
     if a.contacts_out.is_some() && (params.thetas.len() != 1 || params.loads.len() != 1) {
         bail!(
-            "`--contacts-out` needs exactly one `--theta` and one `--load-mn` value (got {} and {})",
+            "`--contacts-out` needs exactly one `--theta-deg` and one `--load-mn` value (got {} and {})",
             params.thetas.len(),
             params.loads.len()
         );

@@ -108,7 +108,7 @@ fn run_batch_command(
     side_by_side: usize,
 ) -> Result<()> {
     let Some(dir) = a.out_dir.clone() else {
-        bail!("lists in `--theta`, `--alpha`, `--load-mn` or `--seeds` run a batch: give `--out-dir DIR` for its files");
+        bail!("lists in `--theta-deg`, `--alpha-deg`, `--load-mn` or `--seeds` run a batch: give `--out-dir DIR` for its files");
     };
     for (given, flag) in [
         (a.dem.out.is_some(), "--out"),
@@ -204,7 +204,7 @@ fn seed_groups(rows: &[BatchRow]) -> Vec<(String, Vec<usize>)> {
     for (k, r) in rows.iter().enumerate() {
         let key = format!(
             "{} θ={}° α={}° W={} mN σ_h={} µm E={} GPa",
-            r.pattern, r.theta_deg, r.alpha_deg, r.load_mN, r.sigma_h_um, r.E_GPa
+            r.pattern, r.theta_deg, r.alpha_deg, r.load_mN, r.sigma_h_um, r.youngs_GPa
         );
         match groups.iter_mut().find(|g| g.0 == key) {
             Some(g) => g.1.push(k),

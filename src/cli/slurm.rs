@@ -60,7 +60,7 @@ pub struct Args {
     opts: Opts,
     /// The sweep command and its flags, as you would run it (`screen`, `landscape`, `friction` or
     /// `corrugation`; without --out, --shard, --resume, which the scripts set), e.g.
-    /// `screen --pattern tri-tri --theta 0:30:0.1 --load-mn 1.4`.
+    /// `screen --pattern tri-tri --theta-deg 0:30:0.1 --load-mn 1.4`.
     #[arg(
         value_name = "COMMAND",
         trailing_var_arg = true,

@@ -30,19 +30,25 @@ pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
     /// Nominal slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     theta: Option<f64>,
     /// Nominal pulling angle α in degrees from the slider's contact line at the nominal θ
     /// (as in `design`'s ranking; 90 = across the lines). Give this or --direction-deg.
     #[arg(
-        long,
+        long = "alpha-deg",
+        alias = "alpha",
         value_name = "DEG",
         allow_hyphen_values = true,
         conflicts_with = "direction_deg"
     )]
     alpha: Option<f64>,
     /// Nominal pulling direction in degrees from the substrate's x axis (design's
-    /// `direction_deg`). Give this or --alpha.
+    /// `direction_deg`). Give this or --alpha-deg.
     #[arg(long = "direction-deg", value_name = "DEG", allow_hyphen_values = true)]
     direction_deg: Option<f64>,
     /// Half-width in degrees of the map in θ around the nominal (≥ 0).
@@ -72,7 +78,7 @@ pub struct Args {
     #[command(flatten)]
     tol: ToleranceArgs,
     /// Normal loads W in mN, strictly increasing [default: the study's 0.35 … 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), allow_hyphen_values = true)]
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), hide_default_value = true, allow_hyphen_values = true)]
     load_mn: String,
     #[command(flatten)]
     verdict: VerdictArgs,
@@ -147,7 +153,7 @@ pub fn run(a: Args) -> Result<()> {
         }
         (None, Some(d)) if d.is_finite() => d,
         (None, Some(d)) => bail!("`--direction-deg`: {d} is not a finite angle"),
-        _ => bail!("give the nominal pulling direction: `--alpha DEG` (from the contact line) or `--direction-deg DEG` (from x)"),
+        _ => bail!("give the nominal pulling direction: `--alpha-deg DEG` (from the contact line) or `--direction-deg DEG` (from x)"),
     };
     let csv = a.out.join("map.csv");
     let png = a.out.join("map.png");

@@ -79,7 +79,8 @@ impl ValueEnum for Normalize {
             Normalize::Area => {
                 PossibleValue::new("area").help("Every candidate keeps the base slider outline")
             }
-            Normalize::Spheres => PossibleValue::new("spheres")
+            Normalize::Spheres => PossibleValue::new("count")
+                .alias("spheres")
                 .help("Each outline scaled to hold the base slider's sphere count"),
         })
     }
@@ -98,7 +99,7 @@ impl ValueEnum for crate::study::recipe::Fair {
         Some(match self {
             Fair::Area => PossibleValue::new("area")
                 .help("Every recipe keeps the base slider's outline: equal slider area (µm²)"),
-            Fair::Count => PossibleValue::new("count").help(
+            Fair::Count => PossibleValue::new("count").alias("spheres").help(
                 "Each recipe's outline is scaled to hold the base slider's sphere count (the \
                  closest its lattice allows)",
             ),

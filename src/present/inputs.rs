@@ -8,8 +8,8 @@ use crate::study::input::Input;
 /// The flag that sets `i` on the command line.
 pub fn flag(i: Input) -> &'static str {
     match i {
-        Input::Theta => "--theta",
-        Input::Alpha => "--alpha",
+        Input::Theta => "--theta-deg",
+        Input::Alpha => "--alpha-deg",
         Input::LoadMn => "--load-mn",
         Input::LineDeg => "--line-deg",
         Input::Grid => "--grid",
@@ -24,6 +24,7 @@ pub fn flag(i: Input) -> &'static str {
         Input::Patterns => "--patterns",
         Input::MaxPq => "--max-pq",
         Input::NoSymmetryCut => "--no-symmetry-cut",
+        Input::Tilt => "--tilt",
     }
 }
 
@@ -60,7 +61,7 @@ mod tests {
     fn keywords_turn_into_flags() {
         assert_eq!(
             to_flags(&format!("{} × {}", Input::Theta, Input::LoadMn)),
-            "`--theta` × `--load-mn`"
+            "`--theta-deg` × `--load-mn`"
         );
         assert_eq!(to_flags("`theta` stays"), "`theta` stays");
     }

@@ -17,7 +17,7 @@ pub const SOLVE_SECONDS_PER_SPHERE: f64 = 2.5e-7;
 /// Estimated cost of a sweep.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Estimate {
-    /// The flags that set the size, for the message (e.g. "`--theta` × `--load-mn`").
+    /// The flags that set the size, for the message (e.g. "`--theta-deg` × `--load-mn`").
     pub flags: String,
     /// Quasi-static solves.
     pub solves: u64,

@@ -42,11 +42,13 @@ pub enum Input {
     MaxPq,
     /// Screening θ without the symmetry cut.
     NoSymmetryCut,
+    /// The slider mount (locked, free, springs).
+    Tilt,
 }
 
 impl Input {
     /// Every input, for the command line's table of flags.
-    pub const ALL: [Input; 16] = [
+    pub const ALL: [Input; 17] = [
         Input::Theta,
         Input::Alpha,
         Input::LoadMn,
@@ -63,13 +65,14 @@ impl Input {
         Input::Patterns,
         Input::MaxPq,
         Input::NoSymmetryCut,
+        Input::Tilt,
     ];
 
     /// The input's keyword (snake case, as the Python package spells it).
     pub fn keyword(self) -> &'static str {
         match self {
-            Input::Theta => "theta",
-            Input::Alpha => "alpha",
+            Input::Theta => "theta_deg",
+            Input::Alpha => "alpha_deg",
             Input::LoadMn => "load_mn",
             Input::LineDeg => "line_deg",
             Input::Grid => "grid",
@@ -84,6 +87,7 @@ impl Input {
             Input::Patterns => "patterns",
             Input::MaxPq => "max_pq",
             Input::NoSymmetryCut => "no_symmetry_cut",
+            Input::Tilt => "tilt",
         }
     }
 }

@@ -189,7 +189,8 @@ fn same_sweep(a: &ShardFile, b: &ShardFile) -> Result<()> {
 /// every row parses with the header's field count and that the file ends with a newline.
 fn scan(path: &Path) -> Result<(Vec<u8>, u64)> {
     let d = path.display();
-    let f = std::fs::File::open(path).with_context(|| format!("opening {d}"))?;
+    let f = std::fs::File::open(path)
+        .map_err(|e| anyhow::anyhow!("cannot open {d}: {}", surrogate::io_error::plain(&e)))?;
     let mut r = csv::ReaderBuilder::new()
         .has_headers(true)
         .flexible(false)

@@ -70,6 +70,15 @@ pub fn screen(
     if p.loads.is_empty() || p.thetas.is_empty() {
         bail!("a screen needs at least one θ and one load");
     }
+    if p.model == Model::RigidTilt && !scene.slider.mount.tilts() {
+        use crate::study::input::Input;
+        bail!(
+            "{}: rigid-tilt solves for the slider's tilt, and the mount is locked ({} locked, or the scene file's slider.tilt = \"locked\"): use rigid-z (exact for a locked mount) or auto, or a mount that tilts ({} free or springs)",
+            Input::Solver,
+            Input::Tilt,
+            Input::Tilt
+        );
+    }
     let mut solver = Solver::new(scene)?;
     solver
         .check_model(p.model)

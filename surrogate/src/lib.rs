@@ -13,6 +13,7 @@ pub mod atomic_file;
 pub mod contact;
 pub mod error;
 pub mod friction;
+pub mod io_error;
 pub mod map;
 pub mod scene;
 pub mod solver;

@@ -26,7 +26,7 @@ pub static STUDY_LOADS: LazyLock<String> = LazyLock::new(|| {
     loads.join(",")
 });
 
-/// The default θ list (degrees) of `--theta`, before the symmetry cut (the study's).
+/// The default θ list (degrees) of `--theta-deg`, before the symmetry cut (the study's).
 pub const DEFAULT_THETA: &str = "0:30:0.1";
 
 /// Options of `superlube design`.
@@ -48,16 +48,11 @@ pub struct Args {
     /// A lattice family (as `superlube patterns --family`: `directional`, `presets[:s=…]`,
     /// `rectangular:a=…,b=…`, `oblique:a=…,b=…,gamma_deg=…`): its candidates over the substrate
     /// of the one --pattern or --scene given (default square-tri) are written to
-    /// OUT/patterns/ (equal slider area unless --normalize spheres, p, q ≤ 3, orders ≤ 4; run
+    /// OUT/patterns/ (equal slider area unless --fair count, p, q ≤ 3, orders ≤ 4; run
     /// `superlube patterns` for other knobs) and designed as with --patterns
     /// OUT/patterns/index.csv.
     #[arg(long, value_name = "SPEC")]
     family: Option<String>,
-    /// With --family: what the candidates share, as `superlube patterns --normalize`: `area`
-    /// (the base scene's slider outline, default) or `spheres` (each outline scaled to hold
-    /// the base slider's sphere count); the report states the rule.
-    #[arg(long, value_enum, value_name = "RULE", requires = "family")]
-    normalize: Option<crate::study::patterns::Normalize>,
     /// Scene override flags, applied to every pattern and scene.
     #[command(flatten)]
     overrides: SceneOverrides,
@@ -69,7 +64,12 @@ pub struct Args {
     /// that does not span a domain is named in the log and the report [default: 0:30:0.1, and
     /// for a pattern whose domain it does not span (no derived symmetry, or a domain wider
     /// than 30°) the whole domain at 0.1°, or 0.25° when wider than 60°].
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    #[arg(
+        long = "theta-deg",
+        alias = "theta",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     theta: Option<String>,
     /// Screen θ as given, without the symmetry cut (for scenes whose symmetry is broken, e.g.
     /// by --offset-um).
@@ -77,7 +77,7 @@ pub struct Args {
     no_symmetry_cut: bool,
     /// Normal loads W in mN, strictly increasing (list or range) [default: the study's
     /// 0.35, 0.70, …, 3.50, 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), allow_hyphen_values = true)]
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), hide_default_value = true, allow_hyphen_values = true)]
     load_mn: String,
     #[command(flatten)]
     verdict: VerdictArgs,
@@ -153,9 +153,10 @@ pub struct Args {
         allow_hyphen_values = true
     )]
     direction_tol_step: f64,
-    /// Further substrate seeds (comma list) whose height realisations the robust limit must
-    /// also hold on (σ_h > 0 only): the worst case counts.
-    #[arg(long, value_name = "S1,S2")]
+    /// Further substrate seeds (comma list) besides the scene's own (`--seed`), whose height
+    /// realisations the robust limit must also hold on (σ_h > 0 only): the worst case counts.
+    /// (`--seeds` in `slide` and `figures --friction` is the whole list, replacing `--seed`.)
+    #[arg(long = "extra-seeds", alias = "seeds", value_name = "S1,S2")]
     seeds: Option<String>,
     /// Designs per pattern confirmed with DEM `slide` runs (the top of the ranking; ≥ 1 unless
     /// --no-dem).

@@ -17,7 +17,7 @@ use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 /// Every check of `superlube design`, before any work.
 pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
     let theta_text = a.theta.clone().unwrap_or_else(|| DEFAULT_THETA.to_string());
-    let thetas_deg = parse_list_or_range(&theta_text, "--theta")?;
+    let thetas_deg = checks::thetas_deg(&theta_text)?;
     let loads = checks::loads(&a.load_mn)?;
     if let Some(k) = loads.windows(2).position(|w| w[1] <= w[0]) {
         bail!(
@@ -160,7 +160,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             .map(|x| {
                 x.trim().parse::<u64>().map_err(|_| {
                     anyhow::anyhow!(
-                        "`--seeds`: `{}` is not a non-negative integer seed",
+                        "`--extra-seeds`: `{}` is not a non-negative integer seed",
                         x.trim()
                     )
                 })
@@ -218,7 +218,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         }
         if !params.seeds.is_empty() && s.scene.substrate.sigma_h == 0.0 {
             bail!(
-                "`--seeds`: {} has a flat substrate (σ_h = 0), so every seed gives the same one; give --sigma-h-um > 0 or leave --seeds out",
+                "`--extra-seeds`: {} has a flat substrate (σ_h = 0), so every seed gives the same one; give --sigma-h-um > 0 or leave --extra-seeds out",
                 s.name
             );
         }

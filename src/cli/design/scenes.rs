@@ -22,6 +22,9 @@ pub(super) fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
     let mut files = a.scene.clone();
     let mut facts = Vec::new();
     let mut pattern = a.pattern.clone();
+    if a.recipe.fair.is_some() && a.recipe.vary.is_empty() && a.family.is_none() {
+        bail!("`--fair`: says what the recipes of --vary or the candidates of --family share: give one of them");
+    }
     let generated = match &a.family {
         Some(spec) => {
             if a.scene.len() > 1 || pattern.as_deref().is_some_and(|p| p.contains(',')) {
@@ -36,7 +39,10 @@ pub(super) fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             Some(super::super::patterns::generate(
                 &base,
                 &params,
-                a.normalize.unwrap_or_default(),
+                match a.recipe.fair.unwrap_or_default() {
+                    crate::study::recipe::Fair::Area => crate::study::patterns::Normalize::Area,
+                    crate::study::recipe::Fair::Count => crate::study::patterns::Normalize::Spheres,
+                },
                 &a.out.join("patterns"),
                 Some("--family"),
             )?)

@@ -12,7 +12,7 @@ pub fn flags(pr: &PatternResult) -> String {
     pr.scene.flags.join(" ")
 }
 
-/// A θ list as the shortest exact `--theta` text: a range `a:b:s` if it parses back to the
+/// A θ list as the shortest exact `--theta-deg` text: a range `a:b:s` if it parses back to the
 /// same values, else the list.
 pub fn theta_text(v: &[f64]) -> String {
     let list = v
@@ -23,7 +23,7 @@ pub fn theta_text(v: &[f64]) -> String {
     if v.len() >= 3 {
         let step = label(v[1] - v[0]);
         let range = format!("{}:{}:{}", v[0], v[v.len() - 1], step);
-        if crate::study::range::parse_list_or_range(&range, "--theta").is_ok_and(|r| r == v) {
+        if crate::study::range::parse_list_or_range(&range, "--theta-deg").is_ok_and(|r| r == v) {
             return range;
         }
     }
@@ -74,7 +74,7 @@ pub fn line_flag(p: &DesignParams) -> String {
 /// `superlube screen …` reproducing `screen_<p>.csv` (same input hash).
 pub fn screen_command(pr: &PatternResult, p: &DesignParams) -> String {
     format!(
-        "superlube screen {} --theta {} --load-mn {} --out screen_{}.csv",
+        "superlube screen {} --theta-deg {} --load-mn {} --out screen_{}.csv",
         flags(pr),
         theta_text(&pr.thetas_deg),
         loads_text(p),
@@ -86,7 +86,7 @@ pub fn screen_command(pr: &PatternResult, p: &DesignParams) -> String {
 pub fn corrugation_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) -> String {
     let alphas: Vec<String> = e.scan_alphas_deg.iter().map(|a| format!("{a}")).collect();
     format!(
-        "superlube corrugation {} --theta {} --load-mn {} --alpha {} --distance-um {} --step-um {}{}",
+        "superlube corrugation {} --theta-deg {} --load-mn {} --alpha-deg {} --distance-um {} --step-um {}{}",
         flags(pr),
         e.eval.theta_deg,
         e.eval.scan_load_mN,
@@ -100,7 +100,7 @@ pub fn corrugation_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) 
 /// `superlube friction …` reproducing the friction estimates of the best α's of `e`.
 pub fn friction_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) -> String {
     format!(
-        "superlube friction {} --theta {} --alpha {} --load-mn {}{} --length-um {} --max-period-um {} --step-um {} --transient-um {} --k0-n-m {} --transverse-um {} --mu-superlubric {}",
+        "superlube friction {} --theta-deg {} --alpha-deg {} --load-mn {}{} --length-um {} --max-period-um {} --step-um {} --transient-um {} --k0-n-m {} --transverse-um {} --mu-superlubric {}",
         flags(pr),
         e.eval.theta_deg,
         e.eval
@@ -124,7 +124,7 @@ pub fn friction_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) -> 
 /// `superlube slide …` reproducing the DEM run `d` (`study`: the study's protocol).
 pub fn slide_command(pr: &PatternResult, d: &DemRow, study: bool, p: &DesignParams) -> String {
     format!(
-        "superlube slide {} --theta {} --alpha {} --load-mn {}{}{} --json {}/slide.json --out {}/slide.csv",
+        "superlube slide {} --theta-deg {} --alpha-deg {} --load-mn {}{}{} --json {}/slide.json --out {}/slide.csv",
         flags(pr),
         d.theta_deg,
         d.alpha_deg,

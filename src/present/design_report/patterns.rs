@@ -150,7 +150,7 @@ impl From<&PatternRow> for PatternLine {
 }
 
 /// The fairness rule of the comparison in one sentence: equal slider area or equal sphere
-/// count as `superlube patterns --normalize` made the candidates (read from the index's
+/// count as `superlube patterns --fair` made the candidates (read from the index's
 /// sidecar), else what the patterns as given share (area, sphere count, or neither: then the
 /// mean pressure and the load per sphere are the columns to compare). Cost: one pass.
 pub fn fairness(o: &DesignOutcome, rows: &[PatternRow]) -> String {
@@ -178,7 +178,7 @@ pub fn fairness(o: &DesignOutcome, rows: &[PatternRow]) -> String {
         )
     } else if rule.iter().all(|r| *r == "spheres") {
         format!(
-            "Compared at **equal sphere count**: the candidates were made with `superlube patterns --normalize spheres` (each outline scaled to hold the base slider's sphere count, the closest its lattice allows: {}).",
+            "Compared at **equal sphere count**: the candidates were made with `superlube patterns --fair count` (each outline scaled to hold the base slider's sphere count, the closest its lattice allows: {}).",
             if equal_count {
                 "all equal".to_string()
             } else {
@@ -187,7 +187,7 @@ pub fn fairness(o: &DesignOutcome, rows: &[PatternRow]) -> String {
         )
     } else if rule.iter().all(|r| *r == "area") {
         format!(
-            "Compared at **equal slider area**: the candidates were made with `superlube patterns --normalize area` (each keeps the base scene's outline, {} µm²; the sphere count follows the lattice: {}).",
+            "Compared at **equal slider area**: the candidates were made with `superlube patterns --fair area` (each keeps the base scene's outline, {} µm²; the sphere count follows the lattice: {}).",
             rows.first().map_or(String::new(), |r| format!("{:.0}", r.slider_area_um2)),
             range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
         )

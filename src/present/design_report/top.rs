@@ -427,7 +427,7 @@ pub fn answer_run(pr: &PatternResult, c: &Candidate, p: &DesignParams) -> Answer
     let w = run_load_mn(c, p);
     let line = line_flag(p);
     let slide = format!(
-        "superlube slide --scene {file} --alpha {} --load-mn {w}{line}{} --json answer_{name}/slide.json --out answer_{name}/slide.csv",
+        "superlube slide --scene {file} --alpha-deg {} --load-mn {w}{line}{} --json answer_{name}/slide.json --out answer_{name}/slide.csv",
         c.alpha_deg,
         protocol_flags(
             p,
@@ -455,7 +455,7 @@ pub fn answer_run(pr: &PatternResult, c: &Candidate, p: &DesignParams) -> Answer
     );
     let s = &p.dem.sim;
     let export = format!(
-        "superlube export-lammps --scene {file} --alpha {} --load-mn {w}{line} --equilibrate-us {} --relax-us {} --slide-us {} --speed-m-s {} --out-dir answer_{name}/lammps",
+        "superlube export-lammps --scene {file} --alpha-deg {} --load-mn {w}{line} --equilibrate-us {} --relax-us {} --slide-us {} --speed-m-s {} --out-dir answer_{name}/lammps",
         c.alpha_deg,
         label(s_to_us(s.equilibrate_time)),
         label(s_to_us(s.relax_time)),

@@ -91,7 +91,7 @@ impl BatchRow {
             load_mN: label(n_to_mn(p.load)),
             sigma_h_um: label(m_to_um(s.substrate.sigma_h)),
             seed: s.substrate.seed,
-            E_GPa: label(pa_to_gpa(s.slider_material().youngs)),
+            youngs_GPa: label(pa_to_gpa(s.slider_material().youngs)),
             p_crit_GPa: label(pa_to_gpa(s.coating.p_crit)),
             mu1: s.coating.mu1,
             mu2: s.coating.mu2,

@@ -195,7 +195,15 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
         commensurate_direction_deg: Option<f64>,
     }
     let mut r = csv::Reader::from_path(index).map_err(|e| {
-        anyhow::anyhow!("{}: cannot read {}: {e}", Input::Patterns, index.display())
+        let why = match e.kind() {
+            csv::ErrorKind::Io(io) => surrogate::io_error::plain(io),
+            _ => e.to_string(),
+        };
+        anyhow::anyhow!(
+            "{}: cannot read {}: {why}",
+            Input::Patterns,
+            index.display()
+        )
     })?;
     // the fairness rule the candidates were made with (a hand-written index has no sidecar)
     let normalize = crate::runs::meta::Sidecar::of(index)
@@ -261,7 +269,12 @@ pub fn prescreen_order(
 /// relative to the index), in row order. Errors name `--patterns` and the line.
 pub fn index_scenes(index: &std::path::Path) -> Result<Vec<std::path::PathBuf>> {
     let text = std::fs::read_to_string(index).map_err(|e| {
-        anyhow::anyhow!("{}: cannot read {}: {e}", Input::Patterns, index.display())
+        anyhow::anyhow!(
+            "{}: cannot read {}: {}",
+            Input::Patterns,
+            index.display(),
+            surrogate::io_error::plain(&e)
+        )
     })?;
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();

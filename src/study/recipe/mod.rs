@@ -13,7 +13,7 @@
 //!
 //! **Fair comparison** ([`Fair`]): every variant keeps the base slider's outline (equal slider
 //! area, the default), or its outline is scaled so that it holds the base slider's sphere count
-//! ([`Fair::Count`], as `superlube patterns --normalize spheres`).
+//! ([`Fair::Count`], as `superlube patterns --fair count`).
 //!
 //! **Validated range** ([`validated_range`]): the surrogate's verdict band was measured at the
 //! study's sphere size (3 µm) and modulus (100 GPa, docs/validation/verdict-band.md); a recipe
@@ -185,15 +185,21 @@ fn base_file(base: &Scene, varies: &[Vary]) -> SceneFile {
     }
 }
 
-/// The scene file `file` with `values` set at their fields. Errors name the field.
+/// The scene file `file` with `values` set at their fields. An unknown field or a value of the
+/// wrong kind is an error saying what the scene file accepts there (the parser's own words,
+/// without the text of the file, which the user never wrote); the caller names the field.
 pub fn apply(file: &SceneFile, values: &[(String, f64)]) -> Result<SceneFile> {
     let mut tree = toml::Value::try_from(file)?;
     for (field, v) in values {
         set_path(&mut tree, field, *v)?;
     }
     let text = toml::to_string(&tree)?;
-    let fields: Vec<&str> = values.iter().map(|(f, _)| f.as_str()).collect();
-    SceneFile::from_toml(&text, &fields.join(", ")).map_err(|e| anyhow!("{e}"))
+    toml::from_str(&text).map_err(|e: toml::de::Error| {
+        anyhow!(
+            "{} (the scene file's fields: docs/scenes-patterns.md)",
+            e.message().trim()
+        )
+    })
 }
 
 /// `v` as it prints in a variant's name (shortest round-trip decimal).

@@ -36,8 +36,10 @@ pub struct BatchRow {
     pub sigma_h_um: f64,
     /// Seed of the substrate heights (matters only for σ_h > 0).
     pub seed: u64,
-    /// Young's modulus E (GPa).
-    pub E_GPa: f64,
+    /// Young's modulus E (GPa), as the scene file's `youngs_GPa` (read back from a file that
+    /// names it `E_GPa` too).
+    #[serde(alias = "E_GPa")]
+    pub youngs_GPa: f64,
     /// Critical coating pressure P_crit (GPa).
     pub p_crit_GPa: f64,
     /// Coating friction coefficient below P_crit.
@@ -107,8 +109,10 @@ pub struct ConfigStatsRow {
     pub alpha_deg: f64,
     /// Substrate height amplitude σ_h (µm).
     pub sigma_h_um: f64,
-    /// Young's modulus E (GPa).
-    pub E_GPa: f64,
+    /// Young's modulus E (GPa), as the scene file's `youngs_GPa` (read back from a file that
+    /// names it `E_GPa` too).
+    #[serde(alias = "E_GPa")]
+    pub youngs_GPa: f64,
     /// Normal load W (mN).
     pub load_mN: f64,
     /// Runs (seeds) of this configuration.
@@ -158,7 +162,7 @@ impl ConfigStatsRow {
             theta_deg: first.map_or(0.0, |r| r.theta_deg),
             alpha_deg: first.map_or(0.0, |r| r.alpha_deg),
             sigma_h_um: first.map_or(0.0, |r| r.sigma_h_um),
-            E_GPa: first.map_or(0.0, |r| r.E_GPa),
+            youngs_GPa: first.map_or(0.0, |r| r.youngs_GPa),
             load_mN: first.map_or(0.0, |r| r.load_mN),
             n: runs.len(),
             n_ok: ok.len(),

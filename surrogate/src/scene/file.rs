@@ -82,14 +82,14 @@ impl SceneFile {
             path: path.display().to_string(),
             msg,
         };
-        let f = std::fs::File::open(path).map_err(|e| err(e.to_string()))?;
+        let f = std::fs::File::open(path).map_err(|e| err(crate::io_error::plain(&e)))?;
         if f.metadata().map(|m| m.is_dir()).unwrap_or(false) {
             return Err(err("is a directory, not a TOML scene file".into()));
         }
         let mut bytes = Vec::new();
         f.take(Self::MAX_BYTES + 1)
             .read_to_end(&mut bytes)
-            .map_err(|e| err(e.to_string()))?;
+            .map_err(|e| err(crate::io_error::plain(&e)))?;
         if bytes.len() as u64 > Self::MAX_BYTES {
             return Err(err(format!(
                 "larger than {} kB: not a scene file (a scene file is a short TOML text)",

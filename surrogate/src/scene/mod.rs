@@ -34,3 +34,4 @@ pub use pattern::{
 pub use scene::{lattice_name, place, Scene, SliderSpec, SubstrateSpec, PATTERNS};
 pub use sites::SiteList;
 pub use to_file::{scene_file, scene_file_with_lattices};
+pub use validate::FEW_SLIDER_SPHERES;

@@ -246,11 +246,11 @@ impl SiteList {
         use std::io::Read;
         let shown = path.display().to_string();
         let io = |e: String| SceneError::invalid(field, &shown, &format!("cannot read: {e}"));
-        let f = std::fs::File::open(path).map_err(|e| io(e.to_string()))?;
+        let f = std::fs::File::open(path).map_err(|e| io(crate::io_error::plain(&e)))?;
         let mut bytes = Vec::new();
         f.take(50_000_001)
             .read_to_end(&mut bytes)
-            .map_err(|e| io(e.to_string()))?;
+            .map_err(|e| io(crate::io_error::plain(&e)))?;
         if bytes.len() > 50_000_000 {
             return Err(io("larger than 50 MB: not a site file".into()));
         }

@@ -7,6 +7,10 @@ use super::Scene;
 use crate::error::SceneError;
 use crate::units::{m_to_um, nm_text, um_pair_text, um_text};
 
+/// Fewer slider spheres than this draw a warning ([`Scene::slider_size_check`]): a centre
+/// sphere and its ring of six in a triangular lattice.
+pub const FEW_SLIDER_SPHERES: usize = 7;
+
 impl Scene {
     /// Checks every field; the error names the first bad field in user units.
     pub fn validate(&self) -> Result<(), SceneError> {
@@ -135,6 +139,42 @@ impl Scene {
         } else {
             None
         }
+    }
+
+    /// The size check of a user's slider (the commands run it on every scene they resolve;
+    /// [`Scene::validate`] does not, so that a test may build a one-sphere slider on purpose):
+    /// an error when a disc slider is narrower than one of its spheres (radius below the
+    /// sphere radius, e.g. metres typed into the µm field `slider.radius_um`), a warning when
+    /// the slider holds fewer than [`FEW_SLIDER_SPHERES`] spheres (too few to rest flat on
+    /// the substrate the way a patterned slider does). Both name the field and the sphere
+    /// count. O(N_slider) (one site enumeration).
+    pub fn slider_size_check(&self) -> Result<Option<String>, SceneError> {
+        let n = self.slider_sites_local().len();
+        let (field, value) = match (&self.geometry.slider_sites, &self.geometry.outline) {
+            (Some(l), _) => ("slider.sites", l.path.clone()),
+            (None, pattern::Outline::Disc) => ("slider.radius_um", um_text(self.slider.radius)),
+            (None, o) => ("slider.outline", o.describe(self.slider.radius)),
+        };
+        let spheres = if n == 1 { "sphere" } else { "spheres" };
+        let r = self.slider_sphere_radius();
+        if self.geometry.slider_sites.is_none()
+            && self.geometry.outline == pattern::Outline::Disc
+            && self.slider.radius < r
+        {
+            return Err(SceneError::invalid(
+                field,
+                format!("{value} µm"),
+                &format!(
+                    "the slider disc is narrower than one of its spheres (radius {} µm) and holds {n} {spheres}; lengths are in µm",
+                    um_text(r)
+                ),
+            ));
+        }
+        Ok((n < FEW_SLIDER_SPHERES).then(|| {
+            format!(
+                "the slider holds only {n} {spheres} (`{field}` = {value}); a patterned slider rests on many: check the field's unit (µm)"
+            )
+        }))
     }
 
     /// Checks that a Bravais lattice (no basis, no site file replacing it) keeps its spheres
@@ -289,6 +329,30 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("pattern"));
+    }
+
+    #[test]
+    fn a_slider_too_small_is_refused_or_warned_with_its_sphere_count() {
+        let mut s = Scene::preset("tri-tri").unwrap();
+        assert_eq!(s.slider_size_check().unwrap(), None);
+        // metres typed into the µm field: 1e-4 µm
+        s.slider.radius = 1e-10;
+        let e = s.slider_size_check().unwrap_err().to_string();
+        assert!(
+            e.contains("slider.radius_um") && e.contains("holds 1 sphere"),
+            "{e}"
+        );
+        // a disc wider than a sphere holding a few (a square slider lattice: the centre and
+        // its four neighbours): a warning naming the count
+        let mut s = Scene::preset("square-tri").unwrap();
+        s.slider.radius = 3.1e-6;
+        let n = s.slider_sites_local().len();
+        assert!((2..FEW_SLIDER_SPHERES).contains(&n), "{n}");
+        let w = s.slider_size_check().unwrap().unwrap();
+        assert!(
+            w.contains(&format!("only {n} spheres")) && w.contains("slider.radius_um"),
+            "{w}"
+        );
     }
 
     #[test]
