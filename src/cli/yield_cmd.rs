@@ -116,7 +116,7 @@ pub struct Args {
     searched_seeds: Option<String>,
     /// The load ladder in mN, strictly increasing: each device's critical load is found
     /// between two of them [default: the study's 0.35 … 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), allow_hyphen_values = true)]
+    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), hide_default_value = true, allow_hyphen_values = true)]
     load_mn: String,
     #[command(flatten)]
     verdict: VerdictArgs,
