@@ -74,8 +74,9 @@ impl<'a> Pipeline<'a> {
         }
     }
 
-    /// Runs the design (module docs of [`super`]): every pattern's stages in [`Order`]
-    /// ([`Pipeline::patterns`]), then the DEM confirmation and the report data.
+    /// Runs the design (module docs of [`super`]): every pattern's stages in [`Order`], each
+    /// pattern handed to `on_pattern` and trimmed when complete, then the DEM confirmation
+    /// and the report data.
     pub fn run(&self, scenes: &[DesignScene], on_pattern: PatternHook) -> Result<DesignOutcome> {
         let Ctx { p, store, obs } = self.ctx;
         // every pattern's paths fit on its substrate, checked before any work

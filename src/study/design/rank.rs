@@ -19,7 +19,7 @@
 //! 5. then θ and α ascending (a fixed order for ties).
 //!
 //! A candidate not superlubric at the lowest load has only that load estimated
-//! ([`super::scan`]); its `intact_to` then counts that load only.
+//! ([`super::estimate`]); its `intact_to` then counts that load only.
 
 use super::estimate::ThetaEval;
 use crate::study::rows::FrictionRow;

@@ -3,15 +3,15 @@
 //! shortlist's bound ([`super::shortlist`] module docs): a design is superlubric at most up to
 //! its orientation's coating-intact load, so a level whose load is below the best limit found
 //! (once the ranking holds the designs it needs) cannot beat it. Cost: comparisons, and where a
-//! floor applies one placement solve per pick and θ offset ([`super::robust::level_reach`]).
+//! floor applies one placement solve per pick and θ offset (`robust::level_reach`).
 
 use super::rank::Candidate;
 use crate::study::rows::label;
 use anyhow::Result;
 use surrogate::units::n_to_mn;
 
-/// Why a pattern's level-by-level evaluation stopped (with [`PatternResult::levels_skipped`]
-/// and [`PatternResult::robust_floor_mn`], the levels skipped under a floor).
+/// Why a pattern's level-by-level evaluation stopped (with [`super::PatternResult::levels_skipped`]
+/// and [`super::PatternResult::robust_floor_mn`], the levels skipped under a floor).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Stop {
     /// Every level was taken (evaluated, or skipped under the floor).
