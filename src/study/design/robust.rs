@@ -427,8 +427,14 @@ impl<'a> RobustStage<'a> {
     }
 
     /// The candidates of `todo`, best possible score first (ordered as the ranking orders:
-    /// [`Key::reachable`]).
-    fn order(&self, ranking: &[Candidate], searches: &Searches, todo: &[usize]) -> Vec<Pending> {
+    /// [`Key::reachable`]); `limits_mn[n]` is the label (mN) of a limit of `n` loads.
+    fn order(
+        &self,
+        ranking: &[Candidate],
+        searches: &Searches,
+        todo: &[usize],
+        limits_mn: &[f64],
+    ) -> Vec<Pending> {
         let p = self.ctx.p;
         let floor_mn = self.params.floor_mn;
         // a bound at or below the floor is as far as a search needs to go
@@ -445,7 +451,7 @@ impl<'a> RobustStage<'a> {
                         || (floor_mn > 0.0 && b <= floor_n),
                     key: Key::reachable(
                         c,
-                        load_mn(p, b),
+                        limits_mn[b],
                         k.theta_window_deg.unwrap_or(p.theta_tol_deg),
                         k.direction_window_deg.unwrap_or(p.direction_tol_deg),
                     ),
@@ -467,10 +473,13 @@ impl<'a> RobustStage<'a> {
         keep: usize,
     ) -> Result<usize> {
         let progress = self.ctx.obs.progress();
+        // the label (mN) of each bound, counted in loads: once, not per candidate and step
+        let p = self.ctx.p;
+        let limits_mn: Vec<f64> = (0..=p.loads.len()).map(|n| load_mn(p, n)).collect();
         let mut paths = 0usize;
         let mut done = 0u64;
         loop {
-            let order = self.order(ranking, searches, todo);
+            let order = self.order(ranking, searches, todo, &limits_mn);
             let exact_top = order.iter().take_while(|x| x.settled).count().min(keep) as u64;
             if exact_top > done {
                 progress.advance(exact_top - done);
