@@ -1,7 +1,7 @@
 //! The friction campaign's figures: friction force (mN) and μ versus load (mN), one curve per
 //! series with markers and error bars (mean ± sample standard deviation over the seeds).
 
-use super::line_plot::PALETTE;
+use super::chart::PALETTE;
 use super::{perr, png_atomic, FONT};
 use crate::study::rows::ConfigStatsRow;
 use anyhow::Result;

@@ -3,9 +3,9 @@
 //! [`surrogate::atomic_file::write_atomic`]. Text uses the bundled DejaVu Sans, registered once by
 //! [`register_fonts`].
 
+pub mod chart;
 mod colormap;
 mod contact_map;
-pub mod design;
 pub mod figures;
 pub mod friction;
 mod heat_map;

@@ -8,7 +8,7 @@
 //! legend names the three. The tiers diagram draws each method (each setting of its one knob) as
 //! its own labelled point.
 
-use super::line_plot::PALETTE;
+use super::chart::PALETTE;
 use super::{perr, png_atomic, FONT};
 use crate::study::work_precision::check::larger_is_finer;
 use crate::study::work_precision::{Tier, WorkPrecisionRow};

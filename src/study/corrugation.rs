@@ -9,7 +9,7 @@ use crate::runs::progress::Progress;
 use crate::runs::sink::RowSink;
 use anyhow::{bail, Result};
 use surrogate::map::{
-    check_slider_stays_on_substrate, compute_landscape, contact_line_direction, corrugation_direct,
+    check_path_stays_on_substrate, compute_landscape, contact_line_direction, corrugation_direct,
     corrugation_from_landscape, ContactLine, MapParams,
 };
 use surrogate::solver::Solver;
@@ -178,16 +178,7 @@ pub fn estimate(scene: &Scene, p: &CorrugationParams) -> Estimate {
 /// contact line `line` (field `distance_um` named otherwise). No solve.
 pub fn check_paths(scene: &Scene, p: &CorrugationParams, line: &LineChoice) -> Result<()> {
     for &alpha in &p.alphas {
-        let d = line.angle + alpha;
-        let end = [p.distance * d.cos(), p.distance * d.sin()];
-        check_slider_stays_on_substrate(
-            scene,
-            [
-                [end[0].min(0.0), end[1].min(0.0)],
-                [end[0].max(0.0), end[1].max(0.0)],
-            ],
-            "distance_um",
-        )?;
+        check_path_stays_on_substrate(scene, line.angle + alpha, p.distance)?;
     }
     Ok(())
 }

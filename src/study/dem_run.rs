@@ -101,17 +101,6 @@ pub fn direction(scene: &Scene, p: &DemParams) -> (LineChoice, f64) {
     (line, line.angle + p.alpha)
 }
 
-/// The phase of step `step` of a run with phase lengths `(ne, nr)`.
-fn phase_at(step: u64, ne: u64, nr: u64) -> Phase {
-    if step < ne {
-        Phase::Equilibrate
-    } else if step < ne + nr {
-        Phase::Relax
-    } else {
-        Phase::Slide
-    }
-}
-
 fn phase_name(p: Phase) -> &'static str {
     match p {
         Phase::Equilibrate => "equilibrate",
@@ -213,7 +202,7 @@ pub fn run_dem(
         first,
         &format!(
             "{}, t = {:.2}/{:.2} µs",
-            phase_name(phase_at(first, ne, nr)),
+            phase_name(Phase::of_step(first, ne, nr)),
             s_to_us(sim.state.t),
             t_end
         ),

@@ -1,6 +1,7 @@
 //! [`ContactBatch`]: touching pairs evaluated together, lane by lane, with the arithmetic of
 //! [`ContactModel::pair`] for the default history ([`crate::params::Tangential::Mindlin`]).
 
+use super::mindlin::rotate_history_lanes;
 use super::{ContactModel, Friction, PairOut};
 
 /// Pairs one batch holds.
@@ -194,21 +195,7 @@ impl ContactBatch {
             let vt = [v[0] - vn * nv[0], v[1] - vn * nv[1], v[2] - vn * nv[2]];
             // Mindlin::force(xi, n, vt, a, μ F_n, m_eff, dt): rotate the history into the
             // tangent plane keeping its magnitude (when it has one)
-            let xi = [x0[j], x1[j], x2[j]];
-            let m0 = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
-            let xn = xi[0] * nv[0] + xi[1] * nv[1] + xi[2] * nv[2];
-            let r = [xi[0] - xn * nv[0], xi[1] - xn * nv[1], xi[2] - xn * nv[2]];
-            let m1 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-            let s = (m0 / m1).sqrt();
-            let mut xi = if m0 > 0.0 {
-                if m1 > 0.0 {
-                    [r[0] * s, r[1] * s, r[2] * s]
-                } else {
-                    r
-                }
-            } else {
-                xi
-            };
+            let mut xi = rotate_history_lanes([x0[j], x1[j], x2[j]], nv);
             for k in 0..3 {
                 xi[k] += vt[k] * dt;
             }

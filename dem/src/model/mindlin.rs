@@ -38,6 +38,49 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
+/// The tangential history `xi` rotated into the tangent plane of the unit normal `n`, keeping
+/// its magnitude: `r = ξ − (ξ·n) n`, then `r·|ξ|/|r|` (unchanged for `ξ = 0`; `r` itself where
+/// `ξ ∥ n`). The one rotation of the Mindlin springs ([`Mindlin`], [`super::MindlinForce`]);
+/// [`rotate_history_lanes`] is its branch-free twin (same bits). O(1).
+#[inline]
+pub(crate) fn rotate_history(xi: &mut [f64; 3], n: [f64; 3]) {
+    let m0 = dot(*xi, *xi);
+    if m0 > 0.0 {
+        let xn = dot(*xi, n);
+        for k in 0..3 {
+            xi[k] -= xn * n[k];
+        }
+        let m1 = dot(*xi, *xi);
+        if m1 > 0.0 {
+            let s = (m0 / m1).sqrt();
+            for v in xi.iter_mut() {
+                *v *= s;
+            }
+        }
+    }
+}
+
+/// [`rotate_history`] with its branches as selects (every quantity computed, then chosen), for
+/// the contact law in lanes ([`super::ContactBatch`]): the same IEEE operations in the same
+/// order, so the same bits (`rotate_history_lanes_gives_the_scalar_bits`). O(1).
+#[inline(always)]
+pub(crate) fn rotate_history_lanes(xi: [f64; 3], n: [f64; 3]) -> [f64; 3] {
+    let m0 = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
+    let xn = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2];
+    let r = [xi[0] - xn * n[0], xi[1] - xn * n[1], xi[2] - xn * n[2]];
+    let m1 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    let s = (m0 / m1).sqrt();
+    if m0 > 0.0 {
+        if m1 > 0.0 {
+            [r[0] * s, r[1] * s, r[2] * s]
+        } else {
+            r
+        }
+    } else {
+        xi
+    }
+}
+
 impl TangentialModel for Mindlin {
     #[inline]
     fn force(
@@ -50,21 +93,7 @@ impl TangentialModel for Mindlin {
         m_eff: f64,
         dt: f64,
     ) -> [f64; 3] {
-        // Rotate the history into the current tangent plane, keeping its magnitude.
-        let m0 = dot(*xi, *xi);
-        if m0 > 0.0 {
-            let xn = dot(*xi, n);
-            for k in 0..3 {
-                xi[k] -= xn * n[k];
-            }
-            let m1 = dot(*xi, *xi);
-            if m1 > 0.0 {
-                let s = (m0 / m1).sqrt();
-                for v in xi.iter_mut() {
-                    *v *= s;
-                }
-            }
-        }
+        rotate_history(xi, n);
         for k in 0..3 {
             xi[k] += v_t[k] * dt;
         }
@@ -92,5 +121,46 @@ impl TangentialModel for Mindlin {
     #[inline]
     fn stiffness(&self, a: f64) -> f64 {
         8.0 * self.g_star * a
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::contact_batch::test_support::Rng;
+
+    fn bits(v: [f64; 3]) -> [u64; 3] {
+        v.map(f64::to_bits)
+    }
+
+    /// The lanes rotation gives the scalar one's bits for any history and unit normal, also a
+    /// zero history, one along the normal (nothing left in the plane), subnormal ones, and one
+    /// whose in-plane part underflows.
+    #[test]
+    fn rotate_history_lanes_gives_the_scalar_bits() {
+        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        for case in 0..200_000 {
+            let n = [rng.sym(), rng.sym(), rng.sym()];
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            if len < 1e-3 {
+                continue;
+            }
+            let n = n.map(|v| v / len);
+            let x = [rng.sym(), rng.sym(), rng.sym()].map(|v| v * 1e-6);
+            let xi = match case % 5 {
+                0 => [0.0; 3],
+                1 => n.map(|v| v * x[0]),
+                2 => x.map(|v| v * 1e-300),
+                3 => [n[0] * x[0] + 1e-30, n[1] * x[0], n[2] * x[0]],
+                _ => x,
+            };
+            let mut scalar = xi;
+            rotate_history(&mut scalar, n);
+            assert_eq!(
+                bits(rotate_history_lanes(xi, n)),
+                bits(scalar),
+                "ξ {xi:?}, n {n:?}"
+            );
+        }
     }
 }

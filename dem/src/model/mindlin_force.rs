@@ -8,6 +8,7 @@
 //! Under a constant contact radius both give the same force; when the load and hence `a` change
 //! while a contact sticks, [`super::Mindlin`]'s force jumps by `a_new/a_old`, this one's does not.
 
+use super::mindlin::rotate_history;
 use super::{Mindlin, TangentialModel};
 
 /// Incremental Mindlin spring: `k_t = 8 G* a`, history = elastic force (N), damping
@@ -36,20 +37,7 @@ impl TangentialModel for MindlinForce {
         m_eff: f64,
         dt: f64,
     ) -> [f64; 3] {
-        let m0 = dot(*xi, *xi);
-        if m0 > 0.0 {
-            let xn = dot(*xi, n);
-            for k in 0..3 {
-                xi[k] -= xn * n[k];
-            }
-            let m1 = dot(*xi, *xi);
-            if m1 > 0.0 {
-                let s = (m0 / m1).sqrt();
-                for v in xi.iter_mut() {
-                    *v *= s;
-                }
-            }
-        }
+        rotate_history(xi, n);
         let kt = self.stiffness(a);
         for k in 0..3 {
             xi[k] -= kt * v_t[k] * dt;

@@ -25,6 +25,20 @@ pub enum Phase {
     Slide,
 }
 
+impl Phase {
+    /// The phase of step `step` (0-based) of a run of `ne` equilibration steps, then `nr`
+    /// relaxation steps, then the slide. O(1).
+    pub fn of_step(step: u64, ne: u64, nr: u64) -> Phase {
+        if step < ne {
+            Phase::Equilibrate
+        } else if step < ne + nr {
+            Phase::Relax
+        } else {
+            Phase::Slide
+        }
+    }
+}
+
 /// Progress report, sent after every sample.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Progress {
@@ -97,15 +111,7 @@ pub fn run(
 ) -> Result<(), DemError> {
     let (ne, nr, ns, every) = step_counts(sim, kind);
     let total = ne + nr + ns;
-    let phase = |step: u64| {
-        if step < ne {
-            Phase::Equilibrate
-        } else if step < ne + nr {
-            Phase::Relax
-        } else {
-            Phase::Slide
-        }
-    };
+    let phase = |step: u64| Phase::of_step(step, ne, nr);
     let xyz_err = |p: &std::path::Path, e: std::io::Error| DemError::Checkpoint {
         path: p.display().to_string(),
         why: e.to_string(),

@@ -1,9 +1,9 @@
 //! The design's charts: P_max versus θ per load (`pmax_<p>.png`), corrugation versus α of the
 //! finalists (`corrugation_<p>.png`), μ versus load with the DEM markers (`mu_<p>.png`). Each
-//! function only builds the [`Chart`] data; `crate::plot::design::chart_png` draws it.
+//! function only builds the [`Chart`] data; `crate::plot::chart::chart_png` draws it.
 
 use super::rows::{DemProtocol, DemRow};
-use crate::plot::design::{Chart, Colour, Curve, Style};
+use crate::plot::chart::{Chart, Colour, Curve, Style};
 use crate::study::design::trim::CHART_DESIGNS;
 use crate::study::design::{DesignParams, PatternResult};
 use crate::study::load::{Load, LoadKey};

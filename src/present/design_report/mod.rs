@@ -41,7 +41,7 @@ pub use log::Log;
 pub use pattern_files::Writer;
 pub use rows::{dem_rows, DemProtocol, DemRow, DemStatus, ShortlistRow};
 
-use crate::plot::design::chart_png;
+use crate::plot::chart::chart_png;
 use crate::runs::meta::Inputs;
 use crate::runs::progress::Progress;
 use crate::runs::sink::csv_bytes;

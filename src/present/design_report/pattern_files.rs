@@ -6,7 +6,7 @@
 
 use super::charts::{corrugation_chart, pmax_chart};
 use super::rows::ShortlistRow;
-use crate::plot::design::chart_png;
+use crate::plot::chart::chart_png;
 use crate::runs::meta::Inputs;
 use crate::runs::output::Outputs;
 use crate::runs::sink::csv_bytes;

@@ -2,7 +2,7 @@
 //! patterns can be compared (and plotted against a family's parameter) at a glance.
 
 use super::words::fmt_g;
-use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
+use crate::plot::chart::{chart_png, Chart, Colour, Curve, Style};
 use crate::plot::figures::contact_map_png;
 use crate::runs::output::Outputs;
 use crate::study::design::best::{best_contacts, best_order, pattern_order};

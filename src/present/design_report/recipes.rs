@@ -9,7 +9,7 @@
 use super::patterns::PatternRow;
 use super::top::TopRow;
 use super::words::fmt_g;
-use crate::plot::design::{chart_png, Chart, Colour, Curve, Style};
+use crate::plot::chart::{chart_png, Chart, Colour, Curve, Style};
 use crate::runs::output::Outputs;
 use crate::study::design::answer::Check;
 use crate::study::design::recipe_answer::{self, Naming, RecipeDecision};

@@ -17,6 +17,7 @@
 
 use super::{check_slider_stays_on_substrate, Landscape, MapParams};
 use crate::error::SceneError;
+use crate::scene::Scene;
 use crate::solver::{Model, Solver, StraightPath};
 
 /// Equilibrium along one straight path from the scene's offset (SI).
@@ -110,6 +111,26 @@ pub fn check_alpha(alpha: f64) -> Result<(), SceneError> {
     Ok(())
 }
 
+/// Checks that the slider stays over the substrate along the straight path from its placement
+/// to `distance` (m) along the direction `direction` (rad, substrate frame); the error names
+/// the field `distance_um`. O(1).
+pub fn check_path_stays_on_substrate(
+    scene: &Scene,
+    direction: f64,
+    distance: f64,
+) -> Result<(), SceneError> {
+    let e = [direction.cos(), direction.sin()];
+    let end = [distance * e[0], distance * e[1]];
+    check_slider_stays_on_substrate(
+        scene,
+        [
+            [end[0].min(0.0), end[1].min(0.0)],
+            [end[0].max(0.0), end[1].max(0.0)],
+        ],
+        "distance_um",
+    )
+}
+
 /// Solves the equilibrium along the straight path `shift = s·(cos φ, sin φ)`, s ∈ [0, L]
 /// (`params.distance`, sampled every ≤ `params.step`), at rotation `theta` (rad) and load `load`
 /// (N), with [`Model::Auto`] ([`Solver::solve_along`]: one candidate search per
@@ -129,15 +150,7 @@ pub fn path_profile(
     let s = samples(params)?;
     let scene = solver.scene();
     let e = [direction.cos(), direction.sin()];
-    let end = [params.distance * e[0], params.distance * e[1]];
-    check_slider_stays_on_substrate(
-        scene,
-        [
-            [end[0].min(0.0), end[1].min(0.0)],
-            [end[0].max(0.0), end[1].max(0.0)],
-        ],
-        "distance_um",
-    )?;
+    check_path_stays_on_substrate(scene, direction, params.distance)?;
     let sub = solver.substrate();
     let path = StraightPath {
         theta,

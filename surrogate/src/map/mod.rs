@@ -15,8 +15,8 @@ mod params;
 pub use cell::RepeatCell;
 pub use contact_line::{contact_line_direction, ContactLine};
 pub use corrugation::{
-    check_alpha, corrugation_direct, corrugation_from_landscape, path_profile, CorrugationPoint,
-    PathProfile,
+    check_alpha, check_path_stays_on_substrate, corrugation_direct, corrugation_from_landscape,
+    path_profile, CorrugationPoint, PathProfile,
 };
 pub use landscape::{compute_landscape, Landscape};
 pub use params::MapParams;

@@ -60,6 +60,30 @@ impl<L: Law> System<L> {
         }
     }
 
+    /// Backtracking along the Newton step `d` from `x` (state `st`), from `cap` halving up to
+    /// 60 times: moves `x` and `st` to the first point that passes the energy (Armijo) test, or
+    /// near convergence, where Π is flat to round-off, halves the gradient; false where none
+    /// does. O(P) per trial.
+    fn line_search(&self, x: &mut Vec<f64>, st: &mut State, d: &[f64], cap: f64) -> bool {
+        let slope: f64 = d.iter().zip(&st.grad).map(|(a, b)| a * b).sum::<f64>() * cap;
+        let mut alpha = cap;
+        for _ in 0..60 {
+            let xn: Vec<f64> = x.iter().zip(d).map(|(a, b)| a + alpha * b).collect();
+            let sn = self.eval(&xn);
+            let slack = 1e-13 * st.pi.abs();
+            let gnorm = |v: &[f64]| v.iter().fold(0.0f64, |m, g| m.max(g.abs()));
+            if sn.pi <= st.pi + 1e-4 * (alpha / cap) * slope + slack
+                || gnorm(&sn.grad) < 0.5 * gnorm(&st.grad)
+            {
+                *x = xn;
+                *st = sn;
+                return true;
+            }
+            alpha *= 0.5;
+        }
+        false
+    }
+
     fn eval(&self, x: &[f64]) -> State {
         let n = self.n();
         let nq = self.nq;
@@ -209,27 +233,7 @@ pub(crate) fn solve_compliant<L: Law>(
         } else {
             1.0
         };
-        let slope: f64 = d.iter().zip(&st.grad).map(|(a, b)| a * b).sum::<f64>() * cap;
-        let mut alpha = cap;
-        let mut accepted = false;
-        for _ in 0..60 {
-            let xn: Vec<f64> = x.iter().zip(&d).map(|(a, b)| a + alpha * b).collect();
-            let sn = sys.eval(&xn);
-            let slack = 1e-13 * st.pi.abs();
-            // Energy (Armijo) test; near convergence Π is flat to round-off, so a step that
-            // halves the gradient is accepted too.
-            let gnorm = |v: &[f64]| v.iter().fold(0.0f64, |m, g| m.max(g.abs()));
-            if sn.pi <= st.pi + 1e-4 * (alpha / cap) * slope + slack
-                || gnorm(&sn.grad) < 0.5 * gnorm(&st.grad)
-            {
-                x = xn;
-                st = sn;
-                accepted = true;
-                break;
-            }
-            alpha *= 0.5;
-        }
-        if !accepted {
+        if !sys.line_search(&mut x, &mut st, &d, cap) {
             break;
         }
         if x[n + 1..].iter().any(|v| v.abs() > ctx.two_r) {

@@ -1,7 +1,7 @@
 //! [`Ctx`]: what a load-sharing model needs besides the pairs (contact law, substrate, knobs,
 //! the mount's tilt stiffness), shared by the pair law and the assembly.
 
-use super::SolverParams;
+use super::{PairSet, SolverParams};
 use crate::contact::Hertz;
 use crate::scene::{Coating, Scene};
 use std::cell::Cell;
@@ -135,12 +135,23 @@ impl Ctx<'_> {
     }
 
     /// The bound on every pair's lever `|g|` the tilt working set uses: the watch's (a partial
-    /// list's slider positions are only those of its pairs), else [`super::rigid_tilt::max_lever`].
-    pub fn lever_bound(&self, ps: &super::PairSet) -> f64 {
+    /// list's slider positions are only those of its pairs), else [`Ctx::max_lever`].
+    pub fn lever_bound(&self, ps: &PairSet) -> f64 {
         match self.watch {
             Some(w) => w.gmax,
-            None => super::rigid_tilt::max_lever(self, ps),
+            None => self.max_lever(ps),
         }
+    }
+
+    /// Bound on the lever `|g| = |arm|/L` of every pair of `ps`: the largest slider-sphere
+    /// distance from the disc centre over L (plus round-off). O(slider spheres).
+    pub fn max_lever(&self, ps: &PairSet) -> f64 {
+        let mut r2: f64 = 0.0;
+        for p in &ps.slider_xy {
+            let (dx, dy) = (p[0] - ps.centre[0], p[1] - ps.centre[1]);
+            r2 = r2.max(dx * dx + dy * dy);
+        }
+        r2.sqrt() / self.scale * (1.0 + 1e-12)
     }
 
     /// Hertz law of slider sphere `i` on substrate sphere `j` (the scene's one law without

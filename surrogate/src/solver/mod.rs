@@ -12,6 +12,7 @@
 mod along;
 mod assemble;
 mod auto;
+mod chunk_solver;
 mod columns;
 mod compliant;
 mod ctx;

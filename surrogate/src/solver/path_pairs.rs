@@ -114,9 +114,9 @@ pub(crate) struct PathChunk<'a> {
     wide: PairSet,
     tracks: Vec<Track>,
     /// Height floor (m, absolute): every pair touching above it is in a sample's list.
-    pub floor: f64,
+    floor: f64,
     /// The highest touch height (m, absolute) at the chunk's first sample.
-    pub top0: f64,
+    top0: f64,
     above: Vec<Above>,
     /// How far the pairs above the current floor have been taken from the tracks.
     taken: Taken,
@@ -124,6 +124,11 @@ pub(crate) struct PathChunk<'a> {
     live: Vec<Above>,
     /// The current sample's partial list (positions filled only for its pairs).
     ps: PairSet,
+    /// The sample (m of path) last listed by [`PathChunk::partial_at`] (or the sub-chunk's
+    /// first) and the end of the current sub-chunk (`None` before the first): a new floor
+    /// refreshes the live pairs from that sample to that end.
+    at: f64,
+    end: Option<f64>,
 }
 
 impl<'a> PathChunk<'a> {
@@ -166,6 +171,8 @@ impl<'a> PathChunk<'a> {
             above: std::mem::take(&mut buf.above),
             taken: Taken::Kept,
             live: std::mem::take(&mut buf.live),
+            at: a,
+            end: None,
         };
         // one search serves the first sample's top and the chunk's list: the pairs that can
         // rise above FIRST_DEPTH + band below the ceiling of every touch height; the top at the
@@ -199,7 +206,7 @@ impl<'a> PathChunk<'a> {
         let solver = self.solver;
         let pose = self.pose(self.mid);
         self.searched = floor;
-        if let Some(covered) = kept::take(self, floor) {
+        if let Some(covered) = kept::take(&self.kept_name(), floor, &mut self.wide.pairs) {
             // a kept search of a nearby direction: its pairs, this direction's positions
             self.wide.centre = solver.fill_slider_xy(pose, &mut self.wide.slider_xy);
             self.wide.theta = pose.theta;
@@ -207,7 +214,7 @@ impl<'a> PathChunk<'a> {
         } else {
             let extra = self.reach_out() * kept::SHARE_CHORD;
             solver.pairs_swept_into(pose, self.half, floor, extra, &mut self.wide);
-            kept::keep(self, floor);
+            kept::keep(&self.kept_name(), floor, &self.wide.pairs);
         }
         let (mid, e) = (self.mid, self.e);
         let sub = solver.substrate();
@@ -226,6 +233,17 @@ impl<'a> PathChunk<'a> {
                 q,
             }
         }));
+    }
+
+    /// What this chunk's search is kept and found under ([`kept`]).
+    fn kept_name(&self) -> kept::Name {
+        kept::Name {
+            solver: self.solver.id,
+            theta: self.theta,
+            origin: self.origin,
+            span: self.span,
+            e: self.e,
+        }
     }
 
     /// The lowest floor (m, absolute) the chunk's last candidate search covers: setting the
@@ -265,9 +283,20 @@ impl<'a> PathChunk<'a> {
         top
     }
 
-    /// Sets the floor (m): the pairs that can rise above it are taken from the tracks by the next
-    /// [`PathChunk::refresh`] (a new candidate search first where the floor falls below what the
-    /// last one covered). O(1) but for that search. The live set must be refreshed after.
+    /// The height floor (m, absolute): every pair touching above it is in a sample's list.
+    pub fn floor(&self) -> f64 {
+        self.floor
+    }
+
+    /// The highest touch height (m, absolute) at the chunk's first sample.
+    pub fn top0(&self) -> f64 {
+        self.top0
+    }
+
+    /// Sets the floor (m, absolute) and takes the pairs that can rise above it from the tracks
+    /// for the rest of the current sub-chunk, from the sample last listed on (a new candidate
+    /// search first where the floor falls below what the last one covered). O(candidates),
+    /// plus that search.
     pub fn set_floor(&mut self, floor: f64) {
         if floor < self.searched {
             self.search(floor);
@@ -276,6 +305,18 @@ impl<'a> PathChunk<'a> {
         self.above.clear();
         self.taken = Taken::NotYet;
         self.live.clear();
+        if let Some(end) = self.end {
+            self.refresh(self.at, end);
+        }
+    }
+
+    /// Starts the sub-chunk of samples `[a, b]` (m of path, within the chunk): its samples are
+    /// listed from the pairs above the floor whose window meets it. O(candidates) for the first
+    /// two sub-chunks after the floor is set, then O(pairs above the floor).
+    pub fn enter(&mut self, a: f64, b: f64) {
+        self.at = a;
+        self.end = Some(b);
+        self.refresh(a, b);
     }
 
     /// The pairs of the tracks that can rise above the floor, with their windows, in the
@@ -318,7 +359,7 @@ impl<'a> PathChunk<'a> {
     /// takes them straight from the tracks (a floor often serves one sub-chunk: the chunk's
     /// first, solved cold); the second keeps every pair above the floor for the next ones.
     /// O(candidates) for those two, then O(pairs above the floor); the same list either way.
-    pub fn refresh(&mut self, a: f64, b: f64) {
+    fn refresh(&mut self, a: f64, b: f64) {
         let meets = |x: &Above| x.hi >= a && x.lo <= b;
         let mut live = std::mem::take(&mut self.live);
         live.clear();
@@ -342,8 +383,10 @@ impl<'a> PathChunk<'a> {
 
     /// The partial pair list at sample `si` (m): every pair within contact distance whose touch
     /// height can be above the floor, in the order of a full search, with the exact lateral
-    /// distances of [`Solver::pairs_from`]. O(live pairs), no allocation.
+    /// distances of [`Solver::pairs_from`]. O(live pairs), no allocation. `si` lies in the
+    /// current sub-chunk ([`PathChunk::enter`]), at or after the sample listed before.
     pub fn partial_at(&mut self, si: f64) -> &PairSet {
+        self.at = si;
         let pose = self.pose(si);
         let ps = &mut self.ps;
         ps.pairs.clear();
@@ -410,11 +453,11 @@ mod tests {
     fn lists(pc: &mut PathChunk, s: &[f64], lower: f64) -> Vec<List> {
         let mut out = Vec::new();
         for (k, &si) in s.iter().enumerate() {
+            pc.enter(si, si);
             if k == s.len() / 2 {
-                let f = pc.floor - lower;
+                let f = pc.floor() - lower;
                 pc.set_floor(f);
             }
-            pc.refresh(si, si);
             let ps = pc.partial_at(si);
             let xy: u64 = ps
                 .pairs
@@ -499,21 +542,22 @@ mod tests {
                 s.push(s[s.len() - 1] + m);
             }
             let mut pc = PathChunk::new(&solver, theta, [ox, oy], e, &s, band);
-            // one refresh for the whole chunk, then per sample (both are valid uses), then per
-            // sample below a lowered floor (a new, wider candidate search)
+            // one sub-chunk for the whole chunk, then one per sample (both are valid uses), then
+            // the whole chunk below a lowered floor (a new, wider candidate search; the new
+            // floor refreshes the live pairs itself)
             for phase in 0..3 {
-                let per_sample = phase > 0;
+                let per_sample = phase == 1;
+                if !per_sample {
+                    pc.enter(s[0], s[s.len() - 1]);
+                }
                 if phase == 2 {
-                    let f = pc.floor - lower;
+                    let f = pc.floor() - lower;
                     pc.set_floor(f);
                 }
-                let floor = pc.floor;
-                if !per_sample {
-                    pc.refresh(s[0], s[s.len() - 1]);
-                }
+                let floor = pc.floor();
                 for &si in &s {
                     if per_sample {
-                        pc.refresh(si, si);
+                        pc.enter(si, si);
                     }
                     let pose = Pose { theta, shift: [ox + si * e[0], oy + si * e[1]] };
                     let fresh = solver.pairs_at(pose);

@@ -330,7 +330,7 @@ pub(crate) struct NearSet<L> {
 
 impl<L: Law> NearSet<L> {
     /// The working set of `bp` around the rigid-z state `z0` (m); `gmax` bounds |g| over every
-    /// pair ([`max_lever`]). On a partial list ([`Ctx::watch`]) the set is never complete unless
+    /// pair ([`Ctx::max_lever`]). On a partial list ([`Ctx::watch`]) the set is never complete unless
     /// its band is empty, as on the whole list.
     pub fn new(ctx: &Ctx, bp: &[BodyPair<L>], z0: f64, gmax: f64) -> NearSet<L> {
         let band = NEAR_BAND * (-z0).max(0.0);
@@ -401,17 +401,6 @@ pub(crate) fn tilt_from<L: Law>(
     let drop = ctx.watch.map_or(0.0, |w| q[1].hypot(q[2]) * w.gmax);
     let (z, it2) = zr.solve_dropped(ctx, load, drop)?;
     Ok(([z, q[1], q[2]], it1 + it2))
-}
-
-/// Bound on the lever `|g| = |arm|/L` of every pair of `ps`: the largest slider-sphere distance
-/// from the disc centre over L (plus round-off). O(slider spheres).
-pub(crate) fn max_lever(ctx: &Ctx, ps: &PairSet) -> f64 {
-    let mut r2: f64 = 0.0;
-    for p in &ps.slider_xy {
-        let (dx, dy) = (p[0] - ps.centre[0], p[1] - ps.centre[1]);
-        r2 = r2.max(dx * dx + dy * dy);
-    }
-    r2.sqrt() / ctx.scale * (1.0 + 1e-12)
 }
 
 /// Width of the tilt Newton's working set in units of the deepest rigid-z overlap (see

@@ -314,16 +314,7 @@ impl ZRoot {
             } else {
                 z_hi = z;
             }
-            // Newton on φ(ζ) = ΣF_z^{2/3} − W^{2/3}, which is exactly linear in ζ while the set
-            // of touching pairs is fixed and they share one touch height (on-top contacts), and
-            // nearly linear otherwise: typically 2–4 fewer iterations than Newton on ΣF_z.
-            let newton = if df < 0.0 && f > 0.0 {
-                let phi = f.powf(2.0 / 3.0) - w23;
-                let dphi = (2.0 / 3.0) * df / f.cbrt();
-                z - phi / dphi
-            } else {
-                f64::NAN
-            };
+            let newton = newton_23(z, f, df, w23);
             z = if newton > z_lo && newton < z_hi {
                 newton
             } else {
@@ -331,24 +322,52 @@ impl ZRoot {
             };
             let scale = z_hi.abs().max(z_lo.abs()).max(1e-300);
             if z_hi - z_lo <= 4.0 * f64::EPSILON * scale || iters > params.max_iter {
-                // Bracket exhausted at machine precision: accept the better end point if it
-                // balances the load to 1e-9 (the documented guarantee), else fail loudly.
-                let (fl, _) = self.eval(act, z_lo);
-                let (fh, _) = self.eval(act, z_hi);
-                let (zb, fb) = if (fl - load).abs() <= (fh - load).abs() {
-                    (z_lo, fl)
-                } else {
-                    (z_hi, fh)
-                };
-                if (fb - load).abs() > 1e-9 * load {
-                    return Err(SceneError::NoEquilibrium(format!(
-                        "root find stalled at ζ = {zb:e} m with residual {:e} N",
-                        fb - load
-                    )));
-                }
+                let zb = self.stalled(act, z_lo, z_hi, load)?;
                 return Ok((zb, iters, z_floor));
             }
         }
+    }
+
+    /// The bracket `[z_lo, z_hi]` (m) exhausted at machine precision: its end point that better
+    /// balances `load` (N), if that holds to 1e-9 (the documented guarantee), else an error.
+    /// Two evaluations over `act`.
+    fn stalled<R: Row>(
+        &self,
+        act: &[R],
+        z_lo: f64,
+        z_hi: f64,
+        load: f64,
+    ) -> Result<f64, SceneError> {
+        let (fl, _) = self.eval(act, z_lo);
+        let (fh, _) = self.eval(act, z_hi);
+        let (zb, fb) = if (fl - load).abs() <= (fh - load).abs() {
+            (z_lo, fl)
+        } else {
+            (z_hi, fh)
+        };
+        if (fb - load).abs() > 1e-9 * load {
+            return Err(SceneError::NoEquilibrium(format!(
+                "root find stalled at ζ = {zb:e} m with residual {:e} N",
+                fb - load
+            )));
+        }
+        Ok(zb)
+    }
+}
+
+/// The Newton step from ζ = `z` (m) on φ(ζ) = ΣF_z^{2/3} − W^{2/3} (ΣF_z = `f` N, its slope
+/// `df` N/m, `w23` = W^{2/3}), which is exactly linear in ζ while the set of touching pairs is
+/// fixed and they share one touch height (on-top contacts), and nearly linear otherwise:
+/// typically 2–4 fewer iterations than Newton on ΣF_z. NaN where ΣF_z is not positive and
+/// falling. O(1).
+#[inline]
+fn newton_23(z: f64, f: f64, df: f64, w23: f64) -> f64 {
+    if df < 0.0 && f > 0.0 {
+        let phi = f.powf(2.0 / 3.0) - w23;
+        let dphi = (2.0 / 3.0) * df / f.cbrt();
+        z - phi / dphi
+    } else {
+        f64::NAN
     }
 }
 

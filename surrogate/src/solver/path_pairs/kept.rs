@@ -11,7 +11,6 @@
 //! that can rise above its floor, exactly as after its own search, so every list and result is
 //! bit-identical (`docs/validation/path-solve.md`).
 
-use super::PathChunk;
 use crate::contact::CandidatePair;
 use std::cell::RefCell;
 
@@ -38,6 +37,16 @@ struct Kept {
 /// The solver, θ, origin and span (bits) a search is kept for.
 type Key = (u64, u64, [u64; 2], [u64; 2]);
 
+/// What a chunk's search is kept and found under: its solver's id, its rotation θ (rad), its
+/// origin (m), the span of its samples (m of path) and its direction e.
+pub(super) struct Name {
+    pub solver: u64,
+    pub theta: f64,
+    pub origin: [f64; 2],
+    pub span: [f64; 2],
+    pub e: [f64; 2],
+}
+
 thread_local! {
     static KEPT: RefCell<Vec<Kept>> = const { RefCell::new(Vec::new()) };
     /// Searches reused on this thread (tests).
@@ -45,19 +54,19 @@ thread_local! {
     static REUSED: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }
 
-fn key(c: &PathChunk) -> Key {
+fn key(c: &Name) -> Key {
     (
-        c.solver.id,
+        c.solver,
         c.theta.to_bits(),
         c.origin.map(f64::to_bits),
         c.span.map(f64::to_bits),
     )
 }
 
-/// Fills `c.wide.pairs` from a kept search for its key and a direction within
-/// [`SHARE_CHORD`] that covers `floor` (m, absolute), and returns the floor that search covers;
+/// Fills `pairs` from a kept search for the chunk `c` (its key, and a direction within
+/// [`SHARE_CHORD`]) that covers `floor` (m, absolute), and returns the floor that search covers;
 /// `None` (nothing written) where none is kept. O(pairs).
-pub(super) fn take(c: &mut PathChunk, floor: f64) -> Option<f64> {
+pub(super) fn take(c: &Name, floor: f64, pairs: &mut Vec<CandidatePair>) -> Option<f64> {
     let k = key(c);
     let e = c.e;
     KEPT.with(|kept| {
@@ -67,8 +76,8 @@ pub(super) fn take(c: &mut PathChunk, floor: f64) -> Option<f64> {
         })?;
         // the most recently used last
         let x = kept.remove(i);
-        c.wide.pairs.clear();
-        c.wide.pairs.extend_from_slice(&x.pairs);
+        pairs.clear();
+        pairs.extend_from_slice(&x.pairs);
         let covered = x.floor;
         kept.push(x);
         #[cfg(test)]
@@ -77,10 +86,10 @@ pub(super) fn take(c: &mut PathChunk, floor: f64) -> Option<f64> {
     })
 }
 
-/// Keeps `c`'s search, just run for `floor` (m, absolute) along its direction and widened by
-/// [`SHARE_CHORD`], dropping the least recently used beyond [`KEEP`]. O(pairs), no allocation
-/// once the pool has grown.
-pub(super) fn keep(c: &PathChunk, floor: f64) {
+/// Keeps the search `found` of the chunk `c`, just run for `floor` (m, absolute) along its
+/// direction and widened by [`SHARE_CHORD`], dropping the least recently used beyond [`KEEP`].
+/// O(pairs), no allocation once the pool has grown.
+pub(super) fn keep(c: &Name, floor: f64, found: &[CandidatePair]) {
     let k = key(c);
     KEPT.with(|kept| {
         let mut kept = kept.borrow_mut();
@@ -90,7 +99,7 @@ pub(super) fn keep(c: &PathChunk, floor: f64) {
             Vec::new()
         };
         pairs.clear();
-        pairs.extend_from_slice(&c.wide.pairs);
+        pairs.extend_from_slice(found);
         kept.push(Kept {
             key: k,
             e: c.e,
