@@ -2,7 +2,8 @@
 # Runs the fixed set of commands whose outputs a refactor must leave byte-identical (wall-time
 # fields aside) with one superlube binary, each in its own folder under OUT.
 # Usage: scripts/outputs-run.sh BIN OUT [--full]   (--full adds the default `design --no-dem`, ~1 min)
-# Compare two such folders with scripts/outputs-compare.sh.
+# Compare two such folders with scripts/outputs-compare.sh. The commands use the flag names
+# every build accepts (`--theta`, `--alpha`: hidden aliases of `--theta-deg`, `--alpha-deg`).
 set -euo pipefail
 bin=$(realpath "$1"); out=$2; full=${3:-}
 mkdir -p "$out"; out=$(realpath "$out")

@@ -48,20 +48,20 @@ measure "Tier 1 screen: the study's sweep, 301 θ × 4 loads, square-tri (3505 s
 measure "Tier 1 screen: the same, tri-tri" -- \
     screen --pattern tri-tri --out s.csv
 measure "Tier 2 landscape: 51 × 51 placements over the repeat cell" -- \
-    landscape --pattern square-tri --theta 0 --load-mn 1.4 --grid 51 --out dz.csv
+    landscape --pattern square-tri --theta-deg 0 --load-mn 1.4 --grid 51 --out dz.csv
 measure "Tier 2 friction estimate: one (θ, α, W)" -- \
-    friction --pattern square-tri --theta 10.2 --alpha 90 --load-mn 1.4 --out f.csv
+    friction --pattern square-tri --theta-deg 10.2 --alpha-deg 90 --load-mn 1.4 --out f.csv
 measure "Tier 2 friction estimate: 3 loads of one (θ, α)" -- \
-    friction --pattern tri-tri --theta 10.6 --alpha 6.5 --load-mn 0.35,1.4,2.1 --out f.csv
+    friction --pattern tri-tri --theta-deg 10.6 --alpha-deg 6.5 --load-mn 0.35,1.4,2.1 --out f.csv
 measure "tolerance map: 41 θ × 21 pull directions × 11 loads (the default)" -- \
-    tolerance --pattern square-tri --theta 0 --alpha 90 --out-dir tol
+    tolerance --pattern square-tri --theta-deg 0 --alpha-deg 90 --out-dir tol
 for m in reduced full; do
     measure "Tier 3 DEM, the study's protocol 10 + 10 + 300 µs, --model $m: superlubric scene (square-tri 0°, α = 90°, 1.4 mN)" -- \
-        slide --pattern square-tri --theta 0 --alpha 90 --load-mn 1.4 --model "$m" --out s.csv --json s.json
+        slide --pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 --model "$m" --out s.csv --json s.json
     measure "Tier 3 DEM, the same, --model $m: stick-slip scene (square-tri 0°, α = 0°, 1.4 mN)" -- \
-        slide --pattern square-tri --theta 0 --alpha 0 --load-mn 1.4 --model "$m" --out s.csv --json s.json
+        slide --pattern square-tri --theta-deg 0 --alpha-deg 0 --load-mn 1.4 --model "$m" --out s.csv --json s.json
     measure "Tier 3 DEM, the same, --model $m: coating-failure scene (tri-tri 30°, α = 0°, 2.45 mN)" -- \
-        slide --pattern tri-tri --theta 30 --alpha 0 --load-mn 2.45 --model "$m" --out s.csv --json s.json
+        slide --pattern tri-tri --theta-deg 30 --alpha-deg 0 --load-mn 2.45 --model "$m" --out s.csv --json s.json
 done
 measure "design, the default, surrogate tiers only (2 patterns, tolerance ±0.1° × ±0.5°)" -- \
     design --no-dem --out-dir d
@@ -73,12 +73,12 @@ measure "design, the default, with its DEM confirmation (fresh folder)" -- \
 lammps="\`lmp\` was not found on this machine: no LAMMPS figure."
 if command -v lmp >/dev/null; then
     dir=$work/lammps; mkdir -p "$dir"
-    (cd "$dir" && "$bin" export-lammps --pattern square-tri --theta 0 --alpha 90 --load-mn 1.4 \
+    (cd "$dir" && "$bin" export-lammps --pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 \
         --equilibrate-us 1 --relax-us 1 --slide-us 5 --out-dir run >/dev/null 2>&1)
     steps=$(python3 -c 'import json,sys; s=json.load(open(sys.argv[1]))["steps"]; print(sum(s.values()))' "$dir/run/export.json")
     (cd "$dir/run" && /usr/bin/time -f '%e %U %S %M' -o ../time.txt lmp -in in.superlube.lmp >lmp.log 2>&1)
     read -r wall user sys rss <"$dir/time.txt"
-    lammps=$(printf 'LAMMPS (`%s`, one process) on the exported superlubric scene (`superlube export-lammps --pattern square-tri --theta 0 --alpha 90 --load-mn 1.4 --equilibrate-us 1 --relax-us 1 --slide-us 5`, then `lmp -in in.superlube.lmp`): %d steps in %.1f s wall, %.2f ms per step.' \
+    lammps=$(printf 'LAMMPS (`%s`, one process) on the exported superlubric scene (`superlube export-lammps --pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 --equilibrate-us 1 --relax-us 1 --slide-us 5`, then `lmp -in in.superlube.lmp`): %d steps in %.1f s wall, %.2f ms per step.' \
         "$(command -v lmp)" "$steps" "$wall" "$(echo "1000 * $wall / $steps" | bc -l)")
 fi
 
