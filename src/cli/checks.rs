@@ -135,3 +135,17 @@ pub fn grid(n: usize) -> Result<usize> {
 pub fn time_us(v: f64, flag: &str) -> Result<f64> {
     Ok(us_to_s(positive(v, flag)?))
 }
+
+/// A comma list of substrate seeds (`flag` names it in errors): whole numbers ≥ 0.
+pub fn seed_list(text: &str, flag: &str) -> Result<Vec<u64>> {
+    text.split(',')
+        .map(|x| {
+            x.trim().parse::<u64>().map_err(|_| {
+                anyhow::anyhow!(
+                    "`{flag}`: `{}` is not a non-negative integer seed",
+                    x.trim()
+                )
+            })
+        })
+        .collect()
+}

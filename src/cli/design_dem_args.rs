@@ -60,6 +60,35 @@ pub struct DesignDemArgs {
     pub jobs: Option<usize>,
 }
 
+/// The parameters of a design's DEM run: `sim` (the protocol; load and α are set per run), the
+/// contact line `line` (rad; `None`: the moiré estimate), the model `request`; starting from the
+/// surrogate's equilibrium, no checkpoint, no trajectory. The one place `design` and `yield`
+/// build them. Cost: none.
+pub fn design_run_params(
+    sim: SimParams,
+    line: Option<f64>,
+    request: dem::ModelRequest,
+) -> DemParams {
+    DemParams {
+        sim,
+        alpha: 0.0,
+        line,
+        start: Start::Surrogate,
+        friction: None,
+        io: RunIo {
+            checkpoint: None,
+            checkpoint_every: 50_000,
+            xyz: None,
+            xyz_every: 10_000,
+        },
+        resume: None,
+        model: ModelSpec {
+            request,
+            ..ModelSpec::default()
+        },
+    }
+}
+
 impl DesignDemArgs {
     /// The checked DEM parameters (load, α set per run; `line` the contact line, rad) and the
     /// runs side by side; each error names its flag.
@@ -90,26 +119,6 @@ impl DesignDemArgs {
             support_speed: self.speed_m_s,
             ..SimParams::default()
         };
-        Ok((
-            DemParams {
-                sim,
-                alpha: 0.0,
-                line,
-                start: Start::Surrogate,
-                friction: None,
-                io: RunIo {
-                    checkpoint: None,
-                    checkpoint_every: 50_000,
-                    xyz: None,
-                    xyz_every: 10_000,
-                },
-                resume: None,
-                model: ModelSpec {
-                    request: self.model.request(),
-                    ..ModelSpec::default()
-                },
-            },
-            jobs,
-        ))
+        Ok((design_run_params(sim, line, self.model.request()), jobs))
     }
 }

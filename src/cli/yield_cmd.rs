@@ -212,20 +212,10 @@ pub fn run(a: Args) -> Result<()> {
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
     knobs.validate()?;
-    let searched: Vec<u64> = match &a.searched_seeds {
-        None => Vec::new(),
-        Some(t) => t
-            .split(',')
-            .map(|x| {
-                x.trim().parse::<u64>().map_err(|_| {
-                    anyhow::anyhow!(
-                        "`--searched-seeds`: `{}` is not a non-negative integer seed",
-                        x.trim()
-                    )
-                })
-            })
-            .collect::<Result<_>>()?,
-    };
+    let searched = a
+        .searched_seeds
+        .as_deref()
+        .map_or(Ok(Vec::new()), |t| checks::seed_list(t, "--searched-seeds"))?;
     let check_load = a
         .dem_check_load_mn
         .map(|w| checks::positive(w, "--dem-check-load-mn").map(surrogate::units::mn_to_n))

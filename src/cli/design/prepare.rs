@@ -1,16 +1,15 @@
 //! Every check of `superlube design`'s flags, before any work: the patterns, the design's
 //! parameters (SI) and the tolerance against each pattern's θ domain.
 
+use super::super::design_dem_args::design_run_params;
 use super::super::{checks, parse_list_or_range};
 use super::scenes::scenes;
 use super::Args;
 use super::DEFAULT_THETA;
 use crate::runs::output::check_outputs;
-use crate::study::dem_run::{DemParams, ModelSpec};
 use crate::study::design::{cut, DesignParams, DesignScene};
 use anyhow::{bail, Result};
-use dem::protocol::RunIo;
-use dem::{SimParams, Start};
+use dem::SimParams;
 use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 
 /// Every check of `superlube design`, before any work.
@@ -121,24 +120,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         && sim.relax_time == study.relax_time
         && sim.slide_time == study.slide_time
         && sim.support_speed == study.support_speed;
-    let dem = DemParams {
-        sim,
-        alpha: 0.0,
-        line,
-        start: Start::Surrogate,
-        friction: None,
-        io: RunIo {
-            checkpoint: None,
-            checkpoint_every: 50_000,
-            xyz: None,
-            xyz_every: 10_000,
-        },
-        resume: None,
-        model: ModelSpec {
-            request: a.dem_model.request(),
-            ..ModelSpec::default()
-        },
-    };
+    let dem = design_run_params(sim, line, a.dem_model.request());
     let dem_shard = match &a.shard {
         Some(t) => {
             if a.no_dem {
@@ -152,20 +134,10 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
     let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step-deg")?;
     let direction_tol_step_deg =
         checks::positive(a.direction_tol_step, "--direction-tol-step-deg")?;
-    let seeds: Vec<u64> = match &a.seeds {
-        None => Vec::new(),
-        Some(t) => t
-            .split(',')
-            .map(|x| {
-                x.trim().parse::<u64>().map_err(|_| {
-                    anyhow::anyhow!(
-                        "`--extra-seeds`: `{}` is not a non-negative integer seed",
-                        x.trim()
-                    )
-                })
-            })
-            .collect::<Result<_>>()?,
-    };
+    let seeds = a
+        .seeds
+        .as_deref()
+        .map_or(Ok(Vec::new()), |t| checks::seed_list(t, "--extra-seeds"))?;
     let params = DesignParams {
         theta_tol_deg,
         direction_tol_deg,
