@@ -1,10 +1,11 @@
-//! A normal load as a typed value: N inside (SI), identified by its user-unit decimal.
+//! A normal load as a typed value: N inside (SI), identified by its user-unit decimal; and the
+//! load ladder of a workflow ([`Loads`]).
 //!
 //! Every row writes a load as its mN label ([`crate::study::rows::label`]: the value in mN to
-//! 12 significant digits), and the workflows used to find "the same load" by comparing such
-//! labels at each call. [`Load`] does that in one place: two loads are the same load when
-//! their labels are equal (compared exactly, as bits: [`Load::key`]), and [`Load::is`] matches
-//! a row's `load_mN`. The label is for printing and for the rows; the identity is the key.
+//! 12 significant digits). [`Load`] gives a load its identity: two loads are the same load when
+//! their labels are equal (compared exactly, as bits: [`Load::key`], a [`LoadKey`]), and a row
+//! is joined to a load by the key of its `load_mN` ([`LoadKey::of_mn`]), never by comparing
+//! floats. The label is for printing and for the rows; the identity is the key.
 
 use super::rows::label;
 use surrogate::units::{mn_to_n, n_to_mn};
@@ -54,6 +55,63 @@ impl Load {
     }
 }
 
+impl LoadKey {
+    /// The key of a load written as its mN label (a row's `load_mN`).
+    pub fn of_mn(mn: f64) -> LoadKey {
+        LoadKey(label(mn).to_bits())
+    }
+}
+
+/// The load ladder of a workflow: loads in N (SI), strictly increasing, each one a [`Load`].
+/// Derefs to the N slice the solvers take; the typed questions (which load a row's label
+/// names, how many loads a limit counts, the label of the k-th) are its methods. Cost: a
+/// `Vec<f64>`; each key lookup one format and parse per load.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Loads(Vec<f64>);
+
+impl Loads {
+    /// The ladder of `n` (N, strictly increasing: checked by the caller, which names its
+    /// input).
+    pub fn new(n: Vec<f64>) -> Loads {
+        Loads(n)
+    }
+    /// The loads in N (SI).
+    pub fn n(&self) -> &[f64] {
+        &self.0
+    }
+    /// The `k`-th load.
+    pub fn load(&self, k: usize) -> Load {
+        Load(self.0[k])
+    }
+    /// The loads as their mN labels, in order (what rows and records print).
+    pub fn labels_mn(&self) -> Vec<f64> {
+        self.0.iter().map(|&w| Load(w).mn()).collect()
+    }
+    /// The index of the load whose key is `key`, if it is one of the ladder.
+    pub fn position(&self, key: LoadKey) -> Option<usize> {
+        self.0.iter().position(|&w| Load(w).key() == key)
+    }
+    /// How many loads are at most the load labelled `mn` (mN), compared by label.
+    pub fn count_upto(&self, mn: f64) -> usize {
+        Load::count_upto(&self.0, mn)
+    }
+    /// The label (mN) of a limit counted in loads: the `n`-th load's, 0 for none.
+    pub fn limit_mn(&self, n: usize) -> f64 {
+        if n == 0 {
+            0.0
+        } else {
+            Load(self.0[n - 1]).mn()
+        }
+    }
+}
+
+impl std::ops::Deref for Loads {
+    type Target = [f64];
+    fn deref(&self) -> &[f64] {
+        &self.0
+    }
+}
+
 impl PartialEq for Load {
     fn eq(&self, other: &Load) -> bool {
         self.key() == other.key()
@@ -90,5 +148,12 @@ mod tests {
         assert_eq!(Load::position(&loads, 0.7), Some(1));
         assert_eq!(Load::position(&loads, 1.05), None);
         assert_eq!(Load::count_upto(&loads, 1.0), 2);
+        let ladder = Loads::new(loads);
+        assert_eq!(ladder.position(LoadKey::of_mn(0.7)), Some(1));
+        assert_eq!(ladder.position(Load::from_mn(0.35).key()), Some(0));
+        assert_eq!(ladder.position(LoadKey::of_mn(1.05)), None);
+        assert_eq!(ladder.labels_mn(), vec![0.35, 0.7, 1.4]);
+        assert_eq!((ladder.limit_mn(0), ladder.limit_mn(3)), (0.0, 1.4));
+        assert_eq!(ladder.count_upto(1.4), 3);
     }
 }

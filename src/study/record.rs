@@ -124,7 +124,7 @@ pub fn friction(p: &FrictionSweepParams, p_crit: f64) -> Value {
 /// the measured ratios that widen each threshold into the borderline band, and the band in
 /// words.
 pub fn verdict_rule(mu_sl: f64, p_crit: f64) -> Value {
-    use super::verdict::{band_words, MU_RATIO, P_RATIO};
+    use super::rows::verdict::{band_words, MU_RATIO, P_RATIO};
     json!({
         "mu_superlubric": mu_sl,
         "p_crit_GPa": label(pa_to_gpa(p_crit)),

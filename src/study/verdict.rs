@@ -18,9 +18,8 @@
 //! Cost: a few comparisons.
 
 use super::batch::SlideResult;
+pub use super::rows::verdict::{band_words, Verdict, MU_RATIO, P_RATIO};
 use super::rows::FrictionRow;
-use serde::{Deserialize, Serialize};
-use std::fmt;
 use surrogate::units::pa_to_gpa;
 
 /// Whether a friction row's coating is intact on its whole path: no error and the path's
@@ -34,84 +33,6 @@ pub fn intact(r: &FrictionRow, p_crit: f64) -> bool {
 /// few comparisons.
 pub fn superlubric(r: &FrictionRow, p_crit: f64, mu_sl: f64) -> bool {
     intact(r, p_crit) && r.mu_est.is_some_and(|m| m < mu_sl)
-}
-
-/// Range of μ_est/μ_DEM measured off the mount resonance (lowest, highest).
-pub const MU_RATIO: (f64, f64) = (0.83, 1.10);
-
-/// Range of (DEM max P_max)/(estimate's path P_max) measured on smoothly sliding runs (lowest,
-/// highest).
-pub const P_RATIO: (f64, f64) = (0.962, 1.048);
-
-/// The verdict of one estimate (see the module docs).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Verdict {
-    /// Outside both uncertainty bands on the good side: the DEM is expected to agree.
-    Superlubric,
-    /// Within the measured uncertainty of the μ or the P_crit threshold.
-    Borderline,
-    /// Beyond a threshold by more than the uncertainty, or no estimate.
-    Not,
-}
-
-impl Verdict {
-    /// The verdict of μ_est and the path's P_max (Pa) against μ_sl and P_crit (Pa); `None`
-    /// (no estimate) is `Not`.
-    pub fn of(mu_est: Option<f64>, p_max: Option<f64>, mu_sl: f64, p_crit: f64) -> Verdict {
-        let (Some(mu), Some(p)) = (mu_est, p_max) else {
-            return Verdict::Not;
-        };
-        if mu / MU_RATIO.1 >= mu_sl || p * P_RATIO.0 > p_crit {
-            Verdict::Not
-        } else if mu / MU_RATIO.0 < mu_sl && p * P_RATIO.1 <= p_crit {
-            Verdict::Superlubric
-        } else {
-            Verdict::Borderline
-        }
-    }
-
-    /// The verdict of a friction row (`Not` where it has an error).
-    pub fn of_row(r: &FrictionRow, mu_sl: f64, p_crit: f64) -> Verdict {
-        if !r.error.is_empty() {
-            return Verdict::Not;
-        }
-        Verdict::of(
-            r.mu_est,
-            r.p_max_GPa.map(surrogate::units::gpa_to_pa),
-            mu_sl,
-            p_crit,
-        )
-    }
-
-    /// The worst verdict of `rows` (every load up to a limit, and every sample of a tolerance
-    /// box): `Not` when there are none, so a row borderline at any load up to the limit makes
-    /// the whole limit borderline.
-    pub fn worst<'r>(
-        rows: impl IntoIterator<Item = &'r FrictionRow>,
-        mu_sl: f64,
-        p_crit: f64,
-    ) -> Verdict {
-        rows.into_iter()
-            .map(|r| Verdict::of_row(r, mu_sl, p_crit))
-            .max()
-            .unwrap_or(Verdict::Not)
-    }
-
-    /// The lowercase word (`superlubric`, `borderline`, `not`).
-    pub fn word(self) -> &'static str {
-        match self {
-            Verdict::Superlubric => "superlubric",
-            Verdict::Borderline => "borderline",
-            Verdict::Not => "not",
-        }
-    }
-}
-
-impl fmt::Display for Verdict {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.word())
-    }
 }
 
 /// The DEM's verdict on one slide run at `load_mn` (mN; for the words): `Ok` when it completed
@@ -142,21 +63,6 @@ pub fn dem_superlubric(
         (None, Some(err)) => Err(format!("the DEM run at {w} mN failed: {err}")),
         (None, None) => Err(format!("no DEM result at {w} mN")),
     }
-}
-
-/// The band in words, for reports and `--help`: the μ_est and P_max ranges that are borderline.
-pub fn band_words(mu_sl: f64, p_crit: f64) -> String {
-    format!(
-        "borderline = μ_est in [{:.4}, {:.4}) or path P_max in ({:.2}, {:.2}] GPa (the estimate's measured error against the DEM: μ_est/μ_DEM {}–{}, DEM/estimate P_max {}–{})",
-        mu_sl * MU_RATIO.0,
-        mu_sl * MU_RATIO.1,
-        pa_to_gpa(p_crit / P_RATIO.1),
-        pa_to_gpa(p_crit / P_RATIO.0),
-        MU_RATIO.0,
-        MU_RATIO.1,
-        P_RATIO.0,
-        P_RATIO.1
-    )
 }
 
 #[cfg(test)]

@@ -83,7 +83,7 @@ fn pattern(ds: &DesignScene, n: usize) -> PatternResult {
         .collect();
     PatternResult::of_ranking(
         ds.clone(),
-        crate::study::design::symmetry::PairSymmetry::of_scene(sc),
+        crate::study::design::symmetry_words::PairSymmetry::of_scene(sc),
         ranking,
     )
 }

@@ -1,7 +1,6 @@
 //! Every check of `superlube design`'s flags, before any work: the patterns, the design's
 //! parameters (SI) and the tolerance against each pattern's θ domain.
 
-use super::super::dem_args::ModelArg;
 use super::super::{checks, parse_list_or_range};
 use super::scenes::scenes;
 use super::Args;
@@ -177,7 +176,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         theta_text,
         theta_default: a.theta.is_none(),
         symmetry_cut: !a.no_symmetry_cut,
-        loads,
+        loads: crate::study::load::Loads::new(loads),
         mu_superlubric,
         per_level: a.per_level,
         max_top: a.max_top,
@@ -195,13 +194,6 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         dem_shard,
         dem,
         dem_is_study_protocol,
-        dem_flags: format!(" --model {}", a.dem_model.request().name()),
-        dem_words: match a.dem_model {
-            ModelArg::Reduced => "reduced model `--model reduced` (slider spheres rigid in z; unreachable substrate spheres left out and only the active set integrated, both exact)".into(),
-            ModelArg::Full => "full model `--model full` (slider spheres on their z springs; pruning and the active set, both exact)".into(),
-            ModelArg::FullExplicit => "full model by velocity-Verlet throughout `--model full-explicit` (slider spheres on their z springs; pruning and the active set, both exact)".into(),
-            ModelArg::Auto => "`--model auto` (per run: the full model near coating failure, where stick-slip is expected or beyond the measured stiffness ratio, else rigid-z; the choice is in each run's JSON)".into(),
-        },
         protocol_check: !a.no_protocol_check,
     };
     let scenes = scenes(a)?;

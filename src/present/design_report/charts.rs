@@ -6,8 +6,8 @@ use super::rows::{DemProtocol, DemRow};
 use crate::plot::design::{Chart, Colour, Curve, Style};
 use crate::study::design::trim::CHART_DESIGNS;
 use crate::study::design::{DesignParams, PatternResult};
-use crate::study::rows::label;
-use surrogate::units::{n_to_mn, pa_to_gpa};
+use crate::study::load::{Load, LoadKey};
+use surrogate::units::pa_to_gpa;
 
 /// P_max versus θ, one curve per load (viridis), P_crit dashed. Needs the screen rows: drawn
 /// before the pattern is trimmed.
@@ -18,13 +18,13 @@ pub fn pmax_chart(pr: &PatternResult, p: &DesignParams) -> Chart {
         .iter()
         .enumerate()
         .map(|(k, &w)| {
-            let wm = label(n_to_mn(w));
+            let w = Load::from_n(w);
             Curve {
-                name: format!("W = {wm} mN"),
+                name: format!("W = {} mN", w.mn()),
                 points: pr
                     .screen
                     .iter()
-                    .filter(|r| r.load_mN == wm)
+                    .filter(|r| LoadKey::of_mn(r.load_mN) == w.key())
                     .filter_map(|r| r.p_max_GPa.map(|pm| (r.theta_deg, pm)))
                     .collect(),
                 colour: Colour::Scale(if n > 1 {

@@ -1,7 +1,7 @@
 //! The exact commands that reproduce every row of the design (the report's "Reproduce any row"):
 //! `superlube screen`, `corrugation`, `friction` per evaluated θ and `slide` per DEM run.
 
-use super::rows::DemRow;
+use super::rows::{DemProtocol, DemRow};
 use crate::study::design::{DesignParams, Evaluated, PatternResult};
 use crate::study::rows::label;
 use std::fmt::Write as _;
@@ -57,11 +57,7 @@ pub fn protocol_flags(p: &DesignParams, study: bool, model: dem::ModelRequest) -
     if let Some(dt) = s.dt {
         let _ = write!(f, " --dt-us {}", label(s_to_us(dt)));
     }
-    if model == p.dem.model.request {
-        f += &p.dem_flags;
-    } else {
-        let _ = write!(f, " --model {}", model.name());
-    }
+    let _ = write!(f, " --model {}", model.name());
     f
 }
 
@@ -122,7 +118,12 @@ pub fn friction_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) -> 
 }
 
 /// `superlube slide …` reproducing the DEM run `d` (`study`: the study's protocol).
-pub fn slide_command(pr: &PatternResult, d: &DemRow, study: bool, p: &DesignParams) -> String {
+pub fn slide_command(
+    pr: &PatternResult,
+    d: &DemRow,
+    protocol: DemProtocol,
+    p: &DesignParams,
+) -> String {
     format!(
         "superlube slide {} --theta {} --alpha {} --load-mn {}{}{} --json {}/slide.json --out {}/slide.csv",
         flags(pr),
@@ -132,7 +133,7 @@ pub fn slide_command(pr: &PatternResult, d: &DemRow, study: bool, p: &DesignPara
         line_flag(p),
         protocol_flags(
             p,
-            study,
+            protocol == DemProtocol::Study,
             pr.ranking.get(d.rank.saturating_sub(1)).map_or(p.dem.model.request, |c| {
                 crate::study::design::confirm::dem_model(pr, c, p).request
             })

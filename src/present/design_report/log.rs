@@ -5,7 +5,7 @@
 use crate::runs::progress::Progress;
 use crate::study::design::best::BEST_PATTERNS;
 use crate::study::design::shortlist;
-use crate::study::design::symmetry::SymmetryWords;
+use crate::study::design::symmetry_words::SymmetryWords;
 use crate::study::design::{Event, Observer, PatternResult, Stage, Stop};
 use crate::study::input::Input;
 use crate::study::rows::label;

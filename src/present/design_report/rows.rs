@@ -26,15 +26,7 @@ pub struct ShortlistRow {
     pub evaluated: bool,
 }
 
-/// The protocol of a DEM run of `dem.csv` (`protocol`: `design` or `study`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum DemProtocol {
-    /// The design's confirmation protocol.
-    Design,
-    /// The study's protocol (10 + 10 + 300 µs), the protocol check of a shorter one.
-    Study,
-}
+pub use crate::study::design::confirm::DemProtocol;
 
 /// How a DEM run of `dem.csv` ended (`status`: `ok`, `locked-in` or `failed`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -46,15 +38,6 @@ pub enum DemStatus {
     LockedIn,
     /// Stopped early; the reason is in `error`.
     Failed,
-}
-
-impl std::fmt::Display for DemProtocol {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(match self {
-            DemProtocol::Design => "design",
-            DemProtocol::Study => "study",
-        })
-    }
 }
 
 impl std::fmt::Display for DemStatus {
@@ -172,11 +155,7 @@ pub fn dem_rows(o: &DesignOutcome, p: &DesignParams) -> Vec<DemRow> {
                 theta_offset_deg: e.run.theta_offset_deg,
                 direction_offset_deg: e.run.direction_offset_deg,
                 load_mN: w,
-                protocol: if e.run.study_protocol {
-                    DemProtocol::Study
-                } else {
-                    DemProtocol::Design
-                },
+                protocol: e.run.protocol,
                 status: match (r, &e.outcome.error) {
                     (Some(r), _) if r.locked_in => DemStatus::LockedIn,
                     (Some(_), _) => DemStatus::Ok,

@@ -11,6 +11,7 @@ use super::words::{fmt_g, opt};
 use crate::study::design::answer::{Answer, Check};
 use crate::study::design::rank::Candidate;
 use crate::study::design::{DesignOutcome, DesignParams, PatternResult};
+use crate::study::load::LoadKey;
 use crate::study::rows::label;
 use crate::study::verdict::Verdict;
 use serde::Serialize;
@@ -186,7 +187,10 @@ fn corners_cell(runs: &[&DemRow]) -> String {
     loads
         .iter()
         .map(|&w| {
-            let at: Vec<&&DemRow> = runs.iter().filter(|d| d.load_mN == w).collect();
+            let at: Vec<&&DemRow> = runs
+                .iter()
+                .filter(|d| LoadKey::of_mn(d.load_mN) == LoadKey::of_mn(w))
+                .collect();
             let ok = at
                 .iter()
                 .filter(|d| d.superlubric_dem == Some(true))

@@ -7,6 +7,7 @@ use crate::study::design::answer::{Answer, Check};
 use crate::study::design::best::BEST_PATTERNS;
 use crate::study::design::rank::Candidate;
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams, PatternResult};
+use crate::study::load::LoadKey;
 use crate::study::rows::label;
 use crate::study::verdict::{band_words, Verdict};
 use std::fmt::Write as _;
@@ -201,7 +202,10 @@ pub fn answer_line(
         .collect();
     if !corners.is_empty() {
         let at = |w: f64| {
-            let c: Vec<&&DemRow> = corners.iter().filter(|d| d.load_mN == w).collect();
+            let c: Vec<&&DemRow> = corners
+                .iter()
+                .filter(|d| LoadKey::of_mn(d.load_mN) == LoadKey::of_mn(w))
+                .collect();
             let ok = c.iter().filter(|d| d.superlubric_dem == Some(true)).count();
             format!("{ok} of {} superlubric at {w} mN", c.len())
         };

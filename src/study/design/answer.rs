@@ -19,6 +19,7 @@
 //! (`--no-dem`), the surrogate's best. Its load is the estimate's `superlubric_to` (the DEM
 //! checks it at the confirmation loads up to that load and at that load itself, not in between).
 
+use super::confirm::DemProtocol;
 use super::rank::Candidate;
 use super::{tolerance_box, DemEntry, DesignParams, PatternResult};
 use crate::study::recipe::Outside;
@@ -75,7 +76,7 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
         .iter()
         .filter(|e| {
             e.run.pattern == pr.scene.name
-                && !e.run.study_protocol
+                && e.run.protocol == DemProtocol::Design
                 && !corner(e)
                 && e.run.theta_deg == c.theta_deg
                 && e.run.alpha_deg == c.alpha_deg
@@ -96,7 +97,7 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
             .iter()
             .filter(|e| {
                 e.run.pattern == pr.scene.name
-                    && !e.run.study_protocol
+                    && e.run.protocol == DemProtocol::Design
                     && corner(e)
                     && e.run.rank == rank
                     && e.run.theta_deg

@@ -8,6 +8,7 @@
 //! checkpoint `slide.ckpt`; a failing run does not stop the others. Progress: one stage
 //! `confirm (DEM)`.
 
+pub use super::dem_entry::{ConfirmEntry, DemEntry, DemProtocol};
 pub use crate::study::batch::{
     job_inputs, run_batch, Failure, SlideJob, SlideOutcome, SlideResult,
 };
@@ -15,9 +16,9 @@ pub use crate::study::batch::{
 use super::observer::{Event, Observer};
 use super::rank::{self, Candidate};
 use super::store::Store;
-use super::{answer, tag, tolerance_box, DemEntry, DesignParams, PatternResult};
+use super::{answer, tag, tolerance_box, DesignParams, PatternResult};
 use crate::runs::meta::{scene_file, Inputs};
-use crate::study::load::Load;
+use crate::study::load::{Load, LoadKey};
 use crate::study::record;
 use crate::study::rows::label;
 use anyhow::Result;
@@ -25,18 +26,18 @@ use serde_json::json;
 use surrogate::solver::Solver;
 use surrogate::units::{deg_to_rad, n_to_mn, rad_to_deg};
 
-/// The DEM parameters of one confirmation run.
+/// The DEM parameters of one confirmation run at α (degrees) and `load` (N) with `protocol`.
 pub fn dem_params(
     p: &DesignParams,
     alpha_deg: f64,
     load: f64,
-    study: bool,
+    protocol: DemProtocol,
 ) -> crate::study::dem_run::DemParams {
     let mut d = p.dem.clone();
     d.sim.load = load;
     d.alpha = deg_to_rad(alpha_deg);
     d.line = p.line;
-    if study {
+    if protocol == DemProtocol::Study {
         let s = dem::SimParams::default();
         d.sim.equilibrate_time = s.equilibrate_time;
         d.sim.relax_time = s.relax_time;
@@ -57,9 +58,9 @@ pub fn design_dem_params(
     p: &DesignParams,
     alpha_deg: f64,
     load: f64,
-    study: bool,
+    protocol: DemProtocol,
 ) -> crate::study::dem_run::DemParams {
-    let mut d = dem_params(p, alpha_deg, load, study);
+    let mut d = dem_params(p, alpha_deg, load, protocol);
     d.model = dem_model(pr, c, p);
     d
 }
@@ -77,14 +78,23 @@ pub fn dem_model(
     m
 }
 
-/// The run directory name of a confirmation run.
-pub fn run_name(pattern: &str, theta_deg: f64, alpha_deg: f64, load: f64, study: bool) -> String {
+/// The run directory name of a confirmation run (θ, α in degrees, `load` in N).
+pub fn run_name(
+    pattern: &str,
+    theta_deg: f64,
+    alpha_deg: f64,
+    load: f64,
+    protocol: DemProtocol,
+) -> String {
     format!(
         "{pattern}_theta{}_alpha{}_W{}{}",
         tag(theta_deg),
         tag(alpha_deg),
         tag(n_to_mn(load)),
-        if study { "_study-protocol" } else { "" }
+        match protocol {
+            DemProtocol::Study => "_study-protocol",
+            DemProtocol::Design => "",
+        }
     )
 }
 
@@ -128,7 +138,7 @@ pub(super) fn confirm_estimates(
                 let row = match store.load_json::<crate::study::rows::FrictionRow>(&rel, &inputs)? {
                     Some(r) => r,
                     None => {
-                        let s = super::solver_of(&mut solver, ds)?;
+                        let s = super::limit::solver_of(&mut solver, ds)?;
                         let line = crate::study::corrugation::contact_line(
                             &ds.scene.with_theta(theta),
                             p.line,
@@ -180,27 +190,6 @@ pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64
     w
 }
 
-/// One DEM run of the confirmation: which design it checks, where and how.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ConfirmEntry {
-    /// Pattern name.
-    pub pattern: String,
-    /// Rank of the design within its pattern (1 = best).
-    pub rank: usize,
-    /// θ of the run (degrees).
-    pub theta_deg: f64,
-    /// α of the run (degrees from the contact line).
-    pub alpha_deg: f64,
-    /// Load W (N).
-    pub load: f64,
-    /// The study's protocol (the protocol check) rather than the design's.
-    pub study_protocol: bool,
-    /// θ offset (degrees) from the design for a tolerance-corner run (0: the design itself).
-    pub theta_offset_deg: f64,
-    /// Pull-direction offset (degrees, substrate frame) for a tolerance-corner run.
-    pub direction_offset_deg: f64,
-}
-
 /// The confirmation runs (top `confirm` designs × confirmation loads, and the corners of each
 /// one's tolerance box, `corner_jobs`), with what each one is; the runs of borderline designs
 /// and of recipes outside the validated range ([`answer::outside_range`]: the DEM decides
@@ -220,9 +209,15 @@ pub fn confirm_jobs(
                 all.push((
                     !borderline,
                     SlideJob {
-                        name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, false),
+                        name: run_name(
+                            &pr.scene.name,
+                            c.theta_deg,
+                            c.alpha_deg,
+                            w,
+                            DemProtocol::Design,
+                        ),
                         scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
-                        params: design_dem_params(pr, c, p, c.alpha_deg, w, false),
+                        params: design_dem_params(pr, c, p, c.alpha_deg, w, DemProtocol::Design),
                     },
                     ConfirmEntry {
                         pattern: pr.scene.name.clone(),
@@ -230,7 +225,7 @@ pub fn confirm_jobs(
                         theta_deg: c.theta_deg,
                         alpha_deg: c.alpha_deg,
                         load: w,
-                        study_protocol: false,
+                        protocol: DemProtocol::Design,
                         theta_offset_deg: 0.0,
                         direction_offset_deg: 0.0,
                     },
@@ -260,7 +255,7 @@ pub(super) fn corner_jobs(
     if c.score.superlubric_to_mn <= 0.0 {
         return out;
     }
-    let Some(k) = Load::position(&p.loads, c.score.superlubric_to_mn) else {
+    let Some(k) = p.loads.position(LoadKey::of_mn(c.score.superlubric_to_mn)) else {
         return out;
     };
     let loads = &p.loads[k..(k + 2).min(p.loads.len())];
@@ -273,9 +268,9 @@ pub(super) fn corner_jobs(
             let alpha = label(c.direction_deg + dd - rad_to_deg(line.angle));
             out.push((
                 SlideJob {
-                    name: run_name(&pr.scene.name, theta, alpha, w, false),
+                    name: run_name(&pr.scene.name, theta, alpha, w, DemProtocol::Design),
                     scene,
-                    params: design_dem_params(pr, c, p, alpha, w, false),
+                    params: design_dem_params(pr, c, p, alpha, w, DemProtocol::Design),
                 },
                 ConfirmEntry {
                     pattern: pr.scene.name.clone(),
@@ -283,7 +278,7 @@ pub(super) fn corner_jobs(
                     theta_deg: theta,
                     alpha_deg: alpha,
                     load: w,
-                    study_protocol: false,
+                    protocol: DemProtocol::Design,
                     theta_offset_deg: dt,
                     direction_offset_deg: dd,
                 },
@@ -330,9 +325,15 @@ pub(super) fn confirm_stage(
         {
             let c = &pr.ranking[i];
             let job = SlideJob {
-                name: run_name(&pr.scene.name, c.theta_deg, c.alpha_deg, w, true),
+                name: run_name(
+                    &pr.scene.name,
+                    c.theta_deg,
+                    c.alpha_deg,
+                    w,
+                    DemProtocol::Study,
+                ),
                 scene: pr.scene.scene.with_theta(deg_to_rad(c.theta_deg)),
-                params: design_dem_params(pr, c, p, c.alpha_deg, w, true),
+                params: design_dem_params(pr, c, p, c.alpha_deg, w, DemProtocol::Study),
             };
             obs.event(&Event::ProtocolCheck {
                 pattern: &pr.scene.name,
@@ -347,7 +348,7 @@ pub(super) fn confirm_stage(
                 theta_deg: c.theta_deg,
                 alpha_deg: c.alpha_deg,
                 load: w,
-                study_protocol: true,
+                protocol: DemProtocol::Study,
                 theta_offset_deg: 0.0,
                 direction_offset_deg: 0.0,
             });

@@ -1,7 +1,7 @@
 //! The θ list of a pattern: the symmetry cut of `--theta` to the pair's domain, the default
 //! list over a whole domain, and the notes that say what was (not) screened.
 
-use super::symmetry::{Domain, PairSymmetry, SymmetryWords};
+use super::symmetry_words::{Domain, PairSymmetry, SymmetryWords};
 use super::{DesignParams, DesignScene};
 use crate::study::input::Input;
 use anyhow::{bail, Result};
@@ -45,8 +45,8 @@ pub fn default_domain(sym: &PairSymmetry, p: &DesignParams) -> Option<(Vec<f64>,
     };
     let text = format!(
         "{}:{}:{}",
-        super::symmetry::fmt(lo),
-        super::symmetry::fmt(hi),
+        super::symmetry_words::fmt(lo),
+        super::symmetry_words::fmt(hi),
         step
     );
     let mut v = crate::study::range::parse_list_or_range(&text, "θ").ok()?;
@@ -79,8 +79,8 @@ pub fn theta_note(sym: &PairSymmetry, thetas_deg: &[f64], p: &DesignParams) -> O
         } = sym.domain();
         let text = format!(
             "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give {} over the whole domain{})",
-            super::symmetry::fmt(lo),
-            super::symmetry::fmt(hi),
+            super::symmetry_words::fmt(lo),
+            super::symmetry_words::fmt(hi),
             if closed { "]" } else { ")" },
             sym.gaps_text(&gaps),
             Input::Theta,
@@ -156,15 +156,15 @@ pub fn cut(ds: &DesignScene, p: &DesignParams) -> Result<(Vec<f64>, PairSymmetry
             "{}: none of `{}` lies in the fundamental domain [{}°, {}°{} of {} ({}); every orientation is equivalent to one in it (e.g. {}° ≡ {}°): give θ in [{}, {}], or pass {}",
             Input::Theta,
             p.theta_text,
-            super::symmetry::fmt(lo),
-            super::symmetry::fmt(hi),
+            super::symmetry_words::fmt(lo),
+            super::symmetry_words::fmt(hi),
             if closed { "]" } else { ")" },
             ds.name,
             sym.describe(),
-            super::symmetry::fmt(t),
-            super::symmetry::fmt(sym.fold(t)),
-            super::symmetry::fmt(lo),
-            super::symmetry::fmt(hi),
+            super::symmetry_words::fmt(t),
+            super::symmetry_words::fmt(sym.fold(t)),
+            super::symmetry_words::fmt(lo),
+            super::symmetry_words::fmt(hi),
             Input::NoSymmetryCut
         );
     }

@@ -2,89 +2,96 @@
 //!
 //! For one or more pattern pairs, a range of orientations θ and a list of loads, the design
 //! answers: *which orientation θ and pulling direction α keep friction ultra-low without coating
-//! failure, up to which load, and how sure are we?* [`design`] runs the stages in order, in one
-//! function: [`pipeline::Pipeline::run`] (each stage a named [`Stage`], told to the one
-//! [`Observer`] the command passes in, with what it finds as typed [`Event`]s: no wording here):
+//! failure, up to which load, and how sure are we?* [`design`] runs the stages in order:
+//! [`pipeline::Pipeline::run`], each stage a type in its own file with a `run` that takes the
+//! previous stage's output, each entered as a named [`Stage`] and telling the one [`Observer`]
+//! the command passes in what it finds as typed [`Event`]s (no wording here):
 //!
-//! 1. **Symmetry cut** ([`symmetry`]): θ is cut to the pair's fundamental domain (square-tri
-//!    0–15°, tri-tri 0–30°); the α scan covers one α period.
-//! 2. **Screen** every θ × W ([`crate::study::screen`]): contacts, P_max, coating failure.
-//! 3. **Shortlist** ([`shortlist`]): per θ the load `W_c` up to which the coating stays intact;
-//!    every orientation that survives the highest load, plus the best few of each lower load
-//!    level, evaluated level by level from the top until no lower level can reach the best
-//!    superlubric load found.
-//! 4. **α scan, then friction estimate** per shortlisted θ ([`scan::scan_alpha`],
-//!    [`scan::estimate`]): contact line, corrugation versus α (coarse grid, then refined near
-//!    the minimum), the friction estimate μ_est (`surrogate::friction`) along the best α's at
-//!    every load.
-//! 5. **Robust search and ranking** ([`rank`]): score = the robust limit, the highest load up to which
-//!    superlubric (coating intact on the sliding path AND μ_est < 0.02 at every load up to it)
-//!    at every sample of the tolerance box ([`robust`]), then the θ window, the direction
-//!    window, μ_est, contacts.
+//! 1. **Screen** ([`screen::ScreenStage`]): θ cut to the pair's fundamental domain
+//!    ([`symmetry_words`]; square-tri 0–15°, tri-tri 0–30°; the α scan covers one α period),
+//!    then every θ × W screened ([`crate::study::screen`]): contacts, P_max, coating failure.
+//! 2. **Shortlist** ([`shortlist::ShortlistStage`]): per θ the load `W_c` up to which the
+//!    coating stays intact; every orientation that survives the highest load, plus the best few
+//!    of each lower load level. The levels are taken from the top by a [`walk::LevelWalk`]
+//!    until no lower level can reach the best superlubric load found.
+//! 3. **α scan** ([`alpha_scan`]) and 4. **friction estimate** ([`estimate`]) of a level's
+//!    orientations ([`evaluate::EvaluateStage`]): contact line, corrugation versus α (coarse
+//!    grid, then refined near the minimum), the friction estimate μ_est (`surrogate::friction`)
+//!    along the best α's at every load.
+//! 5. **Robust search** ([`robust::RobustStage`], with a tolerance): the robust limit, the
+//!    highest load up to which superlubric (coating intact on the sliding path AND μ_est < 0.02
+//!    at every load up to it) at every sample of the tolerance box; the candidates are ranked
+//!    by it, then the θ window, the direction window, μ_est, contacts ([`rank`]).
 //! 6. **DEM confirmation** ([`confirm`]): the top `confirm` designs of each pattern at the
 //!    confirmation loads and at the corners of their tolerance boxes (borderline designs
 //!    first), independent `slide` runs side by side, one thread each (plus, with a
 //!    protocol shorter than the study's, the design the report recommends once with the study's
 //!    protocol to measure the difference there: [`protocol_check_design`]).
-//! 7. **Report data** ([`answer`]): each pattern's answer and tolerance map. [`design`] hands each pattern's result to the command's hook as soon as the
-//!    pattern is complete (its own CSVs and PNGs are written then), keeps only what the later
-//!    stages and the report need of it ([`PatternResult::trim`]: memory flat in the number of
-//!    patterns) and returns the [`DesignOutcome`]; the command then writes `report.md` (the
-//!    answer first) and the global CSVs with sidecars (`crate::present::design_report`, a
-//!    layer above this one).
+//! 7. **Report data** ([`report_data::ReportDataStage`]): each pattern's answer ([`answer`]),
+//!    the tolerance maps around the answers and, with recipes, the P_crit sweep ([`p_crit`]).
+//!
+//! [`design`] hands each pattern's result to the command's hook as soon as the pattern is
+//! complete (its own CSVs and PNGs are written then), keeps only what the later stages and the
+//! report need of it ([`PatternResult::trim`]: memory flat in the number of patterns) and
+//! returns the [`DesignOutcome`]; the command then writes `report.md` (the answer first) and
+//! the global CSVs with sidecars (`crate::present::design_report`, a layer above this one).
 //!
 //! Every stage is stored under the output directory with the inputs that made it
-//! ([`store`]): a re-run with the same `--out-dir` reuses every finished stage and DEM run, and one
-//! with other inputs is refused with the differences named.
+//! ([`store`]; the records: `inputs.rs`): a re-run with the same `--out-dir` reuses every
+//! finished stage and DEM run, and one with other inputs is refused with the differences
+//! named. Adding a stage: a file with its type (its knobs, a `run` from the previous stage's
+//! output to its own), a [`Stage`] variant, its events in [`observer`] (worded by
+//! `crate::present::design_report::log`), one line in [`pipeline::Pipeline`].
 
+pub mod alpha_scan;
 pub mod answer;
 pub mod best;
 pub mod confirm;
+mod ctx;
+mod dem_entry;
 mod domain;
+pub mod estimate;
+pub mod evaluate;
+mod inputs;
+mod limit;
 pub mod observer;
 mod outcome;
 pub mod p_crit;
 pub mod params;
+mod pattern_result;
 pub mod pipeline;
 pub mod rank;
 pub mod recipe_answer;
+pub mod report_data;
 pub mod robust;
-pub mod scan;
+pub mod screen;
 pub mod shortlist;
-mod stages;
 pub mod store;
-pub mod symmetry;
+pub mod symmetry_words;
 pub mod trim;
+pub mod walk;
 
+pub use dem_entry::DemEntry;
 pub use domain::{
     cut, default_domain, line_note, theta_note, ThetaNote, THETA_STEP_DEG, WIDE_DOMAIN_DEG,
     WIDE_THETA_STEP_DEG,
 };
+pub use inputs::{inputs, screen_params};
+pub use limit::tolerance_box;
 pub use observer::{Event, Observer, Stage};
-pub use outcome::{
-    AnswerMap, DemEntry, DesignOutcome, EvalStage, Evaluated, PatternResult, Stop, Timing,
-};
-use stages::limit_record;
-pub use stages::{answer_map, inputs, screen_params, tolerance_box};
+pub use outcome::DesignOutcome;
+pub use pattern_result::{AnswerMap, EvalStage, Evaluated, PatternResult};
+pub use pipeline::PatternHook;
+pub use store::tag;
+pub use store::Timing;
+pub use walk::Stop;
 
 pub use params::{DesignParams, DesignScene};
 
-use super::rows::label;
 use anyhow::Result;
 pub use confirm::{dem_params, loads_to_confirm, protocol_check_design, run_name, ProtocolCheck};
 use pipeline::Pipeline;
 use store::Store;
-use surrogate::solver::Solver;
-
-/// File-name form of a number (`0.35`, `-15`).
-pub fn tag(v: f64) -> String {
-    format!("{}", label(v))
-}
-
-/// What [`design`] calls with each pattern's complete result (its friction estimates for the
-/// DEM included), in pattern order, before trimming it: the command writes the pattern's own
-/// files there. Not called in a DEM shard (`--shard`: no outputs).
-pub type PatternHook<'a> = &'a dyn Fn(&PatternResult) -> Result<()>;
 
 /// Runs the design (see the module docs) into `store`, telling `obs` each stage entered and
 /// what it finds ([`observer`]); hands each pattern to `on_pattern` when complete, then trims
@@ -98,17 +105,6 @@ pub fn design(
     on_pattern: PatternHook,
 ) -> Result<DesignOutcome> {
     Pipeline::new(p, store, obs).run(scenes, on_pattern)
-}
-
-/// The pattern's solver (slider at θ = 0, each query rotates it), built on first use in `slot`.
-/// Cost: one scene build and pair-search setup, once.
-pub(super) fn solver_of<'a>(slot: &'a mut Option<Solver>, ds: &DesignScene) -> Result<&'a Solver> {
-    if slot.is_none() {
-        let mut sc = ds.scene.clone();
-        sc.slider.theta = 0.0;
-        *slot = Some(Solver::new(&sc)?);
-    }
-    slot.as_ref().ok_or_else(|| anyhow::anyhow!("no solver"))
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@
 
 use super::domain::ThetaNote;
 use super::rank::Candidate;
-use super::symmetry::PairSymmetry;
+use super::symmetry_words::PairSymmetry;
 use super::Stop;
 use crate::runs::progress::{Progress, Silent};
 use std::path::Path;
@@ -15,21 +15,21 @@ use std::path::Path;
 /// the last two once.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stage {
-    /// The symmetry cut and the screen of every θ × W (`stages.rs`).
+    /// The symmetry cut and the screen of every θ × W ([`super::screen`]).
     Screen,
     /// Per θ the coating-intact load and the levels ([`super::shortlist`]).
     Shortlist,
     /// The contact line and the corrugation versus α of a level's orientations
-    /// ([`super::scan::scan_alpha`]).
+    /// ([`super::alpha_scan`]).
     AlphaScan,
-    /// The friction estimate along the best α's ([`super::scan::estimate`]).
+    /// The friction estimate along the best α's ([`super::estimate`]).
     Estimate,
     /// The robust limits over the tolerance box ([`super::robust`]); entered only with a
     /// tolerance.
     RobustSearch,
     /// The DEM runs of the top designs ([`super::confirm`]); entered only with the DEM.
     DemConfirmation,
-    /// The answers and the tolerance maps the report is built from ([`super::answer`]).
+    /// The answers and the tolerance maps the report is built from ([`super::report_data`]).
     ReportData,
 }
 

@@ -10,20 +10,19 @@
 //! Cost: one robust search per other value (about as much as the design's own search of that
 //! design: seconds to tens of seconds on the study scenes, docs/validation/tolerance-cost.md).
 
+use super::limit::{limit_record, seed_solvers, tolerance_box};
+use super::params::{DesignParams, DesignScene};
 use super::rank::Candidate;
-use super::stages::{limit_record, seed_solvers};
 use super::store::Store;
-use super::{tolerance_box, DesignParams, DesignScene};
 use crate::runs::meta::{scene_file, Inputs};
-use crate::study::load::Load;
-use crate::study::rows::label;
+use crate::study::load::LoadKey;
 use crate::study::tolerance::{placement_intact, rows_upto, superlubric_count, LimitParams};
 use crate::study::tolerance::{RobustSearch, ToleranceBox};
 use crate::study::verdict::Verdict;
 use anyhow::Result;
 use serde::{Deserialize, Serialize};
 use serde_json::json;
-use surrogate::units::{deg_to_rad, gpa_to_pa, n_to_mn, pa_to_gpa};
+use surrogate::units::{deg_to_rad, gpa_to_pa, pa_to_gpa};
 
 /// The coating strengths (GPa) of the sweep: the study's 4 GPa and ±10 %.
 pub const P_CRIT_SWEEP_GPA: [f64; 3] = [3.6, 4.0, 4.4];
@@ -107,13 +106,11 @@ pub fn p_crit_sweep(
     if let Some(s) = store.load_json::<PCritSweep>(&rel, &inputs)? {
         return Ok(s);
     }
-    let limit = LimitParams {
-        loads: p.loads.clone(),
-        mu_superlubric: p.mu_superlubric,
-        line: p.line,
-        friction: p.friction,
-    };
-    let guess = Load::position(&p.loads, c.score.superlubric_to_mn).map_or(0, |k| k + 1);
+    let limit = p.limit();
+    let guess = p
+        .loads
+        .position(LoadKey::of_mn(c.score.superlubric_to_mn))
+        .map_or(0, |k| k + 1);
     let mut limits = Vec::new();
     for gpa in P_CRIT_SWEEP_GPA {
         let p_crit = gpa_to_pa(gpa);
@@ -124,12 +121,7 @@ pub fn p_crit_sweep(
             let mut d = ds.clone();
             d.scene.coating.p_crit = p_crit;
             let (n, v) = robust_limit(&d, c.theta_deg, c.direction_deg, guess, &bx, p, &limit)?;
-            let mn = if n == 0 {
-                0.0
-            } else {
-                label(n_to_mn(p.loads[n - 1]))
-            };
-            (mn, v)
+            (p.loads.limit_mn(n), v)
         };
         limits.push(PCritLimit {
             p_crit,

@@ -1,6 +1,7 @@
 //! [`DesignParams`]: every knob of `superlube design`.
 
 use crate::study::dem_run::DemParams;
+use crate::study::load::Loads;
 use surrogate::friction::FrictionParams;
 
 /// One pattern pair of a design: its name (the pattern, or a scene file's stem; used in file
@@ -36,10 +37,10 @@ pub struct DesignParams {
     /// domain it does not span is screened over its whole domain
     /// ([`super::default_domain`]).
     pub theta_default: bool,
-    /// Cut θ to the pattern's fundamental domain ([`super::symmetry`]).
+    /// Cut θ to the pattern's fundamental domain ([`super::symmetry_words`]).
     pub symmetry_cut: bool,
-    /// Normal loads W (N), strictly increasing.
-    pub loads: Vec<f64>,
+    /// Normal loads W (N), strictly increasing: the load ladder of every stage.
+    pub loads: Loads,
     /// Friction coefficient below which a design counts as superlubric (study: 0.02).
     pub mu_superlubric: f64,
     /// Orientations kept per lower load level of the shortlist ([`super::shortlist`]).
@@ -91,11 +92,6 @@ pub struct DesignParams {
     pub dem: DemParams,
     /// The study's protocol (10 + 10 + 300 µs) is used; otherwise the report says it is shorter.
     pub dem_is_study_protocol: bool,
-    /// `superlube slide` flags choosing the DEM model of the runs (for reproduction commands),
-    /// e.g. ` --rigid-z --prune`.
-    pub dem_flags: String,
-    /// The DEM model of the runs in words (for the report).
-    pub dem_words: String,
     /// Also run the study protocol on the best design at the middle confirmation load, to
     /// measure the shorter protocol's friction difference (only when the protocol is shorter).
     pub protocol_check: bool,

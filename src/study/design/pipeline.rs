@@ -1,36 +1,46 @@
-//! The design pipeline, stage by stage in one place: [`Pipeline::run`] takes the patterns through
-//! [`Stage::Screen`] → [`Stage::Shortlist`] → [`Stage::AlphaScan`] → [`Stage::Estimate`] →
-//! [`Stage::RobustSearch`] (per pattern, the middle three once per shortlist level) →
-//! [`Stage::DemConfirmation`] → [`Stage::ReportData`], telling one [`Observer`] each stage it
-//! enters and what it finds (no wording here).
+//! The design pipeline: [`Pipeline::run`] takes the patterns through the stages in order,
+//! each a type in its own file with a `run` that takes the previous stage's output —
+//! [`ScreenStage`] ([`Stage::Screen`]) → [`ShortlistStage`] ([`Stage::Shortlist`]) → per
+//! shortlist level as the [`LevelWalk`] takes them, [`EvaluateStage`] ([`Stage::AlphaScan`],
+//! [`Stage::Estimate`]) and [`RobustStage`] ([`Stage::RobustSearch`]) → the DEM confirmation
+//! ([`super::confirm`], [`Stage::DemConfirmation`]) → the report data ([`ReportDataStage`],
+//! [`Stage::ReportData`]) — telling one [`Observer`] each stage it enters and what it finds
+//! (no wording here).
 
 use super::best;
 use super::confirm::{confirm_estimates, confirm_jobs, confirm_stage, run_batch, SlideOutcome};
+use super::ctx::Ctx;
+use super::evaluate::{EvaluateStage, LevelInput};
+use super::inputs::inputs;
+use super::limit::{seed_solvers, solver_of, tolerance_box};
 use super::observer::{Event, Observer, Stage};
+use super::outcome::DesignOutcome;
+use super::params::{DesignParams, DesignScene};
+use super::pattern_result::{Evaluated, PatternResult};
 use super::rank::{self, Candidate};
-use super::robust;
-use super::scan;
-use super::shortlist::{self, Level};
-use super::stages::{eval_level, screen_stage, seed_solvers};
+use super::report_data::ReportDataStage;
+use super::robust::{self, RobustParams, RobustStage};
+use super::screen::ScreenStage;
+use super::shortlist::ShortlistStage;
 use super::store::Store;
-use super::trim;
-use super::{
-    answer, answer_map, cut, inputs, line_note, solver_of, theta_note, tolerance_box,
-    DesignOutcome, DesignParams, DesignScene, Evaluated, PatternHook, PatternResult, Stop,
-};
+use super::walk::{LevelWalk, Next, Walked};
 use crate::study::rows::label;
-use crate::study::tolerance::LimitParams;
 use anyhow::Result;
 use surrogate::solver::Solver;
 use surrogate::units::n_to_mn;
+
+/// What [`super::design`] calls with each pattern's complete result (its friction estimates
+/// for the DEM included), in pattern order, before trimming it: the command writes the
+/// pattern's own files there. Not called in a DEM shard (`--shard`: no outputs).
+pub type PatternHook<'a> = &'a dyn Fn(&PatternResult) -> Result<()>;
 
 /// How [`Pipeline::pattern`] searches the tolerance box.
 #[derive(Debug, Clone, Copy)]
 pub enum Search {
     /// No robust search: the nominal limits only (the first pass of [`Pipeline::order`]).
     Nominal,
-    /// The robust search ([`robust::robust_stage`]) above `floor_mn` (mN; 0: none), until the
-    /// best `keep` designs of the pattern are exact.
+    /// The robust search ([`RobustStage`]) above `floor_mn` (mN; 0: none), until the best
+    /// `keep` designs of the pattern are exact.
     Robust {
         /// The floor (mN; 0: none).
         floor_mn: f64,
@@ -53,34 +63,56 @@ pub struct Order {
 /// The design of a set of patterns under one set of parameters, its stages stored under one
 /// output folder and reported to one observer.
 pub struct Pipeline<'a> {
-    p: &'a DesignParams,
-    store: &'a Store,
-    obs: &'a dyn Observer,
+    ctx: Ctx<'a>,
 }
 
 impl<'a> Pipeline<'a> {
     /// The pipeline of `p`, storing into `store`, telling `obs`.
     pub fn new(p: &'a DesignParams, store: &'a Store, obs: &'a dyn Observer) -> Self {
-        Pipeline { p, store, obs }
+        Pipeline {
+            ctx: Ctx { p, store, obs },
+        }
     }
 
     /// Runs the design (module docs of [`super`]): every pattern's stages in [`Order`], each
-    /// pattern handed to `on_pattern` when complete and then trimmed
-    /// ([`PatternResult::trim`]: memory flat in the number of patterns), then the DEM
-    /// confirmation and the report data.
+    /// pattern handed to `on_pattern` and trimmed when complete, then the DEM confirmation
+    /// and the report data.
     pub fn run(&self, scenes: &[DesignScene], on_pattern: PatternHook) -> Result<DesignOutcome> {
-        let p = self.p;
+        let Ctx { p, store, obs } = self.ctx;
         // every pattern's paths fit on its substrate, checked before any work
         for ds in scenes {
             crate::study::friction::check_every_direction(&ds.scene, &p.friction)
                 .map_err(|e| anyhow::anyhow!("pattern `{}`: {e:#}", ds.name))?;
         }
-        if self.store.claim(&inputs(scenes, p, false))? {
-            self.obs.event(&Event::Reusing {
-                dir: self.store.dir(),
-            });
+        if store.claim(&inputs(scenes, p, false))? {
+            obs.event(&Event::Reusing { dir: store.dir() });
         }
         let order = self.order(scenes)?;
+        let patterns = self.patterns(scenes, &order, on_pattern)?;
+        if !p.no_dem && !p.dem_shard.is_all() {
+            return self.dem_shard(patterns);
+        }
+        let dem = if p.no_dem {
+            Vec::new()
+        } else {
+            obs.stage(Stage::DemConfirmation, "");
+            confirm_stage(&patterns, p, store, obs)?
+        };
+        obs.stage(Stage::ReportData, "");
+        ReportDataStage::new(self.ctx).run(patterns, dem, order.cross)
+    }
+
+    /// Every pattern's stages ([`Pipeline::pattern`]) in `order`, each robust search above the
+    /// floor of the best patterns so far (across many patterns), the pattern's estimates for
+    /// the DEM added; each pattern handed to `on_pattern` when complete and then trimmed
+    /// ([`PatternResult::trim`]: memory flat in the number of patterns). In the order given.
+    fn patterns(
+        &self,
+        scenes: &[DesignScene],
+        order: &Order,
+        on_pattern: PatternHook,
+    ) -> Result<Vec<PatternResult>> {
+        let Ctx { p, store, .. } = self.ctx;
         let mut done: Vec<Option<PatternResult>> = vec![None; scenes.len()];
         let mut best_robust: Vec<f64> = Vec::new();
         for &i in &order.patterns {
@@ -106,27 +138,16 @@ impl<'a> Pipeline<'a> {
                 best_robust.sort_by(|a, b| b.total_cmp(a));
             }
             if !p.no_dem {
-                confirm_estimates(std::slice::from_mut(&mut pr), p, self.store)?;
+                confirm_estimates(std::slice::from_mut(&mut pr), p, store)?;
             }
-            pr.resonance_flagged = trim::resonance_flagged(&pr.ranking);
+            pr.resonance_flagged = rank::resonance_flagged(&pr.ranking);
             if p.dem_shard.is_all() {
                 on_pattern(&pr)?;
             }
             pr.trim(p);
             done[i] = Some(pr);
         }
-        let patterns: Vec<PatternResult> = done.into_iter().flatten().collect();
-        if !p.no_dem && !p.dem_shard.is_all() {
-            return self.dem_shard(patterns);
-        }
-        let dem = if p.no_dem {
-            Vec::new()
-        } else {
-            self.obs.stage(Stage::DemConfirmation, "");
-            confirm_stage(&patterns, p, self.store, self.obs)?
-        };
-        self.obs.stage(Stage::ReportData, "");
-        self.report_data(patterns, dem, order.cross)
+        Ok(done.into_iter().flatten().collect())
     }
 
     /// The order in which [`Pipeline::run`] takes the patterns ([`Order`]).
@@ -141,13 +162,13 @@ impl<'a> Pipeline<'a> {
     /// tolerance 0 (docs/validation/tolerance-cost.md).
     pub fn order(&self, scenes: &[DesignScene]) -> Result<Order> {
         let given: Vec<usize> = (0..scenes.len()).collect();
-        if tolerance_box(self.p).is_point() || scenes.len() <= best::BEST_PATTERNS {
+        if tolerance_box(self.ctx.p).is_point() || scenes.len() <= best::BEST_PATTERNS {
             return Ok(Order {
                 patterns: given,
                 cross: false,
             });
         }
-        self.obs.event(&Event::NominalFirst {
+        self.ctx.obs.event(&Event::NominalFirst {
             patterns: scenes.len(),
         });
         let mut firsts: Vec<(usize, Option<Candidate>)> = Vec::new();
@@ -174,110 +195,55 @@ impl<'a> Pipeline<'a> {
         })
     }
 
-    /// The stages of one pattern, in order: symmetry cut and [`Stage::Screen`],
-    /// [`Stage::Shortlist`], then per shortlist level (from the top, until no lower level can
-    /// beat the best found) [`Stage::AlphaScan`], [`Stage::Estimate`] and, with a tolerance,
-    /// [`Stage::RobustSearch`]; then the ranking.
+    /// The stages of one pattern, in order: [`Stage::Screen`] (with the symmetry cut),
+    /// [`Stage::Shortlist`], then per shortlist level as the [`LevelWalk`] takes them
+    /// [`Stage::AlphaScan`] and [`Stage::Estimate`] ([`EvaluateStage`]) and, with a tolerance,
+    /// [`Stage::RobustSearch`] ([`RobustStage`]); then the ranking.
     pub fn pattern(&self, ds: &DesignScene, search: Search) -> Result<PatternResult> {
-        let (p, obs) = (self.p, self.obs);
-        let name = ds.name.as_str();
-        // 1. symmetry cut and screen
-        obs.stage(Stage::Screen, name);
-        let (thetas_deg, sym) = cut(ds, p)?;
-        let note = theta_note(&sym, &thetas_deg, p);
-        obs.event(&Event::Symmetry {
-            pattern: name,
-            sym: &sym,
-            screened: thetas_deg.len(),
-            given: p.thetas_deg.len(),
-            cut: p.symmetry_cut,
-            note: note.as_ref(),
-        });
-        if let Some(n) = line_note(ds, p) {
-            obs.event(&Event::LineNote {
-                pattern: name,
-                note: &n,
-            });
-        }
-        if p.symmetry_cut
-            && (ds.scene.substrate.sigma_h > 0.0 || ds.scene.slider.offset != [0.0; 2])
-        {
-            obs.event(&Event::ApproximateCut {
-                pattern: name,
-                offset: ds.scene.slider.offset != [0.0; 2],
-            });
-        }
-        let (screen_rows, screen_wall_s) = screen_stage(ds, &thetas_deg, p, self.store, obs)?;
-        // 2. shortlist
-        obs.stage(Stage::Shortlist, name);
-        let orientations = shortlist::orientations(&screen_rows, &p.loads, ds.scene.coating.p_crit);
-        let levels = shortlist::levels(&orientations, &p.loads, p.per_level, p.max_top);
-        if levels.is_empty() {
-            obs.event(&Event::NoIntactOrientation { pattern: name });
-        }
-        // 3–5. level by level: α scan, estimate, robust search
+        let p = self.ctx.p;
+        let screened = ScreenStage::new(self.ctx).run(ds)?;
+        let short = ShortlistStage::new(self.ctx).run(ds, &screened);
         let bx = tolerance_box(p);
-        let (robust, floor_mn, keep) = match search {
-            Search::Nominal => (false, 0.0, 0),
-            Search::Robust { floor_mn, keep } => (!bx.is_point(), floor_mn, keep),
+        let robust = match search {
+            Search::Nominal => None,
+            Search::Robust { floor_mn, keep } => {
+                (!bx.is_point()).then_some(RobustParams { floor_mn, keep })
+            }
         };
-        let limit = LimitParams {
-            loads: p.loads.clone(),
-            mu_superlubric: p.mu_superlubric,
-            line: p.line,
-            friction: p.friction,
+        let floor_mn = match search {
+            Search::Nominal => 0.0,
+            Search::Robust { floor_mn, .. } => floor_mn,
         };
-        let solvers: Vec<Solver> = if robust {
-            seed_solvers(ds, p, None)?
-        } else {
-            Vec::new()
+        let limit = p.limit();
+        let solvers: Vec<Solver> = match robust {
+            Some(_) => seed_solvers(ds, p, None)?,
+            None => Vec::new(),
         };
-        let mut searches = robust::Searches::new(ds, p, &solvers, &limit, self.store)?;
+        let mut searches = robust::Searches::new(ds, p, &solvers, &limit, self.ctx.store)?;
         let mut solver: Option<Solver> = None;
-        let need = p.confirm.max(3);
+        let mut walk = LevelWalk::new(p.confirm.max(3), floor_mn, robust.is_some());
         let mut evaluated: Vec<Evaluated> = Vec::new();
         let mut ranking: Vec<Candidate> = Vec::new();
-        let mut best = 0.0f64; // best superlubric load so far (mN)
-        let mut levels_evaluated = 0;
-        let mut levels_skipped: Vec<usize> = Vec::new();
-        let mut stop = Stop::EveryLevel;
-        for (li, level) in levels.iter().enumerate() {
+        for (li, level) in short.levels.iter().enumerate() {
+            let reach = || {
+                let s = solver_of(&mut solver, ds)?;
+                Ok(robust::level_reach(s, level, &bx, p))
+            };
+            match walk.next(li, level.load, &ranking, reach)? {
+                Next::Stop => break,
+                Next::Skip => continue,
+                Next::Evaluate => {}
+            }
             let from = ranking.len();
-            let w_mn = label(n_to_mn(level.load));
-            if w_mn < best && ranking.len() >= need {
-                stop = Stop::Before {
-                    level: level.load,
-                    reach_mn: w_mn,
-                    best_mn: best,
-                };
-                break;
-            }
-            // with a floor (many patterns): a level whose orientations cannot exceed it over
-            // the tolerance box is evaluated only where the nominal pass evaluated it
-            // (stored), for the pattern's own ranking, and skipped otherwise
-            if robust && floor_mn > 0.0 {
-                let reach = if w_mn <= floor_mn {
-                    w_mn
-                } else {
-                    robust::level_reach(solver_of(&mut solver, ds)?, level, &bx, p)
-                };
-                let nominal_best = ranking
-                    .iter()
-                    .map(|c| c.score.nominal_to_mn)
-                    .fold(best, f64::max);
-                if reach <= floor_mn && w_mn < nominal_best && ranking.len() >= need {
-                    levels_skipped.push(li);
-                    levels_evaluated += 1;
-                    continue;
-                }
-            }
-            levels_evaluated += 1;
-            // 3–4. α scan and estimate of the level's orientations
-            let s = solver_of(&mut solver, ds)?;
-            let found = self.evaluate(ds, level, &sym, s)?;
-            for e in found {
+            let l = LevelInput {
+                ds,
+                level,
+                sym: &screened.sym,
+                solver: solver_of(&mut solver, ds)?,
+            };
+            for e in EvaluateStage::new(self.ctx).run(&l)? {
                 ranking.extend(rank::candidates(
-                    name,
+                    &ds.name,
                     &e.eval,
                     label(n_to_mn(level.load)),
                     &e.reason,
@@ -286,30 +252,57 @@ impl<'a> Pipeline<'a> {
                 ));
                 evaluated.push(e);
             }
-            // 5. the robust limits of this level's candidates (the stop rule above then
-            // compares each level's bound with the best robust limit: a robust design may sit
-            // lower)
-            if robust && ranking[from..].iter().any(|c| c.score.nominal_to_mn > 0.0) {
-                obs.stage(Stage::RobustSearch, name);
-                robust::robust_stage(
-                    ds,
-                    &mut ranking,
-                    &mut searches,
-                    p,
-                    self.store,
-                    obs,
-                    floor_mn,
-                    keep,
-                )?;
+            // the robust limits of this level's candidates (the walk's stop rule then compares
+            // each level's bound with the best robust limit: a robust design may sit lower)
+            if let Some(rp) =
+                robust.filter(|_| ranking[from..].iter().any(|c| c.score.nominal_to_mn > 0.0))
+            {
+                self.ctx.obs.stage(Stage::RobustSearch, &ds.name);
+                RobustStage::new(self.ctx, rp).run(ds, &mut ranking, &mut searches)?;
             }
-            best = ranking
-                .iter()
-                .filter(|c| c.score.exact)
-                .map(|c| c.score.superlubric_to_mn)
-                .fold(best, f64::max);
+            walk.evaluated(&ranking);
         }
-        // the ranking (by the robust limit with a tolerance: computed level by level above)
         ranking.sort_by(rank::compare);
+        let walked = walk.end();
+        self.tell_ranking(
+            ds,
+            &ranking,
+            &evaluated,
+            &walked,
+            robust.is_some(),
+            floor_mn,
+        );
+        Ok(PatternResult {
+            scene: ds.clone(),
+            sym: screened.sym,
+            thetas_deg: screened.thetas_deg,
+            screen: screened.rows,
+            screen_wall_s: screened.wall_s,
+            orientations: short.orientations,
+            levels: short.levels,
+            levels_evaluated: walked.taken,
+            levels_skipped: walked.skipped,
+            stop: walked.stop,
+            evaluated,
+            ranking,
+            resonance_flagged: 0,
+            robust_floor_mn: floor_mn,
+            trimmed: false,
+        })
+    }
+
+    /// Tells the observer of a pattern's ranking: the designs left at the floor (with a
+    /// robust search) and the best design.
+    fn tell_ranking(
+        &self,
+        ds: &DesignScene,
+        ranking: &[Candidate],
+        evaluated: &[Evaluated],
+        walked: &Walked,
+        robust: bool,
+        floor_mn: f64,
+    ) {
+        let obs = self.ctx.obs;
         let floored = ranking
             .iter()
             .filter(|c| {
@@ -320,100 +313,31 @@ impl<'a> Pipeline<'a> {
             .count();
         if robust && floored > 0 {
             obs.event(&Event::Floored {
-                pattern: name,
+                pattern: &ds.name,
                 designs: floored,
                 floor_mn,
             });
         }
         if let Some(b) = ranking.first() {
             obs.event(&Event::Best {
-                pattern: name,
+                pattern: &ds.name,
                 design: b,
                 evaluated: evaluated.len(),
-                stop: &stop,
-                skipped: levels_skipped.len(),
+                stop: &walked.stop,
+                skipped: walked.skipped.len(),
                 floor_mn,
             });
         }
-        Ok(PatternResult {
-            scene: ds.clone(),
-            sym,
-            thetas_deg,
-            screen: screen_rows,
-            screen_wall_s,
-            orientations,
-            levels,
-            levels_evaluated,
-            levels_skipped,
-            stop,
-            evaluated,
-            ranking,
-            resonance_flagged: 0,
-            robust_floor_mn: floor_mn,
-            trimmed: false,
-        })
-    }
-
-    /// Stages 3 and 4 for one shortlist level: the α scan and the friction estimate of its
-    /// orientations (side by side, each also parallel inside; results in order; stored ones
-    /// reused).
-    fn evaluate(
-        &self,
-        ds: &DesignScene,
-        level: &Level,
-        sym: &super::symmetry::PairSymmetry,
-        solver: &Solver,
-    ) -> Result<Vec<Evaluated>> {
-        let p = self.p;
-        let reason = if level.top {
-            "survives the highest load".to_string()
-        } else {
-            format!("best of level {}", shortlist::mn(level.load))
-        };
-        let per = scan::paths_per_scan(p, sym) + p.alphas_per_theta;
-        self.obs.event(&Event::Level {
-            pattern: &ds.name,
-            load: level.load,
-            picks: level.picks.len(),
-            size: level.size,
-            paths: (level.picks.len() * per) as u64,
-        });
-        let done = eval_level(
-            ds,
-            &level.picks,
-            level.load,
-            sym,
-            p,
-            self.store,
-            solver,
-            per,
-            self.obs,
-        )?;
-        self.obs.progress().finish();
-        Ok(level
-            .picks
-            .iter()
-            .zip(done)
-            .map(|(o, (eval, wall_s, reused))| Evaluated {
-                orientation: o.clone(),
-                reason: reason.clone(),
-                scan_alphas_deg: eval.scan.iter().map(|r| r.alpha_deg).collect(),
-                estimates: eval.friction.len(),
-                eval,
-                wall_s,
-                reused,
-            })
-            .collect())
     }
 
     /// A shard of the DEM stage: its share of the runs, no report (an outcome without DEM
     /// entries or answers).
     fn dem_shard(&self, patterns: Vec<PatternResult>) -> Result<DesignOutcome> {
-        let p = self.p;
+        let p = self.ctx.p;
         let (jobs, _) = confirm_jobs(&patterns, p);
         let part = p.dem_shard.range(jobs.len());
-        let dir = self.store.path("dem");
-        self.obs.event(&Event::DemShard {
+        let dir = self.ctx.store.path("dem");
+        self.ctx.obs.event(&Event::DemShard {
             index: p.dem_shard.index,
             count: p.dem_shard.count,
             start: part.start,
@@ -424,11 +348,11 @@ impl<'a> Pipeline<'a> {
         let dem: Vec<SlideOutcome> = if part.is_empty() {
             Vec::new()
         } else {
-            run_batch(&jobs[part], p.jobs, &dir, self.obs.progress())?
+            run_batch(&jobs[part], p.jobs, &dir, self.ctx.obs.progress())?
         };
         let failed = dem.iter().filter(|o| o.error.is_some()).count();
         if failed > 0 {
-            self.obs.event(&Event::DemShardFailed { failed });
+            self.ctx.obs.event(&Event::DemShardFailed { failed });
         }
         Ok(DesignOutcome {
             patterns,
@@ -438,54 +362,5 @@ impl<'a> Pipeline<'a> {
             maps: Vec::new(),
             p_crit: None,
         })
-    }
-
-    /// The report data: each pattern's answer (its ranking checked against the DEM) and the
-    /// tolerance maps (every pattern's answer, or across many patterns the best patterns'
-    /// only).
-    fn report_data(
-        &self,
-        patterns: Vec<PatternResult>,
-        dem: Vec<super::DemEntry>,
-        cross: bool,
-    ) -> Result<DesignOutcome> {
-        let p = self.p;
-        let answers = patterns
-            .iter()
-            .map(|pr| answer::answer(pr, &dem, !p.no_dem, p))
-            .collect();
-        let mut o = DesignOutcome {
-            patterns,
-            dem,
-            dem_ran: !p.no_dem,
-            answers,
-            maps: Vec::new(),
-            p_crit: None,
-        };
-        let mapped = best::best_order(&o, best::BEST_PATTERNS);
-        for (i, (pr, a)) in o.patterns.iter().zip(&o.answers).enumerate() {
-            let c = a.index.and_then(|i| pr.ranking.get(i));
-            o.maps.push(match c {
-                Some(c)
-                    if !tolerance_box(p).is_point()
-                        && c.score.nominal_to_mn > 0.0
-                        && (!cross || mapped.contains(&i)) =>
-                {
-                    Some(answer_map(&pr.scene, c, p, self.store, self.obs)?)
-                }
-                _ => None,
-            });
-        }
-        // the best named recipe's limit against the coating's strength
-        let decisions = super::recipe_answer::decisions(&o);
-        if let Some(d) = decisions.iter().find(|d| d.naming.nameable()) {
-            let pr = &o.patterns[d.pattern];
-            let c = &pr.ranking[d.design];
-            self.obs.event(&Event::PCritSweep {
-                pattern: &pr.scene.name,
-            });
-            o.p_crit = Some(super::p_crit::p_crit_sweep(&pr.scene, c, p, self.store)?);
-        }
-        Ok(o)
     }
 }

@@ -19,9 +19,9 @@
 //! 5. then θ and α ascending (a fixed order for ties).
 //!
 //! A candidate not superlubric at the lowest load has only that load estimated
-//! ([`super::scan`]); its `intact_to` then counts that load only.
+//! ([`super::estimate`]); its `intact_to` then counts that load only.
 
-use super::scan::ThetaEval;
+use super::estimate::ThetaEval;
 use crate::study::rows::FrictionRow;
 use crate::study::verdict::{intact, superlubric, Verdict};
 use serde::{Deserialize, Serialize};
@@ -181,36 +181,97 @@ pub fn candidates(
         .collect()
 }
 
-/// Ranking group: exact robust limits above zero first, then upper bounds (designs whose
-/// evaluation stopped below the top), then those superlubric nowhere.
 /// A window for the ordering (not computed: 0).
 fn window(w: Option<f64>) -> f64 {
     w.unwrap_or(0.0)
 }
 
-fn group(s: &Score) -> u8 {
-    match (s.exact, s.superlubric_to_mn > 0.0) {
+/// Ranking group: exact robust limits above zero first, then upper bounds (designs whose
+/// evaluation stopped below the top), then those superlubric nowhere.
+fn group(exact: bool, superlubric_to_mn: f64) -> u8 {
+    match (exact, superlubric_to_mn > 0.0) {
         (true, true) => 0,
         (false, _) => 1,
         (true, false) => 2,
     }
 }
 
+/// What the ranking order compares of a candidate (the module docs' score, in order): its
+/// group, limit, windows, μ, contacts, then θ and α. [`compare`] orders candidates by it; the
+/// robust search orders by it the best score each candidate could still reach
+/// ([`Key::reachable`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Key {
+    group: u8,
+    superlubric_to_mn: f64,
+    theta_window_deg: f64,
+    direction_window_deg: f64,
+    mu_worst: f64,
+    contacts: f64,
+    theta_deg: f64,
+    alpha_deg: f64,
+}
+
+impl Key {
+    /// The key of `c` as scored.
+    pub fn of(c: &Candidate) -> Key {
+        let s = &c.score;
+        Key {
+            group: group(s.exact, s.superlubric_to_mn),
+            superlubric_to_mn: s.superlubric_to_mn,
+            theta_window_deg: window(s.theta_window_deg),
+            direction_window_deg: window(s.direction_window_deg),
+            mu_worst: s.mu_worst,
+            contacts: s.contacts,
+            theta_deg: c.theta_deg,
+            alpha_deg: c.alpha_deg,
+        }
+    }
+
+    /// The key `c` would have with the limit `superlubric_to_mn` (mN, taken as exact) and the
+    /// windows given (degrees), its μ and contacts unchanged: the best score a robust search
+    /// still allows it.
+    pub fn reachable(
+        c: &Candidate,
+        superlubric_to_mn: f64,
+        theta_window_deg: f64,
+        direction_window_deg: f64,
+    ) -> Key {
+        Key {
+            group: group(true, superlubric_to_mn),
+            superlubric_to_mn,
+            theta_window_deg,
+            direction_window_deg,
+            ..Key::of(c)
+        }
+    }
+
+    /// The ranking order of two keys (best first).
+    pub fn order(&self, o: &Key) -> Ordering {
+        self.group
+            .cmp(&o.group)
+            .then(o.superlubric_to_mn.total_cmp(&self.superlubric_to_mn))
+            .then(o.theta_window_deg.total_cmp(&self.theta_window_deg))
+            .then(o.direction_window_deg.total_cmp(&self.direction_window_deg))
+            .then(self.mu_worst.total_cmp(&o.mu_worst))
+            .then(o.contacts.total_cmp(&self.contacts))
+            .then(self.theta_deg.total_cmp(&o.theta_deg))
+            .then(self.alpha_deg.total_cmp(&o.alpha_deg))
+    }
+}
+
 /// The ranking order (best first).
 pub fn compare(a: &Candidate, b: &Candidate) -> Ordering {
-    group(&a.score)
-        .cmp(&group(&b.score))
-        .then(
-            b.score
-                .superlubric_to_mn
-                .total_cmp(&a.score.superlubric_to_mn),
-        )
-        .then(window(b.score.theta_window_deg).total_cmp(&window(a.score.theta_window_deg)))
-        .then(window(b.score.direction_window_deg).total_cmp(&window(a.score.direction_window_deg)))
-        .then(a.score.mu_worst.total_cmp(&b.score.mu_worst))
-        .then(b.score.contacts.total_cmp(&a.score.contacts))
-        .then(a.theta_deg.total_cmp(&b.theta_deg))
-        .then(a.alpha_deg.total_cmp(&b.alpha_deg))
+    Key::of(a).order(&Key::of(b))
+}
+
+/// Candidates of `ranking` with a load whose failed contacts sit on a mount in resonance (the
+/// report's resonance note). Cost: one pass over the friction rows.
+pub fn resonance_flagged(ranking: &[Candidate]) -> usize {
+    ranking
+        .iter()
+        .filter(|c| c.friction.iter().any(|r| r.mount_resonance == Some(true)))
+        .count()
 }
 
 /// One row of `ranking.csv`.

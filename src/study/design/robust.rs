@@ -1,4 +1,5 @@
-//! Stage 4b of a design: the robust limits over the tolerance box, best first.
+//! Stage 5 of a design, the robust search: the robust limits over the tolerance box, best
+//! first ([`RobustStage`]).
 //!
 //! Every candidate superlubric at its nominal (θ, α) starts with an upper bound, its nominal
 //! limit. The stage repeatedly refines the candidate with the highest bound
@@ -9,12 +10,12 @@
 //! Cost: about one single-load path per sample to disprove a bound, and one path per sample to
 //! verify a limit; docs/validation/tolerance-cost.md.
 
-use super::observer::{Event, Observer};
-use super::rank::{self, Candidate, CornerEstimate};
+use super::ctx::Ctx;
+use super::observer::Event;
+use super::params::{DesignParams, DesignScene};
+use super::rank::{self, Candidate, CornerEstimate, Key};
 use super::store::Store;
-use super::{DesignParams, DesignScene};
 use crate::runs::meta::Inputs;
-use crate::study::load::Load;
 use crate::study::rows::{label, FrictionRow};
 use crate::study::tolerance::{LimitParams, RobustSearch, RobustState, Snapshot, ToleranceBox};
 use anyhow::Result;
@@ -43,7 +44,7 @@ pub struct StoredSearch {
 /// The stored robust searches of one pattern (`stages/<pattern>/robust.json`, written after
 /// each shortlist level).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct RobustStage {
+pub struct StoredSearches {
     /// Every search started so far.
     pub designs: Vec<StoredSearch>,
 }
@@ -92,14 +93,11 @@ struct Known {
 struct Pending {
     /// Index into the ranking.
     index: usize,
-    /// Upper bound of its robust limit (count of loads).
-    bound: usize,
     /// Nothing left to refine (exact with its windows, or bounded at the floor).
     settled: bool,
-    /// θ window (degrees; the whole tolerance where not computed).
-    theta_window_deg: f64,
-    /// Direction window (degrees; likewise).
-    direction_window_deg: f64,
+    /// Its best possible score in the ranking's order: its bound as the limit, its windows (the
+    /// whole tolerance where not computed), its μ and contacts.
+    key: Key,
 }
 
 /// The robust searches of one pattern's candidates, kept across the shortlist levels.
@@ -107,7 +105,7 @@ pub struct Searches<'a> {
     solvers: &'a [Solver],
     limit: &'a LimitParams,
     bx: ToleranceBox,
-    stored: RobustStage,
+    stored: StoredSearches,
     rel: String,
     inputs: Inputs,
     live: Vec<(DesignKey, RobustSearch<'a>)>,
@@ -124,7 +122,7 @@ impl<'a> Searches<'a> {
         limit: &'a LimitParams,
         store: &Store,
     ) -> Result<Self> {
-        let bx = super::tolerance_box(p);
+        let bx = super::limit::tolerance_box(p);
         let inputs = Inputs {
             workflow: "design/robust".into(),
             scene: Some(crate::runs::meta::scene_file(&ds.scene)),
@@ -132,13 +130,13 @@ impl<'a> Searches<'a> {
                 "theta_offsets_deg": bx.theta_offsets_deg,
                 "direction_offsets_deg": bx.direction_offsets_deg,
                 "seeds": p.seeds,
-                "limit": super::limit_record(p),
+                "limit": super::limit::limit_record(p),
                 "search": "best-first/v3",
             }),
         };
         let rel = format!("stages/{}/robust.json", ds.name);
         let stored = store
-            .load_json::<RobustStage>(&rel, &inputs)?
+            .load_json::<StoredSearches>(&rel, &inputs)?
             .unwrap_or_default();
         Ok(Searches {
             solvers,
@@ -309,11 +307,7 @@ pub(super) fn level_reach(
         })
         .max()
         .unwrap_or(0);
-    if reach == 0 {
-        0.0
-    } else {
-        label(n_to_mn(p.loads[reach - 1]))
-    }
+    p.loads.limit_mn(reach)
 }
 
 /// Marks `c` as never refined over the box: its nominal limit is its bound (`exact: false`),
@@ -327,55 +321,95 @@ fn unsearched(c: &mut Candidate) {
 
 /// The loads (count) up to `mn` (mN).
 fn count(p: &DesignParams, mn: f64) -> usize {
-    Load::count_upto(&p.loads, mn)
+    p.loads.count_upto(mn)
 }
 
-/// Stage 4b on every candidate so far (`ranking`, all levels): refines best first (module
-/// docs), writes the robust limits, windows and verdicts into the scores, and stores the
-/// searches; `keep` (at least 1): how many of the best designs must be exact (`max(confirm, 3)`
-/// for one pattern). A candidate whose nominal limit is at most `floor_mn` (mN; 0: none) is not
-/// searched, and one whose bound falls to it is searched no further: it keeps an upper bound
-/// (`exact: false`, windows unknown), since it cannot exceed the robust limits of the patterns
-/// that set the floor ([`super::design`]).
-#[allow(clippy::too_many_arguments)]
-pub fn robust_stage(
-    ds: &DesignScene,
-    ranking: &mut [Candidate],
-    searches: &mut Searches,
-    p: &DesignParams,
-    store: &Store,
-    obs: &dyn Observer,
-    floor_mn: f64,
-    keep: usize,
-) -> Result<()> {
-    let progress = obs.progress();
-    let keep = keep.max(1);
-    ranking.sort_by(rank::compare);
-    searches.begin_level(ranking);
-    let todo: Vec<usize> = (0..ranking.len())
-        .filter(|&i| ranking[i].score.nominal_to_mn > floor_mn.max(0.0))
-        .collect();
-    // at or below the floor: upper bounds, never searched
-    for c in ranking.iter_mut() {
-        if c.score.nominal_to_mn > 0.0 && c.score.nominal_to_mn <= floor_mn {
-            unsearched(c);
+/// The load (mN label; 0: none) of a limit counted in loads.
+fn load_mn(p: &DesignParams, n: usize) -> f64 {
+    p.loads.limit_mn(n)
+}
+
+/// The knobs of one robust stage: the floor and how many designs must be exact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RobustParams {
+    /// A candidate whose nominal limit is at most this (mN; 0: none) is not searched, and one
+    /// whose bound falls to it is searched no further ([`super::pipeline`], many patterns).
+    pub floor_mn: f64,
+    /// How many of the best designs must be exact (at least 1; `max(confirm, 3)` for one
+    /// pattern).
+    pub keep: usize,
+}
+
+/// Stage 5 of a design, [`super::Stage::RobustSearch`] (module docs): the robust limits of a
+/// pattern's candidates over the tolerance box.
+pub struct RobustStage<'a> {
+    ctx: Ctx<'a>,
+    params: RobustParams,
+}
+
+impl<'a> RobustStage<'a> {
+    /// The stage in `ctx` with `params`.
+    pub fn new(ctx: Ctx<'a>, params: RobustParams) -> Self {
+        RobustStage { ctx, params }
+    }
+
+    /// The stage on every candidate so far (`ranking`, all levels, sorted here): refines best
+    /// first (module docs), writes the robust limits, windows and verdicts into the scores,
+    /// and stores the searches. A candidate at or below the floor keeps an upper bound
+    /// (`exact: false`, windows unknown), since it cannot exceed the robust limits of the
+    /// patterns that set the floor.
+    pub fn run(
+        &self,
+        ds: &DesignScene,
+        ranking: &mut [Candidate],
+        searches: &mut Searches,
+    ) -> Result<()> {
+        let Ctx { p, store, obs } = self.ctx;
+        let RobustParams { floor_mn, keep } = self.params;
+        let keep = keep.max(1);
+        ranking.sort_by(rank::compare);
+        searches.begin_level(ranking);
+        let todo: Vec<usize> = (0..ranking.len())
+            .filter(|&i| ranking[i].score.nominal_to_mn > floor_mn.max(0.0))
+            .collect();
+        // at or below the floor: upper bounds, never searched
+        for c in ranking.iter_mut() {
+            if c.score.nominal_to_mn > 0.0 && c.score.nominal_to_mn <= floor_mn {
+                unsearched(c);
+            }
         }
+        if todo.is_empty() {
+            // nothing to search (the pattern's own note names the floor)
+            return searches.save(store, ranking);
+        }
+        obs.event(&Event::Robust {
+            pattern: &ds.name,
+            theta_tol_deg: p.theta_tol_deg,
+            direction_tol_deg: p.direction_tol_deg,
+            substrates: searches.solvers.len(),
+            designs: keep.min(todo.len()) as u64,
+        });
+        let t0 = Instant::now();
+        let mut paths = self.refine(ranking, searches, &todo, keep)?;
+        paths += self.windows(ranking, searches, &todo)?;
+        let (seed_limits, n) = self.seed_limits(ranking, searches, &todo)?;
+        paths += n;
+        self.scores(ranking, searches, &todo, &seed_limits);
+        obs.progress().finish();
+        searches.save(store, ranking)?;
+        let exact = todo.iter().filter(|&&i| ranking[i].score.exact).count();
+        obs.event(&Event::RobustDone {
+            pattern: &ds.name,
+            exact,
+            searched: todo.len(),
+            wall_s: t0.elapsed().as_secs_f64(),
+            paths,
+        });
+        Ok(())
     }
-    if todo.is_empty() {
-        // nothing to search (the pattern's own note names the floor)
-        return searches.save(store, ranking);
-    }
-    obs.event(&Event::Robust {
-        pattern: &ds.name,
-        theta_tol_deg: p.theta_tol_deg,
-        direction_tol_deg: p.direction_tol_deg,
-        substrates: searches.solvers.len(),
-        designs: keep.min(todo.len()) as u64,
-    });
-    let t0 = Instant::now();
-    let mut paths = 0usize;
-    // what is known of candidate c
-    let known = |s: &Searches, c: &Candidate| -> Known {
+
+    /// What the search knows of candidate `c`.
+    fn known(&self, s: &Searches, c: &Candidate) -> Known {
         match s.live.iter().find(|(k, _)| *k == DesignKey::of(c)) {
             Some((_, r)) => Known {
                 bound: r.state.bound,
@@ -384,151 +418,183 @@ pub fn robust_stage(
                 direction_window_deg: r.state.direction_window_deg,
             },
             None => Known {
-                bound: count(p, c.score.nominal_to_mn),
+                bound: count(self.ctx.p, c.score.nominal_to_mn),
                 exact: false,
                 theta_window_deg: None,
                 direction_window_deg: None,
             },
         }
-    };
-    // a bound at or below the floor is as far as a search needs to go (`count` of the loads)
-    let floor_n = count(p, floor_mn);
-    let mut done = 0u64;
-    loop {
-        // every candidate's best possible score: its bound, its window or the whole tolerance
-        // where not computed, then μ and contacts (known); ordered as the ranking orders
+    }
+
+    /// The candidates of `todo`, best possible score first (ordered as the ranking orders:
+    /// [`Key::reachable`]).
+    fn order(&self, ranking: &[Candidate], searches: &Searches, todo: &[usize]) -> Vec<Pending> {
+        let p = self.ctx.p;
+        let floor_mn = self.params.floor_mn;
+        // a bound at or below the floor is as far as a search needs to go
+        let floor_n = count(p, floor_mn);
         let mut order: Vec<Pending> = todo
             .iter()
             .map(|&i| {
-                let k = known(searches, &ranking[i]);
+                let c = &ranking[i];
+                let k = self.known(searches, c);
                 let b = k.bound;
                 Pending {
                     index: i,
-                    bound: b,
                     settled: (k.exact && (b == 0 || k.theta_window_deg.is_some()))
                         || (floor_mn > 0.0 && b <= floor_n),
-                    theta_window_deg: k.theta_window_deg.unwrap_or(p.theta_tol_deg),
-                    direction_window_deg: k.direction_window_deg.unwrap_or(p.direction_tol_deg),
+                    key: Key::reachable(
+                        c,
+                        load_mn(p, b),
+                        k.theta_window_deg.unwrap_or(p.theta_tol_deg),
+                        k.direction_window_deg.unwrap_or(p.direction_tol_deg),
+                    ),
                 }
             })
             .collect();
-        order.sort_by(|x, y| {
-            let (a, b) = (&ranking[x.index], &ranking[y.index]);
-            (x.bound == 0)
-                .cmp(&(y.bound == 0))
-                .then(y.bound.cmp(&x.bound))
-                .then(y.theta_window_deg.total_cmp(&x.theta_window_deg))
-                .then(y.direction_window_deg.total_cmp(&x.direction_window_deg))
-                .then(a.score.mu_worst.total_cmp(&b.score.mu_worst))
-                .then(b.score.contacts.total_cmp(&a.score.contacts))
-                .then(a.theta_deg.total_cmp(&b.theta_deg))
-                .then(a.alpha_deg.total_cmp(&b.alpha_deg))
-        });
-        // done when the best `keep` by that order are settled: every other candidate's best
-        // possible score is below theirs
-        let exact_top = order.iter().take_while(|x| x.settled).count().min(keep) as u64;
-        if exact_top > done {
-            progress.advance(exact_top - done);
-            done = exact_top;
-        }
-        let Some(i) = order
-            .iter()
-            .take(keep)
-            .find(|x| !x.settled)
-            .map(|x| x.index)
-        else {
-            break;
-        };
-        let k = searches.index(&ranking[i]);
-        let before = searches.live[k].1.state.paths;
-        let s = &mut searches.live[k].1;
-        if s.settled() {
-            s.windows()?;
-        } else {
-            s.step()?;
-        }
-        paths += searches.live[k].1.state.paths - before;
+        order.sort_by(|x, y| x.key.order(&y.key));
+        order
     }
-    // windows: the exact designs and the nominal optimum (highest nominal limit)
-    let top = todo
-        .iter()
-        .map(|&i| ranking[i].score.nominal_to_mn)
-        .fold(0.0f64, f64::max);
-    for &i in &todo {
-        let c = &ranking[i];
-        let Known {
-            bound: b,
-            exact: settled,
-            ..
-        } = known(searches, c);
-        if (settled && b > 0) || (c.score.nominal_to_mn == top && (floor_mn == 0.0 || b > floor_n))
-        {
-            let k = searches.index(c);
+
+    /// Refines the candidate with the best possible score until the best `keep` are settled
+    /// (every other candidate's best possible score is below theirs). Returns the paths
+    /// solved.
+    fn refine(
+        &self,
+        ranking: &[Candidate],
+        searches: &mut Searches,
+        todo: &[usize],
+        keep: usize,
+    ) -> Result<usize> {
+        let progress = self.ctx.obs.progress();
+        let mut paths = 0usize;
+        let mut done = 0u64;
+        loop {
+            let order = self.order(ranking, searches, todo);
+            let exact_top = order.iter().take_while(|x| x.settled).count().min(keep) as u64;
+            if exact_top > done {
+                progress.advance(exact_top - done);
+                done = exact_top;
+            }
+            let Some(i) = order
+                .iter()
+                .take(keep)
+                .find(|x| !x.settled)
+                .map(|x| x.index)
+            else {
+                return Ok(paths);
+            };
+            let k = searches.index(&ranking[i]);
             let before = searches.live[k].1.state.paths;
-            searches.live[k].1.windows()?;
+            let s = &mut searches.live[k].1;
+            if s.settled() {
+                s.windows()?;
+            } else {
+                s.step()?;
+            }
             paths += searches.live[k].1.state.paths - before;
         }
     }
-    // the spread over substrate seeds, for the exact designs
-    let mut seed_limits: Vec<(DesignKey, Vec<f64>)> = Vec::new();
-    if searches.solvers.len() > 1 {
-        for &i in &todo {
+
+    /// The windows of the exact designs and of the nominal optimum (highest nominal limit).
+    /// Returns the paths solved.
+    fn windows(
+        &self,
+        ranking: &[Candidate],
+        searches: &mut Searches,
+        todo: &[usize],
+    ) -> Result<usize> {
+        let floor_mn = self.params.floor_mn;
+        let floor_n = count(self.ctx.p, floor_mn);
+        let top = todo
+            .iter()
+            .map(|&i| ranking[i].score.nominal_to_mn)
+            .fold(0.0f64, f64::max);
+        let mut paths = 0usize;
+        for &i in todo {
             let c = &ranking[i];
             let Known {
                 bound: b,
                 exact: settled,
                 ..
-            } = known(searches, c);
+            } = self.known(searches, c);
+            if (settled && b > 0)
+                || (c.score.nominal_to_mn == top && (floor_mn == 0.0 || b > floor_n))
+            {
+                let k = searches.index(c);
+                let before = searches.live[k].1.state.paths;
+                searches.live[k].1.windows()?;
+                paths += searches.live[k].1.state.paths - before;
+            }
+        }
+        Ok(paths)
+    }
+
+    /// The spread over substrate seeds of the exact designs: each one's per-seed limits (mN),
+    /// and the paths solved. Empty with one substrate.
+    #[allow(clippy::type_complexity)]
+    fn seed_limits(
+        &self,
+        ranking: &[Candidate],
+        searches: &mut Searches,
+        todo: &[usize],
+    ) -> Result<(Vec<(DesignKey, Vec<f64>)>, usize)> {
+        let p = self.ctx.p;
+        let mut out: Vec<(DesignKey, Vec<f64>)> = Vec::new();
+        let mut paths = 0usize;
+        if searches.solvers.len() <= 1 {
+            return Ok((out, paths));
+        }
+        for &i in todo {
+            let c = &ranking[i];
+            let Known {
+                bound: b,
+                exact: settled,
+                ..
+            } = self.known(searches, c);
             if settled && b > 0 {
                 let k = searches.index(c);
                 let before = searches.live[k].1.state.paths;
                 let v = searches.live[k].1.seed_limits()?;
                 paths += searches.live[k].1.state.paths - before;
-                let mn = |n: usize| {
-                    if n == 0 {
-                        0.0
-                    } else {
-                        label(n_to_mn(p.loads[n - 1]))
-                    }
-                };
-                seed_limits.push((DesignKey::of(c), v.into_iter().map(mn).collect()));
+                out.push((
+                    DesignKey::of(c),
+                    v.into_iter().map(|n| load_mn(p, n)).collect(),
+                ));
+            }
+        }
+        Ok((out, paths))
+    }
+
+    /// Writes the searches' results into the scores of `todo` (an unsearched candidate keeps
+    /// its nominal limit as an upper bound).
+    fn scores(
+        &self,
+        ranking: &mut [Candidate],
+        searches: &Searches,
+        todo: &[usize],
+        seed_limits: &[(DesignKey, Vec<f64>)],
+    ) {
+        let p = self.ctx.p;
+        for &i in todo {
+            let key = DesignKey::of(&ranking[i]);
+            let c = &mut ranking[i];
+            match searches.live.iter().find(|(k, _)| *k == key) {
+                Some((_, s)) => {
+                    let r = s.result();
+                    c.score.superlubric_to_mn = load_mn(p, r.superlubric_to);
+                    c.score.theta_window_deg = r.theta_window_deg;
+                    c.score.direction_window_deg = r.direction_window_deg;
+                    c.score.verdict = r.verdict;
+                    c.score.exact = r.exact;
+                    c.score.seed_limits_mn = seed_limits
+                        .iter()
+                        .find(|(k, _)| *k == key)
+                        .map(|(_, v)| v.clone());
+                    c.corners = corner_estimates(&searches.bx, s);
+                }
+                None => unsearched(c),
             }
         }
     }
-    // the scores
-    for &i in &todo {
-        let key = DesignKey::of(&ranking[i]);
-        let c = &mut ranking[i];
-        match searches.live.iter().find(|(k, _)| *k == key) {
-            Some((_, s)) => {
-                let r = s.result();
-                c.score.superlubric_to_mn = if r.superlubric_to == 0 {
-                    0.0
-                } else {
-                    label(n_to_mn(p.loads[r.superlubric_to - 1]))
-                };
-                c.score.theta_window_deg = r.theta_window_deg;
-                c.score.direction_window_deg = r.direction_window_deg;
-                c.score.verdict = r.verdict;
-                c.score.exact = r.exact;
-                c.score.seed_limits_mn = seed_limits
-                    .iter()
-                    .find(|(k, _)| *k == key)
-                    .map(|(_, v)| v.clone());
-                c.corners = corner_estimates(&searches.bx, s);
-            }
-            None => unsearched(c),
-        }
-    }
-    progress.finish();
-    searches.save(store, ranking)?;
-    let exact = todo.iter().filter(|&&i| ranking[i].score.exact).count();
-    obs.event(&Event::RobustDone {
-        pattern: &ds.name,
-        exact,
-        searched: todo.len(),
-        wall_s: t0.elapsed().as_secs_f64(),
-        paths,
-    });
-    Ok(())
 }

@@ -22,8 +22,50 @@
 //! (tri-tri near 30°) carry the load on few contacts and survive only lower loads. Descending
 //! the levels finds them, and the bound says when to stop.
 
+use super::ctx::Ctx;
+use super::observer::{Event, Stage};
+use super::params::DesignScene;
+use super::screen::Screened;
 use crate::study::rows::ScreenRow;
 use surrogate::units::gpa_to_pa;
+
+/// What the shortlist stage finds for one pattern.
+#[derive(Debug, Clone)]
+pub struct Shortlisted {
+    /// The orientations of the screen, in θ order.
+    pub orientations: Vec<Orientation>,
+    /// The levels, highest first (empty: no orientation keeps its coating at the lowest load).
+    pub levels: Vec<Level>,
+}
+
+/// Stage 2 of a design, [`Stage::Shortlist`]: the rule of the module docs on a pattern's
+/// screen; its knobs are the design's `per_level` and `max_top`.
+pub struct ShortlistStage<'a> {
+    ctx: Ctx<'a>,
+}
+
+impl<'a> ShortlistStage<'a> {
+    /// The stage in `ctx`.
+    pub fn new(ctx: Ctx<'a>) -> Self {
+        ShortlistStage { ctx }
+    }
+
+    /// The orientations and levels of `ds`'s screen. Cost: one pass over the screen rows and
+    /// a sort per level.
+    pub fn run(&self, ds: &DesignScene, screened: &Screened) -> Shortlisted {
+        let Ctx { p, obs, .. } = self.ctx;
+        obs.stage(Stage::Shortlist, &ds.name);
+        let orientations = orientations(&screened.rows, &p.loads, ds.scene.coating.p_crit);
+        let levels = levels(&orientations, &p.loads, p.per_level, p.max_top);
+        if levels.is_empty() {
+            obs.event(&Event::NoIntactOrientation { pattern: &ds.name });
+        }
+        Shortlisted {
+            orientations,
+            levels,
+        }
+    }
+}
 
 /// What the screen says about one orientation.
 #[derive(Debug, Clone, PartialEq)]

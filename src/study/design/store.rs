@@ -20,6 +20,11 @@ use serde::de::DeserializeOwned;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 
+/// File-name form of a number (`0.35`, `-15`): the label of a stored stage or DEM run.
+pub fn tag(v: f64) -> String {
+    format!("{}", crate::study::rows::label(v))
+}
+
 /// What the error of a stage made with other inputs suggests.
 fn hint() -> String {
     format!(
@@ -173,4 +178,11 @@ impl Store {
         outs.write(rel, Some(&path), bytes, rows);
         true
     }
+}
+
+/// A stage's record of its own wall time.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Timing {
+    /// Wall time of the stage when it was computed (s).
+    pub wall_s: f64,
 }

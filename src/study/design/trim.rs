@@ -6,21 +6,12 @@
 //! `patterns.csv` read: every candidate's score and its lowest-load friction row, the full
 //! friction rows of the top designs, the levels, θ list and wall times.
 
-use super::rank::Candidate;
-use super::{DesignParams, PatternResult};
+use super::params::DesignParams;
+use super::pattern_result::PatternResult;
 
 /// Designs per pattern drawn in the μ-versus-load chart (`mu_<p>.png`): the top ones keep
 /// their friction rows after [`PatternResult::trim`].
 pub const CHART_DESIGNS: usize = 5;
-
-/// Candidates of `ranking` with a load whose failed contacts sit on a mount in resonance (the
-/// report's resonance note). Cost: one pass over the friction rows.
-pub fn resonance_flagged(ranking: &[Candidate]) -> usize {
-    ranking
-        .iter()
-        .filter(|c| c.friction.iter().any(|r| r.mount_resonance == Some(true)))
-        .count()
-}
 
 impl PatternResult {
     /// Drops the rows that only the pattern's own files need (see the module docs); the ranks

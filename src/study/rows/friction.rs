@@ -1,6 +1,7 @@
 //! The row of a friction estimate: [`FrictionRow`].
 
 use super::format::{clean, label};
+use super::verdict::Verdict;
 use serde::{Deserialize, Serialize};
 use surrogate::units::{j_to_pj, m_to_um, n_to_mn, pa_to_gpa, rad_to_deg};
 
@@ -70,11 +71,11 @@ pub struct FrictionRow {
     /// `true` where the ratio lies in the measured resonance band (0.6–1.15) and contacts fail
     /// along the path: μ_est may be an upper bound there (the DEM measured up to 2.8× lower).
     pub mount_resonance: Option<bool>,
-    /// The verdict at this row's own (θ, α, W) ([`crate::study::verdict::Verdict::of_row`]:
+    /// The verdict at this row's own (θ, α, W) ([`Verdict::of_row`]:
     /// `superlubric`, `borderline` or `not`), set where the row is written
     /// ([`FrictionRow::judged`]); absent (no column) in the stage files.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub verdict: Option<crate::study::verdict::Verdict>,
+    pub verdict: Option<Verdict>,
     /// Empty, or why this configuration has no estimate.
     pub error: String,
 }
@@ -82,9 +83,9 @@ pub struct FrictionRow {
 impl FrictionRow {
     /// This row with its [`verdict`](FrictionRow::verdict) against μ_sl `mu_sl` and P_crit
     /// `p_crit` (Pa): the rule `design` and `tolerance` apply at each sample
-    /// ([`crate::study::verdict::Verdict::of_row`]). Cost: a few comparisons.
+    /// ([`Verdict::of_row`]). Cost: a few comparisons.
     pub fn judged(mut self, mu_sl: f64, p_crit: f64) -> FrictionRow {
-        self.verdict = Some(crate::study::verdict::Verdict::of_row(&self, mu_sl, p_crit));
+        self.verdict = Some(Verdict::of_row(&self, mu_sl, p_crit));
         self
     }
 
@@ -155,5 +156,35 @@ impl FrictionRow {
             Err(err) => row.error = err.to_string(),
         }
         row
+    }
+}
+
+/// The verdict of friction rows (beside the row: [`super::verdict`] knows no row).
+impl Verdict {
+    /// The verdict of a friction row (`Not` where it has an error).
+    pub fn of_row(r: &FrictionRow, mu_sl: f64, p_crit: f64) -> Verdict {
+        if !r.error.is_empty() {
+            return Verdict::Not;
+        }
+        Verdict::of(
+            r.mu_est,
+            r.p_max_GPa.map(surrogate::units::gpa_to_pa),
+            mu_sl,
+            p_crit,
+        )
+    }
+
+    /// The worst verdict of `rows` (every load up to a limit, and every sample of a tolerance
+    /// box): `Not` when there are none, so a row borderline at any load up to the limit makes
+    /// the whole limit borderline.
+    pub fn worst<'r>(
+        rows: impl IntoIterator<Item = &'r FrictionRow>,
+        mu_sl: f64,
+        p_crit: f64,
+    ) -> Verdict {
+        rows.into_iter()
+            .map(|r| Verdict::of_row(r, mu_sl, p_crit))
+            .max()
+            .unwrap_or(Verdict::Not)
     }
 }

@@ -23,6 +23,7 @@ mod friction;
 mod landscape;
 mod screen;
 mod stats;
+pub mod verdict;
 
 pub use batch::{BatchRow, ConfigStatsRow, RunStatus};
 pub use corrugation::CorrugationRow;

@@ -5,6 +5,7 @@ use super::super::top::{angle, angle_decimals};
 use super::super::words::{fmt_g, opt, protocol_words, which_design};
 use super::lines::{DemLine, DemSection, StudyCheck};
 use crate::study::design::{DesignOutcome, DesignParams};
+use crate::study::load::LoadKey;
 use crate::study::rows::label;
 use surrogate::units::m_to_um;
 
@@ -63,7 +64,7 @@ pub(super) fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -
                     && d.pattern == s.pattern
                     && d.theta_deg == s.theta_deg
                     && d.alpha_deg == s.alpha_deg
-                    && d.load_mN == s.load_mN
+                    && LoadKey::of_mn(d.load_mN) == LoadKey::of_mn(s.load_mN)
             });
             let mus = (short.and_then(|d| d.mu_dem), s.mu_dem);
             let (short_verdict, study_verdict) = (
@@ -93,7 +94,7 @@ pub(super) fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -
     DemSection {
         protocol: protocol_words(p),
         study_protocol: p.dem_is_study_protocol,
-        model: p.dem_words.clone(),
+        model: model_words(p.dem.model.request).into(),
         checks,
         unmeasured: study.is_empty() && !p.dem_is_study_protocol,
         rows: dem.iter().map(|d| dem_line(d, angle_decimals(p))).collect(),
@@ -108,5 +109,15 @@ pub(super) fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -
             label(m_to_um(p.friction.speed * p.friction.slide_time))
         ),
         resonance_drop: format!("{}", surrogate::friction::RESONANCE_DROP_MAX),
+    }
+}
+
+/// The DEM model of the confirmation runs in words, with the `--model` value that asks for it.
+fn model_words(request: dem::ModelRequest) -> &'static str {
+    match request {
+        dem::ModelRequest::Reduced => "reduced model `--model reduced` (slider spheres rigid in z; unreachable substrate spheres left out and only the active set integrated, both exact)",
+        dem::ModelRequest::Full => "full model `--model full` (slider spheres on their z springs; pruning and the active set, both exact)",
+        dem::ModelRequest::FullExplicit => "full model by velocity-Verlet throughout `--model full-explicit` (slider spheres on their z springs; pruning and the active set, both exact)",
+        dem::ModelRequest::Auto => "`--model auto` (per run: the full model near coating failure, where stick-slip is expected or beyond the measured stiffness ratio, else rigid-z; the choice is in each run's JSON)",
     }
 }

@@ -15,7 +15,7 @@ use super::commands::slide_command;
 use super::commands::{corrugation_command, friction_command, loads_text, screen_command};
 use super::rows::dem_rows;
 use super::words::{fmt_g, opt};
-use crate::study::design::symmetry::SymmetryWords;
+use crate::study::design::symmetry_words::SymmetryWords;
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams};
 use crate::study::friction::resonance_note;
 use crate::study::rows::label;
@@ -304,7 +304,7 @@ impl ReportData {
             .zip(&o.dem)
             .filter_map(|(d, e)| {
                 let pr = o.patterns.iter().find(|pr| pr.scene.name == d.pattern)?;
-                Some(slide_command(pr, d, e.run.study_protocol, p))
+                Some(slide_command(pr, d, e.run.protocol, p))
             })
             .collect();
         let top = super::top::top_rows(o, p, &dem);

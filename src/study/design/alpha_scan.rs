@@ -1,65 +1,28 @@
-//! The evaluation of one shortlisted orientation: its contact line, the corrugation versus the
-//! pulling angle α (a coarse grid over one α period, then finer grids around the minimum), and
-//! the friction estimate at every load along the best α's.
+//! Stage 3 of a design, [`super::Stage::AlphaScan`], for one shortlisted orientation: its
+//! contact line and the corrugation versus the pulling angle α (a coarse grid over one α
+//! period, then finer grids around the minimum), and the best α's, which the estimate
+//! ([`super::estimate`]) follows. [`super::evaluate`] runs it on a shortlist level's
+//! orientations side by side.
 //!
 //! - **Scan.** Corrugation (peak-to-peak slider height) along straight paths of `scan_length`
 //!   sampled every `scan_step` (direct solves, [`surrogate::map::corrugation_direct`]), at the
 //!   orientation's coating-intact load `W_c` (where the design has to work; the lowest load if
 //!   none). Coarse: α = k·`alpha_step` over [0, P_α) (P_α the α period,
-//!   [`super::symmetry`]: 0 is along the contact line, 90° across it); each refinement step r
+//!   [`super::symmetry_words`]: 0 is along the contact line, 90° across it); each refinement step r
 //!   scans the best α so far ± half the previous step in steps of r (folded into [0, P_α),
 //!   angles already scanned not repeated). A full-turn period (P_α = 360°) is scanned as
 //!   (−180°, 180°], the range of a pulling angle.
 //! - **Best α's.** The `alphas_per_theta` lowest-corrugation angles at least one coarse step
 //!   apart (circularly within the period); ties: the first in scan order.
-//! - **Friction.** [`surrogate::friction::estimate_friction_loads`] along each best α: first at
-//!   the lowest load; if the candidate is superlubric there (coating intact on the path and
-//!   μ_est below the limit), at the other loads up to the orientation's coating-intact load
-//!   `W_c`, ascending, up to and including the first load whose coating fails on the sliding
-//!   path (beyond it neither the score nor the intact-to load of the ranking can change;
-//!   each estimate is bit-identical to one path for all loads). Loads above `W_c` are not
-//!   estimated: the coating fails there at the screened placement, the first sample of every
-//!   path, so the candidate cannot
-//!   be superlubric there; nor are any loads above the lowest when it is not superlubric at the
-//!   lowest (the score needs superlubricity from the lowest load up). The confirmation stage
-//!   adds estimates at the DEM loads that lack one.
-
 use super::params::DesignParams;
-use super::symmetry::PairSymmetry;
+use super::symmetry_words::PairSymmetry;
 use crate::study::corrugation::contact_line;
-use crate::study::rows::{clean, CorrugationRow, FrictionRow};
+use crate::study::rows::{clean, CorrugationRow};
 use anyhow::Result;
-use serde::{Deserialize, Serialize};
-use surrogate::friction::estimate_friction_loads;
 use surrogate::map::{corrugation_direct, MapParams};
 use surrogate::solver::Solver;
 use surrogate::units::deg_to_rad;
 use surrogate::Scene;
-
-/// The evaluation of one orientation (user units, as stored in the design's stage files).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[allow(non_snake_case)]
-pub struct ThetaEval {
-    /// θ (degrees).
-    pub theta_deg: f64,
-    /// Load of the α scan (mN).
-    pub scan_load_mN: f64,
-    /// Contact line used (degrees from x).
-    pub line_deg: f64,
-    /// The α scan, in scan order (coarse grid, then each refinement).
-    pub scan: Vec<CorrugationRow>,
-    /// The best α's (degrees), best first.
-    pub alphas_deg: Vec<f64>,
-    /// The friction estimate along each best α (α outer, load inner): the loads up to `W_c`
-    /// (ascending, up to the first whose coating fails on the path), or only the lowest when
-    /// the candidate is not superlubric there.
-    pub friction: Vec<FrictionRow>,
-}
-
-/// Loads per friction path after the lowest (they share the path's candidate searches and pair
-/// lists; the estimate stops after the chunk holding the first load whose coating fails): a
-/// cost knob only, the rows kept are bit-identical for any value.
-const LOAD_CHUNK: usize = 3;
 
 /// Path length (m) sharing one refresh of the α scan's pair lists: the maps' default, so the
 /// design's corrugation rows are the `corrugation` command's (a chunk of twelve shares one
@@ -120,19 +83,36 @@ pub struct AlphaScan {
     pub alphas_deg: Vec<f64>,
 }
 
-/// The α scan of orientation `theta_deg` of `scene` at `scan_load` (N) and its best α's (see
-/// the module docs). `tick` is called once per scanned path. Cost: the coarse grid plus each
-/// refinement's new angles, one corrugation path each ([`paths_per_scan`]).
-#[allow(clippy::too_many_arguments)]
+/// One orientation of a pattern as the α scan and the estimate take it: the pattern's solver
+/// (slider at θ = 0) and scene, θ (degrees) and the load of the scan (N: the orientation's
+/// coating-intact load `W_c`).
+#[derive(Clone, Copy)]
+pub struct Target<'a> {
+    /// The pattern's solver (each query rotates the slider to θ).
+    pub solver: &'a Solver,
+    /// The pattern's scene (SI).
+    pub scene: &'a Scene,
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// The load of the scan (N).
+    pub scan_load: f64,
+}
+
+/// The α scan of the orientation `t` and its best α's (see the module docs). `tick` is called
+/// once per scanned path. Cost: the coarse grid plus each refinement's new angles, one
+/// corrugation path each ([`paths_per_scan`]).
 pub fn scan_alpha(
-    solver: &Solver,
-    scene: &Scene,
-    theta_deg: f64,
-    scan_load: f64,
+    t: &Target,
     p: &DesignParams,
     sym: &PairSymmetry,
     tick: &(dyn Fn() + Sync),
 ) -> Result<AlphaScan> {
+    let Target {
+        solver,
+        scene,
+        theta_deg,
+        scan_load,
+    } = *t;
     let theta = deg_to_rad(theta_deg);
     let line = contact_line(&scene.with_theta(theta), p.line);
     let map = MapParams {
@@ -203,63 +183,6 @@ pub fn scan_alpha(
         scan,
         alphas_deg: alphas,
     })
-}
-
-/// The friction estimate of orientation `theta_deg` along each best α of `scan` (see the
-/// module docs): the lowest load, then, while superlubric, the loads up to `scan_load` (N)
-/// until the coating fails on the path. `tick` is called once per α. Cost: one friction path
-/// per α and chunk of loads.
-pub fn estimate(
-    solver: &Solver,
-    scene: &Scene,
-    theta_deg: f64,
-    scan_load: f64,
-    scan: &AlphaScan,
-    p: &DesignParams,
-    tick: &(dyn Fn() + Sync),
-) -> Result<Vec<FrictionRow>> {
-    let theta = deg_to_rad(theta_deg);
-    let line_angle = scan.line;
-    let mut friction = Vec::new();
-    let p_crit = scene.coating.p_crit;
-    for &a in &scan.alphas_deg {
-        let alpha = deg_to_rad(a);
-        let dir = line_angle + alpha;
-        let row = |w: f64, r: &Result<_, _>| {
-            let mut row = FrictionRow::new(&scene.pattern, theta, alpha, line_angle, w, r);
-            row.alpha_deg = a;
-            row
-        };
-        // loads up to the scan load (the screen's coating-intact load W_c): beyond it the
-        // coating fails at the screened placement, the path's first sample
-        let upto = p
-            .loads
-            .iter()
-            .position(|&w| w >= scan_load * (1.0 - 1e-12))
-            .map_or(p.loads.len(), |k| k + 1);
-        let lowest = estimate_friction_loads(solver, theta, dir, &p.loads[..1], &p.friction)?;
-        let first = row(p.loads[0], &lowest[0]);
-        let go_on = crate::study::verdict::superlubric(&first, p_crit, p.mu_superlubric);
-        friction.push(first);
-        if go_on {
-            // ascending, LOAD_CHUNK loads per path (bit-identical to one path for all), up to
-            // and including the first load whose coating fails on the path: beyond it neither
-            // the score nor the intact-to load can change
-            'chunks: for chunk in p.loads[1..upto].chunks(LOAD_CHUNK) {
-                let r = estimate_friction_loads(solver, theta, dir, chunk, &p.friction)?;
-                for (&w, r) in chunk.iter().zip(&r) {
-                    let next = row(w, r);
-                    let failed = !crate::study::verdict::intact(&next, p_crit);
-                    friction.push(next);
-                    if failed {
-                        break 'chunks;
-                    }
-                }
-            }
-        }
-        tick();
-    }
-    Ok(friction)
 }
 
 #[cfg(test)]

@@ -1,0 +1,117 @@
+//! Stage 1 of a design, [`Stage::Screen`]: the symmetry cut of θ to the pattern's fundamental
+//! domain ([`super::domain::cut`]), then the screen of every θ × W
+//! ([`crate::study::screen`]: contacts, P_max, coating failure), stored as `screen_<name>.csv`
+//! and reused when finished. Cost: one Tier 1 solve per θ × W.
+
+use super::ctx::Ctx;
+use super::domain::{cut, line_note, theta_note};
+use super::inputs::{screen_inputs, screen_params};
+use super::observer::{Event, Stage};
+use super::params::DesignScene;
+use super::store::Timing;
+use super::symmetry_words::PairSymmetry;
+use crate::runs::sink::csv_bytes;
+use crate::study::rows::ScreenRow;
+use crate::study::screen::screen;
+use anyhow::Result;
+use std::time::Instant;
+
+/// What the screen stage finds for one pattern.
+#[derive(Debug, Clone)]
+pub struct Screened {
+    /// θ screened (degrees, after the cut).
+    pub thetas_deg: Vec<f64>,
+    /// The pair's symmetry.
+    pub sym: PairSymmetry,
+    /// The screen rows (θ outer, loads inner).
+    pub rows: Vec<ScreenRow>,
+    /// Wall time of the screen when computed (s; `None` if not recorded).
+    pub wall_s: Option<f64>,
+}
+
+/// The screen stage: its knobs are the design's θ list (and whether to cut it) and loads.
+pub struct ScreenStage<'a> {
+    ctx: Ctx<'a>,
+}
+
+impl<'a> ScreenStage<'a> {
+    /// The stage in `ctx`.
+    pub fn new(ctx: Ctx<'a>) -> Self {
+        ScreenStage { ctx }
+    }
+
+    /// The cut and the screen of `ds` (see the module docs), telling the observer what the
+    /// cut kept and whether the screen was reused.
+    pub fn run(&self, ds: &DesignScene) -> Result<Screened> {
+        let Ctx { p, obs, .. } = self.ctx;
+        let name = ds.name.as_str();
+        obs.stage(Stage::Screen, name);
+        let (thetas_deg, sym) = cut(ds, p)?;
+        let note = theta_note(&sym, &thetas_deg, p);
+        obs.event(&Event::Symmetry {
+            pattern: name,
+            sym: &sym,
+            screened: thetas_deg.len(),
+            given: p.thetas_deg.len(),
+            cut: p.symmetry_cut,
+            note: note.as_ref(),
+        });
+        if let Some(n) = line_note(ds, p) {
+            obs.event(&Event::LineNote {
+                pattern: name,
+                note: &n,
+            });
+        }
+        let offset = ds.scene.slider.offset != [0.0; 2];
+        if p.symmetry_cut && (ds.scene.substrate.sigma_h > 0.0 || offset) {
+            obs.event(&Event::ApproximateCut {
+                pattern: name,
+                offset,
+            });
+        }
+        let (rows, wall_s) = self.screen(ds, &thetas_deg)?;
+        Ok(Screened {
+            thetas_deg,
+            sym,
+            rows,
+            wall_s,
+        })
+    }
+
+    /// The screen of `ds` at `thetas_deg` (`screen_<name>.csv`), reused when finished.
+    fn screen(
+        &self,
+        ds: &DesignScene,
+        thetas_deg: &[f64],
+    ) -> Result<(Vec<ScreenRow>, Option<f64>)> {
+        let Ctx { p, store, obs } = self.ctx;
+        let sp = screen_params(thetas_deg, p);
+        let inputs = screen_inputs(ds, &sp);
+        let rel = format!("screen_{}.csv", ds.name);
+        let timing = format!("stages/{}/screen.json", ds.name);
+        if let Some(rows) = store.load_csv::<ScreenRow>(&rel, &inputs)? {
+            let t = store.load_json::<Timing>(&timing, &inputs)?;
+            obs.event(&Event::ScreenReused {
+                pattern: &ds.name,
+                file: &rel,
+                rows: rows.len(),
+            });
+            return Ok((rows, t.map(|t| t.wall_s)));
+        }
+        let t0 = Instant::now();
+        let mut rows: Vec<ScreenRow> = Vec::new();
+        let mut scene = ds.scene.clone();
+        scene.slider.theta = 0.0;
+        screen(&scene, &sp, &mut rows, obs.progress())?;
+        let wall_s = t0.elapsed().as_secs_f64();
+        store.save(&rel, &inputs, csv_bytes(&rows)?, Some(rows.len() as u64))?;
+        store.save_json(&timing, &inputs, &Timing { wall_s })?;
+        obs.event(&Event::Screened {
+            pattern: &ds.name,
+            thetas: thetas_deg.len(),
+            loads: p.loads.len(),
+            wall_s,
+        });
+        Ok((rows, Some(wall_s)))
+    }
+}
