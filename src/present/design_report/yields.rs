@@ -4,6 +4,7 @@
 //! load with its band, the quoted load marked), each with its sidecar; and the report's
 //! "load at q yield" column ([`cell`]) and plots ([`YieldHead`]).
 
+use super::words::fmt_g;
 use crate::plot::yield_curve::yield_png;
 use crate::runs::output::Outputs;
 use crate::runs::sink::csv_bytes;
@@ -43,18 +44,22 @@ pub fn head(o: &DesignOutcome, p: &DesignParams) -> Option<YieldHead> {
     })
 }
 
-/// The answer table's cell of one answer's yield: the load at yield q (mN) with its
-/// one-sided bound (`1.21 (≥ 1.05)`), and with the DEM its check (`DEM 9/10 held`).
+/// The answer table's cell of one answer's yield: the load at yield q (mN, 3 significant
+/// digits; the exact figure in `yield_<p>.json`) with its one-sided bound (`1.21 (≥ 1.05)`),
+/// and with the DEM its check (`DEM 9/10 held at 1.21 mN`).
 pub fn cell(y: Option<&AnswerYield>) -> String {
     let Some(y) = y else {
         return "–".into();
     };
     let s = &y.outcome.summary;
+    let mn = |w: f64| fmt_g(w, 3);
     let mut t = match (s.load_at_quantile_mN, s.load_at_quantile_bound_mN) {
-        (Some(w), Some(b)) => format!("{w} (≥ {b})"),
+        (Some(w), Some(b)) => format!("{} (≥ {})", mn(w), mn(b)),
         (Some(w), None) => format!(
-            "{w} (no bound: {} devices, needs ≥ {})",
-            s.samples, s.min_samples_for_bound
+            "{} (no bound: {} devices, needs ≥ {})",
+            mn(w),
+            s.samples,
+            s.min_samples_for_bound
         ),
         _ => "none holds any load".into(),
     };
@@ -63,7 +68,7 @@ pub fn cell(y: Option<&AnswerYield>) -> String {
             "; DEM {}/{} held at {} mN",
             s.dem_check_passed,
             s.dem_check_total,
-            s.dem_check_load_mN.unwrap_or(0.0)
+            mn(s.dem_check_load_mN.unwrap_or(0.0))
         ));
     }
     t
