@@ -46,6 +46,11 @@ fn the_yield_stage_writes_its_files_and_the_report_column_and_leaves_the_rest_un
     let (on, off) = (d.join("on"), d.join("off"));
     let o = design(&["--yield-samples", "12"], &on);
     assert_ok(&o);
+    let log = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        log.contains("square-tri: yield of the answer over fabrication: 95 % of 12 devices hold"),
+        "{log}"
+    );
     assert_ok(&design(&[], &off));
     for f in [
         "yield_square-tri.csv",

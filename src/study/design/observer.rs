@@ -180,6 +180,13 @@ pub enum Event<'a> {
         /// Pattern (recipe) name.
         pattern: &'a str,
     },
+    /// The yield of a pattern's answer over fabrication is known ([`super::yield_stage`]).
+    Yield {
+        /// Pattern name.
+        pattern: &'a str,
+        /// What the yield found.
+        summary: &'a crate::study::fab_yield::YieldSummary,
+    },
     /// No ranked design: nothing for the DEM to confirm.
     DemNothing,
     /// The DEM batch begins.

@@ -18,7 +18,7 @@
 //! estimate (seconds on the study's scenes), plus (devices in the band + check) DEM runs.
 
 use super::ctx::Ctx;
-use super::observer::Stage;
+use super::observer::{Event, Stage};
 use super::outcome::DesignOutcome;
 use super::params::DesignParams;
 use crate::study::fab_yield::{
@@ -140,6 +140,10 @@ impl<'a> YieldStage<'a> {
                 store.path(&format!("yield/{}", pr.scene.name)),
             );
             let outcome = fab_yield(&scene, &yp, obs.progress())?;
+            obs.event(&Event::Yield {
+                pattern: &pr.scene.name,
+                summary: &outcome.summary,
+            });
             out.push(Some(AnswerYield {
                 theta_deg: c.theta_deg,
                 direction_deg: c.direction_deg,
