@@ -150,7 +150,7 @@ pub struct Args {
 }
 
 /// A fraction flag in (0, 1).
-fn fraction(v: f64, flag: &str) -> Result<f64> {
+pub(super) fn fraction(v: f64, flag: &str) -> Result<f64> {
     if v.is_finite() && v > 0.0 && v < 1.0 {
         Ok(v)
     } else {

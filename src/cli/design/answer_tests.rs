@@ -232,6 +232,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
         answers: vec![a.clone()],
         maps: vec![None],
         p_crit: None,
+        yields: Vec::new(),
     };
     let rows = dem_rows(&o, &p);
     let line = answer_line(&pr, &a, &rows, &p, 0.09);

@@ -3,6 +3,7 @@
 
 mod prepare;
 mod scenes;
+mod yield_args;
 
 pub use prepare::prepare;
 
@@ -230,6 +231,9 @@ pub struct Args {
     /// measure the shorter protocol's friction difference.
     #[arg(long = "no-protocol-check")]
     no_protocol_check: bool,
+    /// The opt-in yield stage (`--yield-samples`).
+    #[command(flatten)]
+    fab_yield: yield_args::YieldArgs,
     /// Output directory: report.md, ranking.csv, the CSVs and PNGs behind them, dem/ (the DEM
     /// runs) and stages/ (finished stages, reused by a re-run with the same inputs).
     #[arg(

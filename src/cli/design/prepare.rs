@@ -167,6 +167,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         dem,
         dem_is_study_protocol,
         protocol_check: !a.no_protocol_check,
+        fab_yield: a.fab_yield.params()?,
     };
     let scenes = scenes(a)?;
     for s in &scenes {

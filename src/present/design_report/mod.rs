@@ -13,6 +13,7 @@
 //! | `friction_<p>.csv` | the friction estimates of every candidate (the `friction` schema) |
 //! | `dem.csv` | [`DemRow`] per DEM run: μ_DEM next to μ_est |
 //! | `patterns.csv`, `patterns.png`, `contacts_<p>.png` | per pattern its geometry beside its best design; the limit against the family's parameter; the contact maps of the best three ([`patterns`]) |
+//! | `yield_<p>.csv`, `.json`, `.png` | with `--yield-samples`: each answer's yield over fabrication, one row per device, the summary, the curve ([`yields`]) |
 //! | `pmax_<p>.png`, `corrugation_<p>.png`, `mu_<p>.png` | P_max vs θ per load with P_crit; corrugation vs α of the finalists; μ vs load, surrogate lines and DEM markers ([`charts`]) |
 //!
 //! Each pattern's own files (`shortlist_`, `corrugation_`, `friction_<p>.csv`, `pmax_`,
@@ -35,6 +36,7 @@ pub mod rows;
 pub mod stamp;
 pub mod top;
 pub mod words;
+pub mod yields;
 
 pub use data::ReportData;
 pub use log::Log;
@@ -245,6 +247,8 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
             )
         });
     }
+    // the yield of each answer over fabrication, when the stage ran
+    yields::write(store, &mut outs, &mut wrote, o);
     // each answer's scene, θ set, for the commands the report gives
     for (pr, a) in o.patterns.iter().zip(&o.answers) {
         let Some(c) = a.index.and_then(|i| pr.ranking.get(i)) else {
@@ -303,6 +307,7 @@ mod tests {
                 dem_centre: s("held at 0.09 mN"),
                 dem_corners: s("4 of 4 held at 0.09 mN"),
                 nominal: s("the same design"),
+                fab_yield: String::new(),
             }],
             answers: vec![
                 s("**square-tri**: make the slider at θ = 10°"),
@@ -322,6 +327,7 @@ mod tests {
             fairness: String::new(),
             recipes: None,
             contact_maps: vec![],
+            fab_yield: None,
             dem_ran: dem,
             dem: dem.then(|| DemSection {
                 protocol: s("equilibrate 0.1 + relax 0.05 + slide 0.3 µs at 0.1 m/s"),

@@ -41,6 +41,9 @@ pub struct TopRow {
     /// The nominal optimum where its limit exceeds the robust one, with its own window; else
     /// `the same design`.
     pub nominal: String,
+    /// The load at yield q with its bound ([`super::yields::cell`]); empty without the yield
+    /// stage.
+    pub fab_yield: String,
 }
 
 /// How to run one pattern's answer: its scene file and three command lines.
@@ -278,6 +281,7 @@ pub fn top_rows(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> Vec<TopR
                     dem_centre: dash(),
                     dem_corners: dash(),
                     nominal: dash(),
+                    fab_yield: String::new(),
                 };
             };
             let rank = a.index.unwrap_or(0) + 1;
@@ -309,6 +313,7 @@ pub fn top_rows(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> Vec<TopR
                 dem_centre: centre,
                 dem_corners: corners,
                 nominal: nominal_cell(pr, b, p, dec),
+                fab_yield: String::new(),
                 pattern: name,
             }
         })

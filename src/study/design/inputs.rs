@@ -109,6 +109,17 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
     if with_dem {
         params["dem"] = dem;
     }
+    // the yield stage's knobs, when it runs (absent otherwise: records unchanged)
+    if let (true, Some(y)) = (with_dem, &p.fab_yield) {
+        params["yield"] = json!({
+            "samples": y.samples,
+            "quantile": y.quantile,
+            "confidence": y.confidence,
+            "resolution": y.resolution,
+            "sample_seed": y.seed,
+            "dem_check": y.dem_check,
+        });
+    }
     Inputs {
         workflow: "design".into(),
         scene: None,

@@ -12,7 +12,7 @@ use std::path::Path;
 
 /// The stages of the design pipeline, in the order [`super::design`] runs them. The first five
 /// run per pattern (the α scan, the estimate and the robust search once per shortlist level),
-/// the last two once.
+/// the next two once, the opt-in yield once per answer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stage {
     /// The symmetry cut and the screen of every θ × W ([`super::screen`]).
@@ -31,6 +31,9 @@ pub enum Stage {
     DemConfirmation,
     /// The answers and the tolerance maps the report is built from ([`super::report_data`]).
     ReportData,
+    /// The yield of each answer over fabrication ([`super::yield_stage`]); entered only when
+    /// asked for (`DesignParams::fab_yield`), once per answer.
+    Yield,
 }
 
 /// Something the pipeline reports (no wording: the observer words it). Loads in N unless the
@@ -176,6 +179,13 @@ pub enum Event<'a> {
     PCritSweep {
         /// Pattern (recipe) name.
         pattern: &'a str,
+    },
+    /// The yield of a pattern's answer over fabrication is known ([`super::yield_stage`]).
+    Yield {
+        /// Pattern name.
+        pattern: &'a str,
+        /// What the yield found.
+        summary: &'a crate::study::fab_yield::YieldSummary,
     },
     /// No ranked design: nothing for the DEM to confirm.
     DemNothing,

@@ -5,6 +5,7 @@ use super::answer::Answer;
 use super::dem_entry::DemEntry;
 use super::p_crit::PCritSweep;
 use super::pattern_result::{AnswerMap, PatternResult};
+use super::yield_stage::AnswerYield;
 
 /// What [`super::design`] found.
 #[derive(Debug, Clone)]
@@ -24,4 +25,7 @@ pub struct DesignOutcome {
     /// With recipes (`--vary`): the best named recipe's robust limit at each coating strength
     /// of [`super::p_crit::P_CRIT_SWEEP_GPA`] ([`super::p_crit`]).
     pub p_crit: Option<PCritSweep>,
+    /// Per pattern, the yield of its answer over fabrication when the yield stage ran
+    /// ([`super::yield_stage`]); empty when it did not.
+    pub yields: Vec<Option<AnswerYield>>,
 }

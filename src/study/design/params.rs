@@ -95,4 +95,7 @@ pub struct DesignParams {
     /// Also run the study protocol on the best design at the middle confirmation load, to
     /// measure the shorter protocol's friction difference (only when the protocol is shorter).
     pub protocol_check: bool,
+    /// The yield of each answer over fabrication ([`super::yield_stage`]); `None`: the stage
+    /// does not run (the default: its DEM decisions take minutes per answer).
+    pub fab_yield: Option<super::yield_stage::YieldStageParams>,
 }

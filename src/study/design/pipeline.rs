@@ -4,7 +4,8 @@
 //! shortlist level as the [`LevelWalk`] takes them, [`EvaluateStage`] ([`Stage::AlphaScan`],
 //! [`Stage::Estimate`]) and [`RobustStage`] ([`Stage::RobustSearch`]) → the DEM confirmation
 //! ([`super::confirm`], [`Stage::DemConfirmation`]) → the report data ([`ReportDataStage`],
-//! [`Stage::ReportData`]) — telling one [`Observer`] each stage it enters and what it finds
+//! [`Stage::ReportData`]) → when asked for, the yield of each answer ([`YieldStage`],
+//! [`Stage::Yield`]) — telling one [`Observer`] each stage it enters and what it finds
 //! (no wording here).
 
 use super::best;
@@ -24,6 +25,7 @@ use super::screen::ScreenStage;
 use super::shortlist::ShortlistStage;
 use super::store::Store;
 use super::walk::{LevelWalk, Next, Walked};
+use super::yield_stage::YieldStage;
 use crate::study::rows::label;
 use anyhow::Result;
 use surrogate::solver::Solver;
@@ -75,8 +77,8 @@ impl<'a> Pipeline<'a> {
     }
 
     /// Runs the design (module docs of [`super`]): every pattern's stages in [`Order`], each
-    /// pattern handed to `on_pattern` and trimmed when complete, then the DEM confirmation
-    /// and the report data.
+    /// pattern handed to `on_pattern` and trimmed when complete, then the DEM confirmation,
+    /// the report data and, when asked for, the yield of each answer.
     pub fn run(&self, scenes: &[DesignScene], on_pattern: PatternHook) -> Result<DesignOutcome> {
         let Ctx { p, store, obs } = self.ctx;
         // every pattern's paths fit on its substrate, checked before any work
@@ -99,7 +101,11 @@ impl<'a> Pipeline<'a> {
             confirm_stage(&patterns, p, store, obs)?
         };
         obs.stage(Stage::ReportData, "");
-        ReportDataStage::new(self.ctx).run(patterns, dem, order.cross)
+        let mut o = ReportDataStage::new(self.ctx).run(patterns, dem, order.cross)?;
+        if let Some(y) = &p.fab_yield {
+            o.yields = YieldStage::new(self.ctx, y).run(&o)?;
+        }
+        Ok(o)
     }
 
     /// Every pattern's stages ([`Pipeline::pattern`]) in `order`, each robust search above the
@@ -361,6 +367,7 @@ impl<'a> Pipeline<'a> {
             answers: Vec::new(),
             maps: Vec::new(),
             p_crit: None,
+            yields: Vec::new(),
         })
     }
 }

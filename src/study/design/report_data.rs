@@ -54,6 +54,7 @@ impl<'a> ReportDataStage<'a> {
             answers,
             maps: Vec::new(),
             p_crit: None,
+            yields: Vec::new(),
         };
         let mapped = best::best_order(&o, best::BEST_PATTERNS);
         for (i, (pr, a)) in o.patterns.iter().zip(&o.answers).enumerate() {

@@ -38,6 +38,8 @@ pub struct ReportData {
     pub limit_example: String,
     /// The answer table: one row per pattern ([`super::top::top_rows`]).
     pub top: Vec<super::top::TopRow>,
+    /// The yield stage's column head and plots (`None`: it did not run).
+    pub fab_yield: Option<super::yields::YieldHead>,
     /// One short paragraph per pattern's answer ([`super::top::paragraph`]).
     pub answers: Vec<String>,
     /// How to run each answer: its scene file and commands ([`super::top::answer_runs`]).
@@ -307,7 +309,10 @@ impl ReportData {
                 Some(slide_command(pr, d, e.run.protocol, p))
             })
             .collect();
-        let top = super::top::top_rows(o, p, &dem);
+        let mut top = super::top::top_rows(o, p, &dem);
+        for (r, y) in top.iter_mut().zip(&o.yields) {
+            r.fab_yield = super::yields::cell(y.as_ref());
+        }
         let recipes = pats
             .as_ref()
             .and_then(|rows| super::recipes::section(rows, o, &top));
@@ -361,6 +366,7 @@ impl ReportData {
             compared: pats
                 .as_ref()
                 .map_or(Vec::new(), |rows| rows.iter().map(Into::into).collect()),
+            fab_yield: super::yields::head(o, p),
             dem_ran: o.dem_ran,
             dem: has_dem.then(|| dem_section(o, p, &dem)),
             ranking,

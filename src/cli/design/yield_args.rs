@@ -1,0 +1,75 @@
+//! The flags of `design`'s opt-in yield stage ([`crate::study::design::yield_stage`]).
+
+use crate::study::design::yield_stage::YieldStageParams;
+use anyhow::{bail, Result};
+
+/// `--yield-samples` (turns the stage on) and its knobs.
+#[derive(clap::Args, Debug, Clone)]
+pub struct YieldArgs {
+    /// Compute the yield of each answer over fabrication with N devices (θ and pull-direction
+    /// offsets uniform over the tolerance box, each on a fresh substrate whose seed the design
+    /// did not search): the answer table gets the load at yield --yield-quantile with its
+    /// confidence bound, and yield_<p>.csv/.json/.png are written (59 gives the one-sided
+    /// 95 %/95 % bound). Off by default: with the DEM its decisions take minutes per answer.
+    #[arg(long = "yield-samples", value_name = "N")]
+    pub yield_samples: Option<usize>,
+    /// With --yield-samples: q in (0, 1), the fraction of devices the quoted load must hold.
+    #[arg(
+        long = "yield-quantile",
+        value_name = "Q",
+        default_value_t = 0.95,
+        allow_hyphen_values = true,
+        requires = "yield_samples"
+    )]
+    pub yield_quantile: f64,
+    /// With --yield-samples: γ in (0, 1), confidence of the yield's interval and of the quoted
+    /// load's bound.
+    #[arg(
+        long = "yield-confidence",
+        value_name = "G",
+        default_value_t = 0.95,
+        allow_hyphen_values = true,
+        requires = "yield_samples"
+    )]
+    pub yield_confidence: f64,
+    /// With --yield-samples: seed of the devices' draws (the same seed gives the same devices).
+    #[arg(
+        long = "yield-sample-seed",
+        value_name = "SEED",
+        default_value_t = 1,
+        requires = "yield_samples"
+    )]
+    pub yield_seed: u64,
+    /// With --yield-samples and the DEM: fresh devices run with the DEM at each answer's quoted
+    /// load as a check (0: none).
+    #[arg(
+        long = "yield-dem-check",
+        value_name = "N",
+        default_value_t = 10,
+        requires = "yield_samples"
+    )]
+    pub yield_dem_check: usize,
+}
+
+impl YieldArgs {
+    /// The stage's knobs, checked (`None`: no --yield-samples, the stage does not run).
+    pub fn params(&self) -> Result<Option<YieldStageParams>> {
+        let Some(samples) = self.yield_samples else {
+            return Ok(None);
+        };
+        if samples == 0 {
+            bail!("`--yield-samples`: 0 devices; give at least 1 (59 for a 95 %/95 % bound)");
+        }
+        Ok(Some(YieldStageParams {
+            samples,
+            quantile: super::super::yield_cmd::fraction(self.yield_quantile, "--yield-quantile")?,
+            confidence: super::super::yield_cmd::fraction(
+                self.yield_confidence,
+                "--yield-confidence",
+            )?,
+            resolution: 0.01,
+            seed: self.yield_seed,
+            dem_check: self.yield_dem_check,
+        }))
+    }
+}

@@ -1,0 +1,155 @@
+//! Stage 8 of a design, [`super::Stage::Yield`], opt-in ([`DesignParams::fab_yield`]): the yield
+//! of each pattern's answer — the fraction of fabricated devices that stay superlubric at a
+//! load, and the load that a fraction q of them hold with its one-sided confidence bound
+//! ([`crate::study::fab_yield`]).
+//!
+//! Each answer (θ, pull direction, its pattern's scene or recipe) is handed to
+//! [`fab_yield`] with the design's tolerance box as the fabrication tolerance (θ and
+//! pull-direction offsets uniform over ± the design's `--theta-tol-deg` × `--direction-tol-deg`),
+//! a fresh substrate per device at the scene's σ_h whose seed is never the scene's own nor one
+//! of the design's searched `--seeds` ([`FabricationModel::excluded_seeds`]), the design's load
+//! ladder, μ_sl, contact line and estimate knobs. With the DEM, the devices the estimate
+//! cannot decide at the quoted load get a DEM run with the design's protocol and model, and
+//! `dem_check` fresh devices a DEM check there (runs in `yield/<pattern>/`, reused by a
+//! re-run); without (`--no-dem`), the estimate's part only. The estimate's part is not stored:
+//! a re-run recomputes it.
+//!
+//! Cost per answer: samples × (one ladder path + 8–15 single-load estimates) / threads for the
+//! estimate (seconds on the study's scenes), plus (devices in the band + check) DEM runs.
+
+use super::ctx::Ctx;
+use super::observer::{Event, Stage};
+use super::outcome::DesignOutcome;
+use super::params::DesignParams;
+use crate::study::fab_yield::{
+    fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldOutcome, YieldParams,
+};
+use anyhow::Result;
+use surrogate::units::deg_to_rad;
+
+/// The knobs of the yield stage (the fabrication tolerance, the ladder and the DEM are the
+/// design's own).
+#[derive(Debug, Clone, PartialEq)]
+pub struct YieldStageParams {
+    /// Devices drawn per answer (≥ 1; 59 gives the one-sided 95 %/95 % bound, Wilks).
+    pub samples: usize,
+    /// q in (0, 1): the fraction of devices the quoted load must hold.
+    pub quantile: f64,
+    /// γ in (0, 1): confidence of the yield's interval and of the quoted load's bound.
+    pub confidence: f64,
+    /// Resolution of each device's critical load, a fraction of the load (0 < r ≤ 0.5).
+    pub resolution: f64,
+    /// Seed of the devices' draws (each device its own stream).
+    pub seed: u64,
+    /// Fresh devices run with the DEM at the quoted load as a check (0: none; ignored without
+    /// the DEM).
+    pub dem_check: usize,
+}
+
+/// The yield of one pattern's answer.
+#[derive(Debug, Clone)]
+pub struct AnswerYield {
+    /// The answer's θ (degrees).
+    pub theta_deg: f64,
+    /// The answer's pull direction from the substrate x axis (degrees).
+    pub direction_deg: f64,
+    /// What the yield found (rows per device and the summary).
+    pub outcome: YieldOutcome,
+}
+
+/// The yield stage (see the module docs).
+pub struct YieldStage<'a> {
+    ctx: Ctx<'a>,
+    params: &'a YieldStageParams,
+}
+
+/// The yield of the answer (θ, direction in degrees) of a pattern whose scene is `scene`, with
+/// the design's knobs `p` and the stage's `y`; the DEM runs (without `--no-dem`) in `dem_dir`.
+pub fn yield_params(
+    p: &DesignParams,
+    y: &YieldStageParams,
+    scene: &surrogate::Scene,
+    (theta_deg, direction_deg): (f64, f64),
+    dem_dir: std::path::PathBuf,
+) -> YieldParams {
+    let mut excluded = vec![scene.substrate.seed];
+    excluded.extend(
+        p.seeds
+            .iter()
+            .copied()
+            .filter(|s| *s != scene.substrate.seed),
+    );
+    YieldParams {
+        theta_deg,
+        direction_deg,
+        fabrication: FabricationModel {
+            theta: OffsetLaw::Uniform {
+                half_width_deg: p.theta_tol_deg,
+            },
+            direction: OffsetLaw::Uniform {
+                half_width_deg: p.direction_tol_deg,
+            },
+            sphere_diameter_cv: 0.0,
+            p_crit_sigma: 0.0,
+            seed: y.seed,
+            excluded_seeds: excluded,
+        },
+        samples: y.samples,
+        quantile: y.quantile,
+        confidence: y.confidence,
+        resolution: y.resolution,
+        limit: p.limit(),
+        dem: (!p.no_dem).then(|| YieldDem {
+            params: p.dem.clone(),
+            check: y.dem_check,
+            check_load: None,
+            jobs: p.jobs,
+            dir: dem_dir,
+            max_rounds: 4,
+        }),
+    }
+}
+
+impl<'a> YieldStage<'a> {
+    /// The stage in `ctx` with its knobs.
+    pub fn new(ctx: Ctx<'a>, params: &'a YieldStageParams) -> Self {
+        YieldStage { ctx, params }
+    }
+
+    /// The yield of each pattern's answer of `o`, in pattern order (`None` for a pattern with
+    /// no answer superlubric at any load: nothing to fabricate).
+    pub fn run(&self, o: &DesignOutcome) -> Result<Vec<Option<AnswerYield>>> {
+        let Ctx { p, store, obs } = self.ctx;
+        let mut out = Vec::with_capacity(o.patterns.len());
+        for (pr, a) in o.patterns.iter().zip(&o.answers) {
+            let Some(c) = a
+                .index
+                .and_then(|i| pr.ranking.get(i))
+                .filter(|c| c.score.nominal_to_mn > 0.0)
+            else {
+                out.push(None);
+                continue;
+            };
+            obs.stage(Stage::Yield, &pr.scene.name);
+            let scene = pr.scene.scene.with_theta(deg_to_rad(c.theta_deg));
+            let yp = yield_params(
+                p,
+                self.params,
+                &scene,
+                (c.theta_deg, c.direction_deg),
+                store.path(&format!("yield/{}", pr.scene.name)),
+            );
+            let outcome = fab_yield(&scene, &yp, obs.progress())?;
+            obs.event(&Event::Yield {
+                pattern: &pr.scene.name,
+                summary: &outcome.summary,
+            });
+            out.push(Some(AnswerYield {
+                theta_deg: c.theta_deg,
+                direction_deg: c.direction_deg,
+                outcome,
+            }));
+        }
+        Ok(out)
+    }
+}

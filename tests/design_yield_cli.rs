@@ -1,0 +1,146 @@
+//! `superlube design --yield-samples N` (the opt-in yield stage) on a small scene without the
+//! DEM: each answer's `yield_<p>.csv` (one row per device, its seed never the scene's nor a
+//! searched one), `yield_<p>.json` and `yield_<p>.png` with sidecars, and the report's "load at
+//! 95 % yield" column giving the summary's load and bound; without the flag no yield file is
+//! written, the report has no such column and every other output is the same bytes; bad yield
+//! flags are refused naming the flag.
+
+mod common;
+use common::{assert_ok, bin, fails_naming, tmpdir};
+use std::path::Path;
+
+/// square-tri on a 15 µm slider (≈ 80 spheres), a rough substrate searched on seeds 1 and 2,
+/// θ every 1°, a ladder of loads scaled to its sphere count, the default tolerance box.
+const SMALL: [&str; 14] = [
+    "--pattern",
+    "square-tri",
+    "--slider-radius-um",
+    "15",
+    "--substrate-um",
+    "60x60",
+    "--sigma-h-um",
+    "0.002",
+    "--seeds",
+    "1,2",
+    "--theta",
+    "0:30:1",
+    "--load-mn",
+    "0.01,0.03,0.06,0.09,0.12,0.15",
+];
+
+fn design(extra: &[&str], out: &Path) -> std::process::Output {
+    bin()
+        .arg("design")
+        .args(SMALL)
+        .args(["--no-dem"])
+        .args(extra)
+        .arg("--out-dir")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn the_yield_stage_writes_its_files_and_the_report_column_and_leaves_the_rest_unchanged() {
+    let d = tmpdir("design-yield");
+    let (on, off) = (d.join("on"), d.join("off"));
+    let o = design(&["--yield-samples", "12"], &on);
+    assert_ok(&o);
+    let log = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        log.contains("square-tri: yield of the answer over fabrication: 95 % of 12 devices hold"),
+        "{log}"
+    );
+    assert_ok(&design(&[], &off));
+    for f in [
+        "yield_square-tri.csv",
+        "yield_square-tri.json",
+        "yield_square-tri.png",
+    ] {
+        assert!(on.join(f).exists(), "{f} missing");
+        assert!(on.join(format!("{f}.meta.json")).exists(), "{f} sidecar");
+        assert!(!off.join(f).exists(), "{f} written without --yield-samples");
+    }
+    // one row per device; every drawn substrate seed differs from the scene's (0) and the
+    // searched ones (1, 2)
+    let mut r = csv::Reader::from_path(on.join("yield_square-tri.csv")).unwrap();
+    let h = r.headers().unwrap().clone();
+    let seed = h.iter().position(|c| c == "seed").unwrap();
+    let rows: Vec<csv::StringRecord> = r.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), 12);
+    for row in &rows {
+        let s: u64 = row[seed].parse().unwrap();
+        assert!(![0, 1, 2].contains(&s), "drawn seed {s} was searched");
+    }
+    // the summary is for the answer, and the report's cell gives its load and bound
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(on.join("yield_square-tri.json")).unwrap())
+            .unwrap();
+    assert_eq!(s["samples"], 12);
+    let load = s["load_at_quantile_mN"].as_f64().expect("a quoted load");
+    let report = std::fs::read_to_string(on.join("report.md")).unwrap();
+    assert!(
+        report.contains("| load at 95 % yield (mN; ≥ its 95 % bound) |"),
+        "{report}"
+    );
+    let row = report
+        .lines()
+        .find(|l| l.starts_with("| square-tri |"))
+        .unwrap();
+    // the cell: the quoted load to 3 significant digits, no bound from 12 devices
+    let cell = row.split(" | ").nth(5).unwrap();
+    let (shown, rest) = cell.split_once(' ').unwrap();
+    let shown: f64 = shown.parse().unwrap();
+    assert!((shown - load).abs() <= 0.005 * load, "{row}");
+    assert_eq!(rest, "(no bound: 12 devices, needs ≥ 59)", "{row}");
+    assert!(report.contains("](yield_square-tri.png)"), "{report}");
+    let sidecar = std::fs::read_to_string(on.join("yield_square-tri.csv.meta.json")).unwrap();
+    assert!(sidecar.contains("\"sample_seed\""), "{sidecar}");
+    // without the stage: no yield column, and every shared output the same bytes (the
+    // sidecars record the command line, the report its stamp and the yield)
+    let plain = std::fs::read_to_string(off.join("report.md")).unwrap();
+    assert!(
+        !plain.contains("% yield") && !plain.contains("yield_"),
+        "{plain}"
+    );
+    for f in [
+        "ranking.csv",
+        "patterns.csv",
+        "shortlist_square-tri.csv",
+        "friction_square-tri.csv",
+        "tolerance_square-tri.csv",
+        "answer_square-tri.toml",
+    ] {
+        assert_eq!(
+            std::fs::read(on.join(f)).unwrap(),
+            std::fs::read(off.join(f)).unwrap(),
+            "{f} differs with the yield stage"
+        );
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn bad_yield_flags_name_the_flag() {
+    let d = tmpdir("design-yield-bad");
+    let out = d.join("x");
+    let o = out.to_str().unwrap();
+    let run = |extra: &[&str], flag: &str| {
+        let mut a: Vec<&str> = vec!["design", "--pattern", "square-tri", "--no-dem"];
+        a.extend(extra);
+        a.extend(["--out-dir", o]);
+        fails_naming(&a, flag);
+    };
+    run(&["--yield-samples", "0"], "--yield-samples");
+    run(
+        &["--yield-samples", "5", "--yield-quantile", "1.5"],
+        "--yield-quantile",
+    );
+    run(
+        &["--yield-samples", "5", "--yield-confidence", "0"],
+        "--yield-confidence",
+    );
+    run(&["--yield-quantile", "0.9"], "--yield-samples");
+    assert!(!out.join("report.md").exists());
+    std::fs::remove_dir_all(&d).ok();
+}
