@@ -49,6 +49,7 @@
 
 pub mod alpha_scan;
 pub mod answer;
+pub mod answer_yield;
 pub mod best;
 pub mod confirm;
 mod ctx;
@@ -74,6 +75,7 @@ pub mod store;
 pub mod symmetry_words;
 pub mod trim;
 pub mod walk;
+pub mod yield_params;
 pub mod yield_stage;
 
 pub use dem_entry::DemEntry;

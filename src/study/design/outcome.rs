@@ -2,10 +2,10 @@
 //! answer, the tolerance maps and the P_crit sweep, handed to the report.
 
 use super::answer::Answer;
+use super::answer_yield::AnswerYield;
 use super::dem_entry::DemEntry;
 use super::p_crit::PCritSweep;
 use super::pattern_result::{AnswerMap, PatternResult};
-use super::yield_stage::AnswerYield;
 
 /// What [`super::design`] found.
 #[derive(Debug, Clone)]

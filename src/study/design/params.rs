@@ -97,5 +97,5 @@ pub struct DesignParams {
     pub protocol_check: bool,
     /// The yield of each answer over fabrication ([`super::yield_stage`]); `None`: the stage
     /// does not run (the default: its DEM decisions take minutes per answer).
-    pub fab_yield: Option<super::yield_stage::YieldStageParams>,
+    pub fab_yield: Option<super::yield_params::YieldStageParams>,
 }

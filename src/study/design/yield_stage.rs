@@ -17,45 +17,15 @@
 //! Cost per answer: samples × (one ladder path + 8–15 single-load estimates) / threads for the
 //! estimate (seconds on the study's scenes), plus (devices in the band + check) DEM runs.
 
+pub use super::answer_yield::AnswerYield;
 use super::ctx::Ctx;
 use super::observer::{Event, Stage};
 use super::outcome::DesignOutcome;
 use super::params::DesignParams;
-use crate::study::fab_yield::{
-    fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldOutcome, YieldParams,
-};
+pub use super::yield_params::YieldStageParams;
+use crate::study::fab_yield::{fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldParams};
 use anyhow::Result;
 use surrogate::units::deg_to_rad;
-
-/// The knobs of the yield stage (the fabrication tolerance, the ladder and the DEM are the
-/// design's own).
-#[derive(Debug, Clone, PartialEq)]
-pub struct YieldStageParams {
-    /// Devices drawn per answer (≥ 1; 59 gives the one-sided 95 %/95 % bound, Wilks).
-    pub samples: usize,
-    /// q in (0, 1): the fraction of devices the quoted load must hold.
-    pub quantile: f64,
-    /// γ in (0, 1): confidence of the yield's interval and of the quoted load's bound.
-    pub confidence: f64,
-    /// Resolution of each device's critical load, a fraction of the load (0 < r ≤ 0.5).
-    pub resolution: f64,
-    /// Seed of the devices' draws (each device its own stream).
-    pub seed: u64,
-    /// Fresh devices run with the DEM at the quoted load as a check (0: none; ignored without
-    /// the DEM).
-    pub dem_check: usize,
-}
-
-/// The yield of one pattern's answer.
-#[derive(Debug, Clone)]
-pub struct AnswerYield {
-    /// The answer's θ (degrees).
-    pub theta_deg: f64,
-    /// The answer's pull direction from the substrate x axis (degrees).
-    pub direction_deg: f64,
-    /// What the yield found (rows per device and the summary).
-    pub outcome: YieldOutcome,
-}
 
 /// The yield stage (see the module docs).
 pub struct YieldStage<'a> {

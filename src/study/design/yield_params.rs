@@ -1,0 +1,22 @@
+//! [`YieldStageParams`]: the knobs of the design's yield stage ([`super::yield_stage`]), in a
+//! file of their own so that [`super::params::DesignParams`] holds them without importing the
+//! stage.
+
+/// The knobs of the yield stage (the fabrication tolerance, the ladder and the DEM are the
+/// design's own).
+#[derive(Debug, Clone, PartialEq)]
+pub struct YieldStageParams {
+    /// Devices drawn per answer (≥ 1; 59 gives the one-sided 95 %/95 % bound, Wilks).
+    pub samples: usize,
+    /// q in (0, 1): the fraction of devices the quoted load must hold.
+    pub quantile: f64,
+    /// γ in (0, 1): confidence of the yield's interval and of the quoted load's bound.
+    pub confidence: f64,
+    /// Resolution of each device's critical load, a fraction of the load (0 < r ≤ 0.5).
+    pub resolution: f64,
+    /// Seed of the devices' draws (each device its own stream).
+    pub seed: u64,
+    /// Fresh devices run with the DEM at the quoted load as a check (0: none; ignored without
+    /// the DEM).
+    pub dem_check: usize,
+}
