@@ -55,6 +55,8 @@ measure "Tier 2 friction estimate: 3 loads of one (θ, α)" -- \
     friction --pattern tri-tri --theta-deg 10.6 --alpha-deg 6.5 --load-mn 0.35,1.4,2.1 --out f.csv
 measure "tolerance map: 41 θ × 21 pull directions × 11 loads (the default)" -- \
     tolerance --pattern square-tri --theta-deg 0 --alpha-deg 90 --out-dir tol
+measure "yield of one answer, the estimate's part: 59 devices (square-tri θ = 7.3°, pull 82.53°, σ_h 0.002 µm)" -- \
+    yield --pattern square-tri --sigma-h-um 0.002 --theta-deg 7.3 --direction-deg 82.53 --no-dem --out-dir y
 for m in reduced full; do
     measure "Tier 3 DEM, the study's protocol 10 + 10 + 300 µs, --model $m: superlubric scene (square-tri 0°, α = 90°, 1.4 mN)" -- \
         slide --pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 --model "$m" --out s.csv --json s.json
