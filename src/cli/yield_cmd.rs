@@ -13,7 +13,9 @@ use crate::runs::{
     meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
     progress::Reporter,
 };
-use crate::study::fab_yield::{fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldParams};
+use crate::study::fab_yield::{
+    fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldParams, DEFAULT_RESOLUTION,
+};
 use crate::study::record;
 use crate::study::rows::label;
 use crate::study::tolerance::LimitParams;
@@ -102,7 +104,7 @@ pub struct Args {
     #[arg(
         long,
         value_name = "R",
-        default_value_t = 0.01,
+        default_value_t = DEFAULT_RESOLUTION,
         allow_hyphen_values = true
     )]
     resolution: f64,
@@ -149,15 +151,6 @@ pub struct Args {
     out: PathBuf,
 }
 
-/// A fraction flag in (0, 1).
-pub(super) fn fraction(v: f64, flag: &str) -> Result<f64> {
-    if v.is_finite() && v > 0.0 && v < 1.0 {
-        Ok(v)
-    } else {
-        bail!("`{flag}`: {v} must lie strictly between 0 and 1")
-    }
-}
-
 /// The offset law of one axis: normal with `sigma` (degrees) when given, else uniform over
 /// ±`tol`.
 fn law(tol: f64, sigma: Option<f64>, flag: &str) -> Result<OffsetLaw> {
@@ -178,8 +171,8 @@ pub fn run(a: Args) -> Result<()> {
         0 => bail!("`--samples`: 0 devices; give at least 1 (59 for a 95 %/95 % bound)"),
         n => n,
     };
-    let quantile = fraction(a.quantile, "--quantile")?;
-    let confidence = fraction(a.confidence, "--confidence")?;
+    let quantile = checks::fraction(a.quantile, "--quantile")?;
+    let confidence = checks::fraction(a.confidence, "--confidence")?;
     if !(a.resolution.is_finite() && a.resolution > 0.0 && a.resolution <= 0.5) {
         bail!(
             "`--resolution`: {} must lie in (0, 0.5] (a fraction of the load)",

@@ -1,6 +1,8 @@
 //! The flags of `design`'s opt-in yield stage ([`crate::study::design::yield_stage`]).
 
+use super::super::checks;
 use crate::study::design::yield_stage::YieldStageParams;
+use crate::study::fab_yield::DEFAULT_RESOLUTION;
 use anyhow::{bail, Result};
 
 /// `--yield-samples` (turns the stage on) and its knobs.
@@ -62,12 +64,9 @@ impl YieldArgs {
         }
         Ok(Some(YieldStageParams {
             samples,
-            quantile: super::super::yield_cmd::fraction(self.yield_quantile, "--yield-quantile")?,
-            confidence: super::super::yield_cmd::fraction(
-                self.yield_confidence,
-                "--yield-confidence",
-            )?,
-            resolution: 0.01,
+            quantile: checks::fraction(self.yield_quantile, "--yield-quantile")?,
+            confidence: checks::fraction(self.yield_confidence, "--yield-confidence")?,
+            resolution: DEFAULT_RESOLUTION,
             seed: self.yield_seed,
             dem_check: self.yield_dem_check,
         }))

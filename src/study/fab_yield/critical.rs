@@ -30,6 +30,10 @@ use serde::{Deserialize, Serialize};
 use surrogate::solver::Solver;
 use surrogate::units::{deg_to_rad, gpa_to_pa};
 
+/// The default resolution of a critical load: 1 % of the load (`superlube yield --resolution`,
+/// and the design's yield stage).
+pub const DEFAULT_RESOLUTION: f64 = 0.01;
+
 /// What ends superlubricity just above the critical load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]

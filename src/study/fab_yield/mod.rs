@@ -28,7 +28,7 @@ pub mod fabrication;
 pub mod interval;
 pub mod row;
 
-pub use critical::{critical_load, CriticalLoad, Limit};
+pub use critical::{critical_load, CriticalLoad, Limit, DEFAULT_RESOLUTION};
 pub use dem_decide::YieldDem;
 pub use device::Device;
 pub use fabrication::{FabricationModel, FabricationRecord, OffsetLaw, Sample};
