@@ -89,9 +89,20 @@ pub struct CriticalLoad {
     pub censored: bool,
     /// Single loads estimated (the device's cost).
     pub estimates: usize,
-    /// Whether any estimate of the device lies in the springs mount's resonance band (where
-    /// the DEM decides with the full model).
-    pub mount_resonance: bool,
+    /// The lowest load (N) at which an estimate of the device has failing contacts on the
+    /// springs mount in its resonance band (`mount_resonance`); `None`: no such estimate.
+    /// A DEM run at or above it lets the DEM choose its model ([`CriticalLoad::resonant_at`]).
+    pub resonance_from: Option<f64>,
+}
+
+impl CriticalLoad {
+    /// Whether the estimate puts the device on the mount's resonance at load `w` (N): some
+    /// estimate at or below `w` has failing contacts there (contacts that fail at a load fail
+    /// above it). Below that load the contacts the estimate sees are intact, and the DEM's
+    /// model is the one asked for.
+    pub fn resonant_at(&self, w: f64) -> bool {
+        self.resonance_from.is_some_and(|r| r <= w)
+    }
 }
 
 /// The three properties of a load (module docs).
@@ -244,10 +255,12 @@ pub fn critical_load(
         limited_by,
         censored,
         estimates: probes.rows.len(),
-        mount_resonance: probes
+        resonance_from: probes
             .rows
             .iter()
-            .any(|(_, r)| r.mount_resonance == Some(true)),
+            .filter(|(_, r)| r.mount_resonance == Some(true))
+            .map(|(w, _)| *w)
+            .min_by(f64::total_cmp),
     })
 }
 

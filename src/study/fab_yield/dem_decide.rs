@@ -4,7 +4,8 @@
 //! not, as far as the estimate's measured error goes; it gets one DEM `slide` run at W_q with
 //! the design's protocol and model choice (the design's `--dem-model`; `auto` where the
 //! device's estimate lies in the springs mount's resonance band, as the design does for a
-//! recipe outside the validated range), on its own substrate, θ and pull direction. The DEM's
+//! recipe outside the validated range; judged at the run's load, [`super::CriticalLoad::resonant_at`]),
+//! on its own substrate, θ and pull direction. The DEM's
 //! verdict ([`dem_superlubric`]) overrules the estimate's: a device that fails at W_q gets a
 //! critical load below W_q, one that holds a critical load of at least W_q. Since that moves
 //! W_q, the decisions repeat at the new W_q until no device in its bracket is left undecided.
@@ -47,8 +48,8 @@ pub struct Ask<'a> {
     pub sample: &'a Sample,
     /// Load (N).
     pub load: f64,
-    /// Whether its estimate lies in the mount's resonance band (the DEM then chooses its
-    /// model itself).
+    /// Whether its estimate at `load` has failing contacts on the mount's resonance (the DEM
+    /// then chooses its model itself).
     pub mount_resonance: bool,
 }
 

@@ -131,7 +131,7 @@ mod tests {
                 limited_by: Limit::Path,
                 censored: false,
                 estimates: 3,
-                mount_resonance: false,
+                resonance_from: None,
             },
             dem,
         }

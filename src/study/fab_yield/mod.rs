@@ -90,6 +90,25 @@ fn holding(sorted: &[f64], w: f64) -> usize {
     sorted.len() - sorted.partition_point(|&x| x < w)
 }
 
+/// Whether the estimate of device `s` at load `w` (N) has failing contacts on the mount's
+/// resonance (a fresh device of the DEM check: the rule of the decisions,
+/// [`CriticalLoad::resonant_at`]). Cost: one solver build and one single-load estimate.
+fn resonant_at(scene: &Scene, p: &YieldParams, s: &Sample, w: f64) -> Result<bool> {
+    let solver = Solver::new(&s.scene(scene))?;
+    let mut lp = p.limit.clone();
+    lp.loads = vec![w];
+    let rows = crate::study::tolerance::rows_at(
+        &solver,
+        label(p.theta_deg + s.theta_offset_deg),
+        label(p.direction_deg + s.direction_offset_deg),
+        &[0],
+        &lp,
+    )?;
+    Ok(rows
+        .first()
+        .is_some_and(|r| r.mount_resonance == Some(true)))
+}
+
 /// The yield of the design (θ, direction) of `scene` (see the module docs). Progress: the
 /// stage `yield: critical loads` over the devices, then the DEM's stages.
 pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Result<YieldOutcome> {
@@ -156,7 +175,7 @@ pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Res
                 .map(|&i| Ask {
                     sample: &devices[i].sample,
                     load: w,
-                    mount_resonance: devices[i].estimate.mount_resonance,
+                    mount_resonance: devices[i].estimate.resonant_at(w),
                 })
                 .collect();
             let verdicts = dd.run(&asks, "yield: DEM decisions", progress)?;
@@ -195,12 +214,18 @@ pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Res
         let fresh: Vec<Sample> = (n..n + dd.dem.check)
             .map(|i| p.fabrication.sample(scene, i))
             .collect();
+        // the model rule of the decisions: the estimate at w says whether the mount resonates
+        let resonant: Vec<bool> = fresh
+            .par_iter()
+            .map(|s| resonant_at(scene, p, s, w))
+            .collect::<Result<_>>()?;
         let asks: Vec<Ask> = fresh
             .iter()
-            .map(|s| Ask {
+            .zip(resonant)
+            .map(|(s, r)| Ask {
                 sample: s,
                 load: w,
-                mount_resonance: false,
+                mount_resonance: r,
             })
             .collect();
         let verdicts = dd.run(&asks, "yield: DEM check", progress)?;
