@@ -144,3 +144,48 @@ fn bad_yield_flags_name_the_flag() {
     assert!(!out.join("report.md").exists());
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `--rank-by yield`: the top designs are ordered by their load at 95 % yield (best first,
+/// `yield_rank.csv`), the ranking's rank 1 is the first of them, the answer's own yield (the
+/// same devices, no DEM) gives the load it was ranked by, and the report says how it ranked.
+#[test]
+fn rank_by_yield_orders_the_top_designs_by_their_load_at_yield() {
+    let d = tmpdir("design-rank-yield");
+    let out = d.join("y");
+    let o = design(&["--rank-by", "yield", "--yield-samples", "12"], &out);
+    assert_ok(&o);
+    let mut r = csv::Reader::from_path(out.join("yield_rank.csv")).unwrap();
+    let h = r.headers().unwrap().clone();
+    let col = |n: &str| h.iter().position(|c| c == n).unwrap();
+    let (rank, theta, alpha, load) = (
+        col("rank"),
+        col("theta_deg"),
+        col("alpha_deg"),
+        col("load_at_yield_mN"),
+    );
+    let rows: Vec<csv::StringRecord> = r.records().map(Result::unwrap).collect();
+    assert!(!rows.is_empty() && rows.len() <= 3, "{rows:?}");
+    let loads: Vec<f64> = rows.iter().map(|x| x[load].parse().unwrap()).collect();
+    for (k, row) in rows.iter().enumerate() {
+        assert_eq!(row[rank].parse::<usize>().unwrap(), k + 1, "{rows:?}");
+    }
+    assert!(loads.windows(2).all(|w| w[0] >= w[1]), "{loads:?}");
+    // rank 1 of ranking.csv is the first ranked by yield
+    let mut rk = csv::Reader::from_path(out.join("ranking.csv")).unwrap();
+    let hk = rk.headers().unwrap().clone();
+    let first = rk.records().next().unwrap().unwrap();
+    let at = |n: &str| first[hk.iter().position(|c| c == n).unwrap()].to_string();
+    assert_eq!(at("theta_deg"), rows[0][theta].to_string());
+    assert_eq!(at("alpha_deg"), rows[0][alpha].to_string());
+    // the answer's yield: the same 12 devices, so the same load (no bound from 12 devices)
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("yield_square-tri.json")).unwrap())
+            .unwrap();
+    assert_eq!(s["load_at_quantile_mN"].as_f64().unwrap(), loads[0]);
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(
+        report.contains("**Ranked by yield** (`--rank-by yield`)"),
+        "{report}"
+    );
+    std::fs::remove_dir_all(&d).ok();
+}

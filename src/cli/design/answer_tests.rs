@@ -78,6 +78,7 @@ fn pattern(ds: &DesignScene, n: usize) -> PatternResult {
                 mu_worst: 0.01,
                 contacts: 10.0,
                 seed_limits_mn: None,
+                yield_to_mn: None,
             },
         })
         .collect();

@@ -1,6 +1,7 @@
 //! The flags of `design`'s opt-in yield stage ([`crate::study::design::yield_stage`]).
 
 use super::super::checks;
+use crate::study::design::yield_params::RankBy;
 use crate::study::design::yield_stage::YieldStageParams;
 use crate::study::fab_yield::DEFAULT_RESOLUTION;
 use anyhow::{bail, Result};
@@ -51,13 +52,39 @@ pub struct YieldArgs {
         requires = "yield_samples"
     )]
     pub yield_dem_check: usize,
+    /// What orders each pattern's designs: `worst-case` (the robust limit over the tolerance
+    /// box and the searched seeds) or `yield` (the top max(--confirm, 3) designs by the load
+    /// at --yield-quantile yield, its confidence bound, by the estimate; the robust order among
+    /// equals). `yield` turns the yield stage on with --yield-samples devices (59 if not
+    /// given) and costs the estimate's part of a yield per ranked design (seconds each).
+    #[arg(long = "rank-by", value_name = "ORDER", value_enum, default_value_t = RankByArg::WorstCase)]
+    pub rank_by: RankByArg,
 }
+
+/// `--rank-by`: what orders each pattern's designs.
+#[derive(clap::ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RankByArg {
+    /// The robust limit: the worst case over the tolerance box and the searched seeds.
+    WorstCase,
+    /// The load at --yield-quantile yield over fabrication (its confidence bound).
+    Yield,
+}
+
+/// Devices of `--rank-by yield` without `--yield-samples`: the fewest that give a one-sided
+/// 95 %/95 % bound (Wilks).
+const RANK_BY_YIELD_SAMPLES: usize = 59;
 
 impl YieldArgs {
     /// The stage's knobs, checked (`None`: no --yield-samples, the stage does not run).
     pub fn params(&self) -> Result<Option<YieldStageParams>> {
-        let Some(samples) = self.yield_samples else {
-            return Ok(None);
+        let rank_by = match self.rank_by {
+            RankByArg::WorstCase => RankBy::WorstCase,
+            RankByArg::Yield => RankBy::Yield,
+        };
+        let samples = match (self.yield_samples, rank_by) {
+            (Some(n), _) => n,
+            (None, RankBy::Yield) => RANK_BY_YIELD_SAMPLES,
+            (None, RankBy::WorstCase) => return Ok(None),
         };
         if samples == 0 {
             bail!("`--yield-samples`: 0 devices; give at least 1 (59 for a 95 %/95 % bound)");
@@ -69,6 +96,7 @@ impl YieldArgs {
             resolution: DEFAULT_RESOLUTION,
             seed: self.yield_seed,
             dem_check: self.yield_dem_check,
+            rank_by,
         }))
     }
 }

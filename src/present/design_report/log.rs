@@ -199,6 +199,16 @@ pub fn line(e: &Event<'_>) -> Option<String> {
             b.score.mu_worst,
             stop_text(stop, skipped, floor_mn)
         ),
+        Event::YieldRank { pattern, designs } => format!(
+            "{pattern}: ranking the top {designs} design(s) by their yield over fabrication (--rank-by yield; the estimate's part of each)"
+        ),
+        Event::YieldRanked { pattern, best: b } => format!(
+            "{pattern}: best design by yield: θ = {}°, α = {}°, load at yield {} mN (robust limit {} mN)",
+            b.theta_deg,
+            b.alpha_deg,
+            b.score.yield_to_mn.unwrap_or(0.0),
+            b.score.superlubric_to_mn
+        ),
         Event::DemNothing => "DEM: nothing to confirm (no ranked design)".to_string(),
         Event::Yield { pattern, summary: s } => {
             let pct = |v: f64| crate::study::rows::label(100.0 * v);

@@ -14,6 +14,7 @@
 //! | `dem.csv` | [`DemRow`] per DEM run: μ_DEM next to μ_est |
 //! | `patterns.csv`, `patterns.png`, `contacts_<p>.png` | per pattern its geometry beside its best design; the limit against the family's parameter; the contact maps of the best three ([`patterns`]) |
 //! | `yield_<p>.csv`, `.json`, `.png` | with `--yield-samples`: each answer's yield over fabrication, one row per device, the summary, the curve ([`yields`]) |
+//! | `yield_rank.csv` | with `--rank-by yield`: the designs ranked by yield, their load at yield q beside the robust limit ([`yields::YieldRankRow`]) |
 //! | `pmax_<p>.png`, `corrugation_<p>.png`, `mu_<p>.png` | P_max vs θ per load with P_crit; corrugation vs α of the finalists; μ vs load, surrogate lines and DEM markers ([`charts`]) |
 //!
 //! Each pattern's own files (`shortlist_`, `corrugation_`, `friction_<p>.csv`, `pmax_`,

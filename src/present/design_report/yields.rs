@@ -1,7 +1,8 @@
 //! The design's yield outputs, when its yield stage ran
 //! ([`crate::study::design::yield_stage`]): per answer `yield_<p>.csv` (one row per device,
 //! the `yield` schema), `yield_<p>.json` (the summary) and `yield_<p>.png` (yield against
-//! load with its band, the quoted load marked), each with its sidecar; and the report's
+//! load with its band, the quoted load marked), each with its sidecar; with `--rank-by yield`,
+//! `yield_rank.csv` ([`YieldRankRow`]); and the report's
 //! "load at q yield" column ([`cell`]) and plots ([`YieldHead`]).
 
 use super::words::fmt_g;
@@ -9,6 +10,7 @@ use crate::plot::yield_curve::yield_png;
 use crate::runs::output::Outputs;
 use crate::runs::sink::csv_bytes;
 use crate::study::design::store::Store;
+use crate::study::design::yield_params::RankBy;
 use crate::study::design::yield_stage::AnswerYield;
 use crate::study::design::{DesignOutcome, DesignParams};
 use crate::study::rows::label;
@@ -25,6 +27,8 @@ pub struct YieldHead {
     pub samples: usize,
     /// The patterns with a yield plot `yield_<p>.png`.
     pub plots: Vec<String>,
+    /// `--rank-by yield`: the designs are ranked by the load at yield q (`yield_rank.csv`).
+    pub rank_by_yield: bool,
 }
 
 /// The report's yield head of `o` (`None` when the stage did not run).
@@ -41,6 +45,7 @@ pub fn head(o: &DesignOutcome, p: &DesignParams) -> Option<YieldHead> {
             .filter(|(_, y)| y.is_some())
             .map(|(pr, _)| pr.scene.name.clone())
             .collect(),
+        rank_by_yield: y.rank_by == RankBy::Yield,
     })
 }
 
@@ -74,10 +79,62 @@ pub fn cell(y: Option<&AnswerYield>) -> String {
     t
 }
 
-/// Writes each answer's yield files (see the module docs) through `outs`, each only when its
-/// bytes change (the plot when its data did or it is missing); appends each file written to
-/// `wrote`.
+/// One row of `yield_rank.csv` (`--rank-by yield`): a design ranked by its yield.
+#[derive(Debug, Clone, Serialize)]
+#[allow(non_snake_case)]
+pub struct YieldRankRow {
+    /// Pattern (design scene name).
+    pub pattern: String,
+    /// Rank within the pattern (1 = best; as in `ranking.csv`).
+    pub rank: usize,
+    /// θ (degrees).
+    pub theta_deg: f64,
+    /// α from the contact line (degrees).
+    pub alpha_deg: f64,
+    /// Pulling direction from x (degrees).
+    pub direction_deg: f64,
+    /// The load (mN) at least a fraction q of fabricated devices hold with confidence γ, by
+    /// the estimate (the quoted load where the devices are too few for a bound): what ranks.
+    pub load_at_yield_mN: f64,
+    /// The robust limit (mN): the worst case over the tolerance box, the default order.
+    pub superlubric_to_mN: f64,
+}
+
+/// The rows of `yield_rank.csv`: every design of `o` ranked by its yield, pattern by pattern
+/// (empty without `--rank-by yield`).
+pub fn rank_rows(o: &DesignOutcome) -> Vec<YieldRankRow> {
+    o.patterns
+        .iter()
+        .flat_map(|pr| pr.ranking.iter().enumerate())
+        .filter_map(|(k, c)| {
+            Some(YieldRankRow {
+                pattern: c.pattern.clone(),
+                rank: k + 1,
+                theta_deg: c.theta_deg,
+                alpha_deg: c.alpha_deg,
+                direction_deg: c.direction_deg,
+                load_at_yield_mN: c.score.yield_to_mn?,
+                superlubric_to_mN: c.score.superlubric_to_mn,
+            })
+        })
+        .collect()
+}
+
+/// Writes each answer's yield files (see the module docs) and, with `--rank-by yield`,
+/// `yield_rank.csv` ([`YieldRankRow`]) through `outs`, each only when its bytes change (the
+/// plot when its data did or it is missing); appends each file written to `wrote`.
 pub fn write(store: &Store, outs: &mut Outputs, wrote: &mut Vec<String>, o: &DesignOutcome) {
+    let ranked = rank_rows(o);
+    if !ranked.is_empty()
+        && store.write_if_changed(
+            outs,
+            "yield_rank.csv",
+            csv_bytes(&ranked),
+            Some(ranked.len() as u64),
+        )
+    {
+        wrote.push("yield_rank.csv".into());
+    }
     for (pr, y) in o.patterns.iter().zip(&o.yields) {
         let Some(y) = y else { continue };
         let name = &pr.scene.name;

@@ -119,6 +119,9 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
             "sample_seed": y.seed,
             "dem_check": y.dem_check,
         });
+        if y.rank_by == super::yield_params::RankBy::Yield {
+            params["yield"]["rank_by"] = json!("yield");
+        }
     }
     Inputs {
         workflow: "design".into(),

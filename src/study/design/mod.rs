@@ -76,6 +76,7 @@ pub mod symmetry_words;
 pub mod trim;
 pub mod walk;
 pub mod yield_params;
+pub mod yield_rank;
 pub mod yield_stage;
 
 pub use dem_entry::DemEntry;

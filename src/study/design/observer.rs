@@ -187,6 +187,21 @@ pub enum Event<'a> {
         /// What the yield found.
         summary: &'a crate::study::fab_yield::YieldSummary,
     },
+    /// `--rank-by yield`: the estimate's yield of a pattern's top designs begins
+    /// ([`super::yield_rank`]).
+    YieldRank {
+        /// Pattern name.
+        pattern: &'a str,
+        /// Designs ranked by yield.
+        designs: usize,
+    },
+    /// `--rank-by yield`: the pattern's ranking by yield is known; its best design.
+    YieldRanked {
+        /// Pattern name.
+        pattern: &'a str,
+        /// The best design (its `score.yield_to_mn` set).
+        best: &'a Candidate,
+    },
     /// No ranked design: nothing for the DEM to confirm.
     DemNothing,
     /// The DEM batch begins.

@@ -25,6 +25,8 @@ use super::screen::ScreenStage;
 use super::shortlist::ShortlistStage;
 use super::store::Store;
 use super::walk::{LevelWalk, Next, Walked};
+use super::yield_params::RankBy;
+use super::yield_rank::YieldRank;
 use super::yield_stage::YieldStage;
 use crate::study::rows::label;
 use anyhow::Result;
@@ -142,6 +144,9 @@ impl<'a> Pipeline<'a> {
             if let Some(c) = pr.ranking.first().filter(|c| c.score.exact) {
                 best_robust.push(c.score.superlubric_to_mn);
                 best_robust.sort_by(|a, b| b.total_cmp(a));
+            }
+            if let Some(y) = p.fab_yield.as_ref().filter(|y| y.rank_by == RankBy::Yield) {
+                YieldRank::new(self.ctx, y).run(&mut pr)?;
             }
             if !p.no_dem {
                 confirm_estimates(std::slice::from_mut(&mut pr), p, store)?;

@@ -5,7 +5,8 @@
 //! starts at the screened placement, ≤ P_crit) and μ_est < `mu_superlubric` (0.02): the rule
 //! [`crate::study::verdict::superlubric`].
 //!
-//! **Score**, compared in this order:
+//! **Score**, compared in this order (with `--rank-by yield`, the top designs' load at yield q,
+//! [`Score::yield_to_mn`], comes first: [`super::yield_rank`]):
 //! 1. `superlubric_to` — the highest load W_k of the list such that the candidate is
 //!    superlubric at every load W_1 … W_k (0: not even at the lowest load) — with a fabrication
 //!    tolerance, the **robust** limit: the lowest such load over every sample of the tolerance
@@ -112,6 +113,11 @@ pub struct Score {
     /// With several substrate seeds, each seed's own limit at the nominal (θ, α) (mN, seed
     /// order): the spread behind the worst case. `None`: one substrate, or not computed.
     pub seed_limits_mn: Option<Vec<f64>>,
+    /// With `--rank-by yield`, for the top designs: the load (mN) at least a fraction q of
+    /// fabricated devices hold with confidence γ by the estimate (the quoted load itself
+    /// where the devices are too few for a bound; [`super::yield_rank`]). It orders before
+    /// everything else; `None`: not computed.
+    pub yield_to_mn: Option<f64>,
 }
 
 /// The score of the rows of one (θ, α), loads ascending.
@@ -137,6 +143,7 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
             .fold(f64::NEG_INFINITY, f64::max),
         contacts: upto.last().and_then(|r| r.contacts_mean).unwrap_or(0.0),
         seed_limits_mn: None,
+        yield_to_mn: None,
     }
 }
 
@@ -197,11 +204,13 @@ fn group(exact: bool, superlubric_to_mn: f64) -> u8 {
 }
 
 /// What the ranking order compares of a candidate (the module docs' score, in order): its
-/// group, limit, windows, μ, contacts, then θ and α. [`compare`] orders candidates by it; the
+/// load at yield q where computed, its group, limit, windows, μ, contacts, then θ and α. [`compare`] orders candidates by it; the
 /// robust search orders by it the best score each candidate could still reach
 /// ([`Key::reachable`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Key {
+    /// [`Score::yield_to_mn`] (−∞: not computed).
+    yield_to_mn: f64,
     group: u8,
     superlubric_to_mn: f64,
     theta_window_deg: f64,
@@ -217,6 +226,7 @@ impl Key {
     pub fn of(c: &Candidate) -> Key {
         let s = &c.score;
         Key {
+            yield_to_mn: s.yield_to_mn.unwrap_or(f64::NEG_INFINITY),
             group: group(s.exact, s.superlubric_to_mn),
             superlubric_to_mn: s.superlubric_to_mn,
             theta_window_deg: window(s.theta_window_deg),
@@ -248,8 +258,9 @@ impl Key {
 
     /// The ranking order of two keys (best first).
     pub fn order(&self, o: &Key) -> Ordering {
-        self.group
-            .cmp(&o.group)
+        o.yield_to_mn
+            .total_cmp(&self.yield_to_mn)
+            .then(self.group.cmp(&o.group))
             .then(o.superlubric_to_mn.total_cmp(&self.superlubric_to_mn))
             .then(o.theta_window_deg.total_cmp(&self.theta_window_deg))
             .then(o.direction_window_deg.total_cmp(&self.direction_window_deg))

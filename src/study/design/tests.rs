@@ -32,6 +32,7 @@ fn pattern(name: &str, n: usize) -> PatternResult {
                 mu_worst: 0.01,
                 contacts: 100.0,
                 seed_limits_mn: None,
+                yield_to_mn: None,
             },
         })
         .collect();

@@ -19,4 +19,19 @@ pub struct YieldStageParams {
     /// Fresh devices run with the DEM at the quoted load as a check (0: none; ignored without
     /// the DEM).
     pub dem_check: usize,
+    /// What orders each pattern's designs ([`RankBy`]).
+    pub rank_by: RankBy,
+}
+
+/// What orders a pattern's designs (`design --rank-by`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RankBy {
+    /// The worst case over the tolerance box and the searched seeds: the robust limit
+    /// ([`super::rank::compare`]; the default).
+    #[default]
+    WorstCase,
+    /// The load a fraction q of fabricated devices hold, its one-sided lower bound
+    /// ([`super::yield_rank`]): the top designs' yields by the estimate, then the robust order
+    /// among equals.
+    Yield,
 }

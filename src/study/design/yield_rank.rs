@@ -1,0 +1,85 @@
+//! With `--rank-by yield` ([`RankBy::Yield`]), after a pattern's robust search: its top designs
+//! ranked by the load that a fraction q of fabricated devices hold instead of the worst case
+//! over the tolerance box.
+//!
+//! The first `max(confirm, 3)` designs of the robust order whose limits are exact and
+//! superlubric at their nominal (θ, α) (the designs the robust search made exact) each get the
+//! estimate's part of their yield ([`crate::study::fab_yield`] without the DEM, the yield
+//! stage's devices and knobs, [`super::yield_stage::yield_params`]); its one-sided lower bound
+//! of the load at yield q (the quoted load itself where the devices are too few for a bound)
+//! becomes [`Score::yield_to_mn`](super::rank::Score::yield_to_mn), which
+//! [`super::rank::compare`] puts before everything else: those designs lead, best yield first,
+//! the robust order breaking ties; the rest keep the robust order behind them. The answer's
+//! own yield, with the DEM deciding the band, is then the yield stage's
+//! ([`super::yield_stage`]).
+//!
+//! Not stored: a re-run recomputes it. Cost: per ranked design the estimate's part of a yield
+//! (samples × about 21 single-load estimates / threads; seconds on the study's scenes).
+
+use super::ctx::Ctx;
+use super::observer::{Event, Stage};
+use super::pattern_result::PatternResult;
+use super::rank;
+use super::yield_params::YieldStageParams;
+use super::yield_stage::yield_params;
+use crate::study::fab_yield::fab_yield;
+use anyhow::Result;
+use surrogate::units::deg_to_rad;
+
+/// The rank-by-yield step of one pattern (see the module docs).
+pub struct YieldRank<'a> {
+    ctx: Ctx<'a>,
+    params: &'a YieldStageParams,
+}
+
+impl<'a> YieldRank<'a> {
+    /// The step in `ctx` with the yield stage's knobs.
+    pub fn new(ctx: Ctx<'a>, params: &'a YieldStageParams) -> Self {
+        YieldRank { ctx, params }
+    }
+
+    /// Sets the top designs' [`Score::yield_to_mn`](super::rank::Score::yield_to_mn) of `pr`
+    /// and sorts its ranking again ([`rank::compare`]). Returns how many were ranked by yield.
+    pub fn run(&self, pr: &mut PatternResult) -> Result<usize> {
+        let Ctx { p, obs, store } = self.ctx;
+        let top: Vec<usize> = (0..pr.ranking.len())
+            .filter(|&i| {
+                let s = &pr.ranking[i].score;
+                s.exact && s.nominal_to_mn > 0.0
+            })
+            .take(p.confirm.max(3))
+            .collect();
+        if top.is_empty() {
+            return Ok(0);
+        }
+        obs.stage(Stage::Yield, &pr.scene.name);
+        obs.event(&Event::YieldRank {
+            pattern: &pr.scene.name,
+            designs: top.len(),
+        });
+        for &i in &top {
+            let c = &pr.ranking[i];
+            let scene = pr.scene.scene.with_theta(deg_to_rad(c.theta_deg));
+            let mut yp = yield_params(
+                p,
+                self.params,
+                &scene,
+                (c.theta_deg, c.direction_deg),
+                store.path(&format!("yield/{}", pr.scene.name)),
+            );
+            yp.dem = None;
+            let s = fab_yield(&scene, &yp, obs.progress())?.summary;
+            let to = s
+                .load_at_quantile_bound_mN
+                .or(s.load_at_quantile_mN)
+                .unwrap_or(0.0);
+            pr.ranking[i].score.yield_to_mn = Some(to);
+        }
+        pr.ranking.sort_by(rank::compare);
+        obs.event(&Event::YieldRanked {
+            pattern: &pr.scene.name,
+            best: &pr.ranking[0],
+        });
+        Ok(top.len())
+    }
+}
