@@ -222,6 +222,15 @@ fn the_dem_decides_the_band_and_checks_the_quoted_load() {
             }
         }
     }
+    // the two strata: the DEM's devices are those decided by it, and the strata's holders
+    // make up the yield at the quoted load
+    let by_dem = m.iter().filter(|r| r["decided_by"] == "dem").count();
+    assert_eq!(s["dem_decided"].as_u64(), Some(by_dem as u64));
+    let held = s["dem_decided_holding"].as_u64().unwrap() as usize;
+    let est_held = s["estimate_decided_holding"].as_u64().unwrap() as usize;
+    assert!(held <= by_dem && est_held <= m.len() - by_dem);
+    let y = s["yield_at_quantile_load"].as_f64().unwrap();
+    assert!((y - (held + est_held) as f64 / m.len() as f64).abs() < 1e-12);
     // on this scene the path P_max band spans more than a rung: the DEM has work
     assert!(s["dem_runs"].as_u64().unwrap() >= 1);
     assert_eq!(s["dem_check_total"].as_u64(), Some(2));

@@ -85,6 +85,22 @@ fn sorted_loads(devices: &[Device], resolution: f64) -> Vec<f64> {
     w
 }
 
+/// How many devices decided by `by` (their `rows`) hold the quoted load `w_q` (N; none
+/// without one).
+fn stratum_holding(
+    devices: &[Device],
+    rows: &[YieldRow],
+    (w_q, resolution): (Option<f64>, f64),
+    by: DecidedBy,
+) -> usize {
+    let Some(w) = w_q else { return 0 };
+    devices
+        .iter()
+        .zip(rows)
+        .filter(|(d, r)| r.decided_by == by && d.critical(resolution) >= w)
+        .count()
+}
+
 /// How many of the `sorted` critical loads are ≥ `w` (the devices holding `w`).
 fn holding(sorted: &[f64], w: f64) -> usize {
     sorted.len() - sorted.partition_point(|&x| x < w)
@@ -264,6 +280,13 @@ pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Res
             .iter()
             .filter(|r| r.decided_by == DecidedBy::Dem)
             .count(),
+        dem_decided_holding: stratum_holding(&devices, &rows, (w_q, p.resolution), DecidedBy::Dem),
+        estimate_decided_holding: stratum_holding(
+            &devices,
+            &rows,
+            (w_q, p.resolution),
+            DecidedBy::Estimate,
+        ),
         dem_runs,
         dem_rounds: rounds,
         dem_check_passed: passed,

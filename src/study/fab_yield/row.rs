@@ -120,6 +120,13 @@ pub struct YieldSummary {
     pub yield_at_quantile_load_interval: Option<[f64; 2]>,
     /// Devices whose band bracket contained the quoted load (decided by the DEM).
     pub dem_decided: usize,
+    /// Of those, the devices the DEM held at the quoted load. The yield there is
+    /// (`estimate_decided_holding` + this) / `samples`: the DEM's stratum is a census of the
+    /// band (every device in it is run), so the pooled count is binomial and its
+    /// Clopper–Pearson interval exact.
+    pub dem_decided_holding: usize,
+    /// Devices the estimate decided (outside the band at the quoted load) that hold there.
+    pub estimate_decided_holding: usize,
     /// DEM runs made for the decisions (over every round).
     pub dem_runs: usize,
     /// Rounds of DEM decisions (the quoted load moves when the DEM overrules the estimate).
