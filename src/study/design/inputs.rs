@@ -119,9 +119,21 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
             "sample_seed": y.seed,
             "dem_check": y.dem_check,
         });
-        if y.rank_by == super::yield_params::RankBy::Yield {
-            params["yield"]["rank_by"] = json!("yield");
-        }
+    }
+    // ranking by yield changes the surrogate's answers: part of the design's inputs with or
+    // without the DEM (absent otherwise: records unchanged)
+    if let Some(y) = p
+        .fab_yield
+        .as_ref()
+        .filter(|y| y.rank_by == super::yield_params::RankBy::Yield)
+    {
+        params["rank_by_yield"] = json!({
+            "samples": y.samples,
+            "quantile": y.quantile,
+            "confidence": y.confidence,
+            "resolution": y.resolution,
+            "sample_seed": y.seed,
+        });
     }
     Inputs {
         workflow: "design".into(),
