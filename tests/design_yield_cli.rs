@@ -187,5 +187,10 @@ fn rank_by_yield_orders_the_top_designs_by_their_load_at_yield() {
         report.contains("**Ranked by yield** (`--rank-by yield`)"),
         "{report}"
     );
+    // its answers differ from the worst case's: the two never share a folder
+    let o = design(&["--yield-samples", "12"], &out);
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("rank_by_yield"), "{err}");
     std::fs::remove_dir_all(&d).ok();
 }
