@@ -137,7 +137,7 @@ pub fn answer(pr: &PatternResult, dem: &[DemEntry], dem_ran: bool, p: &DesignPar
         };
     }
     let mut passed = Vec::new();
-    for rank in 1..=p.confirm.min(pr.ranking.len()) {
+    for rank in 1..=p.confirm.designs.min(pr.ranking.len()) {
         match check(pr, rank, dem, p) {
             c @ Check::Confirmed(_) => {
                 return Answer {

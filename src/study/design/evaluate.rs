@@ -80,7 +80,7 @@ impl<'a> EvaluateStage<'a> {
         } else {
             format!("best of level {}", shortlist::mn(level.load))
         };
-        let per = paths_per_scan(p, l.sym) + p.alphas_per_theta;
+        let per = paths_per_scan(&p.alpha_scan, l.sym) + p.alpha_scan.alphas_per_theta;
         obs.event(&Event::Level {
             pattern: &l.ds.name,
             load: level.load,
@@ -143,19 +143,20 @@ impl<'a> EvaluateStage<'a> {
             .par_iter()
             .map(|&k| {
                 let t0 = Instant::now();
-                let s = scan_alpha(&target(k), p, l.sym, &|| ticks.tick(k))?;
+                let s = scan_alpha(&target(k), &p.alpha_scan, l.sym, &|| ticks.tick(k))?;
                 Ok((s, t0.elapsed().as_secs_f64()))
             })
             .collect::<Vec<Result<_>>>()
             .into_iter()
             .collect::<Result<_>>()?;
         obs.stage(Stage::Estimate, &l.ds.name);
+        let limits = p.limit();
         let estimates: Vec<Result<(Vec<FrictionRow>, f64)>> = todo
             .par_iter()
             .zip(&scans)
             .map(|(&k, (s, _))| {
                 let t0 = Instant::now();
-                let f = estimate(&target(k), s, p, &|| ticks.tick(k))?;
+                let f = estimate(&target(k), s, &limits, &|| ticks.tick(k))?;
                 Ok((f, t0.elapsed().as_secs_f64()))
             })
             .collect();
