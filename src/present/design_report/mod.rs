@@ -159,6 +159,7 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
                     k + 1,
                     c,
                     (p.tolerance.theta_tol_deg, p.tolerance.direction_tol_deg),
+                    words::pick_words(c.reason),
                 )
             })
         })

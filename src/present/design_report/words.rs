@@ -3,12 +3,15 @@
 //! words, which design a study-protocol run is on; and the number formats ([`fmt_g`]).
 
 use super::rows::{row_at, DemProtocol, DemRow};
-use crate::study::design::answer::{Answer, Check};
+use crate::study::design::answer::{Answer, Check, Contradiction};
 use crate::study::design::best::BEST_PATTERNS;
-use crate::study::design::rank::Candidate;
+use crate::study::design::rank::{Candidate, Pick};
+use crate::study::design::symmetry_words::PairSymmetry;
 use crate::study::design::symmetry_words::{self, Domain, SymmetryWords};
-use crate::study::design::OutsideDomain;
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams, PatternResult};
+use crate::study::design::{
+    OutsideDomain, ThetaNote, THETA_STEP_DEG, WIDE_DOMAIN_DEG, WIDE_THETA_STEP_DEG,
+};
 use crate::study::input::Input;
 use crate::study::load::LoadKey;
 use crate::study::rows::label;
@@ -368,5 +371,73 @@ impl std::fmt::Display for OutsideDomain {
             symmetry_words::fmt(hi),
             Input::NoSymmetryCut
         )
+    }
+}
+
+/// A load in mN for messages (`1.75 mN`).
+pub fn mn(w: f64) -> String {
+    format!("{} mN", label(surrogate::units::n_to_mn(w)))
+}
+
+/// Why an orientation was shortlisted, in the ranking's words.
+pub fn pick_words(p: Pick) -> String {
+    match p {
+        Pick::Top => "survives the highest load".to_string(),
+        Pick::Level(w) => format!("best of level {}", mn(w)),
+    }
+}
+
+/// Why the DEM contradicts a design, naming the tolerance corner of a corner's run.
+impl std::fmt::Display for Contradiction {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.corner {
+            None => write!(f, "{}", self.why),
+            Some((dt, dd)) => write!(
+                f,
+                "{} at its tolerance corner δθ = {dt:+}°, δdir = {dd:+}°",
+                self.why
+            ),
+        }
+    }
+}
+
+/// A pattern's [`ThetaNote`] in words: which part of `sym`'s domain the θ list leaves out, or
+/// that the whole domain is screened at the default step.
+pub fn theta_note(n: &ThetaNote, sym: &PairSymmetry) -> String {
+    match n {
+        ThetaNote::Uncovered {
+            gaps,
+            theta_default,
+        } => {
+            let Domain {
+                lo_deg: lo,
+                hi_deg: hi,
+                closed,
+            } = sym.domain();
+            format!(
+                "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give {} over the whole domain{})",
+                symmetry_words::fmt(lo),
+                symmetry_words::fmt(hi),
+                if closed { "]" } else { ")" },
+                sym.gaps_text(gaps),
+                Input::Theta,
+                if *theta_default {
+                    String::new()
+                } else {
+                    format!(", or leave {} out to screen it at the default step", Input::Theta)
+                }
+            )
+        }
+        ThetaNote::WholeDomain { step, thetas } => format!(
+            "no {} given: the whole domain at {step}° ({thetas} θ{})",
+            Input::Theta,
+            if *step == WIDE_THETA_STEP_DEG {
+                format!(
+                    "; {step}° rather than {THETA_STEP_DEG}° for a domain wider than {WIDE_DOMAIN_DEG}°"
+                )
+            } else {
+                String::new()
+            }
+        ),
     }
 }

@@ -2,7 +2,7 @@
 //! list over a whole domain, and the notes that say what was (not) screened.
 
 use super::screen_params::ScreenStageParams;
-use super::symmetry_words::{Domain, PairSymmetry, SymmetryWords};
+use super::symmetry_words::{Domain, PairSymmetry};
 use super::DesignScene;
 use crate::study::input::Input;
 
@@ -56,13 +56,32 @@ pub fn default_domain(sym: &PairSymmetry, s: &ScreenStageParams) -> Option<(Vec<
     Some((v, step))
 }
 
-/// What the log and the report say of a pattern's θ list beside its symmetry.
+/// What the log and the report note of a pattern's θ list beside its symmetry
+/// (`crate::present` words it).
 #[derive(Debug, Clone, PartialEq)]
-pub struct ThetaNote {
-    /// The sentence.
-    pub text: String,
-    /// Whether the θ list leaves part of the domain out (the report puts that in bold).
-    pub uncovered: bool,
+pub enum ThetaNote {
+    /// The θ list leaves part of the domain out (the report puts that in bold).
+    Uncovered {
+        /// The parts left out ([`PairSymmetry::unscreened`]; degrees).
+        gaps: Vec<(f64, f64)>,
+        /// `--theta` was not given (else the note also says leaving it out screens the whole
+        /// domain).
+        theta_default: bool,
+    },
+    /// `--theta` was not given: the whole domain is screened at the default step.
+    WholeDomain {
+        /// The step (degrees).
+        step: f64,
+        /// θ screened.
+        thetas: usize,
+    },
+}
+
+impl ThetaNote {
+    /// Whether the θ list leaves part of the domain out.
+    pub fn uncovered(&self) -> bool {
+        matches!(self, ThetaNote::Uncovered { .. })
+    }
 }
 
 /// The [`ThetaNote`] of a pattern's θ list: which part of the domain the θ list leaves out
@@ -76,45 +95,15 @@ pub fn theta_note(
 ) -> Option<ThetaNote> {
     let gaps = sym.unscreened(thetas_deg);
     if !gaps.is_empty() {
-        let Domain {
-            lo_deg: lo,
-            hi_deg: hi,
-            closed,
-        } = sym.domain();
-        let text = format!(
-            "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give {} over the whole domain{})",
-            super::symmetry_words::fmt(lo),
-            super::symmetry_words::fmt(hi),
-            if closed { "]" } else { ")" },
-            sym.gaps_text(&gaps),
-            Input::Theta,
-            if s.theta_default {
-                String::new()
-            } else {
-                format!(", or leave {} out to screen it at the default step", Input::Theta)
-            }
-        );
-        return Some(ThetaNote {
-            text,
-            uncovered: true,
+        return Some(ThetaNote::Uncovered {
+            gaps,
+            theta_default: s.theta_default,
         });
     }
     let (_, step) = default_domain(sym, s)?;
-    let text = format!(
-        "no {} given: the whole domain at {step}° ({} θ{})",
-        Input::Theta,
-        thetas_deg.len(),
-        if step == WIDE_THETA_STEP_DEG {
-            format!(
-                "; {step}° rather than {THETA_STEP_DEG}° for a domain wider than {WIDE_DOMAIN_DEG}°"
-            )
-        } else {
-            String::new()
-        }
-    );
-    Some(ThetaNote {
-        text,
-        uncovered: false,
+    Some(ThetaNote::WholeDomain {
+        step,
+        thetas: thetas_deg.len(),
     })
 }
 

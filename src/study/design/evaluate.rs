@@ -12,7 +12,8 @@ use super::inputs::eval_inputs;
 use super::observer::{Event, Stage};
 use super::params::DesignScene;
 use super::pattern_result::{EvalStage, Evaluated};
-use super::shortlist::{self, Level, Orientation};
+use super::rank::Pick;
+use super::shortlist::{Level, Orientation};
 use super::store::tag;
 use super::symmetry_words::PairSymmetry;
 use crate::runs::meta::Inputs;
@@ -76,9 +77,9 @@ impl<'a> EvaluateStage<'a> {
         let Ctx { p, obs, .. } = self.ctx;
         let level = l.level;
         let reason = if level.top {
-            "survives the highest load".to_string()
+            Pick::Top
         } else {
-            format!("best of level {}", shortlist::mn(level.load))
+            Pick::Level(level.load)
         };
         let per = paths_per_scan(&p.alpha_scan, l.sym) + p.alpha_scan.alphas_per_theta;
         obs.event(&Event::Level {
@@ -96,7 +97,7 @@ impl<'a> EvaluateStage<'a> {
             .zip(done)
             .map(|(o, st)| Evaluated {
                 orientation: o.clone(),
-                reason: reason.clone(),
+                reason,
                 scan_alphas_deg: st.0.eval.scan.iter().map(|r| r.alpha_deg).collect(),
                 estimates: st.0.eval.friction.len(),
                 eval: st.0.eval,

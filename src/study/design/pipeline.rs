@@ -252,7 +252,7 @@ impl<'a> Pipeline<'a> {
                     &ds.name,
                     &e.eval,
                     label(n_to_mn(level.load)),
-                    &e.reason,
+                    e.reason,
                     ds.scene.coating.p_crit,
                     p.mu_superlubric,
                 ));

@@ -163,14 +163,6 @@ pub fn levels(
     out
 }
 
-/// Label of a load in mN for messages (`1.75 mN`).
-pub fn mn(w: f64) -> String {
-    format!(
-        "{} mN",
-        crate::study::rows::label(surrogate::units::n_to_mn(w))
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -203,7 +203,7 @@ impl ReportData {
                         intact_to_mn: format!("{}", c.score.intact_to_mn),
                         screen_intact_to_mn: format!("{}", c.screen_intact_to_mn),
                         corrugation_nm: fmt_g(c.corrugation_nm, 3),
-                        reason: c.reason.clone(),
+                        reason: super::words::pick_words(c.reason),
                     })
             })
             .collect();
@@ -233,8 +233,16 @@ impl ReportData {
                         &p.screen,
                     ) {
                         None => pr.sym.describe(),
-                        Some(n) if n.uncovered => format!("{}; **{}**", pr.sym.describe(), n.text),
-                        Some(n) => format!("{}; {}", pr.sym.describe(), n.text),
+                        Some(n) if n.uncovered() => format!(
+                            "{}; **{}**",
+                            pr.sym.describe(),
+                            super::words::theta_note(&n, &pr.sym)
+                        ),
+                        Some(n) => format!(
+                            "{}; {}",
+                            pr.sym.describe(),
+                            super::words::theta_note(&n, &pr.sym)
+                        ),
                     };
                     if let Some(n) = crate::study::design::line_note(&pr.scene, p.alpha_scan.line) {
                         t = format!("{t}. The {}", n.trim_start_matches("the "));
