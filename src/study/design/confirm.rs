@@ -190,10 +190,10 @@ pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64
     w
 }
 
-/// The confirmation runs (top [`super::ConfirmParams::designs`] designs × confirmation loads, and the corners of each
-/// one's tolerance box, `corner_jobs`), with what each one is; the runs of borderline designs
-/// and of recipes outside the validated range ([`answer::outside_range`]: the DEM decides
-/// them) first, else in ranking order.
+/// The confirmation runs (top [`super::ConfirmParams::designs`] designs × confirmation loads,
+/// and the corners of each one's tolerance box, `corner_jobs`), with what each one is; the runs
+/// of borderline designs and of recipes outside the validated range
+/// ([`answer::outside_range`]: the DEM decides them) first, else in ranking order.
 pub fn confirm_jobs(
     patterns: &[PatternResult],
     p: &DesignParams,

@@ -15,7 +15,7 @@ pub const WIDE_DOMAIN_DEG: f64 = 60.0;
 /// `docs/validation/screen.md`).
 pub const WIDE_THETA_STEP_DEG: f64 = 0.25;
 
-/// Without `--theta` (`p.screen.theta_default`) and with the cut: the θ list of the whole fundamental
+/// Without `--theta` (`s.theta_default`) and with the cut: the θ list of the whole fundamental
 /// domain of `sym` at the default step ([`THETA_STEP_DEG`], [`WIDE_THETA_STEP_DEG`] over a
 /// domain wider than [`WIDE_DOMAIN_DEG`]) when the default list `0:30:0.1` does not span the
 /// domain (a pattern whose symmetry was not derived, or a domain wider than 30°); `None` where

@@ -22,11 +22,11 @@
 //!    highest load up to which superlubric (coating intact on the sliding path AND μ_est < 0.02
 //!    at every load up to it) at every sample of the tolerance box; the candidates are ranked
 //!    by it, then the θ window, the direction window, μ_est, contacts ([`rank`]).
-//! 6. **DEM confirmation** ([`confirm`]): the top [`ConfirmParams::designs`] designs of each pattern at the
-//!    confirmation loads and at the corners of their tolerance boxes (borderline designs
-//!    first), independent `slide` runs side by side, one thread each (plus, with a
-//!    protocol shorter than the study's, the design the report recommends once with the study's
-//!    protocol to measure the difference there: [`protocol_check_design`]).
+//! 6. **DEM confirmation** ([`confirm`]): the top [`ConfirmParams::designs`] designs of each
+//!    pattern at the confirmation loads and at the corners of their tolerance boxes
+//!    (borderline designs first), independent `slide` runs side by side, one thread each
+//!    (plus, with a protocol shorter than the study's, the design the report recommends once
+//!    with the study's protocol to measure the difference there: [`protocol_check_design`]).
 //! 7. **Report data** ([`report_data::ReportDataStage`]): each pattern's answer ([`answer`]),
 //!    the tolerance maps around the answers and, with recipes, the P_crit sweep ([`p_crit`]).
 //! 8. **Yield** ([`yield_stage::YieldStage`], opt-in: `design --yield-samples N`): per answer

@@ -48,8 +48,8 @@ pub struct DesignParams {
     /// The friction estimate's knobs ([`super::estimate`]), shared by every stage that
     /// estimates a limit (the robust search, the DEM's comparisons, the tolerance maps).
     pub friction: FrictionParams,
-    /// The fabrication tolerance the robust limit holds over ([`super::limit`]; the robust
-    /// search, the tolerance maps, the DEM's corners and the yield use it).
+    /// The fabrication tolerance the robust limit holds over ([`super::tolerance_box`]; the
+    /// robust search, the tolerance maps, the DEM's corners and the yield use it).
     pub tolerance: ToleranceParams,
     /// The DEM confirmation's ([`super::confirm`]).
     pub confirm: ConfirmParams,
