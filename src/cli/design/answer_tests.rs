@@ -60,7 +60,7 @@ fn pattern(ds: &DesignScene, n: usize) -> PatternResult {
             corrugation_nm: 0.1,
             scan_load_mn: 0.09,
             screen_intact_to_mn: 0.09,
-            reason: String::new(),
+            reason: crate::study::design::rank::Pick::Top,
             friction: vec![row(0.01, 0.01), row(0.03, 0.01), row(0.06, 0.01)],
             corners: vec![CornerEstimate {
                 theta_offset_deg: 0.1,
@@ -199,6 +199,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
     let dem = runs(&pr, &p, &corner_fails);
     match check(&pr, 1, &dem, &p) {
         Check::Contradicted(why) => {
+            let why = why.to_string();
             assert!(why.contains("μ_DEM"), "{why}");
             assert!(why.contains("corner δθ = +0.1°, δdir = -0.5°"), "{why}");
         }

@@ -282,13 +282,13 @@ pub fn run(a: Args) -> Result<()> {
     let files = crate::present::design_report::Writer::new(&store, &record, &params);
     let log = crate::present::design_report::Log::new(&rep);
     let o = design(&scenes, &params, &store, &log, &|pr| files.pattern(pr))?;
-    if !params.dem_shard.is_all() {
+    if !params.confirm.dem_shard.is_all() {
         crate::runs::progress::Progress::note(
             &rep,
             &format!(
                 "design: shard {}/{} of the DEM runs done in {:.1} s (no report from a shard)",
-                params.dem_shard.index,
-                params.dem_shard.count,
+                params.confirm.dem_shard.index,
+                params.confirm.dem_shard.count,
                 t0.elapsed().as_secs_f64()
             ),
         );

@@ -7,7 +7,10 @@ use super::scenes::scenes;
 use super::Args;
 use super::DEFAULT_THETA;
 use crate::runs::output::check_outputs;
-use crate::study::design::{cut, DesignParams, DesignScene};
+use crate::study::design::{
+    cut, AlphaScanParams, ConfirmParams, DesignParams, DesignScene, ScreenStageParams,
+    ShortlistParams, ToleranceParams,
+};
 use anyhow::{bail, Result};
 use dem::SimParams;
 use surrogate::units::{mn_to_n, um_to_m, us_to_s};
@@ -139,49 +142,58 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         .as_deref()
         .map_or(Ok(Vec::new()), |t| checks::seed_list(t, "--extra-seeds"))?;
     let params = DesignParams {
-        theta_tol_deg,
-        direction_tol_deg,
-        theta_tol_step_deg,
-        direction_tol_step_deg,
-        seeds,
-        thetas_deg,
-        theta_text,
-        theta_default: a.theta.is_none(),
-        symmetry_cut: !a.no_symmetry_cut,
         loads: crate::study::load::Loads::new(loads),
         mu_superlubric,
-        per_level: a.per_level,
-        max_top: a.max_top,
-        alpha_step_deg: step,
-        alpha_refine_deg: refine,
-        line,
-        scan_length,
-        scan_step,
-        alphas_per_theta: a.alphas_per_theta,
+        screen: ScreenStageParams {
+            thetas_deg,
+            theta_default: a.theta.is_none(),
+            symmetry_cut: !a.no_symmetry_cut,
+        },
+        shortlist: ShortlistParams {
+            per_level: a.per_level,
+            max_top: a.max_top,
+        },
+        alpha_scan: AlphaScanParams {
+            alpha_step_deg: step,
+            alpha_refine_deg: refine,
+            line,
+            scan_length,
+            scan_step,
+            alphas_per_theta: a.alphas_per_theta,
+        },
         friction,
-        confirm: a.confirm,
-        confirm_loads,
-        no_dem: a.no_dem,
-        jobs,
-        dem_shard,
-        dem,
-        dem_is_study_protocol,
-        protocol_check: !a.no_protocol_check,
+        tolerance: ToleranceParams {
+            theta_tol_deg,
+            direction_tol_deg,
+            theta_tol_step_deg,
+            direction_tol_step_deg,
+            seeds,
+        },
+        confirm: ConfirmParams {
+            designs: a.confirm,
+            loads: confirm_loads,
+            no_dem: a.no_dem,
+            jobs,
+            dem_shard,
+            dem,
+            dem_is_study_protocol,
+            protocol_check: !a.no_protocol_check,
+        },
         fab_yield: a.fab_yield.params()?,
     };
     let scenes = scenes(a)?;
     for s in &scenes {
-        let (_, sym) = cut(s, &params)?;
+        let (_, sym) = cut(s, &params.screen)?;
         let (lo, hi) = (sym.domain().lo_deg, sym.domain().hi_deg);
-        if 2.0 * params.theta_tol_deg >= hi - lo {
+        if 2.0 * params.tolerance.theta_tol_deg >= hi - lo {
             bail!(
                 "`--theta-tol-deg`: ±{}° spans the whole θ domain of {} ([{lo}°, {hi}°]); give a tolerance below {}°",
-                params.theta_tol_deg,
+                params.tolerance.theta_tol_deg,
                 s.name,
                 0.5 * (hi - lo)
             );
         }
-        if !params.seeds.is_empty() && s.scene.substrate.sigma_h == 0.0 {
+        if !params.tolerance.seeds.is_empty() && s.scene.substrate.sigma_h == 0.0 {
             bail!(
                 "`--extra-seeds`: {} has a flat substrate (σ_h = 0), so every seed gives the same one; give --sigma-h-um > 0 or leave --extra-seeds out",
                 s.name

@@ -42,7 +42,7 @@ pub fn loads_text(p: &DesignParams) -> String {
 /// The DEM protocol flags of the design's runs (or the study's), with the model `model` (the
 /// design's, or `auto` for a recipe the DEM decides: `confirm::dem_model`).
 pub fn protocol_flags(p: &DesignParams, study: bool, model: dem::ModelRequest) -> String {
-    let s = &p.dem.sim;
+    let s = &p.confirm.dem.sim;
     let mut f = String::new();
     if !study {
         let _ = write!(
@@ -63,7 +63,8 @@ pub fn protocol_flags(p: &DesignParams, study: bool, model: dem::ModelRequest) -
 
 /// ` --line-deg L` when the design fixes the contact line, else nothing.
 pub fn line_flag(p: &DesignParams) -> String {
-    p.line
+    p.alpha_scan
+        .line
         .map_or(String::new(), |l| format!(" --line-deg {}", rad_to_deg(l)))
 }
 
@@ -87,8 +88,8 @@ pub fn corrugation_command(pr: &PatternResult, e: &Evaluated, p: &DesignParams) 
         e.eval.theta_deg,
         e.eval.scan_load_mN,
         alphas.join(","),
-        label(m_to_um(p.scan_length)),
-        label(m_to_um(p.scan_step)),
+        label(m_to_um(p.alpha_scan.scan_length)),
+        label(m_to_um(p.alpha_scan.scan_step)),
         line_flag(p)
     )
 }
@@ -134,7 +135,7 @@ pub fn slide_command(
         protocol_flags(
             p,
             protocol == DemProtocol::Study,
-            pr.ranking.get(d.rank.saturating_sub(1)).map_or(p.dem.model.request, |c| {
+            pr.ranking.get(d.rank.saturating_sub(1)).map_or(p.confirm.dem.model.request, |c| {
                 crate::study::design::confirm::dem_model(pr, c, p).request
             })
         ),

@@ -4,7 +4,6 @@
 
 use crate::runs::progress::Progress;
 use crate::study::design::best::BEST_PATTERNS;
-use crate::study::design::shortlist;
 use crate::study::design::symmetry_words::SymmetryWords;
 use crate::study::design::{Event, Observer, PatternResult, Stage, Stop};
 use crate::study::input::Input;
@@ -37,7 +36,7 @@ impl Observer for Log<'_> {
             } => self.progress.stage(
                 &format!(
                     "{pattern}: α scan + friction, level {} ({picks} of {size} θ)",
-                    shortlist::mn(load)
+                    super::words::mn(load)
                 ),
                 paths,
                 "paths",
@@ -93,7 +92,7 @@ pub fn stop_text(stop: &Stop, skipped: usize, floor_mn: f64) -> String {
             _,
         ) => format!(
             "stopped before level {}: its orientations cannot be superlubric beyond {reach_mn} mN < the best found, {best_mn} mN",
-            shortlist::mn(*level)
+            super::words::mn(*level)
         ),
     };
     if skipped == 0 {
@@ -138,7 +137,7 @@ pub fn line(e: &Event<'_>) -> Option<String> {
                 Some(n) => format!(
                     "{pattern}: {}; {screened} θ screened{uncut}; {}",
                     sym.describe(),
-                    n.text
+                    super::words::theta_note(n, sym)
                 ),
             }
         }

@@ -155,10 +155,14 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
         .patterns
         .iter()
         .flat_map(|pr| {
-            pr.ranking
-                .iter()
-                .enumerate()
-                .map(|(k, c)| RankingRow::new(k + 1, c, (p.theta_tol_deg, p.direction_tol_deg)))
+            pr.ranking.iter().enumerate().map(|(k, c)| {
+                RankingRow::new(
+                    k + 1,
+                    c,
+                    (p.tolerance.theta_tol_deg, p.tolerance.direction_tol_deg),
+                    words::pick_words(c.reason),
+                )
+            })
         })
         .collect();
     if store.write_if_changed(
@@ -231,8 +235,8 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
                 "{name}: superlubric limit around the answer θ = {}°, direction {}° (box ±{}° × ±{}°)",
                 m.nominal.0,
                 fmt_g(m.nominal.1, 4),
-                p.theta_tol_deg,
-                p.direction_tol_deg
+                p.tolerance.theta_tol_deg,
+                p.tolerance.direction_tol_deg
             );
             crate::plot::tolerance::tolerance_png(
                 path,
@@ -240,7 +244,7 @@ pub fn finish(files: Writer, o: &DesignOutcome, progress: &dyn Progress) -> Resu
                 &m.rows,
                 m.theta_points,
                 m.nominal,
-                (p.theta_tol_deg, p.direction_tol_deg),
+                (p.tolerance.theta_tol_deg, p.tolerance.direction_tol_deg),
                 (
                     surrogate::units::pa_to_gpa(pr.scene.scene.coating.p_crit),
                     p.mu_superlubric,

@@ -83,11 +83,19 @@ pub fn answer_toml(pr: &PatternResult, c: &Candidate) -> String {
 /// sampling step; at least 2, at most 6).
 pub fn angle_decimals(p: &DesignParams) -> usize {
     let mut res: f64 = 0.01;
-    if p.theta_tol_deg > 0.0 {
-        res = res.min(p.theta_tol_step_deg.min(p.theta_tol_deg));
+    if p.tolerance.theta_tol_deg > 0.0 {
+        res = res.min(
+            p.tolerance
+                .theta_tol_step_deg
+                .min(p.tolerance.theta_tol_deg),
+        );
     }
-    if p.direction_tol_deg > 0.0 {
-        res = res.min(p.direction_tol_step_deg.min(p.direction_tol_deg));
+    if p.tolerance.direction_tol_deg > 0.0 {
+        res = res.min(
+            p.tolerance
+                .direction_tol_step_deg
+                .min(p.tolerance.direction_tol_deg),
+        );
     }
     ((-res.log10()).ceil().max(0.0) as usize).clamp(2, 6)
 }
@@ -244,11 +252,15 @@ fn nominal_cell(pr: &PatternResult, b: &Candidate, p: &DesignParams, dec: usize)
         n.score.nominal_to_mn,
         window(
             n.score.theta_window_deg,
-            p.theta_tol_step_deg.min(p.theta_tol_deg)
+            p.tolerance
+                .theta_tol_step_deg
+                .min(p.tolerance.theta_tol_deg)
         ),
         window(
             n.score.direction_window_deg,
-            p.direction_tol_step_deg.min(p.direction_tol_deg)
+            p.tolerance
+                .direction_tol_step_deg
+                .min(p.tolerance.direction_tol_deg)
         )
     )
 }
@@ -256,7 +268,7 @@ fn nominal_cell(pr: &PatternResult, b: &Candidate, p: &DesignParams, dec: usize)
 /// The answer table's rows, one per pattern (see [`TopRow`]).
 pub fn top_rows(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> Vec<TopRow> {
     let dec = angle_decimals(p);
-    let boxed = p.theta_tol_deg > 0.0 || p.direction_tol_deg > 0.0;
+    let boxed = p.tolerance.theta_tol_deg > 0.0 || p.tolerance.direction_tol_deg > 0.0;
     let pm = |v: String, tol: f64| {
         if boxed {
             format!("{v} ± {tol}")
@@ -301,8 +313,8 @@ pub fn top_rows(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> Vec<TopR
                 )
             };
             TopRow {
-                theta: pm(format!("{}", b.theta_deg), p.theta_tol_deg),
-                pull_x: pm(angle(b.direction_deg, dec), p.direction_tol_deg),
+                theta: pm(format!("{}", b.theta_deg), p.tolerance.theta_tol_deg),
+                pull_x: pm(angle(b.direction_deg, dec), p.tolerance.direction_tol_deg),
                 alpha: angle(b.alpha_deg, dec),
                 limit_mn: format!(
                     "{}{}",
@@ -337,11 +349,11 @@ pub fn paragraph(pr: &PatternResult, a: &Answer, p: &DesignParams) -> String {
         angle(b.direction_deg, dec),
         angle(b.alpha_deg, dec)
     );
-    if p.theta_tol_deg > 0.0 || p.direction_tol_deg > 0.0 {
+    if p.tolerance.theta_tol_deg > 0.0 || p.tolerance.direction_tol_deg > 0.0 {
         let _ = write!(
             m,
             ", each within the fabrication tolerance θ ±{}° × pull direction ±{}°",
-            p.theta_tol_deg, p.direction_tol_deg
+            p.tolerance.theta_tol_deg, p.tolerance.direction_tol_deg
         );
     }
     let w = claim_mn(b);
@@ -449,10 +461,10 @@ pub fn answer_run(pr: &PatternResult, c: &Candidate, p: &DesignParams) -> Answer
     let tolerance = format!(
         "superlube tolerance --scene {file} --direction-deg {} --theta-range-deg {} --theta-points 17 --direction-range-deg {} --direction-points 9 --theta-tol-deg {} --direction-tol-deg {} --load-mn {} --mu-superlubric {}{line} --length-um {} --max-period-um {} --step-um {} --transient-um {} --k0-n-m {} --transverse-um {} --out-dir answer_{name}/tolerance",
         c.direction_deg,
-        range(p.theta_tol_deg, 0.1),
-        range(p.direction_tol_deg, 0.5),
-        p.theta_tol_deg,
-        p.direction_tol_deg,
+        range(p.tolerance.theta_tol_deg, 0.1),
+        range(p.tolerance.direction_tol_deg, 0.5),
+        p.tolerance.theta_tol_deg,
+        p.tolerance.direction_tol_deg,
         loads_text(p),
         p.mu_superlubric,
         label(m_to_um(f.length)),
@@ -462,7 +474,7 @@ pub fn answer_run(pr: &PatternResult, c: &Candidate, p: &DesignParams) -> Answer
         f.k0,
         label(m_to_um(f.transverse))
     );
-    let s = &p.dem.sim;
+    let s = &p.confirm.dem.sim;
     let export = format!(
         "superlube export-lammps --scene {file} --alpha-deg {} --load-mn {w}{line} --equilibrate-us {} --relax-us {} --slide-us {} --speed-m-s {} --out-dir answer_{name}/lammps",
         c.alpha_deg,

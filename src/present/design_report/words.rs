@@ -3,10 +3,16 @@
 //! words, which design a study-protocol run is on; and the number formats ([`fmt_g`]).
 
 use super::rows::{row_at, DemProtocol, DemRow};
-use crate::study::design::answer::{Answer, Check};
+use crate::study::design::answer::{Answer, Check, Contradiction};
 use crate::study::design::best::BEST_PATTERNS;
-use crate::study::design::rank::Candidate;
+use crate::study::design::rank::{Candidate, Pick};
+use crate::study::design::symmetry_words::PairSymmetry;
+use crate::study::design::symmetry_words::{self, Domain, SymmetryWords};
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams, PatternResult};
+use crate::study::design::{
+    OutsideDomain, ThetaNote, THETA_STEP_DEG, WIDE_DOMAIN_DEG, WIDE_THETA_STEP_DEG,
+};
+use crate::study::input::Input;
 use crate::study::load::LoadKey;
 use crate::study::rows::label;
 use crate::study::verdict::{band_words, Verdict};
@@ -34,7 +40,7 @@ pub fn opt(v: Option<f64>, digits: usize) -> String {
 
 /// The protocol in words (`equilibrate 2 + relax 2 + slide 60 µs at 0.1 m/s`).
 pub fn protocol_words(p: &DesignParams) -> String {
-    let s = &p.dem.sim;
+    let s = &p.confirm.dem.sim;
     format!(
         "equilibrate {} + relax {} + slide {} µs at {} m/s, friction over the last two thirds of the slide",
         label(s_to_us(s.equilibrate_time)),
@@ -176,7 +182,7 @@ pub fn answer_line(
             let _ = write!(
                 m,
                 " **Not confirmed**: no DEM-checked design of the top {} is; this one's DEM run says {why} ({}).",
-                p.confirm,
+                p.confirm.designs,
                 runs.join("; ")
             );
         }
@@ -244,8 +250,8 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
         let _ = write!(
             m,
             " Its limit over the fabrication tolerance θ ±{}° × pull direction ±{}° {}, and the best {} patterns' robust limits were all at least {} mN when it was taken (the patterns are taken best nominal design first), so it cannot enter the best {}.",
-            p.theta_tol_deg,
-            p.direction_tol_deg,
+            p.tolerance.theta_tol_deg,
+            p.tolerance.direction_tol_deg,
             if sc.superlubric_to_mn < sc.nominal_to_mn {
                 format!(
                     "was searched only until it fell to them: it is at most {} mN",
@@ -263,11 +269,11 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
         );
         return m;
     }
-    if p.theta_tol_deg > 0.0 || p.direction_tol_deg > 0.0 {
+    if p.tolerance.theta_tol_deg > 0.0 || p.tolerance.direction_tol_deg > 0.0 {
         let _ = write!(
             m,
             " Over the fabrication tolerance θ ±{}° × pull direction ±{}° (the pull direction stays fixed in the substrate frame when the slider is misaligned) it holds to **{} mN**",
-            p.theta_tol_deg, p.direction_tol_deg, sc.superlubric_to_mn
+            p.tolerance.theta_tol_deg, p.tolerance.direction_tol_deg, sc.superlubric_to_mn
         );
         if sc.nominal_to_mn > sc.superlubric_to_mn {
             let _ = write!(
@@ -276,11 +282,15 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
                 sc.nominal_to_mn,
                 within(
                     sc.theta_window_deg,
-                    p.theta_tol_step_deg.min(p.theta_tol_deg)
+                    p.tolerance
+                        .theta_tol_step_deg
+                        .min(p.tolerance.theta_tol_deg)
                 ),
                 within(
                     sc.direction_window_deg,
-                    p.direction_tol_step_deg.min(p.direction_tol_deg)
+                    p.tolerance
+                        .direction_tol_step_deg
+                        .min(p.tolerance.direction_tol_deg)
                 )
             );
         } else {
@@ -302,10 +312,10 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
             n.theta_deg,
             n.alpha_deg,
             n.score.nominal_to_mn,
-            within(n.score.theta_window_deg, p.theta_tol_step_deg.min(p.theta_tol_deg)),
+            within(n.score.theta_window_deg, p.tolerance.theta_tol_step_deg.min(p.tolerance.theta_tol_deg)),
             within(
                 n.score.direction_window_deg,
-                p.direction_tol_step_deg.min(p.direction_tol_deg)
+                p.tolerance.direction_tol_step_deg.min(p.tolerance.direction_tol_deg)
             ),
             if n.score.exact { "" } else { "≤ " },
             n.score.superlubric_to_mn
@@ -332,5 +342,102 @@ pub fn which_design(o: &DesignOutcome, s: &DemRow) -> String {
             s.pattern
         ),
         None => "a design that is not the report's answer".to_string(),
+    }
+}
+
+/// The refusal of a θ list with no θ in a pattern's fundamental domain, naming the θ given,
+/// the domain, an equivalent θ in it and the way out.
+impl std::fmt::Display for OutsideDomain {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let Domain {
+            lo_deg: lo,
+            hi_deg: hi,
+            closed,
+        } = self.sym.domain();
+        let t = self.thetas_deg[0];
+        write!(
+            f,
+            "{}: none of `{}` lies in the fundamental domain [{}°, {}°{} of {} ({}); every orientation is equivalent to one in it (e.g. {}° ≡ {}°): give θ in [{}, {}], or pass {}",
+            Input::Theta,
+            super::commands::theta_text(&self.thetas_deg),
+            symmetry_words::fmt(lo),
+            symmetry_words::fmt(hi),
+            if closed { "]" } else { ")" },
+            self.pattern,
+            self.sym.describe(),
+            symmetry_words::fmt(t),
+            symmetry_words::fmt(self.sym.fold(t)),
+            symmetry_words::fmt(lo),
+            symmetry_words::fmt(hi),
+            Input::NoSymmetryCut
+        )
+    }
+}
+
+/// A load in mN for messages (`1.75 mN`).
+pub fn mn(w: f64) -> String {
+    format!("{} mN", label(surrogate::units::n_to_mn(w)))
+}
+
+/// Why an orientation was shortlisted, in the ranking's words.
+pub fn pick_words(p: Pick) -> String {
+    match p {
+        Pick::Top => "survives the highest load".to_string(),
+        Pick::Level(w) => format!("best of level {}", mn(w)),
+    }
+}
+
+/// Why the DEM contradicts a design, naming the tolerance corner of a corner's run.
+impl std::fmt::Display for Contradiction {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.corner {
+            None => write!(f, "{}", self.why),
+            Some((dt, dd)) => write!(
+                f,
+                "{} at its tolerance corner δθ = {dt:+}°, δdir = {dd:+}°",
+                self.why
+            ),
+        }
+    }
+}
+
+/// A pattern's [`ThetaNote`] in words: which part of `sym`'s domain the θ list leaves out, or
+/// that the whole domain is screened at the default step.
+pub fn theta_note(n: &ThetaNote, sym: &PairSymmetry) -> String {
+    match n {
+        ThetaNote::Uncovered {
+            gaps,
+            theta_default,
+        } => {
+            let Domain {
+                lo_deg: lo,
+                hi_deg: hi,
+                closed,
+            } = sym.domain();
+            format!(
+                "the θ list does not cover the domain [{}°, {}°{}: {} not screened (give {} over the whole domain{})",
+                symmetry_words::fmt(lo),
+                symmetry_words::fmt(hi),
+                if closed { "]" } else { ")" },
+                sym.gaps_text(gaps),
+                Input::Theta,
+                if *theta_default {
+                    String::new()
+                } else {
+                    format!(", or leave {} out to screen it at the default step", Input::Theta)
+                }
+            )
+        }
+        ThetaNote::WholeDomain { step, thetas } => format!(
+            "no {} given: the whole domain at {step}° ({thetas} θ{})",
+            Input::Theta,
+            if *step == WIDE_THETA_STEP_DEG {
+                format!(
+                    "; {step}° rather than {THETA_STEP_DEG}° for a domain wider than {WIDE_DOMAIN_DEG}°"
+                )
+            } else {
+                String::new()
+            }
+        ),
     }
 }

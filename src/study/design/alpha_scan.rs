@@ -14,7 +14,7 @@
 //!   (−180°, 180°], the range of a pulling angle.
 //! - **Best α's.** The `alphas_per_theta` lowest-corrugation angles at least one coarse step
 //!   apart (circularly within the period); ties: the first in scan order.
-use super::params::DesignParams;
+use super::alpha_scan_params::AlphaScanParams;
 use super::symmetry_words::PairSymmetry;
 use crate::study::corrugation::contact_line;
 use crate::study::rows::{clean, CorrugationRow};
@@ -62,7 +62,7 @@ pub fn coarse_grid(p: f64, step: f64) -> Vec<f64> {
 
 /// Number of corrugation paths the scan of one orientation solves (for progress and budgets):
 /// the coarse grid plus each refinement's new angles (at most).
-pub fn paths_per_scan(p: &DesignParams, sym: &PairSymmetry) -> usize {
+pub fn paths_per_scan(p: &AlphaScanParams, sym: &PairSymmetry) -> usize {
     let mut n = coarse_grid(sym.alpha_period_deg, p.alpha_step_deg).len();
     let mut prev = p.alpha_step_deg;
     for &r in &p.alpha_refine_deg {
@@ -103,7 +103,7 @@ pub struct Target<'a> {
 /// corrugation path each ([`paths_per_scan`]).
 pub fn scan_alpha(
     t: &Target,
-    p: &DesignParams,
+    p: &AlphaScanParams,
     sym: &PairSymmetry,
     tick: &(dyn Fn() + Sync),
 ) -> Result<AlphaScan> {

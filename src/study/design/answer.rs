@@ -35,7 +35,16 @@ pub enum Check {
     /// Every such run confirms superlubricity; the loads (mN) checked.
     Confirmed(Vec<f64>),
     /// One of them does not: why.
-    Contradicted(String),
+    Contradicted(Contradiction),
+}
+
+/// Why the DEM contradicts a design (`crate::present` words it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contradiction {
+    /// Why the run is not superlubric ([`crate::study::verdict::dem_superlubric`]).
+    pub why: String,
+    /// The tolerance corner of the run (δθ, δdir; degrees), when it is a corner's.
+    pub corner: Option<(f64, f64)>,
 }
 
 /// The answer of one pattern.
@@ -89,7 +98,7 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
     }
     for e in &runs {
         if let Err(why) = dem_superlubric(e, p_crit, p.mu_superlubric) {
-            return Check::Contradicted(why);
+            return Check::Contradicted(Contradiction { why, corner: None });
         }
     }
     if !tolerance_box(p).is_point() && c.score.superlubric_to_mn > 0.0 {
@@ -110,10 +119,10 @@ pub fn check(pr: &PatternResult, rank: usize, dem: &[DemEntry], p: &DesignParams
         }
         for e in corners {
             if let Err(why) = dem_superlubric(e, p_crit, p.mu_superlubric) {
-                return Check::Contradicted(format!(
-                    "{why} at its tolerance corner δθ = {:+}°, δdir = {:+}°",
-                    e.run.theta_offset_deg, e.run.direction_offset_deg
-                ));
+                return Check::Contradicted(Contradiction {
+                    why,
+                    corner: Some((e.run.theta_offset_deg, e.run.direction_offset_deg)),
+                });
             }
         }
     }
@@ -137,7 +146,7 @@ pub fn answer(pr: &PatternResult, dem: &[DemEntry], dem_ran: bool, p: &DesignPar
         };
     }
     let mut passed = Vec::new();
-    for rank in 1..=p.confirm.min(pr.ranking.len()) {
+    for rank in 1..=p.confirm.designs.min(pr.ranking.len()) {
         match check(pr, rank, dem, p) {
             c @ Check::Confirmed(_) => {
                 return Answer {

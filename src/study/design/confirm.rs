@@ -33,10 +33,10 @@ pub fn dem_params(
     load: f64,
     protocol: DemProtocol,
 ) -> crate::study::dem_run::DemParams {
-    let mut d = p.dem.clone();
+    let mut d = p.confirm.dem.clone();
     d.sim.load = load;
     d.alpha = deg_to_rad(alpha_deg);
-    d.line = p.line;
+    d.line = p.alpha_scan.line;
     if protocol == DemProtocol::Study {
         let s = dem::SimParams::default();
         d.sim.equilibrate_time = s.equilibrate_time;
@@ -71,7 +71,7 @@ pub fn dem_model(
     c: &Candidate,
     p: &DesignParams,
 ) -> crate::study::dem_run::ModelSpec {
-    let mut m = p.dem.model;
+    let mut m = p.confirm.dem.model;
     if m.request == dem::ModelRequest::Reduced && !answer::outside_range(pr, c).is_empty() {
         m.request = dem::ModelRequest::Auto;
     }
@@ -110,8 +110,8 @@ pub(super) fn confirm_estimates(
     for pr in patterns.iter_mut() {
         let mut solver: Option<Solver> = None;
         let ds = &pr.scene;
-        for c in pr.ranking.iter_mut().take(p.confirm) {
-            for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
+        for c in pr.ranking.iter_mut().take(p.confirm.designs) {
+            for w in loads_to_confirm(c, &p.confirm.loads, &p.loads) {
                 let wm = Load::from_n(w).mn();
                 if c.friction.iter().any(|r| Load::from_n(w).is(r.load_mN)) {
                     continue;
@@ -124,7 +124,7 @@ pub(super) fn confirm_estimates(
                         "theta_deg": c.theta_deg,
                         "alpha_deg": c.alpha_deg,
                         "load_mN": wm,
-                        "line_deg": p.line.map(rad_to_deg),
+                        "line_deg": p.alpha_scan.line.map(rad_to_deg),
                         "friction": record::friction_knobs(&p.friction),
                     }),
                 };
@@ -141,7 +141,7 @@ pub(super) fn confirm_estimates(
                         let s = super::limit::solver_of(&mut solver, ds)?;
                         let line = crate::study::corrugation::contact_line(
                             &ds.scene.with_theta(theta),
-                            p.line,
+                            p.alpha_scan.line,
                         );
                         let alpha = deg_to_rad(c.alpha_deg);
                         let est = surrogate::friction::estimate_friction_loads(
@@ -190,10 +190,10 @@ pub fn loads_to_confirm(c: &rank::Candidate, confirm_loads: &[f64], loads: &[f64
     w
 }
 
-/// The confirmation runs (top `confirm` designs × confirmation loads, and the corners of each
-/// one's tolerance box, `corner_jobs`), with what each one is; the runs of borderline designs
-/// and of recipes outside the validated range ([`answer::outside_range`]: the DEM decides
-/// them) first, else in ranking order.
+/// The confirmation runs (top [`super::ConfirmParams::designs`] designs × confirmation loads,
+/// and the corners of each one's tolerance box, `corner_jobs`), with what each one is; the runs
+/// of borderline designs and of recipes outside the validated range
+/// ([`answer::outside_range`]: the DEM decides them) first, else in ranking order.
 pub fn confirm_jobs(
     patterns: &[PatternResult],
     p: &DesignParams,
@@ -202,10 +202,10 @@ pub fn confirm_jobs(
     // DEM decides
     let mut all: Vec<(bool, SlideJob, ConfirmEntry)> = Vec::new();
     for pr in patterns {
-        for (k, c) in pr.ranking.iter().take(p.confirm).enumerate() {
+        for (k, c) in pr.ranking.iter().take(p.confirm.designs).enumerate() {
             let borderline = c.score.verdict == crate::study::verdict::Verdict::Borderline
                 || !answer::outside_range(pr, c).is_empty();
-            for w in loads_to_confirm(c, &p.confirm_loads, &p.loads) {
+            for w in loads_to_confirm(c, &p.confirm.loads, &p.loads) {
                 all.push((
                     !borderline,
                     SlideJob {
@@ -264,7 +264,8 @@ pub(super) fn corner_jobs(
         for &(dt, dd) in &corners {
             let theta = label(c.theta_deg + dt);
             let scene = pr.scene.scene.with_theta(deg_to_rad(theta));
-            let line = crate::study::friction::line_at(&scene, deg_to_rad(theta), p.line);
+            let line =
+                crate::study::friction::line_at(&scene, deg_to_rad(theta), p.alpha_scan.line);
             let alpha = label(c.direction_deg + dd - rad_to_deg(line.angle));
             out.push((
                 SlideJob {
@@ -306,13 +307,13 @@ pub(super) fn confirm_stage(
     let dir = store.path("dem");
     obs.event(&Event::DemRuns {
         runs: jobs.len(),
-        side_by_side: p.jobs.min(jobs.len()),
+        side_by_side: p.confirm.jobs.min(jobs.len()),
         dir: &dir,
     });
-    let mut outcomes = run_batch(&jobs, p.jobs, &dir, obs.progress())?;
+    let mut outcomes = run_batch(&jobs, p.confirm.jobs, &dir, obs.progress())?;
     let mut dem = to_entries(&entries, &outcomes);
     // the protocol check, on the design the report recommends
-    if p.protocol_check && !p.dem_is_study_protocol {
+    if p.confirm.protocol_check && !p.confirm.dem_is_study_protocol {
         let answers: Vec<answer::Answer> = patterns
             .iter()
             .map(|pr| answer::answer(pr, &dem, true, p))
@@ -321,7 +322,7 @@ pub(super) fn confirm_stage(
             pattern: pr,
             index: i,
             load: w,
-        }) = protocol_check_design(patterns, &answers, &p.confirm_loads)
+        }) = protocol_check_design(patterns, &answers, &p.confirm.loads)
         {
             let c = &pr.ranking[i];
             let job = SlideJob {

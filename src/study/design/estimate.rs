@@ -17,8 +17,8 @@
 //!   adds estimates at the DEM loads that lack one.
 
 use super::alpha_scan::{AlphaScan, Target};
-use super::params::DesignParams;
 use crate::study::rows::{CorrugationRow, FrictionRow};
+use crate::study::tolerance::LimitParams;
 use anyhow::Result;
 use serde::{Deserialize, Serialize};
 use surrogate::friction::estimate_friction_loads;
@@ -52,11 +52,11 @@ const LOAD_CHUNK: usize = 3;
 /// The friction estimate of the orientation `t` along each best α of `scan` (see the module
 /// docs): the lowest load, then, while superlubric, the loads up to the scan load (N) until
 /// the coating fails on the path. `tick` is called once per α. Cost: one friction path per α
-/// and chunk of loads.
+/// and chunk of loads. Its knobs: the limit's (the loads, μ_sl, the estimate's knobs).
 pub fn estimate(
     t: &Target,
     scan: &AlphaScan,
-    p: &DesignParams,
+    p: &LimitParams,
     tick: &(dyn Fn() + Sync),
 ) -> Result<Vec<FrictionRow>> {
     let Target {

@@ -12,7 +12,8 @@ use super::inputs::eval_inputs;
 use super::observer::{Event, Stage};
 use super::params::DesignScene;
 use super::pattern_result::{EvalStage, Evaluated};
-use super::shortlist::{self, Level, Orientation};
+use super::rank::Pick;
+use super::shortlist::{Level, Orientation};
 use super::store::tag;
 use super::symmetry_words::PairSymmetry;
 use crate::runs::meta::Inputs;
@@ -76,11 +77,11 @@ impl<'a> EvaluateStage<'a> {
         let Ctx { p, obs, .. } = self.ctx;
         let level = l.level;
         let reason = if level.top {
-            "survives the highest load".to_string()
+            Pick::Top
         } else {
-            format!("best of level {}", shortlist::mn(level.load))
+            Pick::Level(level.load)
         };
-        let per = paths_per_scan(p, l.sym) + p.alphas_per_theta;
+        let per = paths_per_scan(&p.alpha_scan, l.sym) + p.alpha_scan.alphas_per_theta;
         obs.event(&Event::Level {
             pattern: &l.ds.name,
             load: level.load,
@@ -96,7 +97,7 @@ impl<'a> EvaluateStage<'a> {
             .zip(done)
             .map(|(o, st)| Evaluated {
                 orientation: o.clone(),
-                reason: reason.clone(),
+                reason,
                 scan_alphas_deg: st.0.eval.scan.iter().map(|r| r.alpha_deg).collect(),
                 estimates: st.0.eval.friction.len(),
                 eval: st.0.eval,
@@ -143,19 +144,20 @@ impl<'a> EvaluateStage<'a> {
             .par_iter()
             .map(|&k| {
                 let t0 = Instant::now();
-                let s = scan_alpha(&target(k), p, l.sym, &|| ticks.tick(k))?;
+                let s = scan_alpha(&target(k), &p.alpha_scan, l.sym, &|| ticks.tick(k))?;
                 Ok((s, t0.elapsed().as_secs_f64()))
             })
             .collect::<Vec<Result<_>>>()
             .into_iter()
             .collect::<Result<_>>()?;
         obs.stage(Stage::Estimate, &l.ds.name);
+        let limits = p.limit();
         let estimates: Vec<Result<(Vec<FrictionRow>, f64)>> = todo
             .par_iter()
             .zip(&scans)
             .map(|(&k, (s, _))| {
                 let t0 = Instant::now();
-                let f = estimate(&target(k), s, p, &|| ticks.tick(k))?;
+                let f = estimate(&target(k), s, &limits, &|| ticks.tick(k))?;
                 Ok((f, t0.elapsed().as_secs_f64()))
             })
             .collect();

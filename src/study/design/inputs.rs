@@ -28,12 +28,12 @@ pub(super) fn scene_record(ds: &DesignScene) -> SceneFile {
 /// in the design's inputs and in each stored evaluation's.
 fn evaluation_record(p: &DesignParams) -> Map<String, Value> {
     let v = json!({
-        "alpha_step_deg": p.alpha_step_deg,
-        "alpha_refine_deg": p.alpha_refine_deg,
-        "line_deg": p.line.map(rad_to_deg),
-        "scan_um": label(m_to_um(p.scan_length)),
-        "scan_step_um": label(m_to_um(p.scan_step)),
-        "alphas_per_theta": p.alphas_per_theta,
+        "alpha_step_deg": p.alpha_scan.alpha_step_deg,
+        "alpha_refine_deg": p.alpha_scan.alpha_refine_deg,
+        "line_deg": p.alpha_scan.line.map(rad_to_deg),
+        "scan_um": label(m_to_um(p.alpha_scan.scan_length)),
+        "scan_step_um": label(m_to_um(p.alpha_scan.scan_step)),
+        "alphas_per_theta": p.alpha_scan.alphas_per_theta,
         "friction": record::friction_knobs(&p.friction),
     });
     match v {
@@ -61,7 +61,7 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
         .iter()
         .map(|d| json!({"name": d.name, "scene": scene_record(d)}))
         .collect();
-    let mut dem = record::dem(&scenes[0].scene, &p.dem);
+    let mut dem = record::dem(&scenes[0].scene, &p.confirm.dem);
     if let Some(o) = dem.as_object_mut() {
         // set per run
         for k in ["load_mN", "alpha_deg", "line_deg"] {
@@ -75,33 +75,33 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
     let mut params = with_evaluation(
         json!({
             "patterns": sc,
-            "theta_deg": record::axis(&p.thetas_deg),
-            "symmetry_cut": p.symmetry_cut,
+            "theta_deg": record::axis(&p.screen.thetas_deg),
+            "symmetry_cut": p.screen.symmetry_cut,
             "load_mN": record::axis(&p.load_labels_mn()),
             "mu_superlubric": p.mu_superlubric,
-            "per_level": p.per_level,
-            "max_top": p.max_top,
-            "theta_tol_deg": p.theta_tol_deg,
-            "direction_tol_deg": p.direction_tol_deg,
-            "theta_tol_step_deg": p.theta_tol_step_deg,
-            "direction_tol_step_deg": p.direction_tol_step_deg,
-            "seeds": p.seeds,
+            "per_level": p.shortlist.per_level,
+            "max_top": p.shortlist.max_top,
+            "theta_tol_deg": p.tolerance.theta_tol_deg,
+            "direction_tol_deg": p.tolerance.direction_tol_deg,
+            "theta_tol_step_deg": p.tolerance.theta_tol_step_deg,
+            "direction_tol_step_deg": p.tolerance.direction_tol_step_deg,
+            "seeds": p.tolerance.seeds,
         }),
         p,
     );
     // without --theta, a pattern screened over its whole domain (not the default list) says so
     // (absent otherwise: the presets' records are unchanged)
-    if p.theta_default
+    if p.screen.theta_default
         && scenes
             .iter()
-            .any(|d| default_domain(&PairSymmetry::of_scene(&d.scene), p).is_some())
+            .any(|d| default_domain(&PairSymmetry::of_scene(&d.scene), &p.screen).is_some())
     {
         params["theta_default"] = json!("the whole domain where 0:30:0.1 does not span it");
     }
     // a site file's pattern measures α from the x axis (absent otherwise: records unchanged)
     let lines: Vec<Value> = scenes
         .iter()
-        .filter_map(|d| line_note(d, p).map(|n| json!({"name": d.name, "line": n})))
+        .filter_map(|d| line_note(d, p.alpha_scan.line).map(|n| json!({"name": d.name, "line": n})))
         .collect();
     if !lines.is_empty() {
         params["line_site_files"] = json!(lines);

@@ -19,7 +19,7 @@ impl DesignParams {
         LimitParams {
             loads: self.loads.to_vec(),
             mu_superlubric: self.mu_superlubric,
-            line: self.line,
+            line: self.alpha_scan.line,
             friction: self.friction,
         }
     }
@@ -34,10 +34,10 @@ impl DesignParams {
 /// at most `theta_tol_step_deg` / `direction_tol_step_deg` apart.
 pub fn tolerance_box(p: &DesignParams) -> ToleranceBox {
     ToleranceBox::new(
-        p.theta_tol_deg,
-        p.direction_tol_deg,
-        p.theta_tol_step_deg,
-        p.direction_tol_step_deg,
+        p.tolerance.theta_tol_deg,
+        p.tolerance.direction_tol_deg,
+        p.tolerance.theta_tol_step_deg,
+        p.tolerance.direction_tol_step_deg,
     )
 }
 
@@ -47,13 +47,13 @@ pub(super) fn limit_record(p: &DesignParams) -> Value {
     json!({
         "load_mN": p.load_labels_mn(),
         "mu_superlubric": p.mu_superlubric,
-        "line_deg": p.line.map(rad_to_deg),
+        "line_deg": p.alpha_scan.line.map(rad_to_deg),
         "friction": record::friction_knobs(&p.friction),
     })
 }
 
 /// One solver per substrate realisation: the scene's own (reusing `own` when built), then one
-/// per extra seed of `p.seeds`. Cost: one solver set-up (pair search) per realisation.
+/// per extra seed of `p.tolerance.seeds`. Cost: one solver set-up (pair search) per realisation.
 pub(super) fn seed_solvers(
     ds: &DesignScene,
     p: &DesignParams,
@@ -65,7 +65,7 @@ pub(super) fn seed_solvers(
         Some(s) => s,
         None => Solver::new(&sc)?,
     }];
-    for &seed in &p.seeds {
+    for &seed in &p.tolerance.seeds {
         if seed != sc.substrate.seed {
             let mut o = sc.clone();
             o.substrate.seed = seed;

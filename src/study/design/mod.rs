@@ -22,11 +22,11 @@
 //!    highest load up to which superlubric (coating intact on the sliding path AND μ_est < 0.02
 //!    at every load up to it) at every sample of the tolerance box; the candidates are ranked
 //!    by it, then the θ window, the direction window, μ_est, contacts ([`rank`]).
-//! 6. **DEM confirmation** ([`confirm`]): the top `confirm` designs of each pattern at the
-//!    confirmation loads and at the corners of their tolerance boxes (borderline designs
-//!    first), independent `slide` runs side by side, one thread each (plus, with a
-//!    protocol shorter than the study's, the design the report recommends once with the study's
-//!    protocol to measure the difference there: [`protocol_check_design`]).
+//! 6. **DEM confirmation** ([`confirm`]): the top [`ConfirmParams::designs`] designs of each
+//!    pattern at the confirmation loads and at the corners of their tolerance boxes
+//!    (borderline designs first), independent `slide` runs side by side, one thread each
+//!    (plus, with a protocol shorter than the study's, the design the report recommends once
+//!    with the study's protocol to measure the difference there: [`protocol_check_design`]).
 //! 7. **Report data** ([`report_data::ReportDataStage`]): each pattern's answer ([`answer`]),
 //!    the tolerance maps around the answers and, with recipes, the P_crit sweep ([`p_crit`]).
 //! 8. **Yield** ([`yield_stage::YieldStage`], opt-in: `design --yield-samples N`): per answer
@@ -43,15 +43,19 @@
 //! Every stage is stored under the output directory with the inputs that made it
 //! ([`store`]; the records: `inputs.rs`): a re-run with the same `--out-dir` reuses every
 //! finished stage and DEM run, and one with other inputs is refused with the differences
-//! named. Adding a stage: a file with its type (its knobs, a `run` from the previous stage's
-//! output to its own), a [`Stage`] variant, its events in [`observer`] (worded by
-//! `crate::present::design_report::log`), one line in [`pipeline::Pipeline`].
+//! named. Adding a stage: a file with its type (a `run` from the previous stage's output to
+//! its own), its knobs in a params struct of its own (a field of [`DesignParams`]; in a
+//! sibling `<stage>_params.rs`, so that `params.rs` need not import the stage), a [`Stage`]
+//! variant, its events in [`observer`] (worded by `crate::present::design_report::log`), one
+//! line in [`pipeline::Pipeline`].
 
 pub mod alpha_scan;
+pub mod alpha_scan_params;
 pub mod answer;
 pub mod answer_yield;
 pub mod best;
 pub mod confirm;
+pub mod confirm_params;
 mod ctx;
 mod dem_entry;
 mod domain;
@@ -70,9 +74,12 @@ pub mod recipe_answer;
 pub mod report_data;
 pub mod robust;
 pub mod screen;
+pub mod screen_params;
 pub mod shortlist;
+pub mod shortlist_params;
 pub mod store;
 pub mod symmetry_words;
+pub mod tolerance_params;
 pub mod trim;
 pub mod walk;
 pub mod yield_params;
@@ -81,8 +88,8 @@ pub mod yield_stage;
 
 pub use dem_entry::DemEntry;
 pub use domain::{
-    cut, default_domain, line_note, theta_note, ThetaNote, THETA_STEP_DEG, WIDE_DOMAIN_DEG,
-    WIDE_THETA_STEP_DEG,
+    cut, default_domain, line_note, theta_note, OutsideDomain, ThetaNote, THETA_STEP_DEG,
+    WIDE_DOMAIN_DEG, WIDE_THETA_STEP_DEG,
 };
 pub use inputs::{inputs, screen_params};
 pub use limit::tolerance_box;
@@ -94,7 +101,10 @@ pub use store::tag;
 pub use store::Timing;
 pub use walk::Stop;
 
-pub use params::{DesignParams, DesignScene};
+pub use params::{
+    AlphaScanParams, ConfirmParams, DesignParams, DesignScene, ScreenStageParams, ShortlistParams,
+    ToleranceParams,
+};
 
 use anyhow::Result;
 pub use confirm::{dem_params, loads_to_confirm, protocol_check_design, run_name, ProtocolCheck};

@@ -1,6 +1,11 @@
-//! [`DesignParams`]: every knob of `superlube design`.
+//! [`DesignParams`]: every knob of `superlube design`, as the composition of each stage's own
+//! params (each defined beside its stage) and the knobs the stages share.
 
-use crate::study::dem_run::DemParams;
+pub use super::alpha_scan_params::AlphaScanParams;
+pub use super::confirm_params::ConfirmParams;
+pub use super::screen_params::ScreenStageParams;
+pub use super::shortlist_params::ShortlistParams;
+pub use super::tolerance_params::ToleranceParams;
 use crate::study::load::Loads;
 use surrogate::friction::FrictionParams;
 
@@ -26,75 +31,28 @@ pub struct DesignScene {
 }
 
 /// Every knob of a design (SI inside; angles as the degree decimals the user meant, so that
-/// every reproduction command prints them exactly).
+/// every reproduction command prints them exactly): each stage's own params, and the knobs the
+/// stages share (the load ladder, the superlubric threshold, the friction estimate's knobs).
 #[derive(Debug, Clone)]
 pub struct DesignParams {
-    /// Orientations θ (degrees) as given, before the symmetry cut.
-    pub thetas_deg: Vec<f64>,
-    /// The `--theta` text (for messages).
-    pub theta_text: String,
-    /// `--theta` was not given: `thetas_deg` is the default `0:30:0.1`, and a pattern whose
-    /// domain it does not span is screened over its whole domain
-    /// ([`super::default_domain`]).
-    pub theta_default: bool,
-    /// Cut θ to the pattern's fundamental domain ([`super::symmetry_words`]).
-    pub symmetry_cut: bool,
     /// Normal loads W (N), strictly increasing: the load ladder of every stage.
     pub loads: Loads,
     /// Friction coefficient below which a design counts as superlubric (study: 0.02).
     pub mu_superlubric: f64,
-    /// Orientations kept per lower load level of the shortlist ([`super::shortlist`]).
-    pub per_level: usize,
-    /// Most orientations kept at the top level (all that survive the highest load, up to this).
-    pub max_top: usize,
-    /// Coarse α grid step (degrees) of the scan over [0, P_α).
-    pub alpha_step_deg: f64,
-    /// Successive finer α steps (degrees), each scanned over ± half the previous step around
-    /// the best α so far.
-    pub alpha_refine_deg: Vec<f64>,
-    /// Contact-line angle (rad from x) for every θ; `None`: the moiré estimate.
-    pub line: Option<f64>,
-    /// Length (m) of the α-scan paths.
-    pub scan_length: f64,
-    /// Sample spacing (m) of the α-scan paths.
-    pub scan_step: f64,
-    /// Pulling angles per orientation whose friction is estimated (the lowest-corrugation
-    /// local minima of the scan, ≥ one refine window apart).
-    pub alphas_per_theta: usize,
-    /// The friction estimate's knobs.
+    /// The screen's: the θ list and its symmetry cut ([`super::screen`]).
+    pub screen: ScreenStageParams,
+    /// The shortlist's ([`super::shortlist`]).
+    pub shortlist: ShortlistParams,
+    /// The α scan's, the contact line included ([`super::alpha_scan`]).
+    pub alpha_scan: AlphaScanParams,
+    /// The friction estimate's knobs ([`super::estimate`]), shared by every stage that
+    /// estimates a limit (the robust search, the DEM's comparisons, the tolerance maps).
     pub friction: FrictionParams,
-    /// Fabrication tolerance of θ (degrees, ≥ 0): the robust limit holds for every θ within
-    /// ± this of the nominal ([`crate::study::tolerance`]).
-    pub theta_tol_deg: f64,
-    /// Tolerance of the pulling direction in the substrate frame (degrees, ≥ 0).
-    pub direction_tol_deg: f64,
-    /// Largest sampling step of the θ tolerance (degrees): a window narrower than it cannot
-    /// pass (the first sample off the nominal is at most one step away).
-    pub theta_tol_step_deg: f64,
-    /// Largest sampling step of the direction tolerance (degrees).
-    pub direction_tol_step_deg: f64,
-    /// Substrate seeds evaluated for the robust limit besides the scene's own (σ_h > 0 only).
-    pub seeds: Vec<u64>,
-    /// Designs per pattern confirmed with the DEM (0 only with `no_dem`).
-    pub confirm: usize,
-    /// Loads (N) of the DEM confirmation, each one of `loads`.
-    pub confirm_loads: Vec<f64>,
-    /// Stop before the DEM.
-    pub no_dem: bool,
-    /// DEM runs side by side (one thread each).
-    pub jobs: usize,
-    /// Shard of the DEM confirmation runs to compute ([`crate::runs::shard::Shard::ALL`]: every
-    /// run, then the report). With a part, the design computes its share of the runs into
-    /// `--out-dir/dem/` and stops before the report; a call without a shard (all shards' `dem/`
-    /// runs in the same `--out-dir`) reuses them and writes the report.
-    pub dem_shard: crate::runs::shard::Shard,
-    /// The DEM protocol of every confirmation run (α and line are set per run).
-    pub dem: DemParams,
-    /// The study's protocol (10 + 10 + 300 µs) is used; otherwise the report says it is shorter.
-    pub dem_is_study_protocol: bool,
-    /// Also run the study protocol on the best design at the middle confirmation load, to
-    /// measure the shorter protocol's friction difference (only when the protocol is shorter).
-    pub protocol_check: bool,
+    /// The fabrication tolerance the robust limit holds over ([`super::tolerance_box`]; the
+    /// robust search, the tolerance maps, the DEM's corners and the yield use it).
+    pub tolerance: ToleranceParams,
+    /// The DEM confirmation's ([`super::confirm`]).
+    pub confirm: ConfirmParams,
     /// The yield of each answer over fabrication ([`super::yield_stage`]); `None`: the stage
     /// does not run (the default: its DEM decisions take minutes per answer).
     pub fab_yield: Option<super::yield_params::YieldStageParams>,

@@ -3,7 +3,7 @@
 
 use super::estimate::ThetaEval;
 use super::params::DesignScene;
-use super::rank::Candidate;
+use super::rank::{Candidate, Pick};
 use super::shortlist::{Level, Orientation};
 use super::symmetry_words::PairSymmetry;
 use super::walk::Stop;
@@ -25,7 +25,7 @@ pub struct Evaluated {
     /// The screen's view of it.
     pub orientation: Orientation,
     /// Why it was shortlisted.
-    pub reason: String,
+    pub reason: Pick,
     /// The α scan and friction estimate.
     pub eval: ThetaEval,
     /// Wall time when computed (s).

@@ -93,10 +93,10 @@ impl<'a> Pipeline<'a> {
         }
         let order = self.order(scenes)?;
         let patterns = self.patterns(scenes, &order, on_pattern)?;
-        if !p.no_dem && !p.dem_shard.is_all() {
+        if !p.confirm.no_dem && !p.confirm.dem_shard.is_all() {
             return self.dem_shard(patterns);
         }
-        let dem = if p.no_dem {
+        let dem = if p.confirm.no_dem {
             Vec::new()
         } else {
             obs.stage(Stage::DemConfirmation, "");
@@ -134,10 +134,10 @@ impl<'a> Pipeline<'a> {
                 floor_mn,
                 // across many patterns only each one's best counts (without the DEM, which
                 // confirms each pattern's top designs)
-                keep: if order.cross && p.no_dem {
+                keep: if order.cross && p.confirm.no_dem {
                     1
                 } else {
-                    p.confirm.max(3)
+                    p.confirm.designs.max(3)
                 },
             };
             let mut pr = self.pattern(&scenes[i], search)?;
@@ -148,11 +148,11 @@ impl<'a> Pipeline<'a> {
             if let Some(y) = p.fab_yield.as_ref().filter(|y| y.rank_by == RankBy::Yield) {
                 YieldRank::new(self.ctx, y).run(&mut pr)?;
             }
-            if !p.no_dem {
+            if !p.confirm.no_dem {
                 confirm_estimates(std::slice::from_mut(&mut pr), p, store)?;
             }
             pr.resonance_flagged = rank::resonance_flagged(&pr.ranking);
-            if p.dem_shard.is_all() {
+            if p.confirm.dem_shard.is_all() {
                 on_pattern(&pr)?;
             }
             pr.trim(p);
@@ -232,7 +232,7 @@ impl<'a> Pipeline<'a> {
         };
         let mut searches = robust::Searches::new(ds, p, &solvers, &limit, self.ctx.store)?;
         let mut solver: Option<Solver> = None;
-        let mut walk = LevelWalk::new(p.confirm.max(3), floor_mn, robust.is_some());
+        let mut walk = LevelWalk::new(p.confirm.designs.max(3), floor_mn, robust.is_some());
         let mut evaluated: Vec<Evaluated> = Vec::new();
         let mut ranking: Vec<Candidate> = Vec::new();
         for (li, level) in short.levels.iter().enumerate() {
@@ -257,7 +257,7 @@ impl<'a> Pipeline<'a> {
                     &ds.name,
                     &e.eval,
                     label(n_to_mn(level.load)),
-                    &e.reason,
+                    e.reason,
                     ds.scene.coating.p_crit,
                     p.mu_superlubric,
                 ));
@@ -346,11 +346,11 @@ impl<'a> Pipeline<'a> {
     fn dem_shard(&self, patterns: Vec<PatternResult>) -> Result<DesignOutcome> {
         let p = self.ctx.p;
         let (jobs, _) = confirm_jobs(&patterns, p);
-        let part = p.dem_shard.range(jobs.len());
+        let part = p.confirm.dem_shard.range(jobs.len());
         let dir = self.ctx.store.path("dem");
         self.ctx.obs.event(&Event::DemShard {
-            index: p.dem_shard.index,
-            count: p.dem_shard.count,
+            index: p.confirm.dem_shard.index,
+            count: p.confirm.dem_shard.count,
             start: part.start,
             end: part.end,
             runs: jobs.len(),
@@ -359,7 +359,7 @@ impl<'a> Pipeline<'a> {
         let dem: Vec<SlideOutcome> = if part.is_empty() {
             Vec::new()
         } else {
-            run_batch(&jobs[part], p.jobs, &dir, self.ctx.obs.progress())?
+            run_batch(&jobs[part], p.confirm.jobs, &dir, self.ctx.obs.progress())?
         };
         let failed = dem.iter().filter(|o| o.error.is_some()).count();
         if failed > 0 {

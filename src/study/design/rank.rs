@@ -47,8 +47,8 @@ pub struct Candidate {
     pub scan_load_mn: f64,
     /// The screen's coating-intact load W_c (mN).
     pub screen_intact_to_mn: f64,
-    /// Why it was shortlisted (`top level`, `level 1.75 mN`).
-    pub reason: String,
+    /// Why it was shortlisted.
+    pub reason: Pick,
     /// Friction estimate per load.
     pub friction: Vec<FrictionRow>,
     /// The estimates its robust search made at the corners of its tolerance box (the design's
@@ -147,12 +147,21 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
     }
 }
 
+/// Why an orientation was shortlisted (`crate::present` words it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Pick {
+    /// It survives the highest load (the top level).
+    Top,
+    /// One of the best of a lower level, of load `W_c` (N).
+    Level(f64),
+}
+
 /// The candidates of one orientation's evaluation.
 pub fn candidates(
     pattern: &str,
     ev: &ThetaEval,
     screen_intact_to_mn: f64,
-    reason: &str,
+    reason: Pick,
     p_crit: f64,
     mu_sl: f64,
 ) -> Vec<Candidate> {
@@ -180,7 +189,7 @@ pub fn candidates(
                 .map_or(f64::NAN, |r| r.corrugation_nm),
             scan_load_mn: ev.scan_load_mN,
             screen_intact_to_mn,
-            reason: reason.to_string(),
+            reason,
             score: score(&rows, p_crit, mu_sl),
             friction: rows,
             corners: Vec::new(),
@@ -350,7 +359,7 @@ pub struct RankingRow {
 
 impl RankingRow {
     /// The row of `c` at rank `rank` (tolerances in degrees).
-    pub fn new(rank: usize, c: &Candidate, tol: (f64, f64)) -> RankingRow {
+    pub fn new(rank: usize, c: &Candidate, tol: (f64, f64), shortlist: String) -> RankingRow {
         RankingRow {
             rank,
             pattern: c.pattern.clone(),
@@ -379,7 +388,7 @@ impl RankingRow {
             mu_est_lowest: c.friction.first().and_then(|r| r.mu_est),
             corrugation_nm: c.corrugation_nm,
             scan_load_mN: c.scan_load_mn,
-            shortlist: c.reason.clone(),
+            shortlist,
         }
     }
 }

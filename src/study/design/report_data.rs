@@ -45,12 +45,12 @@ impl<'a> ReportDataStage<'a> {
         let Ctx { p, store, obs } = self.ctx;
         let answers = patterns
             .iter()
-            .map(|pr| answer::answer(pr, &dem, !p.no_dem, p))
+            .map(|pr| answer::answer(pr, &dem, !p.confirm.no_dem, p))
             .collect();
         let mut o = DesignOutcome {
             patterns,
             dem,
-            dem_ran: !p.no_dem,
+            dem_ran: !p.confirm.no_dem,
             answers,
             maps: Vec::new(),
             p_crit: None,
@@ -100,8 +100,8 @@ pub fn tolerance_map(ctx: Ctx, ds: &DesignScene, c: &Candidate) -> Result<Answer
     let mp = MapParams {
         theta_deg: c.theta_deg,
         direction_deg: c.direction_deg,
-        theta_offsets_deg: grid(p.theta_tol_deg, 0.1, 17),
-        direction_offsets_deg: grid(p.direction_tol_deg, 0.5, 9),
+        theta_offsets_deg: grid(p.tolerance.theta_tol_deg, 0.1, 17),
+        direction_offsets_deg: grid(p.tolerance.direction_tol_deg, 0.5, 9),
         limit: p.limit(),
     };
     let inputs = Inputs {

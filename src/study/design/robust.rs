@@ -129,7 +129,7 @@ impl<'a> Searches<'a> {
             params: json!({
                 "theta_offsets_deg": bx.theta_offsets_deg,
                 "direction_offsets_deg": bx.direction_offsets_deg,
-                "seeds": p.seeds,
+                "seeds": p.tolerance.seeds,
                 "limit": super::limit::limit_record(p),
                 "search": "best-first/v3",
             }),
@@ -384,8 +384,8 @@ impl<'a> RobustStage<'a> {
         }
         obs.event(&Event::Robust {
             pattern: &ds.name,
-            theta_tol_deg: p.theta_tol_deg,
-            direction_tol_deg: p.direction_tol_deg,
+            theta_tol_deg: p.tolerance.theta_tol_deg,
+            direction_tol_deg: p.tolerance.direction_tol_deg,
             substrates: searches.solvers.len(),
             designs: keep.min(todo.len()) as u64,
         });
@@ -452,8 +452,9 @@ impl<'a> RobustStage<'a> {
                     key: Key::reachable(
                         c,
                         limits_mn[b],
-                        k.theta_window_deg.unwrap_or(p.theta_tol_deg),
-                        k.direction_window_deg.unwrap_or(p.direction_tol_deg),
+                        k.theta_window_deg.unwrap_or(p.tolerance.theta_tol_deg),
+                        k.direction_window_deg
+                            .unwrap_or(p.tolerance.direction_tol_deg),
                     ),
                 }
             })

@@ -29,7 +29,8 @@ pub struct Screened {
     pub wall_s: Option<f64>,
 }
 
-/// The screen stage: its knobs are the design's θ list (and whether to cut it) and loads.
+/// The screen stage: its knobs are [`super::params::ScreenStageParams`] (the θ list and
+/// whether to cut it) and the design's loads.
 pub struct ScreenStage<'a> {
     ctx: Ctx<'a>,
 }
@@ -46,24 +47,24 @@ impl<'a> ScreenStage<'a> {
         let Ctx { p, obs, .. } = self.ctx;
         let name = ds.name.as_str();
         obs.stage(Stage::Screen, name);
-        let (thetas_deg, sym) = cut(ds, p)?;
-        let note = theta_note(&sym, &thetas_deg, p);
+        let (thetas_deg, sym) = cut(ds, &p.screen)?;
+        let note = theta_note(&sym, &thetas_deg, &p.screen);
         obs.event(&Event::Symmetry {
             pattern: name,
             sym: &sym,
             screened: thetas_deg.len(),
-            given: p.thetas_deg.len(),
-            cut: p.symmetry_cut,
+            given: p.screen.thetas_deg.len(),
+            cut: p.screen.symmetry_cut,
             note: note.as_ref(),
         });
-        if let Some(n) = line_note(ds, p) {
+        if let Some(n) = line_note(ds, p.alpha_scan.line) {
             obs.event(&Event::LineNote {
                 pattern: name,
                 note: &n,
             });
         }
         let offset = ds.scene.slider.offset != [0.0; 2];
-        if p.symmetry_cut && (ds.scene.substrate.sigma_h > 0.0 || offset) {
+        if p.screen.symmetry_cut && (ds.scene.substrate.sigma_h > 0.0 || offset) {
             obs.event(&Event::ApproximateCut {
                 pattern: name,
                 offset,

@@ -39,7 +39,7 @@ pub struct Shortlisted {
 }
 
 /// Stage 2 of a design, [`Stage::Shortlist`]: the rule of the module docs on a pattern's
-/// screen; its knobs are the design's `per_level` and `max_top`.
+/// screen; its knobs are [`super::params::ShortlistParams`] and the design's loads.
 pub struct ShortlistStage<'a> {
     ctx: Ctx<'a>,
 }
@@ -56,7 +56,12 @@ impl<'a> ShortlistStage<'a> {
         let Ctx { p, obs, .. } = self.ctx;
         obs.stage(Stage::Shortlist, &ds.name);
         let orientations = orientations(&screened.rows, &p.loads, ds.scene.coating.p_crit);
-        let levels = levels(&orientations, &p.loads, p.per_level, p.max_top);
+        let levels = levels(
+            &orientations,
+            &p.loads,
+            p.shortlist.per_level,
+            p.shortlist.max_top,
+        );
         if levels.is_empty() {
             obs.event(&Event::NoIntactOrientation { pattern: &ds.name });
         }
@@ -156,14 +161,6 @@ pub fn levels(
         });
     }
     out
-}
-
-/// Label of a load in mN for messages (`1.75 mN`).
-pub fn mn(w: f64) -> String {
-    format!(
-        "{} mN",
-        crate::study::rows::label(surrogate::units::n_to_mn(w))
-    )
 }
 
 #[cfg(test)]

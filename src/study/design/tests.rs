@@ -18,7 +18,7 @@ fn pattern(name: &str, n: usize) -> PatternResult {
             corrugation_nm: 0.1,
             scan_load_mn: 3.86,
             screen_intact_to_mn: 3.86,
-            reason: String::new(),
+            reason: super::rank::Pick::Top,
             friction: vec![],
             corners: vec![],
             score: Score {
@@ -77,7 +77,10 @@ fn protocol_check_runs_on_the_recommended_design() {
     let loads = [0.35e-3, 2.1e-3, 3.86e-3];
     let contradicted = Answer {
         index: Some(0),
-        check: Check::Contradicted("P_max above P_crit".into()),
+        check: Check::Contradicted(super::answer::Contradiction {
+            why: "P_max above P_crit".into(),
+            corner: None,
+        }),
         others: vec![],
     };
     // square-tri: rank 1 contradicted, rank 3 confirmed at 0.35 and 2.1 mN
@@ -85,7 +88,13 @@ fn protocol_check_runs_on_the_recommended_design() {
         Answer {
             index: Some(2),
             check: Check::Confirmed(vec![0.35, 2.1]),
-            others: vec![(1, Check::Contradicted("x".into()))],
+            others: vec![(
+                1,
+                Check::Contradicted(super::answer::Contradiction {
+                    why: "x".into(),
+                    corner: None,
+                }),
+            )],
         },
         contradicted.clone(),
     ];

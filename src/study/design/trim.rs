@@ -27,7 +27,7 @@ impl PatternResult {
             e.eval.scan = Vec::new();
             e.eval.friction = Vec::new();
         }
-        let keep = p.confirm.max(CHART_DESIGNS);
+        let keep = p.confirm.designs.max(CHART_DESIGNS);
         for c in self.ranking.iter_mut().skip(keep) {
             c.friction.truncate(1);
             c.friction.shrink_to_fit();

@@ -47,7 +47,7 @@ impl<'a> YieldRank<'a> {
                 let s = &pr.ranking[i].score;
                 s.exact && s.nominal_to_mn > 0.0
             })
-            .take(p.confirm.max(3))
+            .take(p.confirm.designs.max(3))
             .collect();
         if top.is_empty() {
             return Ok(0);

@@ -44,7 +44,8 @@ pub fn yield_params(
 ) -> YieldParams {
     let mut excluded = vec![scene.substrate.seed];
     excluded.extend(
-        p.seeds
+        p.tolerance
+            .seeds
             .iter()
             .copied()
             .filter(|s| *s != scene.substrate.seed),
@@ -54,10 +55,10 @@ pub fn yield_params(
         direction_deg,
         fabrication: FabricationModel {
             theta: OffsetLaw::Uniform {
-                half_width_deg: p.theta_tol_deg,
+                half_width_deg: p.tolerance.theta_tol_deg,
             },
             direction: OffsetLaw::Uniform {
-                half_width_deg: p.direction_tol_deg,
+                half_width_deg: p.tolerance.direction_tol_deg,
             },
             sphere_diameter_cv: 0.0,
             p_crit_sigma: 0.0,
@@ -69,11 +70,11 @@ pub fn yield_params(
         confidence: y.confidence,
         resolution: y.resolution,
         limit: p.limit(),
-        dem: (!p.no_dem).then(|| YieldDem {
-            params: p.dem.clone(),
+        dem: (!p.confirm.no_dem).then(|| YieldDem {
+            params: p.confirm.dem.clone(),
             check: y.dem_check,
             check_load: None,
-            jobs: p.jobs,
+            jobs: p.confirm.jobs,
             dir: dem_dir,
             max_rounds: 4,
         }),

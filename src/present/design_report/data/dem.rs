@@ -93,10 +93,10 @@ pub(super) fn dem_section(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -
         .collect();
     DemSection {
         protocol: protocol_words(p),
-        study_protocol: p.dem_is_study_protocol,
-        model: model_words(p.dem.model.request).into(),
+        study_protocol: p.confirm.dem_is_study_protocol,
+        model: model_words(p.confirm.dem.model.request).into(),
         checks,
-        unmeasured: study.is_empty() && !p.dem_is_study_protocol,
+        unmeasured: study.is_empty() && !p.confirm.dem_is_study_protocol,
         rows: dem.iter().map(|d| dem_line(d, angle_decimals(p))).collect(),
         agree: dem
             .iter()

@@ -111,13 +111,14 @@ pub fn sampling_words(p: &DesignParams) -> String {
     };
     let mut m = format!(
         "θ {} × pull direction {}",
-        axis(p.theta_tol_deg, &bx.theta_offsets_deg),
-        axis(p.direction_tol_deg, &bx.direction_offsets_deg)
+        axis(p.tolerance.theta_tol_deg, &bx.theta_offsets_deg),
+        axis(p.tolerance.direction_tol_deg, &bx.direction_offsets_deg)
     );
-    if !p.seeds.is_empty() {
+    if !p.tolerance.seeds.is_empty() {
         m.push_str(&format!(
             " × the substrate seeds {} besides the scene's own",
-            p.seeds
+            p.tolerance
+                .seeds
                 .iter()
                 .map(|s| s.to_string())
                 .collect::<Vec<_>>()
@@ -202,7 +203,7 @@ impl ReportData {
                         intact_to_mn: format!("{}", c.score.intact_to_mn),
                         screen_intact_to_mn: format!("{}", c.screen_intact_to_mn),
                         corrugation_nm: fmt_g(c.corrugation_nm, 3),
-                        reason: c.reason.clone(),
+                        reason: super::words::pick_words(c.reason),
                     })
             })
             .collect();
@@ -226,12 +227,24 @@ impl ReportData {
             .map(|pr| ScreenLine {
                 pattern: pr.scene.name.clone(),
                 symmetry: {
-                    let mut t = match crate::study::design::theta_note(&pr.sym, &pr.thetas_deg, p) {
+                    let mut t = match crate::study::design::theta_note(
+                        &pr.sym,
+                        &pr.thetas_deg,
+                        &p.screen,
+                    ) {
                         None => pr.sym.describe(),
-                        Some(n) if n.uncovered => format!("{}; **{}**", pr.sym.describe(), n.text),
-                        Some(n) => format!("{}; {}", pr.sym.describe(), n.text),
+                        Some(n) if n.uncovered() => format!(
+                            "{}; **{}**",
+                            pr.sym.describe(),
+                            super::words::theta_note(&n, &pr.sym)
+                        ),
+                        Some(n) => format!(
+                            "{}; {}",
+                            pr.sym.describe(),
+                            super::words::theta_note(&n, &pr.sym)
+                        ),
                     };
-                    if let Some(n) = crate::study::design::line_note(&pr.scene, p) {
+                    if let Some(n) = crate::study::design::line_note(&pr.scene, p.alpha_scan.line) {
                         t = format!("{t}. The {}", n.trim_start_matches("the "));
                     }
                     crate::present::inputs::to_flags(&t)
@@ -279,9 +292,9 @@ impl ReportData {
             let sum: f64 = dem.iter().filter_map(|d| d.wall_s).sum();
             DemWall {
                 runs: dem.len(),
-                jobs: p.jobs,
+                jobs: p.confirm.jobs,
                 sum_s: fmt_g(sum, 3),
-                elapsed_s: fmt_g(sum / p.jobs.min(dem.len()).max(1) as f64, 3),
+                elapsed_s: fmt_g(sum / p.confirm.jobs.min(dem.len()).max(1) as f64, 3),
             }
         });
         let reproduce = o
@@ -340,7 +353,7 @@ impl ReportData {
             } else {
                 format!(
                     "θ ±{}° × pull direction ±{}°",
-                    p.theta_tol_deg, p.direction_tol_deg
+                    p.tolerance.theta_tol_deg, p.tolerance.direction_tol_deg
                 )
             },
             resonance_drop: format!("{}", surrogate::friction::RESONANCE_DROP_MAX),

@@ -1,0 +1,11 @@
+//! [`ShortlistParams`]: the knobs of the design's shortlist ([`super::shortlist`]), in a file
+//! of their own so that [`super::params::DesignParams`] holds them without importing the stage.
+
+/// The shortlist's knobs (the loads are the design's own).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShortlistParams {
+    /// Orientations kept per lower load level.
+    pub per_level: usize,
+    /// Most orientations kept at the top level (all that survive the highest load, up to this).
+    pub max_top: usize,
+}
