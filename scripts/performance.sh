@@ -57,6 +57,8 @@ measure "tolerance map: 41 θ × 21 pull directions × 11 loads (the default)" -
     tolerance --pattern square-tri --theta-deg 0 --alpha-deg 90 --out-dir tol
 measure "yield of one answer, the estimate's part: 59 devices (square-tri θ = 7.3°, pull 82.53°, σ_h 0.002 µm)" -- \
     yield --pattern square-tri --sigma-h-um 0.002 --theta-deg 7.3 --direction-deg 82.53 --no-dem --out-dir y
+measure "yield of one answer with its DEM: the same, the DEM deciding the devices in the band at the quoted load and 10 fresh devices as a check (2 + 2 + 60 µs runs, 2 side by side)" -- \
+    yield --pattern square-tri --sigma-h-um 0.002 --theta-deg 7.3 --direction-deg 82.53 --out-dir y
 for m in reduced full; do
     measure "Tier 3 DEM, the study's protocol 10 + 10 + 300 µs, --model $m: superlubric scene (square-tri 0°, α = 90°, 1.4 mN)" -- \
         slide --pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 --model "$m" --out s.csv --json s.json
