@@ -8,6 +8,8 @@ use anyhow::{bail, Result};
 
 /// `--yield-samples` (turns the stage on) and its knobs.
 #[derive(clap::Args, Debug, Clone)]
+#[group(skip)]
+#[command(group(clap::ArgGroup::new("yield_on").args(["yield_samples", "rank_by"]).multiple(true)))]
 pub struct YieldArgs {
     /// Compute the yield of each answer over fabrication with N devices (θ and pull-direction
     /// offsets uniform over the tolerance box, each on a fresh substrate whose seed the design
@@ -22,7 +24,7 @@ pub struct YieldArgs {
         value_name = "Q",
         default_value_t = 0.95,
         allow_hyphen_values = true,
-        requires = "yield_samples"
+        requires = "yield_on"
     )]
     pub yield_quantile: f64,
     /// With --yield-samples: γ in (0, 1), confidence of the yield's interval and of the quoted
@@ -32,7 +34,7 @@ pub struct YieldArgs {
         value_name = "G",
         default_value_t = 0.95,
         allow_hyphen_values = true,
-        requires = "yield_samples"
+        requires = "yield_on"
     )]
     pub yield_confidence: f64,
     /// With --yield-samples: seed of the devices' draws (the same seed gives the same devices).
@@ -40,7 +42,7 @@ pub struct YieldArgs {
         long = "yield-sample-seed",
         value_name = "SEED",
         default_value_t = 1,
-        requires = "yield_samples"
+        requires = "yield_on"
     )]
     pub yield_seed: u64,
     /// With --yield-samples and the DEM: fresh devices run with the DEM at each answer's quoted
@@ -49,16 +51,17 @@ pub struct YieldArgs {
         long = "yield-dem-check",
         value_name = "N",
         default_value_t = 10,
-        requires = "yield_samples"
+        requires = "yield_on"
     )]
     pub yield_dem_check: usize,
     /// What orders each pattern's designs: `worst-case` (the robust limit over the tolerance
     /// box and the searched seeds) or `yield` (the top max(--confirm, 3) designs by the load
     /// at --yield-quantile yield, its confidence bound, by the estimate; the robust order among
     /// equals). `yield` turns the yield stage on with --yield-samples devices (59 if not
-    /// given) and costs the estimate's part of a yield per ranked design (seconds each).
-    #[arg(long = "rank-by", value_name = "ORDER", value_enum, default_value_t = RankByArg::WorstCase)]
-    pub rank_by: RankByArg,
+    /// given) and costs the estimate's part of a yield per ranked design (seconds each)
+    /// [default: worst-case]
+    #[arg(long = "rank-by", value_name = "ORDER", value_enum)]
+    pub rank_by: Option<RankByArg>,
 }
 
 /// `--rank-by`: what orders each pattern's designs.
@@ -78,8 +81,8 @@ impl YieldArgs {
     /// The stage's knobs, checked (`None`: no --yield-samples, the stage does not run).
     pub fn params(&self) -> Result<Option<YieldStageParams>> {
         let rank_by = match self.rank_by {
-            RankByArg::WorstCase => RankBy::WorstCase,
-            RankByArg::Yield => RankBy::Yield,
+            None | Some(RankByArg::WorstCase) => RankBy::WorstCase,
+            Some(RankByArg::Yield) => RankBy::Yield,
         };
         let samples = match (self.yield_samples, rank_by) {
             (Some(n), _) => n,
