@@ -187,6 +187,17 @@ fn rank_by_yield_orders_the_top_designs_by_their_load_at_yield() {
         report.contains("**Ranked by yield** (`--rank-by yield`)"),
         "{report}"
     );
+    // each ranked design's devices are stored: the answer's yield reused them, and a re-run
+    // recomputes none and writes the same ranking
+    let log = String::from_utf8_lossy(&o.stderr);
+    let estimated = log.matches("yield: critical loads: 100%").count();
+    assert_eq!(estimated, rows.len(), "{log}");
+    let before = std::fs::read(out.join("yield_rank.csv")).unwrap();
+    let again = design(&["--rank-by", "yield", "--yield-samples", "12"], &out);
+    assert_ok(&again);
+    let log = String::from_utf8_lossy(&again.stderr);
+    assert!(!log.contains("yield: critical loads"), "{log}");
+    assert_eq!(std::fs::read(out.join("yield_rank.csv")).unwrap(), before);
     // its answers differ from the worst case's: the two never share a folder
     let o = design(&["--yield-samples", "12"], &out);
     assert!(!o.status.success());

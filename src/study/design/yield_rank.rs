@@ -13,7 +13,8 @@
 //! own yield, with the DEM deciding the band, is then the yield stage's
 //! ([`super::yield_stage`]).
 //!
-//! Not stored: a re-run recomputes it. Cost: per ranked design the estimate's part of a yield
+//! The devices' critical loads are stored ([`stored_devices`]): a re-run, and the answer's own
+//! yield, reuse them. Cost: per ranked design the estimate's part of a yield
 //! (samples × about 21 single-load estimates / threads; seconds on the study's scenes).
 
 use super::ctx::Ctx;
@@ -21,8 +22,8 @@ use super::observer::{Event, Stage};
 use super::pattern_result::PatternResult;
 use super::rank;
 use super::yield_params::YieldStageParams;
-use super::yield_stage::yield_params;
-use crate::study::fab_yield::fab_yield;
+use super::yield_stage::{stored_devices, yield_params};
+use crate::study::fab_yield::decide;
 use anyhow::Result;
 use surrogate::units::deg_to_rad;
 
@@ -68,7 +69,8 @@ impl<'a> YieldRank<'a> {
                 store.path(&format!("yield/{}", pr.scene.name)),
             );
             yp.dem = None;
-            let s = fab_yield(&scene, &yp, obs.progress())?.summary;
+            let devices = stored_devices(self.ctx, &pr.scene.name, &scene, &yp)?;
+            let s = decide(&scene, &yp, devices, obs.progress())?.summary;
             let to = s
                 .load_at_quantile_bound_mN
                 .or(s.load_at_quantile_mN)

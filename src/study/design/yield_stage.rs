@@ -11,21 +11,63 @@
 //! ladder, μ_sl, contact line and estimate knobs. With the DEM, the devices the estimate
 //! cannot decide at the quoted load get a DEM run with the design's protocol and model, and
 //! `dem_check` fresh devices a DEM check there (runs in `yield/<pattern>/`, reused by a
-//! re-run); without (`--no-dem`), the estimate's part only. The estimate's part is not stored:
-//! a re-run recomputes it.
+//! re-run); without (`--no-dem`), the estimate's part only. The estimate's part (each device's
+//! critical load) is stored per design (`stages/<pattern>/yield_<θ>_<direction>.json`,
+//! [`stored_devices`]) and reused by a re-run and by the answer's own yield after
+//! `--rank-by yield` ranked it.
 //!
 //! Cost per answer: samples × (one ladder path + 8–15 single-load estimates) / threads for the
 //! estimate (seconds on the study's scenes), plus (devices in the band + check) DEM runs.
 
 pub use super::answer_yield::AnswerYield;
 use super::ctx::Ctx;
+use super::limit::limit_record;
 use super::observer::{Event, Stage};
 use super::outcome::DesignOutcome;
 use super::params::DesignParams;
 pub use super::yield_params::YieldStageParams;
-use crate::study::fab_yield::{fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldParams};
+use crate::runs::meta::{scene_file, Inputs};
+use crate::study::fab_yield::{
+    decide, estimate_devices, Device, FabricationModel, OffsetLaw, YieldDem, YieldParams,
+};
 use anyhow::Result;
+use serde_json::json;
 use surrogate::units::deg_to_rad;
+
+/// The devices of the yield `yp` of pattern `name` (its scene `scene` with θ set) with their
+/// critical loads by the estimate ([`estimate_devices`]): from the store when a run of the
+/// same inputs made them, else computed and stored (`stages/<name>/yield_<θ>_<direction>.json`).
+/// Cost: the estimate's part of a yield, or reading one JSON file.
+pub fn stored_devices(
+    ctx: Ctx,
+    name: &str,
+    scene: &surrogate::Scene,
+    yp: &YieldParams,
+) -> Result<Vec<Device>> {
+    let Ctx { p, store, obs } = ctx;
+    let inputs = Inputs {
+        workflow: "design/yield-devices".into(),
+        scene: Some(scene_file(scene)),
+        params: json!({
+            "theta_deg": yp.theta_deg,
+            "direction_deg": yp.direction_deg,
+            "fabrication": yp.fabrication.record(scene),
+            "samples": yp.samples,
+            "resolution": yp.resolution,
+            "limit": limit_record(p),
+        }),
+    };
+    let rel = format!(
+        "stages/{name}/yield_{}_{}.json",
+        yp.theta_deg, yp.direction_deg
+    );
+    if let Some(d) = store.load_json::<Vec<Device>>(&rel, &inputs)? {
+        return Ok(d);
+    }
+    let d = estimate_devices(scene, yp, obs.progress())?;
+    store.save_json(&rel, &inputs, &d)?;
+    Ok(d)
+}
 
 /// The yield stage (see the module docs).
 pub struct YieldStage<'a> {
@@ -110,7 +152,8 @@ impl<'a> YieldStage<'a> {
                 (c.theta_deg, c.direction_deg),
                 store.path(&format!("yield/{}", pr.scene.name)),
             );
-            let outcome = fab_yield(&scene, &yp, obs.progress())?;
+            let devices = stored_devices(self.ctx, &pr.scene.name, &scene, &yp)?;
+            let outcome = decide(&scene, &yp, devices, obs.progress())?;
             obs.event(&Event::Yield {
                 pattern: &pr.scene.name,
                 summary: &outcome.summary,

@@ -8,7 +8,7 @@ use crate::study::rows::label;
 use surrogate::units::{m_to_um, n_to_mn, pa_to_gpa};
 
 /// A device: drawn, estimated, and decided by the DEM where asked.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Device {
     /// Its draw.
     pub sample: Sample,

@@ -128,6 +128,19 @@ fn resonant_at(scene: &Scene, p: &YieldParams, s: &Sample, w: f64) -> Result<boo
 /// The yield of the design (θ, direction) of `scene` (see the module docs). Progress: the
 /// stage `yield: critical loads` over the devices, then the DEM's stages.
 pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Result<YieldOutcome> {
+    let devices = estimate_devices(scene, p, progress)?;
+    decide(scene, p, devices, progress)
+}
+
+/// Steps 1–2 of [`fab_yield`]: the devices drawn and their critical loads by the estimate (no
+/// DEM decision yet), in sample order: what a caller may store to resume ([`Device`] is
+/// serialisable; its floats round-trip exactly through JSON). Progress: the stage
+/// `yield: critical loads`. Cost: the estimate's part (module docs).
+pub fn estimate_devices(
+    scene: &Scene,
+    p: &YieldParams,
+    progress: &dyn Progress,
+) -> Result<Vec<Device>> {
     let samples: Vec<Sample> = (0..p.samples)
         .map(|i| p.fabrication.sample(scene, i))
         .collect();
@@ -156,6 +169,17 @@ pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Res
             dem: Vec::new(),
         });
     }
+    Ok(devices)
+}
+
+/// Steps 3–4 of [`fab_yield`] on `devices` from [`estimate_devices`] (same `scene` and `p`):
+/// the DEM decisions and check when `p.dem` is set, the yield and its summary.
+pub fn decide(
+    scene: &Scene,
+    p: &YieldParams,
+    mut devices: Vec<Device>,
+    progress: &dyn Progress,
+) -> Result<YieldOutcome> {
     let estimates = devices.iter().map(|d| d.estimate.estimates).sum();
     let q = p.quantile;
     let quoted = |devices: &[Device]| {
