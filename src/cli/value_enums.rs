@@ -7,8 +7,8 @@ use clap::ValueEnum;
 
 use crate::study::campaign::Fig;
 use crate::study::corrugation::Method;
+use crate::study::fairness::Fairness;
 use crate::study::figures::Group;
-use crate::study::patterns::Normalize;
 
 impl ValueEnum for Method {
     fn value_variants<'a>() -> &'a [Self] {
@@ -69,38 +69,19 @@ impl ValueEnum for Fig {
     }
 }
 
-impl ValueEnum for Normalize {
+impl ValueEnum for Fairness {
     fn value_variants<'a>() -> &'a [Self] {
-        &[Normalize::Area, Normalize::Spheres]
+        &[Fairness::Area, Fairness::Count]
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
+        let v = PossibleValue::new(self.name());
         Some(match self {
-            Normalize::Area => {
-                PossibleValue::new("area").help("Every candidate keeps the base slider outline")
+            Fairness::Area => {
+                v.help("Every candidate keeps the base slider's outline: equal slider area (µm²)")
             }
-            Normalize::Spheres => PossibleValue::new("count")
-                .alias("spheres")
-                .help("Each outline scaled to hold the base slider's sphere count"),
-        })
-    }
-}
-
-impl ValueEnum for crate::study::recipe::Fair {
-    fn value_variants<'a>() -> &'a [Self] {
-        &[
-            crate::study::recipe::Fair::Area,
-            crate::study::recipe::Fair::Count,
-        ]
-    }
-
-    fn to_possible_value(&self) -> Option<PossibleValue> {
-        use crate::study::recipe::Fair;
-        Some(match self {
-            Fair::Area => PossibleValue::new("area")
-                .help("Every recipe keeps the base slider's outline: equal slider area (µm²)"),
-            Fair::Count => PossibleValue::new("count").alias("spheres").help(
-                "Each recipe's outline is scaled to hold the base slider's sphere count (the \
+            Fairness::Count => v.alias("spheres").help(
+                "Each candidate's outline is scaled to hold the base slider's sphere count (the \
                  closest its lattice allows)",
             ),
         })
