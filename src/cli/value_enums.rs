@@ -9,6 +9,7 @@ use crate::study::campaign::Fig;
 use crate::study::corrugation::Method;
 use crate::study::fairness::Fairness;
 use crate::study::figures::Group;
+use crate::study::work_precision::Tier;
 
 impl ValueEnum for Method {
     fn value_variants<'a>() -> &'a [Self] {
@@ -83,6 +84,27 @@ impl ValueEnum for Fairness {
             Fairness::Count => v.alias("spheres").help(
                 "Each candidate's outline is scaled to hold the base slider's sphere count (the \
                  closest its lattice allows)",
+            ),
+        })
+    }
+}
+
+impl ValueEnum for Tier {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Tier::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        let v = PossibleValue::new(self.name());
+        Some(match self {
+            Tier::ScreenMap => v.help("Solver model, landscape grid, corrugation path step"),
+            Tier::Friction => v.help(
+                "Friction estimate: path step, length, transverse search, inertial starts, segment",
+            ),
+            Tier::Tolerance => v.help("Tolerance search: θ and direction sampling steps"),
+            Tier::Dem => v.help("DEM: step, model, tangential history, window, active set"),
+            Tier::Tiers => v.help(
+                "The tiers on one diagram: screen, estimate, DEM, LAMMPS against the best reference",
             ),
         })
     }
