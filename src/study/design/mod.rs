@@ -93,7 +93,7 @@ pub use domain::{
 };
 pub use inputs::{inputs, screen_params};
 pub use limit::tolerance_box;
-pub use observer::{Event, Observer, Stage};
+pub use observer::{Event, Observer};
 pub use outcome::DesignOutcome;
 pub use pattern_result::{AnswerMap, EvalStage, Evaluated, PatternResult};
 pub use pipeline::PatternHook;

@@ -340,7 +340,7 @@ pub struct RobustParams {
     pub keep: usize,
 }
 
-/// Stage 5 of a design, [`super::Stage::RobustSearch`] (module docs): the robust limits of a
+/// Stage 5 of a design, the robust search (module docs): the robust limits of a
 /// pattern's candidates over the tolerance box.
 pub struct RobustStage<'a> {
     ctx: Ctx<'a>,

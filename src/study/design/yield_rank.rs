@@ -17,7 +17,7 @@
 //! (samples × about 21 single-load estimates / threads; seconds on the study's scenes).
 
 use super::ctx::Ctx;
-use super::observer::{Event, Stage};
+use super::observer::Event;
 use super::pattern_result::PatternResult;
 use super::rank;
 use super::yield_params::YieldStageParams;
@@ -52,7 +52,6 @@ impl<'a> YieldRank<'a> {
         if top.is_empty() {
             return Ok(0);
         }
-        obs.stage(Stage::Yield, &pr.scene.name);
         obs.event(&Event::YieldRank {
             pattern: &pr.scene.name,
             designs: top.len(),
