@@ -1,6 +1,6 @@
-//! With `--rank-by yield` ([`RankBy::Yield`]), after a pattern's robust search: its top designs
-//! ranked by the load that a fraction q of fabricated devices hold instead of the worst case
-//! over the tolerance box.
+//! With `--rank-by yield` ([`super::yield_params::RankBy::Yield`]), after a pattern's robust
+//! search: its top designs ranked by the load that a fraction q of fabricated devices hold
+//! instead of the worst case over the tolerance box.
 //!
 //! The first `max(confirm, 3)` designs of the robust order whose limits are exact and
 //! superlubric at their nominal (θ, α) (the designs the robust search made exact) each get the
