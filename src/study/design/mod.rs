@@ -73,6 +73,7 @@ pub mod rank;
 pub mod recipe_answer;
 pub mod report_data;
 pub mod robust;
+pub mod robust_searches;
 pub mod screen;
 pub mod screen_params;
 pub mod shortlist;

@@ -19,6 +19,7 @@ use super::pattern_result::{Evaluated, PatternResult};
 use super::rank::{self, Candidate};
 use super::report_data::ReportDataStage;
 use super::robust::{self, RobustParams, RobustStage};
+use super::robust_searches::Searches;
 use super::screen::ScreenStage;
 use super::shortlist::ShortlistStage;
 use super::store::Store;
@@ -226,7 +227,7 @@ impl<'a> Pipeline<'a> {
             Some(_) => seed_solvers(ds, p, None)?,
             None => Vec::new(),
         };
-        let mut searches = robust::Searches::new(ds, p, &solvers, &limit, self.ctx.store)?;
+        let mut searches = Searches::new(ds, p, &solvers, &limit, self.ctx.store)?;
         let mut solver: Option<Solver> = None;
         let mut walk = LevelWalk::new(p.confirm.designs.max(3), floor_mn, robust.is_some());
         let mut evaluated: Vec<Evaluated> = Vec::new();
