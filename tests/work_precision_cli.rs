@@ -9,7 +9,7 @@
 
 mod common;
 use common::{assert_ok, bin, tmpdir};
-use superlube::study::work_precision::{check, Tier, WorkPrecisionRow};
+use superlube::study::work_precision::{check, Knob, Tier, WorkPrecisionRow};
 
 fn read(path: &std::path::Path) -> Vec<WorkPrecisionRow> {
     let mut r = csv::Reader::from_path(path).unwrap();
@@ -43,15 +43,13 @@ fn quick_set_converges_and_keeps_its_defaults_on_the_front() {
         let rows = read(&csv);
         assert!(!rows.is_empty(), "{} is empty", csv.display());
         // every knob has exactly one reference (error 0) and at most one default
-        let mut knobs: Vec<(String, String)> = rows
-            .iter()
-            .map(|r| (r.scene.clone(), r.knob.clone()))
-            .collect();
+        let mut knobs: Vec<(String, Knob)> =
+            rows.iter().map(|r| (r.scene.clone(), r.knob)).collect();
         knobs.dedup();
         for (scene, knob) in &knobs {
             let k: Vec<&WorkPrecisionRow> = rows
                 .iter()
-                .filter(|r| &r.scene == scene && &r.knob == knob)
+                .filter(|r| &r.scene == scene && r.knob == *knob)
                 .collect();
             let refs: Vec<_> = k.iter().filter(|r| r.is_reference).collect();
             assert_eq!(refs.len(), 1, "{scene}, {knob}: one reference");

@@ -5,7 +5,8 @@ use super::{parse_list_or_range, SceneArgs};
 use crate::runs::{
     meta::scene_file, meta::Inputs, output::Outputs, progress::Progress, progress::Reporter,
 };
-use crate::study::patterns::{candidate_scene, candidates, parse_family, Normalize, PatternParams};
+use crate::study::fairness::Fairness;
+use crate::study::patterns::{candidate_scene, candidates, parse_family, PatternParams};
 use anyhow::{bail, Context, Result};
 use std::path::PathBuf;
 
@@ -40,8 +41,8 @@ pub struct Args {
     /// `design --fair`): `area` (the base scene's slider outline, default) or `count` (each
     /// outline scaled to hold the base slider's sphere count; the index's `spheres` column
     /// gives each count).
-    #[arg(long = "fair", alias = "normalize", value_name = "RULE", value_enum, default_value_t = Normalize::Area)]
-    normalize: Normalize,
+    #[arg(long = "fair", alias = "normalize", value_name = "RULE", value_enum, default_value_t = Fairness::Area)]
+    fair: Fairness,
     /// Output folder: DIR/<pattern_id>.toml per candidate (the base scene with the slider
     /// lattice replaced, so equal slider outline and area) and DIR/index.csv
     /// (`pattern_id,scene_file,lattice,basis,outline,spheres,commensurate_direction_deg,p_q,
@@ -54,7 +55,7 @@ pub struct Args {
 pub fn run(a: Args) -> Result<()> {
     let sc = a.scene.resolve(None)?;
     let params = check(&a.family, a.max_pq, a.max_order)?;
-    generate(&sc, &params, a.normalize, &a.out, None).map(|_| ())
+    generate(&sc, &params, a.fair, &a.out, None).map(|_| ())
 }
 
 /// The checked parameters of a family (errors name `--family`, `--max-pq`, `--max-order`).
@@ -83,7 +84,7 @@ pub(super) fn check(family: &str, max_pq: u32, max_order: f64) -> Result<Pattern
 pub(super) fn generate(
     sc: &crate::cli::scene_args::Resolved,
     params: &PatternParams,
-    normalize: Normalize,
+    fair: Fairness,
     out: &std::path::Path,
     keep_other: Option<&str>,
 ) -> Result<PathBuf> {
@@ -95,7 +96,7 @@ pub(super) fn generate(
     let mut files = Vec::new();
     for (k, c) in cands.iter().enumerate() {
         let id = format!("p{:0width$}", k + 1);
-        files.push(candidate_scene(&sc.scene, c, &id, normalize)?);
+        files.push(candidate_scene(&sc.scene, c, &id, fair)?);
     }
     let mut csv = csv::Writer::from_writer(Vec::new());
     for (_, row) in &files {
@@ -122,7 +123,7 @@ pub(super) fn generate(
                 "family": params.family_text,
                 "max_pq": params.max_pq,
                 "max_order": params.max_order,
-                "normalize": normalize.name(),
+                "normalize": fair,
             }),
         },
         sc.warnings.clone(),

@@ -3,7 +3,8 @@
 //! recipes ([`crate::study::recipe`]) before any work.
 
 use crate::study::design::DesignScene;
-use crate::study::recipe::{self, Fair};
+use crate::study::fairness::{Fairness, MadeFair};
+use crate::study::recipe;
 use anyhow::{Context, Result};
 use std::path::Path;
 
@@ -26,7 +27,7 @@ pub struct RecipeArgs {
     /// gives each one's mean pressure (kPa) and load per sphere (µN) at its limit either way;
     /// the report states the rule.
     #[arg(long, alias = "normalize", value_enum, value_name = "RULE")]
-    pub fair: Option<Fair>,
+    pub fair: Option<Fairness>,
     /// With --vary: skip the recipes that cannot be made (overlapping spheres, a pad beyond
     /// the substrate, a value out of range) and name them in the log, instead of refusing the
     /// grid.
@@ -87,7 +88,7 @@ impl RecipeArgs {
                     flags: vec!["--scene".into(), path.display().to_string()],
                     warnings,
                     facts: Some(crate::study::patterns::CandidateFacts {
-                        normalize: format!("recipe-{}", fair.name()),
+                        made_fair: Some(MadeFair::Recipe(fair)),
                         ..ds.facts.clone().unwrap_or_default()
                     }),
                     recipe: Some(recipe::RecipeFacts {

@@ -7,8 +7,9 @@ use clap::ValueEnum;
 
 use crate::study::campaign::Fig;
 use crate::study::corrugation::Method;
+use crate::study::fairness::Fairness;
 use crate::study::figures::Group;
-use crate::study::patterns::Normalize;
+use crate::study::work_precision::Tier;
 
 impl ValueEnum for Method {
     fn value_variants<'a>() -> &'a [Self] {
@@ -69,39 +70,41 @@ impl ValueEnum for Fig {
     }
 }
 
-impl ValueEnum for Normalize {
+impl ValueEnum for Fairness {
     fn value_variants<'a>() -> &'a [Self] {
-        &[Normalize::Area, Normalize::Spheres]
+        &[Fairness::Area, Fairness::Count]
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
+        let v = PossibleValue::new(self.name());
         Some(match self {
-            Normalize::Area => {
-                PossibleValue::new("area").help("Every candidate keeps the base slider outline")
+            Fairness::Area => {
+                v.help("Every candidate keeps the base slider's outline: equal slider area (µm²)")
             }
-            Normalize::Spheres => PossibleValue::new("count")
-                .alias("spheres")
-                .help("Each outline scaled to hold the base slider's sphere count"),
+            Fairness::Count => v.alias("spheres").help(
+                "Each candidate's outline is scaled to hold the base slider's sphere count (the \
+                 closest its lattice allows)",
+            ),
         })
     }
 }
 
-impl ValueEnum for crate::study::recipe::Fair {
+impl ValueEnum for Tier {
     fn value_variants<'a>() -> &'a [Self] {
-        &[
-            crate::study::recipe::Fair::Area,
-            crate::study::recipe::Fair::Count,
-        ]
+        &Tier::ALL
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
-        use crate::study::recipe::Fair;
+        let v = PossibleValue::new(self.name());
         Some(match self {
-            Fair::Area => PossibleValue::new("area")
-                .help("Every recipe keeps the base slider's outline: equal slider area (µm²)"),
-            Fair::Count => PossibleValue::new("count").alias("spheres").help(
-                "Each recipe's outline is scaled to hold the base slider's sphere count (the \
-                 closest its lattice allows)",
+            Tier::ScreenMap => v.help("Solver model, landscape grid, corrugation path step"),
+            Tier::Friction => v.help(
+                "Friction estimate: path step, length, transverse search, inertial starts, segment",
+            ),
+            Tier::Tolerance => v.help("Tolerance search: θ and direction sampling steps"),
+            Tier::Dem => v.help("DEM: step, model, tangential history, window, active set"),
+            Tier::Tiers => v.help(
+                "The tiers on one diagram: screen, estimate, DEM, LAMMPS against the best reference",
             ),
         })
     }

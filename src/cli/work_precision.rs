@@ -10,34 +10,6 @@ use crate::study::work_precision::{work_precision, Tier, WorkPrecisionParams};
 use anyhow::Result;
 use std::path::Path;
 
-/// Which tier (`--tier`).
-#[derive(clap::ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
-pub enum TierArg {
-    /// Solver model, landscape grid, corrugation path step.
-    ScreenMap,
-    /// Friction estimate: path step, length, transverse search, inertial starts, segment.
-    Friction,
-    /// Tolerance search: θ and direction sampling steps.
-    Tolerance,
-    /// DEM: step, model, tangential history, window, active set.
-    Dem,
-    /// The tiers on one diagram: screen, estimate, DEM, LAMMPS against the best reference.
-    Tiers,
-}
-
-impl TierArg {
-    fn tier(self) -> Tier {
-        match self {
-            TierArg::ScreenMap => Tier::ScreenMap,
-            TierArg::Friction => Tier::Friction,
-            TierArg::Tolerance => Tier::Tolerance,
-            TierArg::Dem => Tier::Dem,
-            TierArg::Tiers => Tier::Tiers,
-        }
-    }
-}
-
-/// Options of the work-precision diagrams (`figures --work-precision`).
 #[derive(clap::Args, Debug, Default)]
 pub struct WorkPrecisionArgs {
     /// Draw the work-precision diagrams (CPU cost against error for every accuracy knob of each
@@ -51,7 +23,7 @@ pub struct WorkPrecisionArgs {
     pub quick: bool,
     /// Only these tiers (comma-separated) [default: all].
     #[arg(long, value_enum, value_delimiter = ',', requires = "work_precision")]
-    pub tier: Vec<TierArg>,
+    pub tier: Vec<Tier>,
     /// Leave LAMMPS out of the tiers diagram even where `lmp` is found (its run of the full
     /// set's 30 µm scenes takes about an hour each on one core).
     #[arg(long, requires = "work_precision")]
@@ -63,7 +35,7 @@ pub fn run(dir: &Path, a: &WorkPrecisionArgs) -> Result<()> {
     let mut tiers: Vec<Tier> = if a.tier.is_empty() {
         Tier::ALL.to_vec()
     } else {
-        a.tier.iter().map(|t| t.tier()).collect()
+        a.tier.clone()
     };
     tiers.sort_by_key(|t| Tier::ALL.iter().position(|x| x == t));
     tiers.dedup();

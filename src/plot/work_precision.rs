@@ -10,8 +10,7 @@
 
 use super::chart::PALETTE;
 use super::{perr, png_atomic, FONT};
-use crate::study::work_precision::check::larger_is_finer;
-use crate::study::work_precision::{Tier, WorkPrecisionRow};
+use crate::study::work_precision::{Knob, Tier, WorkPrecisionRow};
 use anyhow::Result;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -74,18 +73,6 @@ pub fn work_precision_png(
     tier: Tier,
     rows: &[WorkPrecisionRow],
 ) -> Result<()> {
-    let rows: Vec<WorkPrecisionRow> = if tier == Tier::Tiers {
-        // one series per method: the method is the series' name
-        rows.iter()
-            .map(|r| WorkPrecisionRow {
-                knob: r.setting.clone(),
-                ..r.clone()
-            })
-            .collect()
-    } else {
-        rows.to_vec()
-    };
-    let rows = &rows;
     // the tiers diagram's points run from the upper left (cheap, rough) to the lower right
     let legend = || {
         if tier == Tier::Tiers {
@@ -107,10 +94,42 @@ pub fn work_precision_png(
         let areas = root.split_evenly((nrows, cols));
         for (area, scene) in areas.iter().zip(&scenes) {
             let rs: Vec<&WorkPrecisionRow> = rows.iter().filter(|r| r.scene == *scene).collect();
-            panel(area, &format!("{title}: {scene}"), &rs, legend())?;
+            panel(
+                area,
+                &format!("{title}: {scene}"),
+                &rs,
+                legend(),
+                tier == Tier::Tiers,
+            )?;
         }
         Ok(())
     })
+}
+
+/// One series of a panel: a knob's settings, or on the tiers diagram one method (a setting of
+/// its one knob, by the setting's text).
+#[derive(Debug, Clone, PartialEq)]
+enum Series {
+    Knob(Knob),
+    Method(String),
+}
+
+impl Series {
+    /// The legend's label.
+    fn label(&self) -> &str {
+        match self {
+            Series::Knob(k) => k.name(),
+            Series::Method(m) => m,
+        }
+    }
+
+    /// The refinement order of its points (a method is one point: none).
+    fn larger_is_finer(&self) -> Option<bool> {
+        match self {
+            Series::Knob(k) => k.larger_is_finer(),
+            Series::Method(_) => None,
+        }
+    }
 }
 
 fn panel<DB: DrawingBackend>(
@@ -118,11 +137,19 @@ fn panel<DB: DrawingBackend>(
     title: &str,
     rows: &[&WorkPrecisionRow],
     legend: SeriesLabelPosition,
+    by_method: bool,
 ) -> Result<()> {
-    let mut knobs: Vec<&str> = Vec::new();
+    let series_of = |r: &&WorkPrecisionRow| {
+        if by_method {
+            Series::Method(r.setting.clone())
+        } else {
+            Series::Knob(r.knob)
+        }
+    };
+    let mut knobs: Vec<Series> = Vec::new();
     for r in rows {
-        if !knobs.contains(&r.knob.as_str()) {
-            knobs.push(&r.knob);
+        if !knobs.contains(&series_of(r)) {
+            knobs.push(series_of(r));
         }
     }
     let costed: Vec<&&WorkPrecisionRow> = rows.iter().filter(|r| r.cost_cpu_s > 0.0).collect();
@@ -176,8 +203,9 @@ fn panel<DB: DrawingBackend>(
         .map_err(perr("exact label"))?;
     for (k, knob) in knobs.iter().enumerate() {
         let c = PALETTE[k % PALETTE.len()];
-        let mut v: Vec<&&&WorkPrecisionRow> = costed.iter().filter(|r| r.knob == *knob).collect();
-        if let Some(up) = larger_is_finer(knob) {
+        let mut v: Vec<&&&WorkPrecisionRow> =
+            costed.iter().filter(|r| series_of(r) == *knob).collect();
+        if let Some(up) = knob.larger_is_finer() {
             v.sort_by(|a, b| {
                 let (x, y) = (
                     a.setting_value.unwrap_or(0.0),
@@ -199,7 +227,7 @@ fn panel<DB: DrawingBackend>(
         chart
             .draw_series(LineSeries::new(line, c.stroke_width(2)))
             .map_err(perr("series"))?
-            .label(*knob)
+            .label(knob.label())
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], c.stroke_width(3)));
         for r in &v {
             let (x, y) = (r.cost_cpu_s.log10(), y_of(r.error_rel));

@@ -102,6 +102,7 @@ pub mod dem_run;
 pub mod design;
 pub mod equilibrate;
 pub mod fab_yield;
+pub mod fairness;
 pub mod figures;
 pub mod friction;
 pub mod input;

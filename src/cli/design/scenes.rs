@@ -39,10 +39,7 @@ pub(super) fn scenes(a: &Args) -> Result<Vec<DesignScene>> {
             Some(super::super::patterns::generate(
                 &base,
                 &params,
-                match a.recipe.fair.unwrap_or_default() {
-                    crate::study::recipe::Fair::Area => crate::study::patterns::Normalize::Area,
-                    crate::study::recipe::Fair::Count => crate::study::patterns::Normalize::Spheres,
-                },
+                a.recipe.fair.unwrap_or_default(),
                 &a.out.join("patterns"),
                 Some("--family"),
             )?)

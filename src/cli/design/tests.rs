@@ -105,19 +105,41 @@ fn a_trimmed_outcome_gives_every_output_of_the_untrimmed_one() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// The one observer of a design is told each stage as the pipeline enters it, in the order
-/// the pipeline runs them: screen, shortlist, then per shortlist level the α scan, the estimate
-/// and (with a tolerance) the robust search, then the report data.
+/// The one observer of a design is told each stage's typed events in the order the pipeline
+/// runs them: the screen (its symmetry, then the screen), then per shortlist level the level's
+/// α scans and estimates and (with a tolerance) the robust search, then the best design and
+/// the report data's tolerance map.
 #[test]
 fn the_observer_is_told_every_stage_in_order() {
-    use crate::study::design::{Event, Observer, Stage};
+    use crate::study::design::{Event, Observer};
     use std::sync::Mutex;
-    struct Record(Mutex<Vec<(Stage, String)>>);
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    enum Seen {
+        Symmetry,
+        Screen,
+        Level,
+        Robust,
+        RobustDone,
+        Best,
+        ToleranceMap,
+    }
+    struct Record(Mutex<Vec<(Seen, String)>>);
     impl Observer for Record {
-        fn stage(&self, s: Stage, pattern: &str) {
-            self.0.lock().unwrap().push((s, pattern.to_string()));
+        fn event(&self, e: &Event<'_>) {
+            let seen = match e {
+                Event::Symmetry { pattern, .. } => (Seen::Symmetry, pattern),
+                Event::Screened { pattern, .. } | Event::ScreenReused { pattern, .. } => {
+                    (Seen::Screen, pattern)
+                }
+                Event::Level { pattern, .. } => (Seen::Level, pattern),
+                Event::Robust { pattern, .. } => (Seen::Robust, pattern),
+                Event::RobustDone { pattern, .. } => (Seen::RobustDone, pattern),
+                Event::Best { pattern, .. } => (Seen::Best, pattern),
+                Event::ToleranceMap { pattern, .. } => (Seen::ToleranceMap, pattern),
+                _ => return,
+            };
+            self.0.lock().unwrap().push((seen.0, seen.1.to_string()));
         }
-        fn event(&self, _: &Event<'_>) {}
         fn progress(&self) -> &dyn crate::runs::progress::Progress {
             &Silent
         }
@@ -132,27 +154,29 @@ fn the_observer_is_told_every_stage_in_order() {
     let rec = Record(Mutex::new(Vec::new()));
     design(&scenes, &params, &Store::new(&a.out), &rec, &|_| Ok(())).unwrap();
     let seen = rec.0.into_inner().unwrap();
-    let stages: Vec<Stage> = seen.iter().map(|(s, _)| *s).collect();
-    assert_eq!(stages[..2], [Stage::Screen, Stage::Shortlist], "{stages:?}");
-    assert_eq!(stages.last(), Some(&Stage::ReportData), "{stages:?}");
-    assert!(stages.contains(&Stage::RobustSearch), "{stages:?}");
-    // the level loop: each α scan followed by its estimate, then the robust search or the
-    // next level's α scan
-    let levels = &stages[2..stages.len() - 1];
-    assert!(
-        !levels.is_empty() && levels[0] == Stage::AlphaScan,
-        "{stages:?}"
+    let order: Vec<Seen> = seen.iter().map(|(s, _)| *s).collect();
+    assert_eq!(order[..2], [Seen::Symmetry, Seen::Screen], "{order:?}");
+    assert_eq!(
+        order[order.len() - 2..],
+        [Seen::Best, Seen::ToleranceMap],
+        "{order:?}"
     );
+    assert!(order.contains(&Seen::Robust), "{order:?}");
+    // the level loop: each level's α scans and estimates, then the robust search (begun and
+    // done) or the next level
+    let levels = &order[2..order.len() - 2];
+    assert!(!levels.is_empty() && levels[0] == Seen::Level, "{order:?}");
     for w in levels.windows(2) {
         let ok = matches!(
             w,
-            [Stage::AlphaScan, Stage::Estimate]
-                | [Stage::Estimate, Stage::RobustSearch]
-                | [Stage::Estimate, Stage::AlphaScan]
-                | [Stage::RobustSearch, Stage::AlphaScan]
+            [Seen::Level, Seen::Level]
+                | [Seen::Level, Seen::Robust]
+                | [Seen::Robust, Seen::RobustDone]
+                | [Seen::RobustDone, Seen::Level]
         );
-        assert!(ok, "{w:?} out of order in {stages:?}");
+        assert!(ok, "{w:?} out of order in {order:?}");
     }
-    assert!(seen[..seen.len() - 1].iter().all(|(_, p)| p == "tri-tri"));
+    assert_eq!(levels.last(), Some(&Seen::RobustDone), "{order:?}");
+    assert!(seen.iter().all(|(_, p)| p == "tri-tri"));
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -5,7 +5,7 @@
 use crate::runs::progress::Progress;
 use crate::study::design::best::BEST_PATTERNS;
 use crate::study::design::symmetry_words::SymmetryWords;
-use crate::study::design::{Event, Observer, PatternResult, Stage, Stop};
+use crate::study::design::{Event, Observer, PatternResult, Stop};
 use crate::study::input::Input;
 use crate::study::rows::label;
 use surrogate::units::n_to_mn;
@@ -23,8 +23,6 @@ impl<'a> Log<'a> {
 }
 
 impl Observer for Log<'_> {
-    fn stage(&self, _: Stage, _: &str) {}
-
     fn event(&self, e: &Event<'_>) {
         match *e {
             Event::Level {

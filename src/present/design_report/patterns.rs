@@ -154,54 +154,60 @@ impl From<&PatternRow> for PatternLine {
 /// sidecar), else what the patterns as given share (area, sphere count, or neither: then the
 /// mean pressure and the load per sphere are the columns to compare). Cost: one pass.
 pub fn fairness(o: &DesignOutcome, rows: &[PatternRow]) -> String {
-    let rule: Vec<&str> = o
+    use crate::study::fairness::{Fairness, MadeFair};
+    let rules: Vec<Option<MadeFair>> = o
         .patterns
         .iter()
-        .map(|pr| pr.scene.facts.as_ref().map_or("", |f| f.normalize.as_str()))
+        .map(|pr| pr.scene.facts.as_ref().and_then(|f| f.made_fair))
         .collect();
+    // the rule every candidate shares, if one does
+    let rule = [
+        MadeFair::Recipe(Fairness::Area),
+        MadeFair::Recipe(Fairness::Count),
+        MadeFair::Patterns(Fairness::Count),
+        MadeFair::Patterns(Fairness::Area),
+    ]
+    .into_iter()
+    .find(|m| rules.iter().all(|r| *r == Some(*m)));
     let same = |f: &dyn Fn(&PatternRow) -> f64| {
         rows.windows(2)
             .all(|w| (f(&w[0]) - f(&w[1])).abs() <= 1e-9 * f(&w[0]).abs().max(1.0))
     };
     let equal_area = same(&|r: &PatternRow| r.slider_area_um2);
     let equal_count = same(&|r: &PatternRow| r.spheres as f64);
-    if rule.iter().all(|r| *r == "recipe-area") {
-        format!(
+    match rule {
+        Some(MadeFair::Recipe(Fairness::Area)) => format!(
             "Recipes compared at **equal slider area** (`--fair area`: each keeps the base slider's outline; the sphere count follows the recipe: {}); the mean pressure and the load per sphere at each limit are in patterns.csv.",
             range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
-        )
-    } else if rule.iter().all(|r| *r == "recipe-count") {
-        format!(
+        ),
+        Some(MadeFair::Recipe(Fairness::Count)) => format!(
             "Recipes compared at **equal sphere count** (`--fair count`: each outline scaled to hold the base slider's sphere count, the closest its lattice allows: {}; slider area {}).",
             range_text(rows.iter().map(|r| r.spheres as f64), "spheres"),
             range_text(rows.iter().map(|r| r.slider_area_um2), "µm²")
-        )
-    } else if rule.iter().all(|r| *r == "spheres") {
-        format!(
+        ),
+        Some(MadeFair::Patterns(Fairness::Count)) => format!(
             "Compared at **equal sphere count**: the candidates were made with `superlube patterns --fair count` (each outline scaled to hold the base slider's sphere count, the closest its lattice allows: {}).",
             if equal_count {
                 "all equal".to_string()
             } else {
                 range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
             }
-        )
-    } else if rule.iter().all(|r| *r == "area") {
-        format!(
+        ),
+        Some(MadeFair::Patterns(Fairness::Area)) => format!(
             "Compared at **equal slider area**: the candidates were made with `superlube patterns --fair area` (each keeps the base scene's outline, {} µm²; the sphere count follows the lattice: {}).",
             rows.first().map_or(String::new(), |r| format!("{:.0}", r.slider_area_um2)),
             range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
-        )
-    } else if equal_area {
-        "Compared as given, at **equal slider area** (the sphere count follows each lattice)."
-            .into()
-    } else if equal_count {
-        "Compared as given, at **equal sphere count**.".into()
-    } else {
-        format!(
+        ),
+        None if equal_area => {
+            "Compared as given, at **equal slider area** (the sphere count follows each lattice)."
+                .into()
+        }
+        None if equal_count => "Compared as given, at **equal sphere count**.".into(),
+        None => format!(
             "Compared as given: **neither the slider area ({}) nor the sphere count ({}) is equal**, so compare the mean pressure and the load per sphere.",
             range_text(rows.iter().map(|r| r.slider_area_um2), "µm²"),
             range_text(rows.iter().map(|r| r.spheres as f64), "spheres")
-        )
+        ),
     }
 }
 

@@ -1,4 +1,4 @@
-//! Stage 3 of a design, [`super::Stage::AlphaScan`], for one shortlisted orientation: its
+//! Stage 3 of a design, the α scan, for one shortlisted orientation: its
 //! contact line and the corrugation versus the pulling angle α (a coarse grid over one α
 //! period, then finer grids around the minimum), and the best α's, which the estimate
 //! ([`super::estimate`]) follows. [`super::evaluate`] runs it on a shortlist level's

@@ -1,4 +1,4 @@
-//! Stage 4 of a design, [`super::Stage::Estimate`], for one shortlisted orientation: the
+//! Stage 4 of a design, the friction estimate, for one shortlisted orientation: the
 //! friction estimate μ_est (`surrogate::friction`) along the best α's of its α scan
 //! ([`super::alpha_scan`]) at every load that can count. [`super::evaluate`] runs it on a
 //! shortlist level's orientations side by side; [`ThetaEval`] is the orientation's stored

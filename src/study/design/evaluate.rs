@@ -1,5 +1,5 @@
-//! Stages 3 and 4 of a design on one shortlist level: the α scan ([`super::alpha_scan`],
-//! [`Stage::AlphaScan`]) and the friction estimate ([`super::estimate`], [`Stage::Estimate`])
+//! Stages 3 and 4 of a design on one shortlist level: the α scan ([`super::alpha_scan`]) and
+//! the friction estimate ([`super::estimate`])
 //! of the level's orientations, each stage over every orientation side by side (each also
 //! parallel inside), results in order. Each orientation's evaluation is stored
 //! (`stages/<name>/theta_<θ>.json`) and reused when finished. Cost: [`paths_per_scan`] paths
@@ -9,7 +9,7 @@ use super::alpha_scan::{paths_per_scan, scan_alpha, AlphaScan, Target};
 use super::ctx::Ctx;
 use super::estimate::{estimate, ThetaEval};
 use super::inputs::eval_inputs;
-use super::observer::{Event, Stage};
+use super::observer::Event;
 use super::params::DesignScene;
 use super::pattern_result::{EvalStage, Evaluated};
 use super::rank::Pick;
@@ -139,7 +139,6 @@ impl<'a> EvaluateStage<'a> {
             theta_deg: picks[k].theta_deg,
             scan_load: l.level.load,
         };
-        obs.stage(Stage::AlphaScan, &l.ds.name);
         let scans: Vec<(AlphaScan, f64)> = todo
             .par_iter()
             .map(|&k| {
@@ -150,7 +149,6 @@ impl<'a> EvaluateStage<'a> {
             .collect::<Vec<Result<_>>>()
             .into_iter()
             .collect::<Result<_>>()?;
-        obs.stage(Stage::Estimate, &l.ds.name);
         let limits = p.limit();
         let estimates: Vec<Result<(Vec<FrictionRow>, f64)>> = todo
             .par_iter()

@@ -4,8 +4,8 @@
 //! answers: *which orientation θ and pulling direction α keep friction ultra-low without coating
 //! failure, up to which load, and how sure are we?* [`design`] runs the stages in order:
 //! [`pipeline::Pipeline::run`], each stage a type in its own file with a `run` that takes the
-//! previous stage's output, each entered as a named [`Stage`] and telling the one [`Observer`]
-//! the command passes in what it finds as typed [`Event`]s (no wording here):
+//! previous stage's output, each telling the one [`Observer`] the command passes in what it
+//! finds as typed [`Event`]s (no wording here):
 //!
 //! 1. **Screen** ([`screen::ScreenStage`]): θ cut to the pair's fundamental domain
 //!    ([`symmetry_words`]; square-tri 0–15°, tri-tri 0–30°; the α scan covers one α period),
@@ -45,8 +45,8 @@
 //! finished stage and DEM run, and one with other inputs is refused with the differences
 //! named. Adding a stage: a file with its type (a `run` from the previous stage's output to
 //! its own), its knobs in a params struct of its own (a field of [`DesignParams`]; in a
-//! sibling `<stage>_params.rs`, so that `params.rs` need not import the stage), a [`Stage`]
-//! variant, its events in [`observer`] (worded by `crate::present::design_report::log`), one
+//! sibling `<stage>_params.rs`, so that `params.rs` need not import the stage), its events in
+//! [`observer`] (worded by `crate::present::design_report::log`), one
 //! line in [`pipeline::Pipeline`].
 
 pub mod alpha_scan;
@@ -73,6 +73,7 @@ pub mod rank;
 pub mod recipe_answer;
 pub mod report_data;
 pub mod robust;
+pub mod robust_searches;
 pub mod screen;
 pub mod screen_params;
 pub mod shortlist;
@@ -93,7 +94,7 @@ pub use domain::{
 };
 pub use inputs::{inputs, screen_params};
 pub use limit::tolerance_box;
-pub use observer::{Event, Observer, Stage};
+pub use observer::{Event, Observer};
 pub use outcome::DesignOutcome;
 pub use pattern_result::{AnswerMap, EvalStage, Evaluated, PatternResult};
 pub use pipeline::PatternHook;

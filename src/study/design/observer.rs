@@ -1,5 +1,5 @@
-//! What the design pipeline tells its caller as it runs: the stage it enters ([`Stage`]) and
-//! typed events ([`Event`]), through ONE [`Observer`] that the command passes in. The pipeline
+//! What the design pipeline tells its caller as it runs: typed events ([`Event`]), through ONE
+//! [`Observer`] that the command passes in. The pipeline
 //! holds no wording: the command's observer words the events
 //! (`crate::present::design_report::log`), a test's records them.
 
@@ -9,32 +9,6 @@ use super::symmetry_words::PairSymmetry;
 use super::Stop;
 use crate::runs::progress::{Progress, Silent};
 use std::path::Path;
-
-/// The stages of the design pipeline, in the order [`super::design`] runs them. The first five
-/// run per pattern (the α scan, the estimate and the robust search once per shortlist level),
-/// the next two once, the opt-in yield once per answer.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Stage {
-    /// The symmetry cut and the screen of every θ × W ([`super::screen`]).
-    Screen,
-    /// Per θ the coating-intact load and the levels ([`super::shortlist`]).
-    Shortlist,
-    /// The contact line and the corrugation versus α of a level's orientations
-    /// ([`super::alpha_scan`]).
-    AlphaScan,
-    /// The friction estimate along the best α's ([`super::estimate`]).
-    Estimate,
-    /// The robust limits over the tolerance box ([`super::robust`]); entered only with a
-    /// tolerance.
-    RobustSearch,
-    /// The DEM runs of the top designs ([`super::confirm`]); entered only with the DEM.
-    DemConfirmation,
-    /// The answers and the tolerance maps the report is built from ([`super::report_data`]).
-    ReportData,
-    /// The yield of each answer over fabrication ([`super::yield_stage`]); entered only when
-    /// asked for (`DesignParams::fab_yield`), once per answer.
-    Yield,
-}
 
 /// Something the pipeline reports (no wording: the observer words it). Loads in N unless the
 /// field says mN.
@@ -253,12 +227,9 @@ pub enum Event<'a> {
     },
 }
 
-/// The one observer of a design run: told of each [`Stage`] entered and each [`Event`], and
-/// the progress sink of the stages' bars (and of the workflows they call: the screen, the DEM
-/// batch, the tolerance map).
+/// The one observer of a design run: told of each [`Event`], and the progress sink of the
+/// stages' bars (and of the workflows they call: the screen, the DEM batch, the tolerance map).
 pub trait Observer: Sync {
-    /// The pipeline enters `stage` (for `pattern`; empty for the stages over all patterns).
-    fn stage(&self, stage: Stage, pattern: &str);
     /// Something happened (see [`Event`]).
     fn event(&self, event: &Event<'_>);
     /// Where the bars go: `advance`/`finish` of the stages, and the called workflows' own.
@@ -267,7 +238,6 @@ pub trait Observer: Sync {
 
 /// Tells nothing (library use, tests).
 impl Observer for Silent {
-    fn stage(&self, _: Stage, _: &str) {}
     fn event(&self, _: &Event<'_>) {}
     fn progress(&self) -> &dyn Progress {
         self

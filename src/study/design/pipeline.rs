@@ -1,12 +1,10 @@
 //! The design pipeline: [`Pipeline::run`] takes the patterns through the stages in order,
 //! each a type in its own file with a `run` that takes the previous stage's output —
-//! [`ScreenStage`] ([`Stage::Screen`]) → [`ShortlistStage`] ([`Stage::Shortlist`]) → per
-//! shortlist level as the [`LevelWalk`] takes them, [`EvaluateStage`] ([`Stage::AlphaScan`],
-//! [`Stage::Estimate`]) and [`RobustStage`] ([`Stage::RobustSearch`]) → the DEM confirmation
-//! ([`super::confirm`], [`Stage::DemConfirmation`]) → the report data ([`ReportDataStage`],
-//! [`Stage::ReportData`]) → when asked for, the yield of each answer ([`YieldStage`],
-//! [`Stage::Yield`]) — telling one [`Observer`] each stage it enters and what it finds
-//! (no wording here).
+//! [`ScreenStage`] → [`ShortlistStage`] → per shortlist level as the [`LevelWalk`] takes
+//! them, [`EvaluateStage`] (the α scan, the estimate) and [`RobustStage`] → the DEM
+//! confirmation ([`super::confirm`]) → the report data ([`ReportDataStage`]) → when asked for,
+//! the yield of each answer ([`YieldStage`]) — telling one [`Observer`] what it finds as typed
+//! events (no wording here).
 
 use super::best;
 use super::confirm::{confirm_estimates, confirm_jobs, confirm_stage, run_batch, SlideOutcome};
@@ -14,13 +12,14 @@ use super::ctx::Ctx;
 use super::evaluate::{EvaluateStage, LevelInput};
 use super::inputs::inputs;
 use super::limit::{seed_solvers, solver_of, tolerance_box};
-use super::observer::{Event, Observer, Stage};
+use super::observer::{Event, Observer};
 use super::outcome::DesignOutcome;
 use super::params::{DesignParams, DesignScene};
 use super::pattern_result::{Evaluated, PatternResult};
 use super::rank::{self, Candidate};
 use super::report_data::ReportDataStage;
 use super::robust::{self, RobustParams, RobustStage};
+use super::robust_searches::Searches;
 use super::screen::ScreenStage;
 use super::shortlist::ShortlistStage;
 use super::store::Store;
@@ -99,10 +98,8 @@ impl<'a> Pipeline<'a> {
         let dem = if p.confirm.no_dem {
             Vec::new()
         } else {
-            obs.stage(Stage::DemConfirmation, "");
             confirm_stage(&patterns, p, store, obs)?
         };
-        obs.stage(Stage::ReportData, "");
         let mut o = ReportDataStage::new(self.ctx).run(patterns, dem, order.cross)?;
         if let Some(y) = &p.fab_yield {
             o.yields = YieldStage::new(self.ctx, y).run(&o)?;
@@ -206,10 +203,10 @@ impl<'a> Pipeline<'a> {
         })
     }
 
-    /// The stages of one pattern, in order: [`Stage::Screen`] (with the symmetry cut),
-    /// [`Stage::Shortlist`], then per shortlist level as the [`LevelWalk`] takes them
-    /// [`Stage::AlphaScan`] and [`Stage::Estimate`] ([`EvaluateStage`]) and, with a tolerance,
-    /// [`Stage::RobustSearch`] ([`RobustStage`]); then the ranking.
+    /// The stages of one pattern, in order: the screen ([`ScreenStage`], with the symmetry
+    /// cut), the shortlist ([`ShortlistStage`]), then per shortlist level as the [`LevelWalk`]
+    /// takes them the α scan and the estimate ([`EvaluateStage`]) and, with a tolerance, the
+    /// robust search ([`RobustStage`]); then the ranking.
     pub fn pattern(&self, ds: &DesignScene, search: Search) -> Result<PatternResult> {
         let p = self.ctx.p;
         let screened = ScreenStage::new(self.ctx).run(ds)?;
@@ -230,7 +227,7 @@ impl<'a> Pipeline<'a> {
             Some(_) => seed_solvers(ds, p, None)?,
             None => Vec::new(),
         };
-        let mut searches = robust::Searches::new(ds, p, &solvers, &limit, self.ctx.store)?;
+        let mut searches = Searches::new(ds, p, &solvers, &limit, self.ctx.store)?;
         let mut solver: Option<Solver> = None;
         let mut walk = LevelWalk::new(p.confirm.designs.max(3), floor_mn, robust.is_some());
         let mut evaluated: Vec<Evaluated> = Vec::new();
@@ -268,7 +265,6 @@ impl<'a> Pipeline<'a> {
             if let Some(rp) =
                 robust.filter(|_| ranking[from..].iter().any(|c| c.score.nominal_to_mn > 0.0))
             {
-                self.ctx.obs.stage(Stage::RobustSearch, &ds.name);
                 RobustStage::new(self.ctx, rp).run(ds, &mut ranking, &mut searches)?;
             }
             walk.evaluated(&ranking);

@@ -1,4 +1,4 @@
-//! Stage 7 of a design, [`super::Stage::ReportData`]: what the report is built from — each
+//! Stage 7 of a design, the report data: what the report is built from — each
 //! pattern's answer (its ranking checked against the DEM, [`super::answer`]), the tolerance
 //! map around the answers ([`tolerance_map`]) and, with recipes, the best named recipe's limit
 //! against the coating's strength ([`super::p_crit`]). Cost: one tolerance map per mapped

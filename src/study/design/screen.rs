@@ -1,4 +1,4 @@
-//! Stage 1 of a design, [`Stage::Screen`]: the symmetry cut of θ to the pattern's fundamental
+//! Stage 1 of a design, the screen: the symmetry cut of θ to the pattern's fundamental
 //! domain ([`super::domain::cut`]), then the screen of every θ × W
 //! ([`crate::study::screen`]: contacts, P_max, coating failure), stored as `screen_<name>.csv`
 //! and reused when finished. Cost: one Tier 1 solve per θ × W.
@@ -6,7 +6,7 @@
 use super::ctx::Ctx;
 use super::domain::{cut, line_note, theta_note};
 use super::inputs::{screen_inputs, screen_params};
-use super::observer::{Event, Stage};
+use super::observer::Event;
 use super::params::DesignScene;
 use super::store::Timing;
 use super::symmetry_words::PairSymmetry;
@@ -46,7 +46,6 @@ impl<'a> ScreenStage<'a> {
     pub fn run(&self, ds: &DesignScene) -> Result<Screened> {
         let Ctx { p, obs, .. } = self.ctx;
         let name = ds.name.as_str();
-        obs.stage(Stage::Screen, name);
         let (thetas_deg, sym) = cut(ds, &p.screen)?;
         let note = theta_note(&sym, &thetas_deg, &p.screen);
         obs.event(&Event::Symmetry {

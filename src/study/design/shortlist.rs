@@ -23,7 +23,7 @@
 //! the levels finds them, and the bound says when to stop.
 
 use super::ctx::Ctx;
-use super::observer::{Event, Stage};
+use super::observer::Event;
 use super::params::DesignScene;
 use super::screen::Screened;
 use crate::study::rows::ScreenRow;
@@ -38,7 +38,7 @@ pub struct Shortlisted {
     pub levels: Vec<Level>,
 }
 
-/// Stage 2 of a design, [`Stage::Shortlist`]: the rule of the module docs on a pattern's
+/// Stage 2 of a design, the shortlist: the rule of the module docs on a pattern's
 /// screen; its knobs are [`super::params::ShortlistParams`] and the design's loads.
 pub struct ShortlistStage<'a> {
     ctx: Ctx<'a>,
@@ -54,7 +54,6 @@ impl<'a> ShortlistStage<'a> {
     /// a sort per level.
     pub fn run(&self, ds: &DesignScene, screened: &Screened) -> Shortlisted {
         let Ctx { p, obs, .. } = self.ctx;
-        obs.stage(Stage::Shortlist, &ds.name);
         let orientations = orientations(&screened.rows, &p.loads, ds.scene.coating.p_crit);
         let levels = levels(
             &orientations,

@@ -1,6 +1,6 @@
-//! With `--rank-by yield` ([`RankBy::Yield`]), after a pattern's robust search: its top designs
-//! ranked by the load that a fraction q of fabricated devices hold instead of the worst case
-//! over the tolerance box.
+//! With `--rank-by yield` ([`super::yield_params::RankBy::Yield`]), after a pattern's robust
+//! search: its top designs ranked by the load that a fraction q of fabricated devices hold
+//! instead of the worst case over the tolerance box.
 //!
 //! The first `max(confirm, 3)` designs of the robust order whose limits are exact and
 //! superlubric at their nominal (θ, α) (the designs the robust search made exact) each get the
@@ -18,7 +18,7 @@
 //! (samples × about 21 single-load estimates / threads; seconds on the study's scenes).
 
 use super::ctx::Ctx;
-use super::observer::{Event, Stage};
+use super::observer::Event;
 use super::pattern_result::PatternResult;
 use super::rank;
 use super::yield_params::YieldStageParams;
@@ -53,7 +53,6 @@ impl<'a> YieldRank<'a> {
         if top.is_empty() {
             return Ok(0);
         }
-        obs.stage(Stage::Yield, &pr.scene.name);
         obs.event(&Event::YieldRank {
             pattern: &pr.scene.name,
             designs: top.len(),

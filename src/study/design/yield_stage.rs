@@ -1,4 +1,4 @@
-//! Stage 8 of a design, [`super::Stage::Yield`], opt-in ([`DesignParams::fab_yield`]): the yield
+//! Stage 8 of a design, the yield, opt-in ([`DesignParams::fab_yield`]): the yield
 //! of each pattern's answer — the fraction of fabricated devices that stay superlubric at a
 //! load, and the load that a fraction q of them hold with its one-sided confidence bound
 //! ([`crate::study::fab_yield`]).
@@ -22,7 +22,7 @@
 pub use super::answer_yield::AnswerYield;
 use super::ctx::Ctx;
 use super::limit::limit_record;
-use super::observer::{Event, Stage};
+use super::observer::Event;
 use super::outcome::DesignOutcome;
 use super::params::DesignParams;
 pub use super::yield_params::YieldStageParams;
@@ -143,7 +143,6 @@ impl<'a> YieldStage<'a> {
                 out.push(None);
                 continue;
             };
-            obs.stage(Stage::Yield, &pr.scene.name);
             let scene = pr.scene.scene.with_theta(deg_to_rad(c.theta_deg));
             let yp = yield_params(
                 p,

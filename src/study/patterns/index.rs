@@ -1,7 +1,8 @@
 //! `index.csv` and the candidates' scene files: writing them, scaling a pad to a sphere
 //! count, reading an index back and ordering it by the contact-type pre-screen.
 
-use super::{line_spacing, tidy, Candidate, ContactType, Normalize};
+use super::{line_spacing, tidy, Candidate, ContactType};
+use crate::study::fairness::{Fairness, MadeFair};
 use crate::study::input::Input;
 use anyhow::{bail, Result};
 use surrogate::Scene;
@@ -47,14 +48,14 @@ fn pair_um(v: [f64; 2]) -> String {
 
 /// The scene file of candidate `c` on the base scene `base` (user units): the base with the
 /// slider lattice (and basis) replaced; θ, substrate, material and coating kept; the outline
-/// kept (`Normalize::Area`: the base's slider area) or scaled to hold the base's sphere count
-/// (`Normalize::Spheres`, [`scale_to_count`]). Also its index row (`spheres` counted from the
+/// kept (`Fairness::Area`: the base's slider area) or scaled to hold the base's sphere count
+/// (`Fairness::Count`, [`scale_to_count`]). Also its index row (`spheres` counted from the
 /// built scene). Errors name the candidate.
 pub fn candidate_scene(
     base: &Scene,
     c: &Candidate,
     id: &str,
-    normalize: Normalize,
+    fairness: Fairness,
 ) -> Result<(surrogate::SceneFile, IndexRow)> {
     let um2 = |v: [f64; 2]| {
         [
@@ -71,7 +72,7 @@ pub fn candidate_scene(
         basis_um: (!c.basis.is_empty()).then(|| c.basis.iter().map(|b| um2(*b)).collect()),
         ..Default::default()
     });
-    if normalize == Normalize::Spheres {
+    if fairness == Fairness::Count {
         f = scale_to_count(&f, base.slider_sites_local().len())
             .map_err(|e| anyhow::anyhow!("candidate {id}: {e}"))?;
     }
@@ -168,7 +169,7 @@ pub fn scale_to_count(f: &surrogate::SceneFile, target: usize) -> Result<surroga
 
 /// What `superlube patterns` recorded of one candidate that the scene itself does not say (the
 /// index's columns a design carries into its `patterns.csv`).
-#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct CandidateFacts {
     /// `lubric`, `directional` or `interlocked`.
     pub contact_type: String,
@@ -176,10 +177,10 @@ pub struct CandidateFacts {
     pub p_q: String,
     /// Commensurate direction (degrees from the substrate x axis), when there is one.
     pub commensurate_direction_deg: Option<f64>,
-    /// What the candidates share (`area` or `spheres`: `superlube patterns --normalize`), from
-    /// the index's sidecar; empty when it does not say.
-    #[serde(default)]
-    pub normalize: String,
+    /// What the candidates share and who made them so: the rule `superlube patterns --fair`
+    /// recorded in the index's sidecar, or the recipe grid's; `None` when nothing says (a
+    /// hand-written index).
+    pub made_fair: Option<MadeFair>,
 }
 
 /// The facts of every candidate of an `index.csv`, by `pattern_id`. Errors name `--patterns`.
@@ -206,10 +207,10 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
         )
     })?;
     // the fairness rule the candidates were made with (a hand-written index has no sidecar)
-    let normalize = crate::runs::meta::Sidecar::of(index)
+    let made_fair = crate::runs::meta::Sidecar::of(index)
         .ok()
-        .and_then(|s| s.params.get("normalize")?.as_str().map(str::to_string))
-        .unwrap_or_default();
+        .and_then(|s| serde_json::from_value::<Fairness>(s.params.get("normalize")?.clone()).ok())
+        .map(MadeFair::Patterns);
     let mut out = Vec::new();
     for (k, row) in r.deserialize::<Row>().enumerate() {
         let row = row.map_err(|e| {
@@ -226,7 +227,7 @@ pub fn index_facts(index: &std::path::Path) -> Result<Vec<(String, CandidateFact
                 contact_type: row.contact_type,
                 p_q: row.p_q,
                 commensurate_direction_deg: row.commensurate_direction_deg,
-                normalize: normalize.clone(),
+                made_fair,
             },
         ));
     }

@@ -114,27 +114,6 @@ pub struct Candidate {
     pub contact: ContactType,
 }
 
-/// How the candidates of a family are made comparable (`--normalize`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Normalize {
-    /// Every candidate keeps the base scene's slider outline: the same slider area.
-    #[default]
-    Area,
-    /// Every candidate's outline is scaled so that it holds the base slider's sphere count
-    /// (the closest count its lattice allows).
-    Spheres,
-}
-
-impl Normalize {
-    /// `area` or `spheres`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Normalize::Area => "area",
-            Normalize::Spheres => "spheres",
-        }
-    }
-}
-
 /// Parses a family: `directional`, `presets[:s=3:6:0.5]`, `rectangular:a=3,b=2.6:6:0.05`,
 /// `oblique:a=3,b=3.2,gamma_deg=60:90:5`; every value a number or `start:stop:step` (µm,
 /// degrees). Errors name the family input ([`Input::Family`]).

@@ -11,17 +11,18 @@
 //! named in the error. The variants are the candidates of the design's multi-pattern ranking
 //! (`crate::study::design::DesignScene`), named by their varied values.
 //!
-//! **Fair comparison** ([`Fair`]): every variant keeps the base slider's outline (equal slider
+//! **Fair comparison** ([`Fairness`]): every variant keeps the base slider's outline (equal slider
 //! area, the default), or its outline is scaled so that it holds the base slider's sphere count
-//! ([`Fair::Count`], as `superlube patterns --fair count`).
+//! ([`Fairness::Count`], as `superlube patterns --fair count`).
 //!
 //! **Validated range** ([`validated_range`]): the surrogate's verdict band was measured at the
 //! study's sphere size (3 µm) and modulus (100 GPa, docs/validation/verdict-band.md); a recipe
 //! outside them, or whose design lies in the mount-resonance band, is flagged ([`Outside`]) so
 //! that the DEM, not the surrogate, names it (`crate::study::design::confirm`).
 //!
-//! Cost: one scene build per variant (plus about 40 per variant with [`Fair::Count`]).
+//! Cost: one scene build per variant (plus about 40 per variant with [`Fairness::Count`]).
 
+use crate::study::fairness::Fairness;
 use anyhow::{anyhow, bail, Result};
 use surrogate::{Scene, SceneFile};
 
@@ -45,27 +46,6 @@ pub struct Vary {
     pub field: String,
     /// The values (in the field's unit), in the order given.
     pub values: Vec<f64>,
-}
-
-/// What the variants of a recipe grid share.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub enum Fair {
-    /// The base slider's outline: equal slider area (the load per area is the same).
-    #[default]
-    Area,
-    /// Each variant's outline scaled to hold the base slider's sphere count (the closest its
-    /// lattice allows): equal sphere count.
-    Count,
-}
-
-impl Fair {
-    /// `area` or `count`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Fair::Area => "area",
-            Fair::Count => "count",
-        }
-    }
 }
 
 /// One recipe: the base scene with the varied fields set.
@@ -212,12 +192,12 @@ pub fn value_text(v: f64) -> String {
 /// (overlapping spheres, a pad beyond the substrate, a value out of range) is an error naming
 /// its field and value, or, with `skip_invalid`, is skipped and listed. Checked before any
 /// work: an unknown or non-numeric field fails on the first variant; an empty grid is refused.
-/// Cost: one scene build per variant (about 40 more with [`Fair::Count`]).
+/// Cost: one scene build per variant (about 40 more with [`Fairness::Count`]).
 pub fn variants(
     base: &Scene,
     base_name: &str,
     varies: &[Vary],
-    fair: Fair,
+    fair: Fairness,
     skip_invalid: bool,
     flag: &str,
 ) -> Result<Recipes> {
@@ -236,7 +216,7 @@ pub fn variants(
     if n > MAX_VARIANTS {
         bail!("`{flag}`: the grid has {n} variants, more than {MAX_VARIANTS}: use fewer values");
     }
-    if fair == Fair::Count {
+    if fair == Fairness::Count {
         if let Some(v) = varies
             .iter()
             .find(|v| v.field.starts_with("slider.outline") || v.field == "slider.radius_um")
@@ -275,7 +255,7 @@ pub fn variants(
         let made = (|| -> Result<(SceneFile, Scene)> {
             let mut f = apply(&file, &values)?;
             let mut s = f.into_scene().map_err(|e| anyhow!("{e}"))?;
-            if fair == Fair::Count && s.slider_sites_local().len() != target {
+            if fair == Fairness::Count && s.slider_sites_local().len() != target {
                 f = crate::study::patterns::scale_to_count(&f, target)?;
                 s = f.into_scene().map_err(|e| anyhow!("{e}"))?;
             }

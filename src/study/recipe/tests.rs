@@ -23,7 +23,7 @@ fn a_varied_field_is_the_scene_file_written_with_that_value() {
             vary("slider.sphere_diameter_um=2,2.5"),
             vary("slider.material.youngs_GPa=50"),
         ],
-        Fair::Area,
+        Fairness::Area,
         false,
         "--vary",
     )
@@ -46,7 +46,7 @@ fn a_varied_field_is_the_scene_file_written_with_that_value() {
         &base(),
         "b",
         &[vary("slider.lattice.spacing_um=3:4:0.5")],
-        Fair::Area,
+        Fairness::Area,
         false,
         "--vary",
     )
@@ -68,7 +68,7 @@ fn equal_count_scales_the_outline() {
         &b,
         "b",
         &[vary("slider.lattice.spacing_um=3.5")],
-        Fair::Count,
+        Fairness::Count,
         false,
         "--vary",
     )
@@ -81,7 +81,7 @@ fn equal_count_scales_the_outline() {
         &b,
         "b",
         &[vary("slider.radius_um=10")],
-        Fair::Count,
+        Fairness::Count,
         false,
         "--vary",
     )
@@ -97,7 +97,7 @@ fn recipes_that_cannot_be_made_are_named_or_skipped() {
         &base(),
         "b",
         &[vary("slider.sphere_diameter_um=2.5,3.5")],
-        Fair::Area,
+        Fairness::Area,
         false,
         "--vary",
     )
@@ -113,7 +113,7 @@ fn recipes_that_cannot_be_made_are_named_or_skipped() {
         &base(),
         "b",
         &[vary("slider.sphere_diameter_um=2.5,3.5")],
-        Fair::Area,
+        Fairness::Area,
         true,
         "--vary",
     )
@@ -124,7 +124,7 @@ fn recipes_that_cannot_be_made_are_named_or_skipped() {
         &base(),
         "b",
         &[vary("slider.radius_um=50")],
-        Fair::Area,
+        Fairness::Area,
         false,
         "--vary",
     )
@@ -152,9 +152,16 @@ fn bad_input_names_the_flag_and_field() {
         ("slider.tilt=1", "slider.tilt"),
         ("slider.radius_um.x=1", "slider.radius_um"),
     ] {
-        let e = variants(&base(), "b", &[vary(field)], Fair::Area, false, "--vary")
-            .unwrap_err()
-            .to_string();
+        let e = variants(
+            &base(),
+            "b",
+            &[vary(field)],
+            Fairness::Area,
+            false,
+            "--vary",
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("--vary") && e.contains(want), "{field}: {e}");
     }
     // an integer field takes whole numbers
@@ -162,7 +169,7 @@ fn bad_input_names_the_flag_and_field() {
         &base(),
         "b",
         &[vary("substrate.seed=2,3")],
-        Fair::Area,
+        Fairness::Area,
         false,
         "--vary",
     )
@@ -177,7 +184,7 @@ fn the_validated_range_is_the_studys() {
         &base(),
         "b",
         &[vary("slider.material.youngs_GPa=50")],
-        Fair::Area,
+        Fairness::Area,
         false,
         "--vary",
     )

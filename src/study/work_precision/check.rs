@@ -4,27 +4,12 @@
 //! same error within noise, nor an error that changes the reference's verdict. Each check
 //! returns its findings in words (empty: the check holds).
 
-use super::{Tier, WorkPrecisionRow};
+use super::{Knob, Tier, WorkPrecisionRow};
 
 /// Relative difference below which two errors of a deterministic tier are equal: the solver's
 /// tolerances (force 1e-12, moment 1e-10 relative) leave ~1e-9 in P_max and μ; 1e-6 is well
 /// above that and well below any error a user reads.
 pub const DETERMINISTIC_NOISE: f64 = 1e-6;
-
-/// Which way a numeric knob is refined: `Some(true)` when a larger value is finer (grid
-/// points, path length, inertial starts, slide time), `Some(false)` when a smaller one is
-/// (steps, step fractions); `None` for categorical and speed-only knobs.
-pub fn larger_is_finer(knob: &str) -> Option<bool> {
-    if knob.contains("speed only") || knob.starts_with("model") || knob == "tangential" {
-        return None;
-    }
-    match knob {
-        "grid_points" | "length_um" | "starts" | "slide_us" => Some(true),
-        "transverse_um" => None,
-        k if k.contains("step") || k.starts_with("dt_fraction") => Some(false),
-        _ => None,
-    }
-}
 
 /// The noise of comparing two rows' errors: their stated noises in quadrature, at least
 /// [`DETERMINISTIC_NOISE`].
@@ -34,17 +19,17 @@ fn noise(a: &WorkPrecisionRow, b: &WorkPrecisionRow) -> f64 {
 
 /// The numeric knobs of `rows` as (scene, knob, rows ordered coarse → fine, the reference
 /// left out).
-pub fn ladders(rows: &[WorkPrecisionRow]) -> Vec<(String, String, Vec<&WorkPrecisionRow>)> {
-    let mut keys: Vec<(String, String)> = Vec::new();
+pub fn ladders(rows: &[WorkPrecisionRow]) -> Vec<(String, Knob, Vec<&WorkPrecisionRow>)> {
+    let mut keys: Vec<(String, Knob)> = Vec::new();
     for r in rows {
-        let k = (r.scene.clone(), r.knob.clone());
+        let k = (r.scene.clone(), r.knob);
         if !keys.contains(&k) {
             keys.push(k);
         }
     }
     keys.into_iter()
         .filter_map(|(scene, knob)| {
-            let up = larger_is_finer(&knob)?;
+            let up = knob.larger_is_finer()?;
             let mut v: Vec<&WorkPrecisionRow> = rows
                 .iter()
                 .filter(|r| r.scene == scene && r.knob == knob && !r.is_reference)
@@ -98,7 +83,7 @@ fn components(r: &WorkPrecisionRow) -> [Option<f64>; 8] {
     [
         r.err_mu_rel,
         r.err_p_max_rel,
-        r.err_contacts_rel.filter(|_| r.tier != "friction"),
+        r.err_contacts_rel.filter(|_| r.tier != Tier::Friction),
         r.err_corrugation_rel,
         r.err_max_pull_rel,
         r.err_landscape_range_rel,
@@ -181,7 +166,7 @@ pub fn default_front(rows: &[WorkPrecisionRow]) -> Front {
 /// stated noise), on every scene.
 pub fn dem_default_step(rows: &[WorkPrecisionRow]) -> Vec<String> {
     rows.iter()
-        .filter(|r| r.tier == "dem" && r.knob.starts_with("dt_fraction") && r.is_default)
+        .filter(|r| r.tier == Tier::Dem && r.knob == Knob::DtFraction && r.is_default)
         .filter_map(|r| {
             let e = r.err_mu_rel?;
             (e > r.noise_rel).then(|| {
@@ -201,7 +186,7 @@ pub fn dem_default_step(rows: &[WorkPrecisionRow]) -> Vec<String> {
 /// 10⁻¹⁵ does the same, measured in docs/validation/work-precision.md — so there the two runs
 /// are two samples of the same slide and can only agree within the window's noise.
 pub fn speed_only_tolerance(r: &WorkPrecisionRow) -> f64 {
-    if r.tier == Tier::Dem.name() {
+    if r.tier == Tier::Dem {
         r.noise_rel.max(DETERMINISTIC_NOISE)
     } else {
         DETERMINISTIC_NOISE
@@ -212,7 +197,7 @@ pub fn speed_only_tolerance(r: &WorkPrecisionRow) -> f64 {
 /// [`speed_only_tolerance`] (stated in each finding).
 pub fn speed_only_identical(rows: &[WorkPrecisionRow]) -> Vec<String> {
     rows.iter()
-        .filter(|r| r.knob.contains("speed only") && r.error_rel > speed_only_tolerance(r))
+        .filter(|r| r.knob.speed_only() && r.error_rel > speed_only_tolerance(r))
         .map(|r| {
             format!(
                 "{}, {} = {}: the output moved by {:.3e} (tolerance {:.1e})",
@@ -234,7 +219,7 @@ pub fn tiers_ordered(rows: &[WorkPrecisionRow]) -> Vec<String> {
     use super::tiers::Method;
     let mut out = Vec::new();
     let mut scenes: Vec<&str> = Vec::new();
-    for r in rows.iter().filter(|r| r.tier == Tier::Tiers.name()) {
+    for r in rows.iter().filter(|r| r.tier == Tier::Tiers) {
         if !scenes.contains(&r.scene.as_str()) {
             scenes.push(&r.scene);
         }
@@ -242,9 +227,7 @@ pub fn tiers_ordered(rows: &[WorkPrecisionRow]) -> Vec<String> {
     for scene in scenes {
         let find = |m: Method| {
             rows.iter().find(|r| {
-                r.tier == Tier::Tiers.name()
-                    && r.scene == scene
-                    && Method::parse(&r.setting) == Some(m)
+                r.tier == Tier::Tiers && r.scene == scene && Method::parse(&r.setting) == Some(m)
             })
         };
         let (Some(sc), Some(es), Some(de)) = (

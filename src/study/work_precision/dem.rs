@@ -8,7 +8,7 @@
 
 use super::cost::measure;
 use super::row::{compare, Measured, Setting, Values};
-use super::{scenes, StudyScene, Tier, WorkPrecisionRow};
+use super::{scenes, Knob, StudyScene, Tier, WorkPrecisionRow};
 use crate::runs::progress::{Progress, Silent};
 use crate::study::dem_run::{DemParams, ModelSpec};
 use crate::study::slide::slide;
@@ -199,9 +199,9 @@ pub fn run_one(s: &StudyScene, pr: &Protocol, d: &DemSetting, setting: Setting) 
     }
 }
 
-/// The settings of one knob: (knob name, settings with their text, value, default and
-/// reference flags).
-type KnobPlan = (&'static str, Vec<(DemSetting, Setting)>);
+/// The settings of one knob: (knob, settings with their text, value, default and reference
+/// flags).
+type KnobPlan = (Knob, Vec<(DemSetting, Setting)>);
 
 /// The code's default DEM setting under protocol `pr`: the full model at the default step
 /// fraction, Mindlin history, the protocol's slide, active set on.
@@ -361,11 +361,11 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
     (
         default,
         vec![
-            ("dt_fraction_of_stable", dt),
-            ("model", model),
-            ("tangential", tangential),
-            ("slide_us", window),
-            ("active_set (speed only)", active),
+            (Knob::DtFraction, dt),
+            (Knob::Model, model),
+            (Knob::Tangential, tangential),
+            (Knob::SlideUs, window),
+            (Knob::ActiveSet, active),
         ],
     )
 }
@@ -393,7 +393,7 @@ pub fn run(
                     m
                 })
                 .collect();
-            rows.extend(compare(Tier::Dem, &s.name, knob, &ms));
+            rows.extend(compare(Tier::Dem, &s.name, *knob, &ms));
         }
     }
     if !quick {
@@ -417,7 +417,7 @@ pub fn run(
                 )
             })
             .collect();
-            rows.extend(compare(Tier::Dem, &s.name, "model (default step)", &ms));
+            rows.extend(compare(Tier::Dem, &s.name, Knob::ModelDefaultStep, &ms));
         }
     }
     progress.finish();

@@ -4,7 +4,7 @@
 
 use super::cost::measure;
 use super::row::{compare, um, Measured, Setting, Values};
-use super::{scenes, StudyScene, Tier, WorkPrecisionRow};
+use super::{scenes, Knob, StudyScene, Tier, WorkPrecisionRow};
 use crate::runs::progress::Progress;
 use crate::study::verdict::Verdict;
 use anyhow::Result;
@@ -15,17 +15,17 @@ use surrogate::units::um_to_m;
 /// μ below which a row can be superlubric (the study's).
 const MU_SL: f64 = 0.02;
 
-/// One knob: name, settings (knob's unit), default, reference, and how a setting changes the
-/// estimate's parameters.
-struct Knob {
-    name: &'static str,
+/// One knob's plan: the knob, settings (knob's unit), default, reference, and how a setting
+/// changes the estimate's parameters.
+struct KnobPlan {
+    knob: Knob,
     settings: Vec<f64>,
     default: f64,
     reference: f64,
     set: fn(&mut FrictionParams, f64),
 }
 
-fn knobs(quick: bool) -> Vec<Knob> {
+fn knobs(quick: bool) -> Vec<KnobPlan> {
     let d = FrictionParams::default();
     let (steps, lengths, starts, segments) = if quick {
         (
@@ -44,15 +44,15 @@ fn knobs(quick: bool) -> Vec<Knob> {
     };
     let last = |v: &Vec<f64>| *v.last().expect("settings");
     vec![
-        Knob {
-            name: "step_um",
+        KnobPlan {
+            knob: Knob::StepUm,
             reference: last(&steps),
             settings: steps,
             default: um(d.step),
             set: |f, v| f.step = um_to_m(v),
         },
-        Knob {
-            name: "length_um",
+        KnobPlan {
+            knob: Knob::LengthUm,
             reference: last(&lengths),
             settings: lengths,
             default: um(d.length),
@@ -61,22 +61,22 @@ fn knobs(quick: bool) -> Vec<Knob> {
                 f.transient = f.transient.min(0.5 * um_to_m(v));
             },
         },
-        Knob {
-            name: "transverse_um",
+        KnobPlan {
+            knob: Knob::TransverseUm,
             settings: vec![0.0, um(d.transverse)],
             default: um(d.transverse),
             reference: um(d.transverse),
             set: |f, v| f.transverse = um_to_m(v),
         },
-        Knob {
-            name: "starts",
+        KnobPlan {
+            knob: Knob::Starts,
             reference: last(&starts),
             settings: starts,
             default: d.starts as f64,
             set: |f, v| f.starts = v as usize,
         },
-        Knob {
-            name: "segment_um (speed only)",
+        KnobPlan {
+            knob: Knob::SegmentUm,
             settings: segments,
             default: um(d.segment),
             reference: um(d.segment),
@@ -162,14 +162,14 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
                     let mut f = FrictionParams::default();
                     (k.set)(&mut f, v);
                     let mut setting = Setting::num(v, k.default, k.reference);
-                    if k.name == "transverse_um" {
+                    if k.knob == Knob::TransverseUm {
                         setting.text = if v > 0.0 { "on (1.5)" } else { "off (0)" }.into();
                     }
                     one(&solver, s, &f, setting)
                 })
                 .collect();
-            let mut rs = compare(Tier::Friction, &s.name, k.name, &ms);
-            if k.name == "length_um" {
+            let mut rs = compare(Tier::Friction, &s.name, k.knob, &ms);
+            if k.knob == Knob::LengthUm {
                 // a quasi-periodic path's average converges like a finite sample, not
                 // monotonically: its noise is taken as the change between the two longest
                 // paths (the reference and the next)

@@ -22,6 +22,7 @@ pub mod check;
 pub mod cost;
 pub mod dem;
 pub mod friction;
+mod knob;
 pub mod lammps;
 pub mod row;
 pub mod screen;
@@ -30,6 +31,7 @@ mod tier;
 pub mod tiers;
 pub mod tolerance;
 
+pub use knob::Knob;
 pub use row::{Measured, Setting, Values, WorkPrecisionRow};
 pub use study_scene::{scenes, StudyScene};
 pub use tier::Tier;

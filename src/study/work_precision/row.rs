@@ -3,7 +3,7 @@
 //! errors against the knob's reference setting.
 
 use super::cost::Cost;
-use super::Tier;
+use super::{Knob, Tier};
 use crate::study::verdict::Verdict;
 use serde::{Deserialize, Serialize};
 use surrogate::units::{m_to_nm, m_to_um, n_to_mn, pa_to_gpa};
@@ -94,12 +94,13 @@ pub struct Measured {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[allow(non_snake_case)]
 pub struct WorkPrecisionRow {
-    /// Tier (`screen-map`, `friction`, `tolerance`, `dem`).
-    pub tier: String,
+    /// Tier (`screen-map`, `friction`, `tolerance`, `dem`, `tiers`).
+    pub tier: Tier,
     /// Scene (`superlubric`, `coating-failure`, `stick-slip`; `small-…`: 30 µm slider).
     pub scene: String,
-    /// Knob, with the unit of its settings in the name (`grid_points`, `step_um`, `model`).
-    pub knob: String,
+    /// Knob, written with the unit of its settings in the name (`grid_points`, `step_um`,
+    /// `model`).
+    pub knob: Knob,
     /// The setting as text.
     pub setting: String,
     /// The setting's value in the knob's unit (empty for a categorical knob).
@@ -172,7 +173,7 @@ fn rel(a: Option<f64>, b: Option<f64>, scale: Option<f64>) -> Option<f64> {
 
 /// The rows of one knob on one scene: every measured setting against the reference (the
 /// setting marked `is_reference`; the last one if none is). Order kept.
-pub fn compare(tier: Tier, scene: &str, knob: &str, ms: &[Measured]) -> Vec<WorkPrecisionRow> {
+pub fn compare(tier: Tier, scene: &str, knob: Knob, ms: &[Measured]) -> Vec<WorkPrecisionRow> {
     let Some(r) = ms
         .iter()
         .find(|m| m.setting.is_reference)
@@ -235,9 +236,9 @@ pub fn compare(tier: Tier, scene: &str, knob: &str, ms: &[Measured]) -> Vec<Work
                 _ => false,
             };
             WorkPrecisionRow {
-                tier: tier.name().into(),
+                tier,
                 scene: scene.into(),
-                knob: knob.into(),
+                knob,
                 setting: m.setting.text.clone(),
                 setting_value: m.setting.value,
                 cost_cpu_s: m.cost.cpu_s,

@@ -4,7 +4,7 @@
 
 use super::cost::{measure, measure_repeated};
 use super::row::{compare, um, Measured, Setting, Values};
-use super::{scenes, StudyScene, Tier, WorkPrecisionRow};
+use super::{scenes, Knob, StudyScene, Tier, WorkPrecisionRow};
 use crate::runs::progress::Progress;
 use crate::study::verdict::Verdict;
 use anyhow::Result;
@@ -85,7 +85,7 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
                 values,
             });
         }
-        rows.extend(compare(Tier::ScreenMap, &s.name, "model", &ms));
+        rows.extend(compare(Tier::ScreenMap, &s.name, Knob::Model, &ms));
         progress.advance(1);
         // 2. the landscape grid (reference: the finest)
         let reference = *pl.grids.last().expect("grids");
@@ -113,7 +113,7 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
                 },
             });
         }
-        rows.extend(compare(Tier::ScreenMap, &s.name, "grid_points", &ms));
+        rows.extend(compare(Tier::ScreenMap, &s.name, Knob::GridPoints, &ms));
         progress.advance(1);
         // 3. the corrugation path step (reference: the finest)
         let reference = *pl.steps_um.last().expect("steps");
@@ -143,7 +143,7 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
         rows.extend(compare(
             Tier::ScreenMap,
             &s.name,
-            "corrugation_step_um",
+            Knob::CorrugationStepUm,
             &ms,
         ));
         progress.advance(1);

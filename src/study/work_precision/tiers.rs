@@ -16,7 +16,7 @@ use super::dem::{
 };
 use super::friction::one as estimate_one;
 use super::row::{compare, Measured, Setting, Values};
-use super::{lammps, scenes, StudyScene, Tier, WorkPrecisionRow};
+use super::{lammps, scenes, Knob, StudyScene, Tier, WorkPrecisionRow};
 use crate::runs::progress::Progress;
 use crate::study::verdict::Verdict;
 use anyhow::Result;
@@ -70,9 +70,6 @@ impl Method {
         Method::ALL.into_iter().find(|m| m.name() == text)
     }
 }
-
-/// The knob name of the diagram's rows.
-pub const KNOB: &str = "tier";
 
 /// The screen's verdict on the coating at one P_max (Pa): the band rule on P_max alone.
 fn coating_verdict(p_max: f64, s: &StudyScene) -> Verdict {
@@ -174,7 +171,7 @@ pub fn run(
             setting(Method::Reference),
         )));
         progress.advance(1);
-        rows.extend(compare(Tier::Tiers, &s.name, KNOB, &ms));
+        rows.extend(compare(Tier::Tiers, &s.name, Knob::Tier, &ms));
     }
     progress.finish();
     Ok(rows)

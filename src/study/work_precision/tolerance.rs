@@ -6,7 +6,7 @@
 
 use super::cost::measure;
 use super::row::{compare, Measured, Setting, Values};
-use super::{scenes, Tier, WorkPrecisionRow};
+use super::{scenes, Knob, Tier, WorkPrecisionRow};
 use crate::runs::progress::Progress;
 use crate::study::campaign::STUDY_LOADS_MN;
 use crate::study::tolerance::{
@@ -43,15 +43,15 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
     let cap = placement_intact(&solver, theta, &lp.loads);
     let (nominal, _) = rows_upto(&solver, theta_deg, direction_deg, cap, 0, &lp)?;
     let solvers = [solver];
-    let axes: [(&str, Vec<f64>); 2] = if quick {
+    let axes: [(Knob, Vec<f64>); 2] = if quick {
         [
-            ("theta_step_deg", vec![0.1, 0.05, 0.02, 0.005]),
-            ("direction_step_deg", vec![0.5, 0.25, 0.0625]),
+            (Knob::ThetaStepDeg, vec![0.1, 0.05, 0.02, 0.005]),
+            (Knob::DirectionStepDeg, vec![0.5, 0.25, 0.0625]),
         ]
     } else {
         [
-            ("theta_step_deg", vec![0.1, 0.05, 0.02, 0.01, 0.005]),
-            ("direction_step_deg", vec![0.5, 0.25, 0.125, 0.0625]),
+            (Knob::ThetaStepDeg, vec![0.1, 0.05, 0.02, 0.01, 0.005]),
+            (Knob::DirectionStepDeg, vec![0.5, 0.25, 0.125, 0.0625]),
         ]
     };
     let mut rows = Vec::new();
@@ -98,7 +98,7 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
                 })
             })
             .collect::<Result<_>>()?;
-        rows.extend(compare(Tier::Tolerance, &s.name, knob, &ms));
+        rows.extend(compare(Tier::Tolerance, &s.name, *knob, &ms));
         progress.advance(1);
     }
     progress.finish();
