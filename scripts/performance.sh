@@ -77,13 +77,17 @@ measure "design, the default, with its DEM confirmation (fresh folder)" -- \
 lammps="\`lmp\` was not found on this machine: no LAMMPS figure."
 if command -v lmp >/dev/null; then
     dir=$work/lammps; mkdir -p "$dir"
-    (cd "$dir" && "$bin" export-lammps --pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 \
-        --equilibrate-us 1 --relax-us 1 --slide-us 5 --out-dir run >/dev/null 2>&1)
-    steps=$(python3 -c 'import json,sys; s=json.load(open(sys.argv[1]))["steps"]; print(sum(s.values()))' "$dir/run/export.json")
-    (cd "$dir/run" && /usr/bin/time -f '%e %U %S %M' -o ../time.txt lmp -in in.superlube.lmp >lmp.log 2>&1)
-    read -r wall user sys rss <"$dir/time.txt"
-    lammps=$(printf 'LAMMPS (`%s`, one process) on the exported superlubric scene (`superlube export-lammps --pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 --equilibrate-us 1 --relax-us 1 --slide-us 5`, then `lmp -in in.superlube.lmp`): %d steps in %.1f s wall, %.2f ms per step.' \
-        "$(command -v lmp)" "$steps" "$wall" "$(echo "1000 * $wall / $steps" | bc -l)")
+    flags="--pattern square-tri --theta-deg 0 --alpha-deg 90 --load-mn 1.4 --equilibrate-us 0.2 --relax-us 0.2 --slide-us 1"
+    # shellcheck disable=SC2086
+    if (cd "$dir" && "$bin" export-lammps $flags --out-dir run >/dev/null 2>&1) &&
+        (cd "$dir/run" && /usr/bin/time -f '%e %U %S %M' -o ../time.txt lmp -in in.superlube.lmp >lmp.log 2>&1); then
+        steps=$(python3 -c 'import json,sys; s=json.load(open(sys.argv[1]))["steps"]; print(s["equilibrate"] + s["relax"] + s["slide"])' "$dir/run/export.json")
+        read -r wall user sys rss <"$dir/time.txt"
+        lammps=$(printf 'LAMMPS (`%s`, one process) on the exported superlubric scene (`superlube export-lammps %s`, then `lmp -in in.superlube.lmp`): %d steps in %.1f s wall, %.2f ms per step.' \
+            "$(command -v lmp)" "$flags" "$steps" "$wall" "$(echo "1000 * $wall / $steps" | bc -l)")
+    else
+        lammps="LAMMPS (\`$(command -v lmp)\`) did not complete the exported scene on this machine: no LAMMPS figure ($(tail -1 "$dir/run/lmp.log" 2>/dev/null))."
+    fi
 fi
 
 load_end=$(cut -d' ' -f1-3 /proc/loadavg)

@@ -3,6 +3,7 @@
 
 use crate::study::design::rank::Candidate;
 use crate::study::design::{DesignOutcome, DesignParams};
+use crate::study::load::LoadKey;
 use crate::study::rows::{label, FrictionRow};
 use crate::study::verdict::dem_superlubric;
 use serde::{Deserialize, Serialize};
@@ -107,9 +108,10 @@ pub struct DemRow {
     pub error: String,
 }
 
-/// The friction row of a candidate at load `w_mn`.
+/// The friction row of a candidate at load `w_mn` (mN), matched by [`LoadKey`].
 pub fn row_at(c: &Candidate, w_mn: f64) -> Option<&FrictionRow> {
-    c.friction.iter().find(|r| (r.load_mN - w_mn).abs() < 1e-12)
+    let w = LoadKey::of_mn(w_mn);
+    c.friction.iter().find(|r| LoadKey::of_mn(r.load_mN) == w)
 }
 
 /// The DEM rows of the outcome.

@@ -23,6 +23,7 @@
 //! ([`super::estimate`]); its `intact_to` then counts that load only.
 
 use super::estimate::ThetaEval;
+use crate::study::load::LoadKey;
 use crate::study::rows::FrictionRow;
 use crate::study::verdict::{intact, superlubric, Verdict};
 use serde::{Deserialize, Serialize};
@@ -79,7 +80,7 @@ impl Candidate {
             .find(|c| {
                 (c.theta_offset_deg - dt).abs() < 1e-9
                     && (c.direction_offset_deg - dd).abs() < 1e-9
-                    && (c.row.load_mN - w_mn).abs() < 1e-12
+                    && LoadKey::of_mn(c.row.load_mN) == LoadKey::of_mn(w_mn)
             })
             .map(|c| &c.row)
     }
