@@ -4,9 +4,9 @@
 //! ([`crate::study::fab_yield`]).
 //!
 //! Each answer (θ, pull direction, its pattern's scene or recipe) is handed to
-//! [`fab_yield`] with the design's tolerance box as the fabrication tolerance (θ and
-//! pull-direction offsets uniform over ± the design's `--theta-tol-deg` × `--direction-tol-deg`),
-//! a fresh substrate per device at the scene's σ_h whose seed is never the scene's own nor one
+//! [`fab_yield`](crate::study::fab_yield::fab_yield) with the design's tolerance box as the
+//! fabrication tolerance (θ and pull-direction offsets uniform over ± the design's
+//! `--theta-tol-deg` × `--direction-tol-deg`), a fresh substrate per device at the scene's σ_h whose seed is never the scene's own nor one
 //! of the design's searched `--seeds` ([`FabricationModel::excluded_seeds`]), the design's load
 //! ladder, μ_sl, contact line and estimate knobs. With the DEM, the devices the estimate
 //! cannot decide at the quoted load get a DEM run with the design's protocol and model, and
