@@ -6,18 +6,13 @@
 //! flags are refused naming the flag.
 
 mod common;
-use common::{assert_ok, bin, fails_naming, tmpdir};
+use common::{assert_ok, bin, fails_naming, tmpdir, SMALL_SCENE};
 use std::path::Path;
 
-/// square-tri on a 15 µm slider (≈ 80 spheres), a rough substrate searched on seeds 1 and 2,
-/// θ every 1°, a ladder of loads scaled to its sphere count, the default tolerance box.
-const SMALL: [&str; 14] = [
-    "--pattern",
-    "square-tri",
-    "--slider-radius-um",
-    "15",
-    "--substrate-um",
-    "60x60",
+/// With [`SMALL_SCENE`] (square-tri on a 15 µm slider, ≈ 80 spheres): a rough substrate
+/// searched on seeds 1 and 2, θ every 1°, a ladder of loads scaled to its sphere count, the
+/// default tolerance box.
+const SMALL: [&str; 8] = [
     "--sigma-h-um",
     "0.002",
     "--seeds",
@@ -31,6 +26,7 @@ const SMALL: [&str; 14] = [
 fn design(extra: &[&str], out: &Path) -> std::process::Output {
     bin()
         .arg("design")
+        .args(SMALL_SCENE)
         .args(SMALL)
         .args(["--no-dem"])
         .args(extra)

@@ -288,15 +288,14 @@ impl<'a> RobustStage<'a> {
             else {
                 return Ok(paths);
             };
-            let k = searches.index(&ranking[i]);
-            let before = searches.live[k].1.state.paths;
-            let s = &mut searches.live[k].1;
-            if s.settled() {
-                s.windows()?;
-            } else {
-                s.step()?;
-            }
-            paths += searches.live[k].1.state.paths - before;
+            let ((), n) = searches.counted(&ranking[i], |s| {
+                if s.settled() {
+                    s.windows()
+                } else {
+                    s.step()
+                }
+            })?;
+            paths += n;
         }
     }
 
@@ -325,10 +324,7 @@ impl<'a> RobustStage<'a> {
             if (settled && b > 0)
                 || (c.score.nominal_to_mn == top && (floor_mn == 0.0 || b > floor_n))
             {
-                let k = searches.index(c);
-                let before = searches.live[k].1.state.paths;
-                searches.live[k].1.windows()?;
-                paths += searches.live[k].1.state.paths - before;
+                paths += searches.counted(c, |s| s.windows())?.1;
             }
         }
         Ok(paths)
@@ -357,10 +353,8 @@ impl<'a> RobustStage<'a> {
                 ..
             } = self.known(searches, c);
             if settled && b > 0 {
-                let k = searches.index(c);
-                let before = searches.live[k].1.state.paths;
-                let v = searches.live[k].1.seed_limits()?;
-                paths += searches.live[k].1.state.paths - before;
+                let (v, n) = searches.counted(c, |s| s.seed_limits())?;
+                paths += n;
                 out.push((
                     DesignKey::of(c),
                     v.into_iter().map(|n| load_mn(p, n)).collect(),

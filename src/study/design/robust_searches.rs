@@ -116,6 +116,20 @@ impl<'a> Searches<'a> {
         })
     }
 
+    /// Runs `f` on candidate `c`'s search (started or resumed as [`Searches::index`] does) and
+    /// returns its result with the number of paths it solved.
+    pub(super) fn counted<T>(
+        &mut self,
+        c: &Candidate,
+        f: impl FnOnce(&mut RobustSearch<'a>) -> Result<T>,
+    ) -> Result<(T, usize)> {
+        let k = self.index(c);
+        let s = &mut self.live[k].1;
+        let before = s.state.paths;
+        let v = f(s)?;
+        Ok((v, s.state.paths - before))
+    }
+
     /// The index in `live` of candidate `c`'s search, started (or resumed from the stored one)
     /// if it has none yet.
     pub(super) fn index(&mut self, c: &Candidate) -> usize {
