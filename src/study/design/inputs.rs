@@ -109,16 +109,20 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
     if with_dem {
         params["dem"] = dem;
     }
-    // the yield stage's knobs, when it runs (absent otherwise: records unchanged)
-    if let (true, Some(y)) = (with_dem, &p.fab_yield) {
-        params["yield"] = json!({
+    // the yield's devices: what draws them and how finely their critical loads are found
+    let devices = |y: &super::yield_params::YieldStageParams| {
+        json!({
             "samples": y.samples,
             "quantile": y.quantile,
             "confidence": y.confidence,
             "resolution": y.resolution,
             "sample_seed": y.seed,
-            "dem_check": y.dem_check,
-        });
+        })
+    };
+    // the yield stage's knobs, when it runs (absent otherwise: records unchanged)
+    if let (true, Some(y)) = (with_dem, &p.fab_yield) {
+        params["yield"] = devices(y);
+        params["yield"]["dem_check"] = json!(y.dem_check);
     }
     // ranking by yield changes the surrogate's answers: part of the design's inputs with or
     // without the DEM (absent otherwise: records unchanged)
@@ -127,13 +131,7 @@ pub fn inputs(scenes: &[DesignScene], p: &DesignParams, with_dem: bool) -> Input
         .as_ref()
         .filter(|y| y.rank_by == super::yield_params::RankBy::Yield)
     {
-        params["rank_by_yield"] = json!({
-            "samples": y.samples,
-            "quantile": y.quantile,
-            "confidence": y.confidence,
-            "resolution": y.resolution,
-            "sample_seed": y.seed,
-        });
+        params["rank_by_yield"] = devices(y);
     }
     Inputs {
         workflow: "design".into(),
