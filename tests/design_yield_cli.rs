@@ -1,9 +1,10 @@
-//! `superlube design --yield-samples N` (the opt-in yield stage) on a small scene without the
-//! DEM: each answer's `yield_<p>.csv` (one row per device, its seed never the scene's nor a
-//! searched one), `yield_<p>.json` and `yield_<p>.png` with sidecars, and the report's "load at
-//! 95 % yield" column giving the summary's load and bound; without the flag no yield file is
-//! written, the report has no such column and every other output is the same bytes; bad yield
-//! flags are refused naming the flag.
+//! `superlube design`'s yield stage (on by default; `--yield-samples N` sets its devices) on a
+//! small scene without the DEM: each answer's `yield_<p>.csv` (one row per device, its seed
+//! never the scene's nor a searched one), `yield_<p>.json` and `yield_<p>.png` with sidecars,
+//! the report's "load at 95 % yield" column giving the summary's load and bound, and the
+//! answer's fabrication sentence; with `--no-yield` no yield file is written, the report has
+//! no such column and every other output is the same bytes; bad yield flags are refused
+//! naming the flag.
 
 mod common;
 use common::{assert_ok, bin, fails_naming, tmpdir, SMALL_SCENE};
@@ -44,10 +45,12 @@ fn the_yield_stage_writes_its_files_and_the_report_column_and_leaves_the_rest_un
     assert_ok(&o);
     let log = String::from_utf8_lossy(&o.stderr);
     assert!(
-        log.contains("square-tri: yield of the answer over fabrication: 95 % of 12 devices hold"),
+        log.contains(
+            "square-tri: yield of the answer over fabrication: 95 % of devices made within the tolerance hold"
+        ),
         "{log}"
     );
-    assert_ok(&design(&[], &off));
+    assert_ok(&design(&["--no-yield"], &off));
     for f in [
         "yield_square-tri.csv",
         "yield_square-tri.json",
@@ -55,7 +58,7 @@ fn the_yield_stage_writes_its_files_and_the_report_column_and_leaves_the_rest_un
     ] {
         assert!(on.join(f).exists(), "{f} missing");
         assert!(on.join(format!("{f}.meta.json")).exists(), "{f} sidecar");
-        assert!(!off.join(f).exists(), "{f} written without --yield-samples");
+        assert!(!off.join(f).exists(), "{f} written with --no-yield");
     }
     // one row per device; every drawn substrate seed differs from the scene's (0) and the
     // searched ones (1, 2)
@@ -90,6 +93,10 @@ fn the_yield_stage_writes_its_files_and_the_report_column_and_leaves_the_rest_un
     assert!((shown - load).abs() <= 0.005 * load, "{row}");
     assert_eq!(rest, "(no bound: 12 devices, needs ≥ 59)", "{row}");
     assert!(report.contains("](yield_square-tri.png)"), "{report}");
+    assert!(
+        report.contains("**Fabrication**: 95 % of devices made within the tolerance hold"),
+        "{report}"
+    );
     let sidecar = std::fs::read_to_string(on.join("yield_square-tri.csv.meta.json")).unwrap();
     assert!(sidecar.contains("\"sample_seed\""), "{sidecar}");
     // without the stage: no yield column, and every shared output the same bytes (the
@@ -136,7 +143,7 @@ fn bad_yield_flags_name_the_flag() {
         &["--yield-samples", "5", "--yield-confidence", "0"],
         "--yield-confidence",
     );
-    run(&["--yield-quantile", "0.9"], "--yield-samples");
+    run(&["--no-yield", "--yield-samples", "5"], "--no-yield");
     assert!(!out.join("report.md").exists());
     std::fs::remove_dir_all(&d).ok();
 }

@@ -177,10 +177,11 @@ fn the_same_seed_gives_the_same_rows_whatever_the_threads() {
     assert_eq!(a, b);
 }
 
-/// With the DEM: every device whose band bracket holds the quoted load is decided by a DEM run
-/// there, and the check reports passed/total on fresh devices.
+/// With the DEM: every device's critical load agrees with each of its DEM runs, a located
+/// device was held and failed within the resolution, the check's devices are pooled into the
+/// rows, the pairs and the band are recorded, and the check's word on the quote is stated.
 #[test]
-fn the_dem_decides_the_band_and_checks_the_quoted_load() {
+fn the_dem_locates_the_setting_devices_and_checks_the_quote() {
     let d = tmpdir("yield-dem");
     let out = d.join("y");
     run(
@@ -203,40 +204,59 @@ fn the_dem_decides_the_band_and_checks_the_quoted_load() {
     );
     let s = summary(&out);
     let m = rows(&out.join("yield.csv"));
-    let quoted = s["load_at_quantile_mN"].as_f64().unwrap();
+    assert_eq!(m.len(), 8, "6 devices and the check's 2 pooled");
+    assert_eq!(m.iter().filter(|r| r["check"] == "true").count(), 2);
     for r in &m {
-        let in_band =
-            num(r, "critical_load_low_mN") < quoted && quoted <= num(r, "critical_load_high_mN");
-        if r["decided_by"] == "dem" {
-            assert!(in_band && !r["dem_loads_mN"].is_empty(), "{r:?}");
-        }
-        // the critical load agrees with every DEM decision on the device
         let c = num(r, "critical_load_mN");
-        if !r["dem_loads_mN"].is_empty() {
-            for (w, ok) in r["dem_loads_mN"]
+        let runs: Vec<(f64, bool)> = if r["dem_loads_mN"].is_empty() {
+            Vec::new()
+        } else {
+            r["dem_loads_mN"]
                 .split(';')
                 .zip(r["dem_superlubric"].split(';'))
-            {
-                let w: f64 = w.parse().unwrap();
-                assert_eq!(ok == "true", c >= w, "{r:?}");
-            }
+                .map(|(w, ok)| (w.parse().unwrap(), ok == "true"))
+                .collect()
+        };
+        for &(w, ok) in &runs {
+            assert!(if ok { c >= w } else { c <= w }, "{r:?}");
+        }
+        if r["decided_by"] == "located" {
+            let a = runs.iter().filter(|x| x.1).map(|x| x.0).fold(0.0, f64::max);
+            let b = runs
+                .iter()
+                .filter(|x| !x.1)
+                .map(|x| x.0)
+                .fold(f64::INFINITY, f64::min);
+            assert!(a == c && b > a && b - a <= 0.0101 * b, "{r:?}");
+        }
+        if r["decided_by"] == "dem" || r["decided_by"] == "located" {
+            assert!(!runs.is_empty(), "{r:?}");
         }
     }
-    // the two strata: the DEM's devices are those decided by it, and the strata's holders
-    // make up the yield at the quoted load
-    let by_dem = m.iter().filter(|r| r["decided_by"] == "dem").count();
-    assert_eq!(s["dem_decided"].as_u64(), Some(by_dem as u64));
-    let held = s["dem_decided_holding"].as_u64().unwrap() as usize;
-    let est_held = s["estimate_decided_holding"].as_u64().unwrap() as usize;
-    assert!(held <= by_dem && est_held <= m.len() - by_dem);
-    let y = s["yield_at_quantile_load"].as_f64().unwrap();
-    assert!((y - (held + est_held) as f64 / m.len() as f64).abs() < 1e-12);
-    // on this scene the path P_max band spans more than a rung: the DEM has work
-    assert!(s["dem_runs"].as_u64().unwrap() >= 1);
+    let located = m.iter().filter(|r| r["decided_by"] == "located").count();
+    assert_eq!(s["located"].as_array().unwrap().len(), located);
+    assert!(s["dem_runs"].as_u64().unwrap() >= 2);
+    assert!(s["dem_runs"].as_u64() <= s["dem_runs_allowed"].as_u64());
+    assert_eq!(s["pooled"].as_u64(), Some(8));
     assert_eq!(s["dem_check_total"].as_u64(), Some(2));
     assert!(s["dem_check_passed"].as_u64().unwrap() <= 2);
     assert_eq!(s["dem_check_interval"].as_array().unwrap().len(), 2);
+    assert!(s["dem_check_consistent"].is_boolean(), "{s}");
+    assert!(!s["pairs"].as_array().unwrap().is_empty(), "{s}");
+    assert!(s["band"]["p_ratio"].is_array(), "{s}");
     assert!(out.join("dem").is_dir());
+}
+
+/// `--no-dem` with a DEM check asked for is a contradiction, refused naming both flags.
+#[test]
+fn a_dem_check_without_the_dem_is_refused() {
+    let d = tmpdir("yield-no-dem-check");
+    let out = d.join("never");
+    let mut a: Vec<&str> = vec!["yield"];
+    a.extend(SMALL);
+    a.extend(["--no-dem", "--dem-check", "5", "--out-dir", out.to_str().unwrap()]);
+    fails_naming(&a, "--dem-check");
+    assert!(!out.exists());
 }
 
 /// Bad input is refused naming the flag, before any work (nothing written).

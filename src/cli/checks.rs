@@ -150,11 +150,3 @@ pub fn seed_list(text: &str, flag: &str) -> Result<Vec<u64>> {
         .collect()
 }
 
-/// A fraction flag in (0, 1).
-pub fn fraction(v: f64, flag: &str) -> Result<f64> {
-    if v.is_finite() && v > 0.0 && v < 1.0 {
-        Ok(v)
-    } else {
-        bail!("`{flag}`: {v} must lie strictly between 0 and 1")
-    }
-}

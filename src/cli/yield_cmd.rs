@@ -13,8 +13,10 @@ use crate::runs::{
     meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
     progress::Reporter,
 };
+use crate::present::yield_words;
 use crate::study::fab_yield::{
-    fab_yield, FabricationModel, OffsetLaw, YieldDem, YieldParams, DEFAULT_RESOLUTION,
+    bound_samples, fab_yield, BadKnob, FabricationModel, OffsetLaw, YieldDem, YieldParams,
+    DEFAULT_RESOLUTION,
 };
 use crate::study::record;
 use crate::study::rows::label;
@@ -26,7 +28,8 @@ use surrogate::units::{gpa_to_pa, n_to_mn, pa_to_gpa, rad_to_deg};
 
 /// Options of `superlube yield`: the fraction of fabricated devices of one design (θ, pull
 /// direction) that stay superlubric at a load, the load that a fraction q of them hold, and
-/// its one-sided confidence bound; the DEM decides the devices the estimate cannot.
+/// its one-sided confidence bound; the DEM locates the critical loads of the devices that set
+/// them.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(flatten)]
@@ -81,7 +84,7 @@ pub struct Args {
     )]
     p_crit_sigma_gpa: f64,
     /// Devices drawn (≥ 1). 59 gives the one-sided 95 %/95 % bound (Wilks).
-    #[arg(long, value_name = "N", default_value_t = 59)]
+    #[arg(long, value_name = "N", default_value_t = bound_samples())]
     samples: usize,
     /// q in (0, 1): the fraction of devices the quoted load must hold.
     #[arg(
@@ -128,18 +131,31 @@ pub struct Args {
     line_deg: Option<f64>,
     #[command(flatten)]
     knobs: FrictionKnobArgs,
-    /// Fresh devices run with the DEM at the quoted load as a check (0: none).
-    #[arg(long = "dem-check", value_name = "N", default_value_t = 10)]
+    /// Fresh devices run with the DEM at the quoted load as a check, then pooled into the
+    /// yield; the quote is lowered until the check agrees with it (0: none).
+    #[arg(
+        long = "dem-check",
+        value_name = "N",
+        default_value_t = 10,
+        conflicts_with = "no_dem"
+    )]
     dem_check: usize,
-    /// Load in mN of the DEM check [default: the quoted load]: compares the yield the
-    /// estimate predicts at another load with the DEM's.
+    /// Load in mN of the DEM check [default: the quoted load]: compares the yield at another
+    /// load with the DEM's.
     #[arg(
         long = "dem-check-load-mn",
         value_name = "MN",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        conflicts_with = "no_dem"
     )]
     dem_check_load_mn: Option<f64>,
-    /// Estimate only: no DEM decisions and no DEM check.
+    /// Validation: after the yield, N fresh devices each get their own critical load from the
+    /// DEM alone (located to --resolution), written to DIR/dem_monte_carlo.csv, and
+    /// DIR/monte_carlo.json sets the quote and its bound against that distribution (its 5th
+    /// percentile, the devices holding each). Costs about 3–6 DEM runs per device.
+    #[arg(long = "dem-monte-carlo", value_name = "N", conflicts_with = "no_dem")]
+    dem_monte_carlo: Option<usize>,
+    /// Estimate only: no DEM runs and no DEM check (the quote is the estimate's).
     #[arg(long = "no-dem")]
     no_dem: bool,
     #[command(flatten)]
@@ -164,21 +180,30 @@ fn law(tol: f64, sigma: Option<f64>, flag: &str) -> Result<OffsetLaw> {
     })
 }
 
+/// The refusal of an out-of-range knob of `superlube yield` (`values`: samples, quantile,
+/// confidence, resolution as given).
+fn bad_knob_words(bad: BadKnob, values: [f64; 4]) -> String {
+    match bad {
+        BadKnob::Samples => format!(
+            "`--samples`: 0 devices; give at least 1 ({} for a 95 %/95 % bound)",
+            bound_samples()
+        ),
+        BadKnob::Quantile => format!("`--quantile`: {} must lie strictly between 0 and 1", values[1]),
+        BadKnob::Confidence => format!("`--confidence`: {} must lie strictly between 0 and 1", values[2]),
+        BadKnob::Resolution => format!(
+            "`--resolution`: {} must lie in (0, 0.5] (a fraction of the load)",
+            values[3]
+        ),
+    }
+}
+
 /// Runs `superlube yield`.
 pub fn run(a: Args) -> Result<()> {
     // every check before any work
-    let samples = match a.samples {
-        0 => bail!("`--samples`: 0 devices; give at least 1 (59 for a 95 %/95 % bound)"),
-        n => n,
-    };
-    let quantile = checks::fraction(a.quantile, "--quantile")?;
-    let confidence = checks::fraction(a.confidence, "--confidence")?;
-    if !(a.resolution.is_finite() && a.resolution > 0.0 && a.resolution <= 0.5) {
-        bail!(
-            "`--resolution`: {} must lie in (0, 0.5] (a fraction of the load)",
-            a.resolution
-        );
+    if let Some(bad) = YieldParams::bad_knob(a.samples, a.quantile, a.confidence, a.resolution) {
+        bail!("{}", bad_knob_words(bad, [a.samples as f64, a.quantile, a.confidence, a.resolution]));
     }
+    let (samples, quantile, confidence) = (a.samples, a.quantile, a.confidence);
     let (theta_tol, direction_tol) = a.tol.checked()?;
     let theta_law = law(theta_tol, a.theta_sigma_deg, "--theta-sigma-deg")?;
     let direction_law = law(
@@ -285,13 +310,8 @@ pub fn run(a: Args) -> Result<()> {
             line,
             friction: knobs,
         },
-        dem: dem.map(|(params, jobs)| YieldDem {
-            params,
-            check: a.dem_check,
-            check_load,
-            jobs,
-            dir: a.out.join("dem"),
-            max_rounds: 4,
+        dem: dem.map(|(params, jobs)| {
+            YieldDem::new(params, (a.dem_check, check_load), jobs, a.out.join("dem"))
         }),
     };
     let rep = Reporter::stderr();
@@ -303,13 +323,16 @@ pub fn run(a: Args) -> Result<()> {
     let o = fab_yield(scene, &params, &rep)?;
     let s = &o.summary;
     rep.note(&format!(
-        "yield: {} devices ({} load estimates), {} DEM run(s) in the band and {} in the check, in {:.1} s",
+        "yield: {} devices and {} of the check ({} load estimates), {} DEM run(s) in all, in {:.1} s",
         s.samples,
+        s.dem_check_total,
         o.estimates,
         s.dem_runs,
-        s.dem_check_total,
         t0.elapsed().as_secs_f64()
     ));
+    if s.dem {
+        rep.note(&format!("yield: {}", yield_words::dem_work(s)));
+    }
     let mut recorded = scene_file(scene);
     recorded.slider.theta_deg = Some(theta_deg);
     let mut outs = Outputs::new(
@@ -353,27 +376,41 @@ pub fn run(a: Args) -> Result<()> {
         None,
     );
     outs.attempt("--out-dir", &png, || yield_png(&png, s));
-    match (s.load_at_quantile_mN, s.load_at_quantile_bound_mN) {
-        (Some(w), Some(b)) => rep.note(&format!(
-            "yield: {:.0} % of devices hold {w} mN; at least {:.0} % hold {b} mN with {:.0} % confidence",
-            100.0 * quantile,
-            100.0 * quantile,
-            100.0 * confidence
-        )),
-        (Some(w), None) => rep.note(&format!(
-            "yield: {:.0} % of devices hold {w} mN; no confidence bound from {} devices (needs ≥ {}: --samples)",
-            100.0 * quantile,
-            s.samples,
-            s.min_samples_for_bound
-        )),
-        _ => rep.note("yield: no device is superlubric at any load"),
+    rep.note(&format!("yield: {}", yield_words::fabricator(s)));
+    if s.load_at_quantile_mN.is_some() && s.load_at_quantile_bound_mN.is_none() {
+        rep.note("yield: more devices give a confidence bound: --samples");
     }
-    if s.dem_check_total > 0 {
+    if let Some(c) = yield_words::check(s) {
+        rep.note(&format!("yield: {c}"));
+    }
+    if let (Some(count), Some(d)) = (a.dem_monte_carlo.filter(|&n| n > 0), &params.dem) {
+        let (rows, mc) = crate::study::fab_yield::monte_carlo::dem_monte_carlo(
+            scene, &params, d, s, count, &rep,
+        )?;
+        outs.write(
+            "--out-dir",
+            Some(&a.out.join("dem_monte_carlo.csv")),
+            csv_bytes(&rows),
+            Some(rows.len() as u64),
+        );
+        outs.write(
+            "--out-dir",
+            Some(&a.out.join("monte_carlo.json")),
+            serde_json::to_vec_pretty(&mc)
+                .map(|mut v| {
+                    v.push(b'\n');
+                    v
+                })
+                .map_err(Into::into),
+            None,
+        );
         rep.note(&format!(
-            "yield: DEM check at {} mN: {}/{} devices superlubric",
-            s.dem_check_load_mN.unwrap_or(0.0),
-            s.dem_check_passed,
-            s.dem_check_total
+            "monte carlo: {} devices by the DEM alone ({} runs): 5th percentile {} mN; {} hold the quote, {} hold the bound",
+            mc.devices,
+            mc.dem_runs,
+            yield_words::load(mc.p5_mN),
+            mc.holding_quote,
+            mc.holding_bound
         ));
     }
     outs.finish()

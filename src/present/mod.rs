@@ -11,3 +11,4 @@
 
 pub mod design_report;
 pub mod inputs;
+pub mod yield_words;

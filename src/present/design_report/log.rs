@@ -208,30 +208,17 @@ pub fn line(e: &Event<'_>) -> Option<String> {
         ),
         Event::DemNothing => "DEM: nothing to confirm (no ranked design)".to_string(),
         Event::Yield { pattern, summary: s } => {
-            let pct = |v: f64| crate::study::rows::label(100.0 * v);
-            let load = match (s.load_at_quantile_mN, s.load_at_quantile_bound_mN) {
-                (Some(w), Some(b)) => format!(
-                    "{} % of {} devices hold {w} mN; at least {} % hold {b} mN with {} % confidence",
-                    pct(s.quantile), s.samples, pct(s.quantile), pct(s.confidence)
-                ),
-                (Some(w), None) => format!(
-                    "{} % of {} devices hold {w} mN (no confidence bound: needs ≥ {} devices)",
-                    pct(s.quantile), s.samples, s.min_samples_for_bound
-                ),
-                _ => format!("none of {} devices is superlubric at any load", s.samples),
-            };
-            let dem = if s.dem_check_total > 0 {
-                format!(
-                    "; {} DEM decision(s), DEM check {}/{} held at {} mN",
-                    s.dem_runs,
-                    s.dem_check_passed,
-                    s.dem_check_total,
-                    s.dem_check_load_mN.unwrap_or(0.0)
-                )
-            } else {
-                String::new()
-            };
-            format!("{pattern}: yield of the answer over fabrication: {load}{dem}")
+            let mut t = format!(
+                "{pattern}: yield of the answer over fabrication: {}",
+                crate::present::yield_words::fabricator(s)
+            );
+            if s.dem {
+                t.push_str(&format!("; {}", crate::present::yield_words::dem_work(s)));
+            }
+            if let Some(c) = crate::present::yield_words::check(s) {
+                t.push_str(&format!("; {c}"));
+            }
+            t
         }
         Event::PCritSweep { pattern } => format!(
             "{pattern}: the best recipe's robust limit at P_crit = {} GPa",

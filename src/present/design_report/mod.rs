@@ -89,10 +89,14 @@ pub fn answer_notes(o: &DesignOutcome, p: &DesignParams) -> Vec<String> {
     o.patterns
         .iter()
         .zip(&o.answers)
-        .map(|(pr, a)| {
-            answer_line(pr, a, &rows, p, top)
-                .replace("**", "")
-                .replacen("- ", "answer: ", 1)
+        .zip(o.yields.iter().chain(std::iter::repeat(&None)))
+        .map(|((pr, a), y)| {
+            let mut line = answer_line(pr, a, &rows, p, top);
+            if let Some(s) = yields::sentence(pr, a, y.as_ref()) {
+                line.push(' ');
+                line.push_str(&s);
+            }
+            line.replace("**", "").replacen("- ", "answer: ", 1)
         })
         .collect()
 }

@@ -6,6 +6,9 @@
 //! "load at q yield" column ([`cell`]) and plots ([`YieldHead`]).
 
 use super::words::fmt_g;
+use crate::present::yield_words;
+use crate::study::design::answer::Answer;
+use crate::study::design::PatternResult;
 use crate::plot::yield_curve::yield_png;
 use crate::runs::output::Outputs;
 use crate::runs::sink::csv_bytes;
@@ -49,15 +52,46 @@ pub fn head(o: &DesignOutcome, p: &DesignParams) -> Option<YieldHead> {
     })
 }
 
+/// The answer's fabrication sentence: what its yield means for a fabricator
+/// ([`yield_words::fabricator`]), its DEM check, and, where the bound lies below the answer's
+/// robust limit, the device the DEM failed lowest (`None` without a yield).
+pub fn sentence(pr: &PatternResult, a: &Answer, y: Option<&AnswerYield>) -> Option<String> {
+    let s = &y?.outcome.summary;
+    let mut t = format!("**Fabrication**: {}", yield_words::fabricator(s));
+    if let Some(c) = yield_words::check(s) {
+        t.push_str(&format!("; {c}"));
+    }
+    let robust = a
+        .index
+        .and_then(|i| pr.ranking.get(i))
+        .map_or(0.0, |c| c.score.superlubric_to_mn);
+    if let (Some(b), Some(f)) = (s.load_at_quantile_bound_mN, &s.lowest_dem_failure) {
+        if b < robust && f.load_mN < robust {
+            t.push_str(&format!(
+                "; below the robust limit {} mN because the DEM fails device {}{} (θ offset {}°, pull offset {}°, substrate seed {}) at {} mN",
+                yield_words::load(robust),
+                f.sample,
+                if f.check { " of the check" } else { "" },
+                fmt_g(f.theta_offset_deg, 3),
+                fmt_g(f.direction_offset_deg, 3),
+                f.seed,
+                yield_words::load(f.load_mN)
+            ));
+        }
+    }
+    t.push('.');
+    Some(t)
+}
+
 /// The answer table's cell of one answer's yield: the load at yield q (mN, 3 significant
 /// digits; the exact figure in `yield_<p>.json`) with its one-sided bound (`1.21 (≥ 1.05)`),
-/// and with the DEM its check (`DEM 9/10 held at 1.21 mN`).
+/// and with the DEM its check (`DEM 9/10 held at 1.21 mN`, `CONTRADICTS` where it does).
 pub fn cell(y: Option<&AnswerYield>) -> String {
     let Some(y) = y else {
         return "–".into();
     };
     let s = &y.outcome.summary;
-    let mn = |w: f64| fmt_g(w, 3);
+    let mn = |w: f64| yield_words::load(w);
     let mut t = match (s.load_at_quantile_mN, s.load_at_quantile_bound_mN) {
         (Some(w), Some(b)) => format!("{} (≥ {})", mn(w), mn(b)),
         (Some(w), None) => format!(
@@ -70,10 +104,15 @@ pub fn cell(y: Option<&AnswerYield>) -> String {
     };
     if s.dem_check_total > 0 {
         t.push_str(&format!(
-            "; DEM {}/{} held at {} mN",
+            "; DEM {}/{} held at {} mN{}",
             s.dem_check_passed,
             s.dem_check_total,
-            mn(s.dem_check_load_mN.unwrap_or(0.0))
+            mn(s.dem_check_load_mN.unwrap_or(0.0)),
+            match s.dem_check_consistent {
+                Some(false) => " (CONTRADICTS the quote)",
+                _ if s.quote_lowered_by_check => " (quote lowered to agree)",
+                _ => "",
+            }
         ));
     }
     t

@@ -112,13 +112,13 @@ pub fn yield_params(
         confidence: y.confidence,
         resolution: y.resolution,
         limit: p.limit(),
-        dem: (!p.confirm.no_dem).then(|| YieldDem {
-            params: p.confirm.dem.clone(),
-            check: y.dem_check,
-            check_load: None,
-            jobs: p.confirm.jobs,
-            dir: dem_dir,
-            max_rounds: 4,
+        dem: (!p.confirm.no_dem).then(|| {
+            YieldDem::new(
+                p.confirm.dem.clone(),
+                (y.dem_check, None),
+                p.confirm.jobs,
+                dem_dir,
+            )
         }),
     }
 }

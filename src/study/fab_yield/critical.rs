@@ -93,6 +93,34 @@ pub struct CriticalLoad {
     /// springs mount in its resonance band (`mount_resonance`); `None`: no such estimate.
     /// A DEM run at or above it lets the DEM choose its model ([`CriticalLoad::resonant_at`]).
     pub resonance_from: Option<f64>,
+    /// Every single-load estimate made, ascending in load: the device's P_max(W) and μ_est(W)
+    /// that a DEM run's margin is transferred through ([`super::margin`]).
+    #[serde(default)]
+    pub probes: Vec<Probe>,
+}
+
+/// One single-load estimate of a device: the load (N) and what the estimate found there.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[allow(non_snake_case)]
+pub struct Probe {
+    /// Load (N).
+    pub load: f64,
+    /// The path's largest P_max (GPa; `None`: no estimate).
+    pub p_max_GPa: Option<f64>,
+    /// μ_est (`None`: no estimate, or locked in).
+    pub mu_est: Option<f64>,
+}
+
+impl Probe {
+    /// The probe of row `r` at load `w` (N); a row with an error has no estimate.
+    fn of(w: f64, r: &FrictionRow) -> Probe {
+        let ok = r.error.is_empty();
+        Probe {
+            load: w,
+            p_max_GPa: r.p_max_GPa.filter(|_| ok),
+            mu_est: r.mu_est.filter(|_| ok),
+        }
+    }
 }
 
 impl CriticalLoad {
@@ -261,6 +289,11 @@ pub fn critical_load(
             .filter(|(_, r)| r.mount_resonance == Some(true))
             .map(|(w, _)| *w)
             .min_by(f64::total_cmp),
+        probes: {
+            let mut v: Vec<Probe> = probes.rows.iter().map(|(w, r)| Probe::of(*w, r)).collect();
+            v.sort_by(|a, b| a.load.total_cmp(&b.load));
+            v
+        },
     })
 }
 

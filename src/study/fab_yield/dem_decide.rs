@@ -1,18 +1,16 @@
-//! Where the estimate cannot decide, the DEM does: the DEM runs of a yield ([`DemDecider`]).
-//!
-//! A device whose band bracket (W_low, W_high] contains the quoted load W_q could hold there or
-//! not, as far as the estimate's measured error goes; it gets one DEM `slide` run at W_q with
-//! the design's protocol and model choice (the design's `--dem-model`; `auto` where the
+//! The DEM runs of a yield ([`DemDecider`]): one DEM `slide` run of one device at one load,
+//! with the design's protocol and model choice (the design's `--dem-model`; `auto` where the
 //! device's estimate lies in the springs mount's resonance band, as the design does for a
-//! recipe outside the validated range; judged at the run's load, [`super::CriticalLoad::resonant_at`]),
-//! on its own substrate, θ and pull direction. The DEM's
-//! verdict ([`dem_superlubric`]) overrules the estimate's: a device that fails at W_q gets a
-//! critical load below W_q, one that holds a critical load of at least W_q. Since that moves
-//! W_q, the decisions repeat at the new W_q until no device in its bracket is left undecided.
+//! recipe outside the validated range; judged at the run's load,
+//! [`super::CriticalLoad::resonant_at`]), on its own substrate, θ and pull direction. Its
+//! verdict is [`dem_superlubric`]; its P_max and μ are kept beside it ([`DemRun`]) for the
+//! design's band ([`super::calibration`]). Which devices run at which loads is
+//! [`super::rounds`]'s choice.
 //!
 //! The runs go through the batch runner ([`crate::study::batch`]): side by side, one thread
 //! each, reused by their input hash (a re-run costs nothing), each in `dir/<name>/`.
 
+use super::device::DemRun;
 use super::fabrication::Sample;
 use crate::runs::progress::Progress;
 use crate::study::batch::{self, run_batch_with, BatchOptions, SlideJob};
@@ -38,8 +36,42 @@ pub struct YieldDem {
     pub jobs: usize,
     /// Folder of the runs.
     pub dir: PathBuf,
-    /// Most rounds of decisions (the quoted load moves when the DEM overrules the estimate).
-    pub max_rounds: usize,
+    /// Most DEM runs for one yield, the check's included ([`DEFAULT_MAX_RUNS`]).
+    pub max_runs: usize,
+}
+
+/// The default most DEM runs of one yield, the check's included.
+pub const DEFAULT_MAX_RUNS: usize = 40;
+
+impl YieldDem {
+    /// The DEM of a yield: runs with `params` (load, α and line set per run), `check` fresh
+    /// devices at `check_load` (N; `None`: the quoted load), `jobs` side by side in `dir`, at
+    /// most [`DEFAULT_MAX_RUNS`] runs. The one constructor of `superlube yield` and the
+    /// design's yield stage.
+    pub fn new(
+        params: DemParams,
+        (check, check_load): (usize, Option<f64>),
+        jobs: usize,
+        dir: PathBuf,
+    ) -> YieldDem {
+        YieldDem {
+            params,
+            check,
+            check_load,
+            jobs,
+            dir,
+            max_runs: DEFAULT_MAX_RUNS,
+        }
+    }
+}
+
+/// One DEM run's record and, when it was not superlubric, why.
+#[derive(Debug, Clone)]
+pub struct Decision {
+    /// The run.
+    pub run: DemRun,
+    /// Why not superlubric (empty when it was).
+    pub why: String,
 }
 
 /// One DEM run asked for: a device at a load (N).
@@ -52,9 +84,6 @@ pub struct Ask<'a> {
     /// then chooses its model itself).
     pub mount_resonance: bool,
 }
-
-/// The DEM verdict of a run: superlubric, or why not.
-pub type DemVerdict = std::result::Result<(), String>;
 
 /// Runs DEM decisions for one design (scene, nominal θ and direction, degrees).
 pub struct DemDecider<'a> {
@@ -93,14 +122,14 @@ impl DemDecider<'_> {
         }
     }
 
-    /// Runs `asks` side by side under the stage `stage` and returns each one's verdict, in
+    /// Runs `asks` side by side under the stage `stage` and returns each one's decision, in
     /// order. Cost: one DEM run each (1–3 s with the design's protocol), none where reused.
     pub fn run(
         &self,
         asks: &[Ask],
         stage: &str,
         progress: &dyn Progress,
-    ) -> Result<Vec<DemVerdict>> {
+    ) -> Result<Vec<Decision>> {
         if asks.is_empty() {
             return Ok(Vec::new());
         }
@@ -119,13 +148,26 @@ impl DemDecider<'_> {
             .iter()
             .zip(&out)
             .map(|(a, o)| {
-                dem_superlubric(
+                let v = dem_superlubric(
                     o.result.as_ref(),
                     o.error.as_deref(),
                     label(n_to_mn(a.load)),
                     a.sample.p_crit,
                     self.mu_superlubric,
-                )
+                );
+                let r = o.result.as_ref();
+                Decision {
+                    run: DemRun {
+                        load: a.load,
+                        superlubric: v.is_ok(),
+                        p_max_GPa: r.map(|r| r.max_p_max_GPa).filter(|p| p.is_finite()),
+                        mu: r
+                            .filter(|r| !r.locked_in)
+                            .map(|r| r.mu)
+                            .filter(|m| m.is_finite()),
+                    },
+                    why: v.err().unwrap_or_default(),
+                }
             })
             .collect())
     }

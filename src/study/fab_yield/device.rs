@@ -1,11 +1,27 @@
 //! One device of a yield as the workflow follows it ([`Device`]): its draw, its estimated
 //! critical load and bracket, and the DEM's decisions on it.
 
+use super::calibration::{Band, BandSource, Pair};
 use super::critical::CriticalLoad;
 use super::fabrication::Sample;
+use super::margin::{estimate_at, transferred_limit, Ratios};
 use super::row::{DecidedBy, YieldRow};
 use crate::study::rows::label;
 use surrogate::units::{m_to_um, n_to_mn, pa_to_gpa};
+
+/// One DEM run on a device: its load, verdict and what it measured.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[allow(non_snake_case)]
+pub struct DemRun {
+    /// Load (N).
+    pub load: f64,
+    /// The DEM's verdict: superlubric.
+    pub superlubric: bool,
+    /// Its largest P_max over every step (GPa; `None`: the run failed).
+    pub p_max_GPa: Option<f64>,
+    /// μ_DEM (`None`: the run failed or locked in).
+    pub mu: Option<f64>,
+}
 
 /// A device: drawn, estimated, and decided by the DEM where asked.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -14,8 +30,23 @@ pub struct Device {
     pub sample: Sample,
     /// The estimate's critical load and bracket.
     pub estimate: CriticalLoad,
-    /// DEM runs on it: (load N, superlubric).
-    pub dem: Vec<(f64, bool)>,
+    /// DEM runs on it.
+    pub dem: Vec<DemRun>,
+    /// Whether it is a device of the DEM check (drawn after the yield's own).
+    #[serde(default)]
+    pub check: bool,
+}
+
+/// What the yield knows of a device's DEM critical load (N): it lies in [low, high]; `located`
+/// when the DEM bracketed it to the resolution (then low = high = the highest load held).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bounds {
+    /// Lowest possible value.
+    pub low: f64,
+    /// Highest possible value.
+    pub high: f64,
+    /// The DEM located it.
+    pub located: bool,
 }
 
 impl Device {
@@ -25,11 +56,38 @@ impl Device {
         self.estimate.low < w && w <= self.estimate.high
     }
 
+    /// The highest load (N) the DEM held.
+    pub fn held(&self) -> Option<f64> {
+        self.dem
+            .iter()
+            .filter(|r| r.superlubric)
+            .map(|r| r.load)
+            .reduce(f64::max)
+    }
+
+    /// The lowest load (N) the DEM failed at.
+    pub fn failed(&self) -> Option<f64> {
+        self.dem
+            .iter()
+            .filter(|r| !r.superlubric)
+            .map(|r| r.load)
+            .reduce(f64::min)
+    }
+
+    /// The DEM critical load (N) when the DEM held at a and failed at b > a with
+    /// b − a ≤ `resolution`·b: a.
+    pub fn located(&self, resolution: f64) -> Option<f64> {
+        match (self.held(), self.failed()) {
+            (Some(a), Some(b)) if a < b && b - a <= resolution * b => Some(a),
+            _ => None,
+        }
+    }
+
     /// What the DEM says of the device at `w` (N): `Some(true)` when it held at a load ≥ `w`,
     /// `Some(false)` when it failed at a load ≤ `w`, `None` when no run decides `w`.
     pub fn dem_at(&self, w: f64) -> Option<bool> {
-        let held = self.dem.iter().any(|&(l, ok)| ok && l >= w);
-        let failed = self.dem.iter().any(|&(l, ok)| !ok && l <= w);
+        let held = self.held().is_some_and(|a| a >= w);
+        let failed = self.failed().is_some_and(|b| b <= w);
         match (held, failed) {
             (true, false) => Some(true),
             (false, true) => Some(false),
@@ -37,44 +95,92 @@ impl Device {
         }
     }
 
-    /// The critical load (N) that agrees with the estimate and with every DEM decision: the
-    /// estimate's W_c, raised to the highest load the DEM held, or lowered below the lowest
-    /// load it failed at (to the highest load known good below it: W_low, a held load, else
-    /// that load less `resolution`).
-    pub fn critical(&self, resolution: f64) -> f64 {
-        let mut wc = self.estimate.load;
-        let held = self
-            .dem
-            .iter()
-            .filter(|d| d.1)
-            .map(|d| d.0)
-            .fold(None, |m: Option<f64>, l| Some(m.map_or(l, |m| m.max(l))));
-        let failed = self
-            .dem
-            .iter()
-            .filter(|d| !d.1)
-            .map(|d| d.0)
-            .fold(None, |m: Option<f64>, l| Some(m.map_or(l, |m| m.min(l))));
-        if let Some(f) = failed {
-            if wc >= f {
-                wc = [Some(self.estimate.low), held]
-                    .into_iter()
-                    .flatten()
-                    .filter(|&x| x < f)
-                    .reduce(f64::max)
-                    .unwrap_or(f * (1.0 - resolution));
-            }
-        }
-        if let Some(h) = held {
-            if wc < h && failed.is_none_or(|f| h < f) {
-                wc = h;
-            }
-        }
-        wc
+    /// P_crit (GPa) of the device.
+    fn p_crit_gpa(&self) -> f64 {
+        pa_to_gpa(self.sample.p_crit)
     }
 
-    /// Its row of `yield.csv`, with `quoted` the final quoted load (N).
-    pub fn row(&self, resolution: f64, quoted: Option<f64>) -> YieldRow {
+    /// The pairs of its DEM runs: each run's P_max and μ beside the estimate's at its load
+    /// (runs without a measurement give none).
+    pub fn pairs(&self) -> Vec<Pair> {
+        self.dem
+            .iter()
+            .filter_map(|r| {
+                let (pe, me) = estimate_at(&self.estimate.probes, r.load);
+                Some(Pair {
+                    sample: self.sample.index,
+                    load_mN: label(n_to_mn(r.load)),
+                    p_max_estimate_GPa: pe?,
+                    p_max_dem_GPa: r.p_max_GPa?,
+                    mu_estimate: me?,
+                    mu_dem: r.mu.filter(|&m| m > 0.0)?,
+                })
+            })
+            .collect()
+    }
+
+    /// The load (N) where the DEM's verdict turns if the DEM is the estimate scaled by `r`
+    /// ([`transferred_limit`]).
+    pub fn limit_with(&self, r: Ratios, mu_sl: f64) -> f64 {
+        transferred_limit(&self.estimate.probes, r, self.p_crit_gpa(), mu_sl)
+    }
+
+    /// The predicted DEM critical load (N): the margin of its own DEM run nearest to the
+    /// band's prediction transferred through its estimate, else the band's bias-corrected
+    /// centre.
+    pub fn predicted(&self, band: &Band, mu_sl: f64) -> f64 {
+        let centre = self.limit_with(band.centre(), mu_sl);
+        self.pairs()
+            .iter()
+            .map(|p| (p, n_to_mn(centre) - p.load_mN))
+            .filter(|(p, _)| p.p_ratio().is_finite() && p.mu_ratio().is_finite())
+            .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+            .map_or(centre, |(p, _)| self.limit_with(p.ratios(), mu_sl))
+    }
+
+    /// Where the device's DEM critical load can lie (N): the band's bracket (the estimate's
+    /// own [W_low, W_high] for the global band; the design's worst and best ratios transferred
+    /// through its estimate otherwise), narrowed by its DEM runs (a held load is a lower
+    /// bound, a failed one an upper bound; a failure below the band drops the band's lower
+    /// edge).
+    pub fn bounds(&self, band: &Band, mu_sl: f64, resolution: f64) -> Bounds {
+        if let Some(v) = self.located(resolution) {
+            return Bounds {
+                low: v,
+                high: v,
+                located: true,
+            };
+        }
+        let (mut low, mut high) = match band.source {
+            BandSource::Global => (self.estimate.low, self.estimate.high),
+            BandSource::Design => {
+                let lo = self.limit_with(band.worst(), mu_sl);
+                (lo, self.limit_with(band.best(), mu_sl).max(lo))
+            }
+        };
+        if let Some(b) = self.failed() {
+            if low >= b {
+                low = 0.0;
+            }
+            high = high.min(b);
+        }
+        if let Some(a) = self.held() {
+            low = low.max(a);
+            high = high.max(a);
+            if let Some(b) = self.failed() {
+                high = high.min(b).max(a);
+            }
+        }
+        Bounds {
+            low,
+            high,
+            located: false,
+        }
+    }
+
+    /// Its row of `yield.csv`: `critical` its critical load (N) as the yield counts it, and
+    /// who set it.
+    pub fn row(&self, critical: f64, decided_by: DecidedBy) -> YieldRow {
         let s = &self.sample;
         let e = &self.estimate;
         let mn = |w: f64| label(n_to_mn(w));
@@ -83,27 +189,24 @@ impl Device {
                 .as_ref()
                 .map(|r| label(m_to_um(2.0 * r.iter().copied().fold(init, f))))
         };
-        let decided_by = match quoted {
-            Some(w) if self.in_band(w) && self.dem_at(w).is_some() => DecidedBy::Dem,
-            _ => DecidedBy::Estimate,
-        };
         let join = |v: Vec<String>| v.join(";");
         YieldRow {
             sample: s.index,
+            check: self.check,
             theta_offset_deg: s.theta_offset_deg,
             direction_offset_deg: s.direction_offset_deg,
             seed: s.substrate_seed,
             p_crit_GPa: label(pa_to_gpa(s.p_crit)),
             sphere_diameter_min_um: diam(f64::min, f64::INFINITY),
             sphere_diameter_max_um: diam(f64::max, 0.0),
-            critical_load_mN: mn(self.critical(resolution)),
+            critical_load_mN: mn(critical),
             critical_load_low_mN: mn(e.low),
             critical_load_high_mN: mn(e.high),
             critical_load_estimate_mN: mn(e.load),
             limited_by: e.limited_by,
             decided_by,
-            dem_loads_mN: join(self.dem.iter().map(|d| mn(d.0).to_string()).collect()),
-            dem_superlubric: join(self.dem.iter().map(|d| d.1.to_string()).collect()),
+            dem_loads_mN: join(self.dem.iter().map(|d| mn(d.load).to_string()).collect()),
+            dem_superlubric: join(self.dem.iter().map(|d| d.superlubric.to_string()).collect()),
             estimates: e.estimates,
         }
     }
@@ -114,7 +217,7 @@ mod tests {
     use super::*;
     use crate::study::fab_yield::critical::Limit;
 
-    fn device(low: f64, load: f64, high: f64, dem: Vec<(f64, bool)>) -> Device {
+    fn device(low: f64, load: f64, high: f64, dem: &[(f64, bool)]) -> Device {
         Device {
             sample: Sample {
                 index: 0,
@@ -132,29 +235,46 @@ mod tests {
                 censored: false,
                 estimates: 3,
                 resonance_from: None,
+                probes: Vec::new(),
             },
-            dem,
+            dem: dem
+                .iter()
+                .map(|&(load, superlubric)| DemRun {
+                    load,
+                    superlubric,
+                    p_max_GPa: None,
+                    mu: None,
+                })
+                .collect(),
+            check: false,
         }
     }
 
-    /// The DEM moves the critical load to its side of every run: a failure at 1.5 below the
-    /// estimate's 1.6 lowers it to W_low (1.2); a success at 1.7 above it raises it there.
+    /// The DEM narrows the bracket to its side of every run: a failure at 1.5 caps it there, a
+    /// success at 1.7 raises its floor; a failure below W_low drops the band's floor; a held
+    /// and a failed run within the resolution locate it at the held load.
     #[test]
-    fn the_dem_overrules_the_estimate_in_the_band() {
-        let d = device(1.2, 1.6, 1.9, vec![]);
+    fn the_dem_narrows_the_bracket() {
+        let g = Band::global();
+        let b = |d: &Device| {
+            let b = d.bounds(&g, 0.02, 0.01);
+            (b.low, b.high, b.located)
+        };
+        let d = device(1.2, 1.6, 1.9, &[]);
         assert!(d.in_band(1.5) && d.in_band(1.9) && !d.in_band(1.2) && !d.in_band(2.0));
-        assert_eq!(d.critical(0.01), 1.6);
-        let failed = device(1.2, 1.6, 1.9, vec![(1.5, false)]);
-        assert_eq!(failed.critical(0.01), 1.2);
+        assert_eq!(b(&d), (1.2, 1.9, false));
+        let failed = device(1.2, 1.6, 1.9, &[(1.5, false)]);
+        assert_eq!(b(&failed), (1.2, 1.5, false));
         assert_eq!(failed.dem_at(1.5), Some(false));
         assert_eq!(failed.dem_at(1.4), None);
-        let held = device(1.2, 1.6, 1.9, vec![(1.7, true)]);
-        assert_eq!(held.critical(0.01), 1.7);
+        let held = device(1.2, 1.6, 1.9, &[(1.7, true)]);
+        assert_eq!(b(&held), (1.7, 1.9, false));
         assert_eq!(held.dem_at(1.65), Some(true));
-        // a failure below W_low: just below the failed load
-        let odd = device(1.2, 1.6, 1.9, vec![(1.0, false)]);
-        assert!((odd.critical(0.01) - 0.99).abs() < 1e-12);
-        assert_eq!(held.row(0.01, Some(1.7)).decided_by, DecidedBy::Dem);
-        assert_eq!(d.row(0.01, Some(1.0)).decided_by, DecidedBy::Estimate);
+        let odd = device(1.2, 1.6, 1.9, &[(1.0, false)]);
+        assert_eq!(b(&odd), (0.0, 1.0, false));
+        let located = device(1.2, 1.6, 1.9, &[(1.4, false), (1.39, true)]);
+        assert_eq!(b(&located), (1.39, 1.39, true));
+        let wide = device(1.2, 1.6, 1.9, &[(1.4, false), (1.3, true)]);
+        assert_eq!(b(&wide), (1.3, 1.4, false));
     }
 }

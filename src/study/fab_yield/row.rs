@@ -1,18 +1,27 @@
 //! The rows and the summary of a yield, in user units: [`YieldRow`] (`yield.csv`, one per
 //! device), [`CurvePoint`] and [`YieldSummary`] (`summary.json`).
 
+use super::calibration::{Band, Pair};
 use super::critical::Limit;
 use super::fabrication::FabricationRecord;
 use serde::{Deserialize, Serialize};
 
-/// Who decided whether a device holds at the quoted load.
+/// Who set a device's critical load as the yield counts it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum DecidedBy {
-    /// The estimate: the quoted load lies outside the device's band bracket.
+    /// The estimate (its W_c, bias-corrected by the design's band): without the DEM, or where
+    /// its band's lower edge lies above the loads that set the quote and its bound, so that it
+    /// cannot set them.
     Estimate,
-    /// A DEM run at the quoted load (the bracket contained it).
+    /// A DEM run held it at or above the loads that set the quote and its bound (its value:
+    /// the estimate's, kept inside what the DEM showed).
     Dem,
+    /// The DEM located its critical load to the resolution (held at it, failed just above).
+    Located,
+    /// It could set the quote or its bound but the DEM runs allowed were spent: kept at the
+    /// lower edge of what is known (conservative).
+    Undecided,
 }
 
 /// One fabricated device of `yield.csv`.
@@ -21,6 +30,8 @@ pub enum DecidedBy {
 pub struct YieldRow {
     /// Index of the device (its sampling stream).
     pub sample: usize,
+    /// Whether it is a device of the DEM check (fresh, DEM-decided, pooled into the yield).
+    pub check: bool,
     /// θ offset from the nominal (degrees).
     pub theta_offset_deg: f64,
     /// Pull-direction offset from the nominal, substrate frame (degrees).
@@ -45,7 +56,7 @@ pub struct YieldRow {
     /// What ends superlubricity above the estimate's W_c: path, friction, error, none (above
     /// the ladder's top).
     pub limited_by: Limit,
-    /// Who decided the device at the quoted load: estimate or dem.
+    /// Who set its critical load: estimate, dem, located or undecided ([`DecidedBy`]).
     pub decided_by: DecidedBy,
     /// Loads (mN) of the device's DEM runs, `;`-separated (empty: none).
     pub dem_loads_mN: String,
@@ -87,6 +98,24 @@ pub struct DemCheckRun {
     pub why: String,
 }
 
+/// The device the DEM failed at the lowest load.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[allow(non_snake_case)]
+pub struct DemFailure {
+    /// Index of the device.
+    pub sample: usize,
+    /// Whether it is a device of the check.
+    pub check: bool,
+    /// The load it failed at (mN).
+    pub load_mN: f64,
+    /// θ offset (degrees).
+    pub theta_offset_deg: f64,
+    /// Pull-direction offset (degrees).
+    pub direction_offset_deg: f64,
+    /// Substrate seed.
+    pub seed: u64,
+}
+
 /// `summary.json`: the answer of a yield.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[allow(non_snake_case)]
@@ -101,8 +130,11 @@ pub struct YieldSummary {
     pub quantile: f64,
     /// γ: the confidence of the intervals and of the bound.
     pub confidence: f64,
-    /// Devices sampled.
+    /// Devices sampled for the yield (the check's come on top, `dem_check_total`).
     pub samples: usize,
+    /// Devices the quote and its bound are taken over: `samples` and the check's (pooled:
+    /// the check's devices are fresh draws of the same model, decided by the DEM).
+    pub pooled: usize,
     /// Bisection resolution (fraction of the load).
     pub resolution: f64,
     /// The load held by a fraction q of the devices (mN; `null` without samples).
@@ -114,24 +146,37 @@ pub struct YieldSummary {
     pub bound_rank: Option<usize>,
     /// Fewest samples for a bound at q and γ.
     pub min_samples_for_bound: usize,
-    /// Fraction of devices holding the quoted load (estimate and DEM decisions).
+    /// Fraction of the pooled devices holding the quoted load.
     pub yield_at_quantile_load: Option<f64>,
     /// Its Clopper–Pearson interval [low, high].
     pub yield_at_quantile_load_interval: Option<[f64; 2]>,
-    /// Devices whose band bracket contained the quoted load (decided by the DEM).
+    /// The quote is the critical load of rank `pooled − ⌈q·pooled⌉ + 1` from the bottom and
+    /// the bound that of `bound_rank`: only the lowest `setting_ranks` critical loads set them.
+    pub setting_ranks: usize,
+    /// The `setting_ranks`-th lowest upper end of what is known of the devices' DEM critical
+    /// loads (mN; `null` without the DEM): a device whose lower end lies at or above it
+    /// cannot be among the lowest `setting_ranks`, so it needs no DEM location.
+    pub threshold_mN: Option<f64>,
+    /// The devices whose DEM critical load the DEM located (sample indices): those that could
+    /// set the quote or its bound.
+    pub located: Vec<usize>,
+    /// Devices with at least one DEM run.
     pub dem_decided: usize,
-    /// Of those, the devices the DEM held at the quoted load. The yield there is
-    /// (`estimate_decided_holding` + this) / `samples`: the DEM's stratum is a census of the
-    /// band (every device in it is run), so the pooled count is binomial and its
-    /// Clopper–Pearson interval exact.
-    pub dem_decided_holding: usize,
-    /// Devices the estimate decided (outside the band at the quoted load) that hold there.
-    pub estimate_decided_holding: usize,
-    /// DEM runs made for the decisions (over every round).
+    /// Devices that could set the quote or its bound when the DEM runs allowed were spent
+    /// (kept at the lower end of what is known: the quote is then conservative).
+    pub undecided: usize,
+    /// DEM runs made, the check's included.
     pub dem_runs: usize,
-    /// Rounds of DEM decisions (the quoted load moves when the DEM overrules the estimate).
+    /// Most DEM runs allowed, the check's included.
+    pub dem_runs_allowed: usize,
+    /// Rounds of DEM runs (each round's runs go side by side).
     pub dem_rounds: usize,
-    /// Load of the DEM check (mN; the quoted load unless asked otherwise; `null`: no check).
+    /// The estimate's band for this design, calibrated on `pairs` ([`Band`]).
+    pub band: Band,
+    /// Every DEM run beside the estimate at the same device and load.
+    pub pairs: Vec<Pair>,
+    /// Load of the DEM check (mN; the quoted load before the check's devices were pooled,
+    /// unless asked otherwise; `null`: no check).
     pub dem_check_load_mN: Option<f64>,
     /// Devices of the DEM check that held.
     pub dem_check_passed: usize,
@@ -139,8 +184,17 @@ pub struct YieldSummary {
     pub dem_check_total: usize,
     /// Clopper–Pearson interval of the check's fraction (`null` without a check).
     pub dem_check_interval: Option<[f64; 2]>,
+    /// Whether the check agrees with the final quote: the check's devices holding it are
+    /// not too few for q at confidence γ (the upper end of their Clopper–Pearson interval
+    /// is ≥ q); at a check load of its own, whether that interval holds the yield there
+    /// (`null` without a check).
+    pub dem_check_consistent: Option<bool>,
+    /// Whether the quote was lowered until its check agreed with it.
+    pub quote_lowered_by_check: bool,
     /// The check's runs.
     pub dem_check_runs: Vec<DemCheckRun>,
+    /// The device the DEM failed at the lowest load (`null`: none failed).
+    pub lowest_dem_failure: Option<DemFailure>,
     /// Whether the DEM ran (`false` with no DEM asked).
     pub dem: bool,
     /// Devices superlubric at every rung of the ladder (their W_c is its top: a lower bound).

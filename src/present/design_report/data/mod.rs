@@ -345,7 +345,15 @@ impl ReportData {
                 .patterns
                 .iter()
                 .zip(&o.answers)
-                .map(|(pr, a)| super::top::paragraph(pr, a, p))
+                .zip(o.yields.iter().chain(std::iter::repeat(&None)))
+                .map(|((pr, a), y)| {
+                    let mut t = super::top::paragraph(pr, a, p);
+                    if let Some(s) = super::yields::sentence(pr, a, y.as_ref()) {
+                        t.push(' ');
+                        t.push_str(&s);
+                    }
+                    t
+                })
                 .collect(),
             runs: super::top::answer_runs(o, p),
             tolerance: if tolerance_box(p).is_point() {

@@ -1,0 +1,122 @@
+//! Steps 3–4 of a yield with the DEM ([`run`]): the DEM rounds over the yield's devices, the
+//! check on fresh devices at the quoted load, and the rounds again over the pool.
+//!
+//! The runs allowed (`max_runs`, the check's included) are shared: the yield's own rounds get
+//! `max_runs − check`, the check its `check` runs, the rounds over the pool what is left. The
+//! check's devices are drawn after the yield's own (samples `samples..samples + check`),
+//! estimated like them, run at the quoted load, then pooled: a device that fails there is one
+//! of the lowest critical loads of the pool and gets located like any other.
+//! Cost: at most `max_runs` DEM runs and `check` devices' estimates.
+
+use super::dem_decide::{DemDecider, YieldDem};
+use super::device::Device;
+use super::rounds::{setting_ranks, DemOracle, Knowledge, Rounds};
+use super::{estimate_range, summary, YieldParams};
+use crate::runs::progress::Progress;
+use anyhow::Result;
+use surrogate::Scene;
+
+/// What the DEM part of a yield did.
+#[derive(Debug, Clone)]
+pub struct DemPart {
+    /// DEM runs made, the check's included.
+    pub runs: usize,
+    /// Most runs allowed.
+    pub allowed: usize,
+    /// Rounds made.
+    pub rounds: usize,
+    /// The load of the check (N; `None`: no check ran).
+    pub check_load: Option<f64>,
+    /// Whether the check ran at a load of its own (not the quote).
+    pub check_load_given: bool,
+    /// Why each check device was not superlubric at the check load (empty where it was), in
+    /// device order.
+    pub check_why: Vec<String>,
+    /// The setting ranks over the final pool.
+    pub k: usize,
+}
+
+/// How many DEM runs a yield may make and where its check goes.
+#[derive(Debug, Clone, Copy)]
+pub struct Plan {
+    /// Fresh devices of the check (0: none).
+    pub check: usize,
+    /// The check's load (N; `None`: the quoted load).
+    pub check_load: Option<f64>,
+    /// Most DEM runs, the check's included.
+    pub max_runs: usize,
+}
+
+/// Runs the DEM part of the yield `p` (its DEM `d`) on `devices` (the yield's own, estimated),
+/// appending the check's devices to them (module docs).
+pub fn run(
+    scene: &Scene,
+    p: &YieldParams,
+    d: &YieldDem,
+    devices: &mut Vec<Device>,
+    progress: &dyn Progress,
+) -> Result<DemPart> {
+    let decider = DemDecider {
+        scene,
+        theta_deg: p.theta_deg,
+        direction_deg: p.direction_deg,
+        mu_superlubric: p.limit.mu_superlubric,
+        dem: d,
+    };
+    let plan = Plan {
+        check: d.check,
+        check_load: d.check_load,
+        max_runs: d.max_runs,
+    };
+    let range = p.samples..p.samples + d.check;
+    let fresh = || estimate_range(scene, p, range, "yield: check devices", progress);
+    run_with(&decider, p, plan, devices, fresh, progress)
+}
+
+/// [`run`] with the DEM `oracle` and the check's devices from `fresh` (estimated, drawn after
+/// the yield's own).
+pub fn run_with(
+    oracle: &dyn DemOracle,
+    p: &YieldParams,
+    plan: Plan,
+    devices: &mut Vec<Device>,
+    fresh: impl FnOnce() -> Result<Vec<Device>>,
+    progress: &dyn Progress,
+) -> Result<DemPart> {
+    let mu_sl = p.limit.mu_superlubric;
+    let mut rounds = Rounds {
+        decider: oracle,
+        mu_sl,
+        resolution: p.resolution,
+        runs: 0,
+        rounds: 0,
+    };
+    let allowed = plan.max_runs.max(plan.check);
+    let ranks = |n: usize| setting_ranks(n, p.quantile, p.confidence);
+    let n = devices.len();
+    rounds.run(devices, ranks(n), allowed - plan.check, progress)?;
+    let mut check_why = Vec::new();
+    let mut check_load = None;
+    if plan.check > 0 {
+        let kn = Knowledge::of(devices, ranks(n), mu_sl, p.resolution);
+        let quoted = summary::quote(&kn.values(devices, mu_sl, p.resolution), p.quantile);
+        if let Some(w) = plan.check_load.or(quoted) {
+            let start = devices.len();
+            devices.extend(fresh()?);
+            let asks: Vec<(usize, f64)> = (start..devices.len()).map(|i| (i, w)).collect();
+            check_why = rounds.execute(devices, &asks, "yield: DEM check", progress)?;
+            check_load = Some(w);
+            let k = ranks(devices.len());
+            rounds.run(devices, k, allowed, progress)?;
+        }
+    }
+    Ok(DemPart {
+        runs: rounds.runs,
+        allowed,
+        rounds: rounds.rounds,
+        check_load,
+        check_load_given: plan.check_load.is_some(),
+        check_why,
+        k: ranks(devices.len()),
+    })
+}

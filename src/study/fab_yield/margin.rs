@@ -1,0 +1,124 @@
+//! A DEM run's margin transferred through one device's estimate ([`Ratios`],
+//! [`transferred_limit`]).
+//!
+//! A DEM run at load W on a device measures P_DEM (its largest P_max over every step) and μ_DEM;
+//! the device's estimate at the same load gives P_est(W) and μ_est(W), interpolated between
+//! its single-load probes ([`super::critical::Probe`]). Their ratios ρ = P_DEM/P_est and
+//! m = μ_est/μ_DEM (the quantities of the verdict band, `P_RATIO` and `MU_RATIO`) vary slowly
+//! with the load, so the load at which the DEM's verdict turns is where the estimate, scaled by
+//! them, crosses a threshold:
+//!
+//!   W* = the first W with ρ·P_est(W) > P_crit or μ_est(W)/m ≥ μ_sl,
+//!
+//! found by linear interpolation between the probes bracketing the crossing. The same function
+//! with the band's worst and best ratios gives the bounds of a device's DEM critical load.
+//! Cost: O(probes) per call.
+
+use super::critical::Probe;
+
+/// Ratios that map the estimate onto the DEM at the same load: P_DEM = `p`·P_est and
+/// μ_DEM = μ_est/`mu`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ratios {
+    /// ρ = P_DEM/P_est.
+    pub p: f64,
+    /// m = μ_est/μ_DEM.
+    pub mu: f64,
+}
+
+impl Ratios {
+    /// The identity (the estimate as it is).
+    pub const ONE: Ratios = Ratios { p: 1.0, mu: 1.0 };
+}
+
+/// Linear interpolation of `f` over the `probes` (ascending load) at `w` (N); flat beyond the
+/// ends; `None` where a bracketing probe has no value.
+fn interpolate(probes: &[Probe], w: f64, f: impl Fn(&Probe) -> Option<f64>) -> Option<f64> {
+    let k = probes.partition_point(|p| p.load < w);
+    match (k.checked_sub(1).map(|i| &probes[i]), probes.get(k)) {
+        (Some(a), Some(b)) if b.load > a.load => {
+            let (fa, fb) = (f(a)?, f(b)?);
+            Some(fa + (fb - fa) * (w - a.load) / (b.load - a.load))
+        }
+        (_, Some(b)) => f(b),
+        (Some(a), None) => f(a),
+        (None, None) => None,
+    }
+}
+
+/// The estimate's P_max (GPa) and μ_est at `w` (N), interpolated between `probes`.
+pub fn estimate_at(probes: &[Probe], w: f64) -> (Option<f64>, Option<f64>) {
+    (
+        interpolate(probes, w, |p| p.p_max_GPa),
+        interpolate(probes, w, |p| p.mu_est),
+    )
+}
+
+/// How far probe `p` is past the thresholds under `r`: max(ρ·P/P_crit, μ/(m·μ_sl)) − 1
+/// (> 0: not superlubric; +∞ without an estimate).
+fn excess(p: &Probe, r: Ratios, p_crit_gpa: f64, mu_sl: f64) -> f64 {
+    match (p.p_max_GPa, p.mu_est) {
+        (Some(pm), Some(mu)) => (r.p * pm / p_crit_gpa).max(mu / (r.mu * mu_sl)) - 1.0,
+        _ => f64::INFINITY,
+    }
+}
+
+/// The load (N) up to which the device of `probes` (ascending) stays superlubric when the
+/// DEM is the estimate scaled by `r` (module docs): 0 when its lowest probe already fails,
+/// its highest probe's load when none fails. Cost: O(probes).
+pub fn transferred_limit(probes: &[Probe], r: Ratios, p_crit_gpa: f64, mu_sl: f64) -> f64 {
+    let g: Vec<f64> = probes
+        .iter()
+        .map(|p| excess(p, r, p_crit_gpa, mu_sl))
+        .collect();
+    let Some(k) = g.iter().position(|&x| x >= 0.0) else {
+        return probes.last().map_or(0.0, |p| p.load);
+    };
+    if k == 0 {
+        return 0.0;
+    }
+    let (a, b) = (&probes[k - 1], &probes[k]);
+    if !g[k].is_finite() {
+        return a.load;
+    }
+    a.load + (b.load - a.load) * (-g[k - 1]) / (g[k] - g[k - 1])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn probe(load: f64, p: f64, mu: f64) -> Probe {
+        Probe {
+            load,
+            p_max_GPa: Some(p),
+            mu_est: Some(mu),
+        }
+    }
+
+    /// P_max linear in W (1 GPa per N from 3 GPa at 1 N): P_crit 4 GPa is crossed at 2 N, and
+    /// at 1.5 N when the DEM's P_max is 4/3.5 of the estimate's; μ crosses first when m is low.
+    #[test]
+    fn the_crossing_moves_with_the_ratio() {
+        let probes: Vec<Probe> = (0..=4)
+            .map(|i| {
+                let w = 1.0 + 0.5 * i as f64;
+                probe(w, 2.0 + w, 0.01)
+            })
+            .collect();
+        let w = transferred_limit(&probes, Ratios::ONE, 4.0, 0.02);
+        assert!((w - 2.0).abs() < 1e-12, "{w}");
+        let w = transferred_limit(&probes, Ratios { p: 4.0 / 3.5, mu: 1.0 }, 4.0, 0.02);
+        assert!((w - 1.5).abs() < 1e-12, "{w}");
+        // μ_DEM = 2 μ_est = 0.02 everywhere: the rule fails at the first probe
+        let w = transferred_limit(&probes, Ratios { p: 1.0, mu: 0.5 }, 4.0, 0.02);
+        assert_eq!(w, 0.0);
+        // an error probe ends it at the last good one
+        let mut e = probes.clone();
+        e[2].p_max_GPa = None;
+        let w = transferred_limit(&e, Ratios { p: 0.5, mu: 1.0 }, 4.0, 0.02);
+        assert_eq!(w, 1.5);
+        let (p, mu) = estimate_at(&probes, 1.25);
+        assert!((p.unwrap() - 3.25).abs() < 1e-12 && mu == Some(0.01));
+    }
+}
