@@ -6,8 +6,8 @@
 #           `cargo build --release`)
 #   OUT.md  the page to write (default: docs/performance.md)
 # Environment: PERF_COMMIT  the commit BIN was built from, when not this checkout's HEAD.
-# About 600 s of CPU in all (the default design with its DEM runs is half of it): some 10 min on
-# an idle 2-core machine.
+# About 800 s of CPU in all (the default design with its DEM runs, with and without the yield, is
+# half of it): some 14 min on an idle 2-core machine.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 invocation="scripts/performance.sh${*:+ $*}"
@@ -57,7 +57,7 @@ measure "tolerance map: 41 θ × 21 pull directions × 11 loads (the default)" -
     tolerance --pattern square-tri --theta-deg 0 --alpha-deg 90 --out-dir tol
 measure "yield of one answer, the estimate's part: 59 devices (square-tri θ = 7.3°, pull 82.53°, σ_h 0.002 µm)" -- \
     yield --pattern square-tri --sigma-h-um 0.002 --theta-deg 7.3 --direction-deg 82.53 --no-dem --out-dir y
-measure "yield of one answer with its DEM: the same, the DEM deciding the devices in the band at the quoted load and 10 fresh devices as a check (2 + 2 + 60 µs runs, 2 side by side)" -- \
+measure "yield of one answer with its DEM: the same, the DEM locating the devices that set the quote and its bound, and 10 fresh devices as a check pooled in (2 + 2 + 60 µs runs, 2 side by side, at most 40)" -- \
     yield --pattern square-tri --sigma-h-um 0.002 --theta-deg 7.3 --direction-deg 82.53 --out-dir y
 for m in reduced full; do
     measure "Tier 3 DEM, the study's protocol 10 + 10 + 300 µs, --model $m: superlubric scene (square-tri 0°, α = 90°, 1.4 mN)" -- \
@@ -67,11 +67,13 @@ for m in reduced full; do
     measure "Tier 3 DEM, the same, --model $m: coating-failure scene (tri-tri 30°, α = 0°, 2.45 mN)" -- \
         slide --pattern tri-tri --theta-deg 30 --alpha-deg 0 --load-mn 2.45 --model "$m" --out s.csv --json s.json
 done
-measure "design, the default, surrogate tiers only (2 patterns, tolerance ±0.1° × ±0.5°)" -- \
+measure "design, the default, surrogate tiers only (2 patterns, tolerance ±0.1° × ±0.5°), each answer's yield by the estimate" -- \
     design --no-dem --out-dir d
-measure "design, the default, nominal (no tolerance)" -- \
-    design --no-dem --theta-tol-deg 0 --direction-tol-deg 0 --out-dir d
-measure "design, the default, with its DEM confirmation (fresh folder)" -- \
+measure "design, the default, nominal (no tolerance), no yield" -- \
+    design --no-dem --no-yield --theta-tol-deg 0 --direction-tol-deg 0 --out-dir d
+measure "design, the default with its DEM confirmation, no yield (fresh folder)" -- \
+    design --no-yield --out-dir d
+measure "design, the default with its DEM confirmation and each answer's yield with its DEM (fresh folder)" -- \
     design --out-dir d
 
 lammps="\`lmp\` was not found on this machine: no LAMMPS figure."

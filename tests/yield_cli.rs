@@ -254,7 +254,13 @@ fn a_dem_check_without_the_dem_is_refused() {
     let out = d.join("never");
     let mut a: Vec<&str> = vec!["yield"];
     a.extend(SMALL);
-    a.extend(["--no-dem", "--dem-check", "5", "--out-dir", out.to_str().unwrap()]);
+    a.extend([
+        "--no-dem",
+        "--dem-check",
+        "5",
+        "--out-dir",
+        out.to_str().unwrap(),
+    ]);
     fails_naming(&a, "--dem-check");
     assert!(!out.exists());
 }

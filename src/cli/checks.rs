@@ -149,4 +149,3 @@ pub fn seed_list(text: &str, flag: &str) -> Result<Vec<u64>> {
         })
         .collect()
 }
-

@@ -4,19 +4,21 @@
 use super::design::STUDY_LOADS;
 use super::design_dem_args::DesignDemArgs;
 use super::friction_args::FrictionKnobArgs;
+use super::scene_args::Resolved;
 use super::tolerance_args::ToleranceArgs;
 use super::verdict_args::VerdictArgs;
 use super::{checks, SceneArgs};
 use crate::plot::yield_curve::yield_png;
+use crate::present::yield_words;
 use crate::runs::sink::csv_bytes;
 use crate::runs::{
     meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
     progress::Reporter,
 };
-use crate::present::yield_words;
+use crate::study::fab_yield::monte_carlo::dem_monte_carlo;
 use crate::study::fab_yield::{
     bound_samples, fab_yield, BadKnob, FabricationModel, OffsetLaw, YieldDem, YieldParams,
-    DEFAULT_RESOLUTION,
+    YieldSummary, DEFAULT_RESOLUTION,
 };
 use crate::study::record;
 use crate::study::rows::label;
@@ -188,8 +190,14 @@ fn bad_knob_words(bad: BadKnob, values: [f64; 4]) -> String {
             "`--samples`: 0 devices; give at least 1 ({} for a 95 %/95 % bound)",
             bound_samples()
         ),
-        BadKnob::Quantile => format!("`--quantile`: {} must lie strictly between 0 and 1", values[1]),
-        BadKnob::Confidence => format!("`--confidence`: {} must lie strictly between 0 and 1", values[2]),
+        BadKnob::Quantile => format!(
+            "`--quantile`: {} must lie strictly between 0 and 1",
+            values[1]
+        ),
+        BadKnob::Confidence => format!(
+            "`--confidence`: {} must lie strictly between 0 and 1",
+            values[2]
+        ),
         BadKnob::Resolution => format!(
             "`--resolution`: {} must lie in (0, 0.5] (a fraction of the load)",
             values[3]
@@ -197,16 +205,12 @@ fn bad_knob_words(bad: BadKnob, values: [f64; 4]) -> String {
     }
 }
 
-/// Runs `superlube yield`.
-pub fn run(a: Args) -> Result<()> {
-    // every check before any work
-    if let Some(bad) = YieldParams::bad_knob(a.samples, a.quantile, a.confidence, a.resolution) {
-        bail!("{}", bad_knob_words(bad, [a.samples as f64, a.quantile, a.confidence, a.resolution]));
-    }
-    let (samples, quantile, confidence) = (a.samples, a.quantile, a.confidence);
+/// The fabrication model of `a` on `scene`: the offset laws, the scatters (refused where a
+/// ±3σ draw leaves no room) and the seeds never drawn.
+fn fabrication(a: &Args, scene: &surrogate::Scene) -> Result<FabricationModel> {
     let (theta_tol, direction_tol) = a.tol.checked()?;
-    let theta_law = law(theta_tol, a.theta_sigma_deg, "--theta-sigma-deg")?;
-    let direction_law = law(
+    let theta = law(theta_tol, a.theta_sigma_deg, "--theta-sigma-deg")?;
+    let direction = law(
         direction_tol,
         a.direction_sigma_deg,
         "--direction-sigma-deg",
@@ -216,36 +220,10 @@ pub fn run(a: Args) -> Result<()> {
         a.p_crit_sigma_gpa,
         "--p-crit-sigma-gpa",
     )?);
-    if !a.direction_deg.is_finite() {
-        bail!(
-            "`--direction-deg`: {} is not a finite angle",
-            a.direction_deg
-        );
-    }
-    let loads = checks::loads(&a.load_mn)?;
-    if loads.windows(2).any(|w| w[1] <= w[0]) {
-        bail!("`--load-mn`: the loads must be strictly increasing");
-    }
-    let mu_superlubric = a.verdict.mu_superlubric()?;
-    let line = checks::line_deg(a.line_deg)?;
-    let knobs = a.knobs.params()?;
-    knobs.validate()?;
     let searched = a
         .searched_seeds
         .as_deref()
         .map_or(Ok(Vec::new()), |t| checks::seed_list(t, "--searched-seeds"))?;
-    let check_load = a
-        .dem_check_load_mn
-        .map(|w| checks::positive(w, "--dem-check-load-mn").map(surrogate::units::mn_to_n))
-        .transpose()?;
-    let dem = if a.no_dem {
-        None
-    } else {
-        Some(a.dem.params(line)?)
-    };
-    let sc = a.scene.resolve(a.theta)?;
-    let scene = &sc.scene;
-    let theta_deg = label(rad_to_deg(scene.slider.theta));
     let three = crate::study::fab_yield::fabrication::TRUNCATE_SIGMA;
     if p_sigma > 0.0 && scene.coating.p_crit - three * p_sigma <= 0.0 {
         bail!(
@@ -277,6 +255,150 @@ pub fn run(a: Args) -> Result<()> {
     }
     let mut excluded = vec![scene.substrate.seed];
     excluded.extend(&searched);
+    Ok(FabricationModel {
+        theta,
+        direction,
+        sphere_diameter_cv: cv,
+        p_crit_sigma: p_sigma,
+        seed: a.sample_seed,
+        excluded_seeds: excluded,
+    })
+}
+
+/// The ladder, μ_sl, contact line and estimate knobs of `a`, checked.
+fn limit(a: &Args) -> Result<LimitParams> {
+    let loads = checks::loads(&a.load_mn)?;
+    if loads.windows(2).any(|w| w[1] <= w[0]) {
+        bail!("`--load-mn`: the loads must be strictly increasing");
+    }
+    let knobs = a.knobs.params()?;
+    knobs.validate()?;
+    Ok(LimitParams {
+        loads,
+        mu_superlubric: a.verdict.mu_superlubric()?,
+        line: checks::line_deg(a.line_deg)?,
+        friction: knobs,
+    })
+}
+
+/// The yield of `a`, every input checked before any work: its scene (with its warnings) and
+/// its knobs.
+fn prepare(a: &Args) -> Result<(Resolved, YieldParams)> {
+    if let Some(bad) = YieldParams::bad_knob(a.samples, a.quantile, a.confidence, a.resolution) {
+        bail!(
+            "{}",
+            bad_knob_words(
+                bad,
+                [a.samples as f64, a.quantile, a.confidence, a.resolution]
+            )
+        );
+    }
+    if !a.direction_deg.is_finite() {
+        bail!(
+            "`--direction-deg`: {} is not a finite angle",
+            a.direction_deg
+        );
+    }
+    let limit = limit(a)?;
+    let check_load = a
+        .dem_check_load_mn
+        .map(|w| checks::positive(w, "--dem-check-load-mn").map(surrogate::units::mn_to_n))
+        .transpose()?;
+    let dem = if a.no_dem {
+        None
+    } else {
+        Some(a.dem.params(limit.line)?)
+    };
+    let sc = a.scene.resolve(a.theta)?;
+    let fabrication = fabrication(a, &sc.scene)?;
+    let params = YieldParams {
+        theta_deg: label(rad_to_deg(sc.scene.slider.theta)),
+        direction_deg: a.direction_deg,
+        fabrication,
+        samples: a.samples,
+        quantile: a.quantile,
+        confidence: a.confidence,
+        resolution: a.resolution,
+        limit,
+        dem: dem.map(|(params, jobs)| {
+            YieldDem::new(params, (a.dem_check, check_load), jobs, a.out.join("dem"))
+        }),
+    };
+    Ok((sc, params))
+}
+
+/// The inputs `superlube yield` records in its sidecars.
+fn inputs(scene: &surrogate::Scene, p: &YieldParams) -> Inputs {
+    let mut recorded = scene_file(scene);
+    recorded.slider.theta_deg = Some(p.theta_deg);
+    let mn = |w: f64| label(n_to_mn(w));
+    Inputs {
+        workflow: "yield".into(),
+        scene: Some(recorded),
+        params: json!({
+            "theta_deg": p.theta_deg,
+            "direction_deg": p.direction_deg,
+            "fabrication": p.fabrication.record(scene),
+            "samples": p.samples,
+            "quantile": p.quantile,
+            "confidence": p.confidence,
+            "resolution": p.resolution,
+            "load_mN": p.limit.loads.iter().map(|&w| mn(w)).collect::<Vec<_>>(),
+            "mu_superlubric": p.limit.mu_superlubric,
+            "line_deg": p.limit.line.map(rad_to_deg),
+            "friction": record::friction_knobs(&p.limit.friction),
+            "dem": p.dem.as_ref().map(|d| record::dem(scene, &d.params)),
+            "dem_check": p.dem.as_ref().map(|d| d.check),
+            "dem_check_load_mN": p.dem.as_ref().and_then(|d| d.check_load).map(mn),
+        }),
+    }
+}
+
+/// Pretty JSON with a final newline.
+fn json_bytes<T: serde::Serialize>(v: &T) -> Result<Vec<u8>> {
+    let mut b = serde_json::to_vec_pretty(v)?;
+    b.push(b'\n');
+    Ok(b)
+}
+
+/// `--dem-monte-carlo N`: the DEM's own critical loads of N fresh devices against the quote,
+/// written through `outs`.
+fn monte_carlo(
+    (scene, p, s): (&surrogate::Scene, &YieldParams, &YieldSummary),
+    count: usize,
+    outs: &mut Outputs,
+    (out, rep): (&std::path::Path, &Reporter),
+) -> Result<()> {
+    let Some(d) = &p.dem else { return Ok(()) };
+    let (rows, mc) = dem_monte_carlo(scene, p, d, s, count, rep)?;
+    let csv = out.join("dem_monte_carlo.csv");
+    outs.write(
+        "--out-dir",
+        Some(&csv),
+        csv_bytes(&rows),
+        Some(rows.len() as u64),
+    );
+    outs.write(
+        "--out-dir",
+        Some(&out.join("monte_carlo.json")),
+        json_bytes(&mc),
+        None,
+    );
+    rep.note(&format!(
+        "monte carlo: {} devices by the DEM alone ({} runs): 5th percentile {} mN; {} hold the quote, {} hold the bound",
+        mc.devices,
+        mc.dem_runs,
+        yield_words::load(mc.p5_mN),
+        mc.holding_quote,
+        mc.holding_bound
+    ));
+    Ok(())
+}
+
+/// Runs `superlube yield`.
+pub fn run(a: Args) -> Result<()> {
+    let (sc, params) = prepare(&a)?;
+    let scene = &sc.scene;
     let csv = a.out.join("yield.csv");
     let json_path = a.out.join("summary.json");
     let png = a.out.join("yield.png");
@@ -287,33 +409,6 @@ pub fn run(a: Args) -> Result<()> {
         ("--out-dir", Some(&json_path)),
         ("--out-dir", Some(&png)),
     ])?;
-    let fabrication = FabricationModel {
-        theta: theta_law,
-        direction: direction_law,
-        sphere_diameter_cv: cv,
-        p_crit_sigma: p_sigma,
-        seed: a.sample_seed,
-        excluded_seeds: excluded,
-    };
-    let dem_record = dem.as_ref().map(|(d, _)| record::dem(scene, d));
-    let params = YieldParams {
-        theta_deg,
-        direction_deg: a.direction_deg,
-        fabrication,
-        samples,
-        quantile,
-        confidence,
-        resolution: a.resolution,
-        limit: LimitParams {
-            loads,
-            mu_superlubric,
-            line,
-            friction: knobs,
-        },
-        dem: dem.map(|(params, jobs)| {
-            YieldDem::new(params, (a.dem_check, check_load), jobs, a.out.join("dem"))
-        }),
-    };
     let rep = Reporter::stderr();
     sc.log(&rep);
     if scene.substrate.sigma_h == 0.0 {
@@ -333,48 +428,14 @@ pub fn run(a: Args) -> Result<()> {
     if s.dem {
         rep.note(&format!("yield: {}", yield_words::dem_work(s)));
     }
-    let mut recorded = scene_file(scene);
-    recorded.slider.theta_deg = Some(theta_deg);
-    let mut outs = Outputs::new(
-        Inputs {
-            workflow: "yield".into(),
-            scene: Some(recorded),
-            params: json!({
-                "theta_deg": theta_deg,
-                "direction_deg": a.direction_deg,
-                "fabrication": params.fabrication.record(scene),
-                "samples": samples,
-                "quantile": quantile,
-                "confidence": confidence,
-                "resolution": a.resolution,
-                "load_mN": params.limit.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
-                "mu_superlubric": mu_superlubric,
-                "line_deg": line.map(rad_to_deg),
-                "friction": record::friction_knobs(&params.limit.friction),
-                "dem": dem_record,
-                "dem_check": params.dem.as_ref().map(|d| d.check),
-                "dem_check_load_mN": check_load.map(|w| label(n_to_mn(w))),
-            }),
-        },
-        sc.warnings.clone(),
-    );
+    let mut outs = Outputs::new(inputs(scene, &params), sc.warnings.clone());
     outs.write(
         "--out-dir",
         Some(&csv),
         csv_bytes(&o.rows),
         Some(o.rows.len() as u64),
     );
-    outs.write(
-        "--out-dir",
-        Some(&json_path),
-        serde_json::to_vec_pretty(s)
-            .map(|mut v| {
-                v.push(b'\n');
-                v
-            })
-            .map_err(Into::into),
-        None,
-    );
+    outs.write("--out-dir", Some(&json_path), json_bytes(s), None);
     outs.attempt("--out-dir", &png, || yield_png(&png, s));
     rep.note(&format!("yield: {}", yield_words::fabricator(s)));
     if s.load_at_quantile_mN.is_some() && s.load_at_quantile_bound_mN.is_none() {
@@ -383,35 +444,8 @@ pub fn run(a: Args) -> Result<()> {
     if let Some(c) = yield_words::check(s) {
         rep.note(&format!("yield: {c}"));
     }
-    if let (Some(count), Some(d)) = (a.dem_monte_carlo.filter(|&n| n > 0), &params.dem) {
-        let (rows, mc) = crate::study::fab_yield::monte_carlo::dem_monte_carlo(
-            scene, &params, d, s, count, &rep,
-        )?;
-        outs.write(
-            "--out-dir",
-            Some(&a.out.join("dem_monte_carlo.csv")),
-            csv_bytes(&rows),
-            Some(rows.len() as u64),
-        );
-        outs.write(
-            "--out-dir",
-            Some(&a.out.join("monte_carlo.json")),
-            serde_json::to_vec_pretty(&mc)
-                .map(|mut v| {
-                    v.push(b'\n');
-                    v
-                })
-                .map_err(Into::into),
-            None,
-        );
-        rep.note(&format!(
-            "monte carlo: {} devices by the DEM alone ({} runs): 5th percentile {} mN; {} hold the quote, {} hold the bound",
-            mc.devices,
-            mc.dem_runs,
-            yield_words::load(mc.p5_mN),
-            mc.holding_quote,
-            mc.holding_bound
-        ));
+    if let Some(count) = a.dem_monte_carlo.filter(|&n| n > 0) {
+        monte_carlo((scene, &params, s), count, &mut outs, (&a.out, &rep))?;
     }
     outs.finish()
 }

@@ -46,7 +46,9 @@ pub fn check(s: &YieldSummary) -> Option<String> {
     let agreement = match (s.dem_check_consistent, s.quote_lowered_by_check) {
         (Some(true), true) => "; the quote was lowered until its check agreed",
         (Some(true), false) => "; agrees with the quote",
-        (Some(false), _) => "; CONTRADICTS the quote: fewer fresh devices hold it than the yield claims",
+        (Some(false), _) => {
+            "; CONTRADICTS the quote: fewer fresh devices hold it than the yield claims"
+        }
         (None, _) => "",
     };
     Some(format!(

@@ -6,15 +6,15 @@
 //! "load at q yield" column ([`cell`]) and plots ([`YieldHead`]).
 
 use super::words::fmt_g;
-use crate::present::yield_words;
-use crate::study::design::answer::Answer;
-use crate::study::design::PatternResult;
 use crate::plot::yield_curve::yield_png;
+use crate::present::yield_words;
 use crate::runs::output::Outputs;
 use crate::runs::sink::csv_bytes;
+use crate::study::design::answer::Answer;
 use crate::study::design::store::Store;
 use crate::study::design::yield_params::RankBy;
 use crate::study::design::yield_stage::AnswerYield;
+use crate::study::design::PatternResult;
 use crate::study::design::{DesignOutcome, DesignParams};
 use crate::study::rows::label;
 use serde::Serialize;

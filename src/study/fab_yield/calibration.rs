@@ -197,12 +197,13 @@ mod tests {
         let few: Vec<Pair> = (0..MIN_PAIRS - 1).map(|_| pair(1.01, 0.9)).collect();
         let b = Band::calibrated(&few);
         assert_eq!(b.source, BandSource::Global);
-        assert_eq!((b.p_ratio, b.mu_ratio), (Band::global().p_ratio, Band::global().mu_ratio));
+        assert_eq!(
+            (b.p_ratio, b.mu_ratio),
+            (Band::global().p_ratio, Band::global().mu_ratio)
+        );
         assert!((b.centre[0] - 1.01).abs() < 1e-12 && (b.centre[1] - 0.9).abs() < 1e-12);
         assert_eq!(Band::calibrated(&[]), Band::global());
-        let many: Vec<Pair> = (0..19)
-            .map(|i| pair(1.0 + 0.001 * i as f64, 0.9))
-            .collect();
+        let many: Vec<Pair> = (0..19).map(|i| pair(1.0 + 0.001 * i as f64, 0.9)).collect();
         let b = Band::calibrated(&many);
         assert_eq!(b.source, BandSource::Design);
         assert!((b.p_ratio[0] - 1.0).abs() < 1e-12 && (b.p_ratio[1] - 1.018).abs() < 1e-12);

@@ -124,12 +124,7 @@ impl DemDecider<'_> {
 
     /// Runs `asks` side by side under the stage `stage` and returns each one's decision, in
     /// order. Cost: one DEM run each (1–3 s with the design's protocol), none where reused.
-    pub fn run(
-        &self,
-        asks: &[Ask],
-        stage: &str,
-        progress: &dyn Progress,
-    ) -> Result<Vec<Decision>> {
+    pub fn run(&self, asks: &[Ask], stage: &str, progress: &dyn Progress) -> Result<Vec<Decision>> {
         if asks.is_empty() {
             return Ok(Vec::new());
         }

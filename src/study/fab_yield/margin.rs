@@ -108,7 +108,15 @@ mod tests {
             .collect();
         let w = transferred_limit(&probes, Ratios::ONE, 4.0, 0.02);
         assert!((w - 2.0).abs() < 1e-12, "{w}");
-        let w = transferred_limit(&probes, Ratios { p: 4.0 / 3.5, mu: 1.0 }, 4.0, 0.02);
+        let w = transferred_limit(
+            &probes,
+            Ratios {
+                p: 4.0 / 3.5,
+                mu: 1.0,
+            },
+            4.0,
+            0.02,
+        );
         assert!((w - 1.5).abs() < 1e-12, "{w}");
         // μ_DEM = 2 μ_est = 0.02 everywhere: the rule fails at the first probe
         let w = transferred_limit(&probes, Ratios { p: 1.0, mu: 0.5 }, 4.0, 0.02);

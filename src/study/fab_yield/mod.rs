@@ -116,7 +116,12 @@ impl YieldParams {
     /// Which knob is out of range (`None`: all are in range): samples ≥ 1, q and γ in (0, 1),
     /// the resolution in (0, 0.5]. The one check of `superlube yield` and of the design's
     /// yield stage; each words it with its own flags.
-    pub fn bad_knob(samples: usize, quantile: f64, confidence: f64, resolution: f64) -> Option<BadKnob> {
+    pub fn bad_knob(
+        samples: usize,
+        quantile: f64,
+        confidence: f64,
+        resolution: f64,
+    ) -> Option<BadKnob> {
         let frac = |v: f64| v.is_finite() && v > 0.0 && v < 1.0;
         if samples == 0 {
             Some(BadKnob::Samples)

@@ -22,7 +22,7 @@
 //! T, plus the first rounds' runs under the global band.
 
 use super::calibration::{Band, BandSource, Pair};
-use super::dem_decide::{Ask, DemDecider, Decision};
+use super::dem_decide::{Ask, Decision, DemDecider};
 use super::device::{Bounds, Device};
 use super::interval;
 use super::row::DecidedBy;
@@ -159,9 +159,17 @@ impl Rounds<'_> {
         if pred >= t && f.is_none_or(|f| f > t) {
             return vec![t];
         }
-        let mut x = if pred > 0.0 { pred } else { 0.5 * d.estimate.load };
+        let mut x = if pred > 0.0 {
+            pred
+        } else {
+            0.5 * d.estimate.load
+        };
         if d.dem.is_empty() {
-            return if x > 0.0 { vec![x.max(b.low)] } else { Vec::new() };
+            return if x > 0.0 {
+                vec![x.max(b.low)]
+            } else {
+                Vec::new()
+            };
         }
         let straddles = d.dem.len().saturating_sub(1) / 3;
         match (a, f) {

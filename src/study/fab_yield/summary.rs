@@ -220,7 +220,9 @@ pub fn outcome(
         dem_runs: dem.map_or(0, |d| d.runs),
         dem_runs_allowed: dem.map_or(0, |d| d.allowed),
         dem_rounds: dem.map_or(0, |d| d.rounds),
-        band: kn.as_ref().map_or_else(super::Band::global, |k| k.band.clone()),
+        band: kn
+            .as_ref()
+            .map_or_else(super::Band::global, |k| k.band.clone()),
         pairs: kn.map(|k| k.pairs).unwrap_or_default(),
         dem_check_load_mN: dem.and_then(|d| d.check_load).filter(|_| total > 0).map(mn),
         dem_check_passed: passed,
