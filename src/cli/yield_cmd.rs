@@ -50,7 +50,8 @@ pub struct Args {
     #[arg(
         long = "theta-sigma-deg",
         value_name = "DEG",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        conflicts_with = "theta_tol"
     )]
     theta_sigma_deg: Option<f64>,
     /// σ in degrees of a normal pull-direction offset (truncated at ±3σ) instead of the
@@ -58,7 +59,8 @@ pub struct Args {
     #[arg(
         long = "direction-sigma-deg",
         value_name = "DEG",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        conflicts_with = "direction_tol"
     )]
     direction_sigma_deg: Option<f64>,
     /// Coefficient of variation of each slider sphere's diameter (normal, truncated at ±3σ; 0:
@@ -140,7 +142,7 @@ pub struct Args {
     )]
     dem_check_load_mn: Option<f64>,
     /// Estimate only: no DEM decisions and no DEM check.
-    #[arg(long = "no-dem")]
+    #[arg(long = "no-dem", conflicts_with_all = ["dem_check", "dem_check_load_mn"])]
     no_dem: bool,
     #[command(flatten)]
     dem: DesignDemArgs,
