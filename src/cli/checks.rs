@@ -165,6 +165,24 @@ pub fn grid(n: usize) -> Result<usize> {
     Ok(n)
 }
 
+/// The warning for a landscape grid of `n` points per side that under-samples the finest
+/// feature of Δz of `scene` at its θ ([`surrogate::map::grid_need`]: the moiré of the two
+/// lattices, its second harmonic at 4 points per period), naming the `--grid` it needs;
+/// `None` when `n` resolves it. Cost: milliseconds (one structure-factor scan).
+pub fn grid_warning(scene: &surrogate::Scene, n: usize) -> Option<String> {
+    let need = surrogate::map::grid_need(scene);
+    let [pa, pb] = need.periods?;
+    (n < need.grid).then(|| {
+        format!(
+            "the {n}×{n} grid under-samples Δz: at θ = {}° the slider and substrate lattices make a moiré of wavelength {} µm, {pa} and {pb} periods along the repeat cell's edges, whose second harmonic needs `--grid {}` or more ({} points per period; docs/validation/maps.md); at {n} the map aliases (a checkerboard where there are stripes)",
+            surrogate::units::significant(surrogate::units::rad_to_deg(scene.slider.theta), 6),
+            surrogate::units::significant(surrogate::units::m_to_um(need.wavelength), 3),
+            need.grid,
+            surrogate::map::POINTS_PER_PERIOD
+        )
+    })
+}
+
 /// A time in µs that must be positive → s.
 pub fn time_us(v: f64, flag: &str) -> Result<f64> {
     Ok(us_to_s(positive(v, flag)?))
