@@ -7,7 +7,7 @@ use super::friction_args::FrictionKnobArgs;
 use super::tolerance_args::ToleranceArgs;
 use super::verdict_args::VerdictArgs;
 use super::{checks, SceneArgs};
-use crate::plot::yield_curve::yield_png;
+use crate::plot::yield_curve::{load_text, yield_png};
 use crate::runs::sink::csv_bytes;
 use crate::runs::{
     meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
@@ -356,15 +356,19 @@ pub fn run(a: Args) -> Result<()> {
     );
     outs.attempt("--out-dir", &png, || yield_png(&png, s));
     match (s.load_at_quantile_mN, s.load_at_quantile_bound_mN) {
+        // loads to 3 significant digits, as the chart and the report print them
         (Some(w), Some(b)) => rep.note(&format!(
-            "yield: {:.0} % of devices hold {w} mN; at least {:.0} % hold {b} mN with {:.0} % confidence",
+            "yield: {:.0} % of devices hold {} mN; at least {:.0} % hold {} mN with {:.0} % confidence",
             100.0 * quantile,
+            load_text(w),
             100.0 * quantile,
+            load_text(b),
             100.0 * confidence
         )),
         (Some(w), None) => rep.note(&format!(
-            "yield: {:.0} % of devices hold {w} mN; no confidence bound from {} devices (needs ≥ {}: --samples)",
+            "yield: {:.0} % of devices hold {} mN; no confidence bound from {} devices (needs ≥ {}: --samples)",
             100.0 * quantile,
+            load_text(w),
             s.samples,
             s.min_samples_for_bound
         )),
@@ -373,7 +377,7 @@ pub fn run(a: Args) -> Result<()> {
     if s.dem_check_total > 0 {
         rep.note(&format!(
             "yield: DEM check at {} mN: {}/{} devices superlubric",
-            s.dem_check_load_mN.unwrap_or(0.0),
+            load_text(s.dem_check_load_mN.unwrap_or(0.0)),
             s.dem_check_passed,
             s.dem_check_total
         ));
