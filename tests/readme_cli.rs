@@ -53,7 +53,10 @@ fn readme_quick_examples_run() {
         assert_ok(&out);
         // each tier's example shows what the tier is for: the DEM example slides
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(!err.contains("LOCKED IN"), "`{cmd}` reads as a failure: {err}");
+        assert!(
+            !err.contains("LOCKED IN"),
+            "`{cmd}` reads as a failure: {err}"
+        );
         for w in words.windows(2) {
             if ["--out", "--plot", "--json"].contains(&w[0]) {
                 assert!(dir.join(w[1]).exists(), "`{cmd}` did not write {}", w[1]);
