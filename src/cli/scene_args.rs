@@ -348,7 +348,7 @@ impl SceneArgs {
             _ => return e.into(),
         };
         match given {
-            (flag, Some(v)) => anyhow::anyhow!("`{flag} {v}`: {why}"),
+            (flag, Some(v)) => anyhow::anyhow!("`{flag} {v}` ({field}): {why}"),
             _ => e.into(),
         }
     }
