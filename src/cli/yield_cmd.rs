@@ -7,7 +7,7 @@ use super::friction_args::FrictionKnobArgs;
 use super::tolerance_args::ToleranceArgs;
 use super::verdict_args::VerdictArgs;
 use super::{checks, SceneArgs};
-use crate::plot::yield_curve::{load_text, yield_png};
+use crate::plot::yield_curve::yield_png;
 use crate::runs::sink::csv_bytes;
 use crate::runs::{
     meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
@@ -130,19 +130,26 @@ pub struct Args {
     line_deg: Option<f64>,
     #[command(flatten)]
     knobs: FrictionKnobArgs,
-    /// Fresh devices run with the DEM at the quoted load as a check (0: none).
-    #[arg(long = "dem-check", value_name = "N", default_value_t = 10)]
+    /// Fresh devices run with the DEM at the quoted load as a check, then pooled into the
+    /// yield; the quote is lowered until the check agrees with it (0: none).
+    #[arg(
+        long = "dem-check",
+        value_name = "N",
+        default_value_t = 10,
+        conflicts_with = "no_dem"
+    )]
     dem_check: usize,
-    /// Load in mN of the DEM check [default: the quoted load]: compares the yield the
-    /// estimate predicts at another load with the DEM's.
+    /// Load in mN of the DEM check [default: the quoted load]: compares the yield at another
+    /// load with the DEM's.
     #[arg(
         long = "dem-check-load-mn",
         value_name = "MN",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        conflicts_with = "no_dem"
     )]
     dem_check_load_mn: Option<f64>,
     /// Estimate only: no DEM decisions and no DEM check.
-    #[arg(long = "no-dem", conflicts_with_all = ["dem_check", "dem_check_load_mn"])]
+    #[arg(long = "no-dem")]
     no_dem: bool,
     #[command(flatten)]
     dem: DesignDemArgs,
@@ -356,19 +363,15 @@ pub fn run(a: Args) -> Result<()> {
     );
     outs.attempt("--out-dir", &png, || yield_png(&png, s));
     match (s.load_at_quantile_mN, s.load_at_quantile_bound_mN) {
-        // loads to 3 significant digits, as the chart and the report print them
         (Some(w), Some(b)) => rep.note(&format!(
-            "yield: {:.0} % of devices hold {} mN; at least {:.0} % hold {} mN with {:.0} % confidence",
+            "yield: {:.0} % of devices hold {w} mN; at least {:.0} % hold {b} mN with {:.0} % confidence",
             100.0 * quantile,
-            load_text(w),
             100.0 * quantile,
-            load_text(b),
             100.0 * confidence
         )),
         (Some(w), None) => rep.note(&format!(
-            "yield: {:.0} % of devices hold {} mN; no confidence bound from {} devices (needs ≥ {}: --samples)",
+            "yield: {:.0} % of devices hold {w} mN; no confidence bound from {} devices (needs ≥ {}: --samples)",
             100.0 * quantile,
-            load_text(w),
             s.samples,
             s.min_samples_for_bound
         )),
@@ -377,7 +380,7 @@ pub fn run(a: Args) -> Result<()> {
     if s.dem_check_total > 0 {
         rep.note(&format!(
             "yield: DEM check at {} mN: {}/{} devices superlubric",
-            load_text(s.dem_check_load_mN.unwrap_or(0.0)),
+            s.dem_check_load_mN.unwrap_or(0.0),
             s.dem_check_passed,
             s.dem_check_total
         ));
