@@ -16,8 +16,20 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
 }
 
 fn main() {
-    let cli = cli::Cli::parse();
     let args: Vec<String> = std::env::args().collect();
+    let cli = match cli::Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            // a mistyped flag whose nearest spelling is the wrong idea gets our tip
+            if e.kind() == clap::error::ErrorKind::UnknownArgument {
+                if let Some(t) = cli::tips::better(&e.render().to_string(), &args) {
+                    eprint!("{t}");
+                    std::process::exit(2);
+                }
+            }
+            e.exit()
+        }
+    };
     for note in cli::renamed::notes(&args) {
         eprintln!("{note}");
     }

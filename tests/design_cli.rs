@@ -478,3 +478,42 @@ fn dem_stage_in_shards_then_the_report() {
     assert!(String::from_utf8_lossy(&e.stderr).contains("--shard"));
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// A rough substrate (σ_h = 10 nm) on which no tri-tri design holds the ladder's first load
+/// over the default tolerance box: the answer is not 0 but the load located below the first
+/// rung (by bisection over the same samples, down to 1 % of it), with its meaning.
+#[test]
+fn a_robust_limit_below_the_ladder_is_located_not_zero() {
+    let d = tmpdir("design_below_ladder");
+    let out = bin()
+        .args([
+            "design",
+            "--pattern",
+            "tri-tri",
+            "--sigma-h-um",
+            "0.01",
+            "--no-dem",
+        ])
+        .arg("--out-dir")
+        .arg(&d)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let report = std::fs::read_to_string(d.join("report.md")).unwrap();
+    let row = report
+        .lines()
+        .find(|l| l.starts_with("| tri-tri |"))
+        .unwrap_or_else(|| panic!("no answer row in {report}"));
+    let cell = row.split('|').nth(5).unwrap().trim();
+    let w: f64 = cell
+        .strip_suffix("(below the ladder)")
+        .unwrap_or_else(|| panic!("robust limit cell `{cell}`"))
+        .trim()
+        .parse()
+        .unwrap();
+    assert!(w > 0.35 * 0.01 && w < 0.35, "{w}");
+    assert!(
+        report.contains("Below the ladder's first load (0.35 mN)"),
+        "{report}"
+    );
+}

@@ -255,6 +255,18 @@ fn mount_resonance_flags_failed_rows_on_the_study_mount() {
         "{err}"
     );
 
+    assert!(err.contains("it applies to 1 of 2 rows"), "{err}");
+    // quiet when no row is flagged: the intact 0.35 mN row alone on the same mount
+    let o = bin()
+        .args(["friction", "--pattern", "tri-tri", "--theta-deg", "30"])
+        .args(["--alpha-deg", "0", "--load-mn", "0.35", "--out"])
+        .arg(d.join("intact.csv"))
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    assert_eq!(cells(&d.join("intact.csv"))(0, "mount_resonance"), "false");
+    assert!(!String::from_utf8_lossy(&o.stderr).contains("tilt mode"));
+
     let (o, get) = run(&["--tilt-k1-n-m", "1e7"], &d.join("stiff.csv"));
     let stiff: f64 = get(1, "tilt_pair_ratio").parse().unwrap();
     assert!((stiff - 0.89 * 10f64.sqrt()).abs() < 0.03, "{stiff}");

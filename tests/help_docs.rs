@@ -146,3 +146,92 @@ fn the_slider_lattice_examples_of_the_help_run() {
         assert_ok(&out);
     }
 }
+
+/// The `## Default` section of a command page: its `--flag VALUE` claims, from table rows
+/// naming one flag (`| `--grid` | 51 |`) and from code spans (`` `--samples 59` ``). Values are
+/// the first word of the cell or span, without backticks; cells that describe rather than
+/// state a value ("the pattern's", "none") are left out.
+fn claimed_defaults(page: &str) -> Vec<(String, String)> {
+    let Some(sec) = page.split("\n## Default").nth(1) else {
+        return Vec::new();
+    };
+    let sec = sec.split("\n## ").next().unwrap_or("");
+    let mut out = Vec::new();
+    for line in sec.lines() {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        if line.starts_with('|') && cells.len() >= 4 {
+            let flags: Vec<&str> = cells[1].matches("`--").collect();
+            let value = cells[2].trim_matches('`');
+            let first = value.split([' ', '`']).next().unwrap_or("");
+            if flags.len() == 1 && first.starts_with(|c: char| c.is_ascii_digit()) {
+                let flag = cells[1].trim_matches('`').split([' ', '`']).next().unwrap();
+                let v = first.trim_end_matches([',', ';']);
+                out.push((flag.trim_start_matches("--").to_string(), v.to_string()));
+            }
+            continue;
+        }
+        for span in line.split('`').skip(1).step_by(2) {
+            let words: Vec<&str> = span.split_whitespace().collect();
+            for w in words.windows(2) {
+                if let Some(f) = w[0].strip_prefix("--") {
+                    if !w[1].starts_with("--") {
+                        out.push((f.to_string(), w[1].to_string()));
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Whether a page's value `claimed` states clap's default `actual` (numbers compared as
+/// numbers, lists and names as text).
+fn same_default(claimed: &str, actual: &str) -> bool {
+    match (claimed.parse::<f64>(), actual.parse::<f64>()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => claimed == actual,
+    }
+}
+
+/// Where a command page claims a flag's default, `--help` (clap) has the same default: the
+/// pages cannot drift from the code. `equilibrate` shares `slide`'s page, which states
+/// `slide`'s defaults.
+#[test]
+fn every_default_a_page_claims_is_the_help_default() {
+    let mut checked = 0;
+    let mut wrong = Vec::new();
+    for sub in Cli::command().get_subcommands() {
+        let name = sub.get_name();
+        if name == "equilibrate" {
+            continue;
+        }
+        for (flag, claimed) in claimed_defaults(&page(name)) {
+            let Some(arg) = sub
+                .get_arguments()
+                .find(|a| a.get_long() == Some(flag.as_str()))
+            else {
+                continue;
+            };
+            let defaults: Vec<String> = arg
+                .get_default_values()
+                .iter()
+                .map(|v| v.to_string_lossy().to_string())
+                .collect();
+            let Some(actual) = defaults.first() else {
+                continue;
+            };
+            checked += 1;
+            if !same_default(&claimed, actual) {
+                wrong.push(format!(
+                    "{name}.md: --{flag} {claimed}, but --help: {actual}"
+                ));
+            }
+        }
+    }
+    assert!(checked >= 20, "only {checked} defaults found on the pages");
+    assert!(
+        wrong.is_empty(),
+        "defaults on the command pages that --help contradicts:\n{}",
+        wrong.join("\n")
+    );
+}

@@ -51,6 +51,12 @@ fn readme_quick_examples_run() {
         );
         let out = bin().args(&words[1..]).current_dir(&dir).output().unwrap();
         assert_ok(&out);
+        // each tier's example shows what the tier is for: the DEM example slides
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !err.contains("LOCKED IN"),
+            "`{cmd}` reads as a failure: {err}"
+        );
         for w in words.windows(2) {
             if ["--out", "--plot", "--json"].contains(&w[0]) {
                 assert!(dir.join(w[1]).exists(), "`{cmd}` did not write {}", w[1]);

@@ -179,3 +179,152 @@ fn a_locked_mount_with_the_tilting_solver_names_the_current_flags() {
         "{err}"
     );
 }
+
+/// The stderr of a command line that must fail (before any work: it returns at once).
+fn refusal(args: &[&str]) -> String {
+    let out = bin().args(args).output().unwrap();
+    assert!(!out.status.success(), "{args:?} should fail");
+    String::from_utf8_lossy(&out.stderr).to_string()
+}
+
+/// Unit slips in flags are refused with the flag and value as typed, the unit, and the value
+/// the slip most likely meant (docs/inputs.md).
+#[test]
+fn implausible_flags_are_refused_with_the_likely_slip() {
+    let friction = [
+        "friction",
+        "--pattern",
+        "square-tri",
+        "--theta-deg",
+        "10.2",
+        "--alpha-deg",
+        "90",
+        "--load-mn",
+        "3.86",
+    ];
+    let with = |extra: &[&str]| {
+        let mut v = friction.to_vec();
+        v.extend_from_slice(extra);
+        refusal(&v)
+    };
+    // P_crit typed in MPa, E typed in Pa
+    let e = with(&["--p-crit-gpa", "4000"]);
+    assert!(
+        e.contains("`--p-crit-gpa 4000`") && e.contains("GPa") && e.contains("did you mean 4 GPa"),
+        "{e}"
+    );
+    let e = with(&["--youngs-gpa", "1e11"]);
+    assert!(
+        e.contains("`--youngs-gpa 100000000000`") && e.contains("did you mean 100 GPa"),
+        "{e}"
+    );
+    // σ_h typed in nm
+    let e = with(&["--sigma-h-um", "10"]);
+    assert!(
+        e.contains("`--sigma-h-um 10`") && e.contains("did you mean 0.01 µm"),
+        "{e}"
+    );
+    // a load in µN, a speed in µm/s, a slide in ns … each names its flag and unit
+    let e = refusal(&["screen", "--pattern", "tri-tri", "--load-mn", "350000"]);
+    assert!(
+        e.contains("`--load-mn 350000`") && e.contains("mN") && e.contains("µN"),
+        "{e}"
+    );
+    let e = refusal(&["slide", "--pattern", "tri-tri", "--speed-m-s", "100000"]);
+    assert!(
+        e.contains("`--speed-m-s 100000`") && e.contains("m/s"),
+        "{e}"
+    );
+    let e = refusal(&["slide", "--pattern", "tri-tri", "--dt-us", "5"]);
+    assert!(e.contains("`--dt-us 5`") && e.contains("µs"), "{e}");
+    // the study's own values all pass (friction on square-tri at 3.86 mN runs elsewhere)
+}
+
+/// The same slips in a scene file are refused naming the field, in the file's units.
+#[test]
+fn implausible_scene_fields_are_refused_naming_the_field() {
+    let d = tmpdir("units-plausible-file");
+    for (body, field, meant) in [
+        (
+            "[coating]\np_crit_GPa = 4000\n",
+            "coating.p_crit_GPa",
+            "4 GPa",
+        ),
+        (
+            "[material]\nyoungs_GPa = 1e11\n",
+            "material.youngs_GPa",
+            "100 GPa",
+        ),
+        (
+            "[material]\ndensity_g_cm3 = 2200\n",
+            "material.density_g_cm3",
+            "2.2 g/cm³",
+        ),
+        ("sphere_diameter_um = 3e-6\n", "sphere_diameter_um", "3 µm"),
+    ] {
+        let scene = d.join("s.toml");
+        std::fs::write(&scene, format!("pattern = 'tri-tri'\n{body}")).unwrap();
+        let e = refusal(&[
+            "screen",
+            "--scene",
+            scene.to_str().unwrap(),
+            "--load-mn",
+            "1",
+        ]);
+        assert!(
+            e.contains(&format!("`{field}`")) && e.contains(&format!("did you mean {meant}")),
+            "{body}: {e}"
+        );
+    }
+}
+
+/// Contradictory options are refused before any work, naming both; a mistyped `--alpha-deg`
+/// on `yield` is pointed at `--direction-deg`.
+#[test]
+fn contradictions_are_refused() {
+    let y = ["yield", "--pattern", "tri-tri", "--direction-deg", "0"];
+    let with = |extra: &[&str]| {
+        let mut v = y.to_vec();
+        v.extend_from_slice(extra);
+        v.extend_from_slice(&["--out-dir", "/tmp/superlube-never-written"]);
+        refusal(&v)
+    };
+    let e = with(&["--no-dem", "--dem-check", "5"]);
+    assert!(e.contains("--no-dem") && e.contains("--dem-check"), "{e}");
+    let e = with(&["--theta-tol-deg", "0.1", "--theta-sigma-deg", "0.05"]);
+    assert!(
+        e.contains("--theta-tol-deg") && e.contains("--theta-sigma-deg"),
+        "{e}"
+    );
+    let e = with(&["--direction-tol-deg", "0.5", "--direction-sigma-deg", "0.2"]);
+    assert!(
+        e.contains("--direction-tol-deg") && e.contains("--direction-sigma-deg"),
+        "{e}"
+    );
+    let e = refusal(&["yield", "--pattern", "tri-tri", "--alpha-deg", "90"]);
+    assert!(
+        e.contains("--direction-deg") && !e.contains("'--theta-deg'"),
+        "{e}"
+    );
+    assert!(!std::path::Path::new("/tmp/superlube-never-written").exists());
+}
+
+/// An error the solver computes in SI reaches the user in mN.
+#[test]
+fn a_load_that_cannot_be_carried_is_given_in_mn() {
+    // a one-sphere-wide slider on soft spheres: the largest load crushes them
+    let e = refusal(&[
+        "screen",
+        "--pattern",
+        "tri-tri",
+        "--youngs-gpa",
+        "0.0001",
+        "--slider-radius-um",
+        "1.5",
+        "--theta-deg",
+        "0",
+        "--load-mn",
+        "9000",
+    ]);
+    assert!(!e.contains(" N cannot") && !e.contains("e-"), "{e}");
+}

@@ -33,7 +33,7 @@ pub enum DemError {
     },
     /// The slider left the substrate during the run (the disc plus one sphere radius reaches
     /// beyond the substrate rectangle, further than at the start). Not a time-step problem.
-    #[error("the slider left the substrate at t = {t_us:.4} µs: the slider disc plus one sphere radius reaches {over_um:.3} µm beyond the substrate edge (the control layer has moved by [{:.3}, {:.3}] µm); this is not a time-step problem — shorten the path (--slide-us, --speed-m-s), change --alpha or --offset-um, or enlarge the substrate (--substrate-um)", moved_um[0], moved_um[1])]
+    #[error("the slider left the substrate at t = {t_us:.4} µs: the slider disc plus one sphere radius reaches {over_um:.3} µm beyond the substrate edge (the control layer has moved by [{:.3}, {:.3}] µm); this is not a time-step problem — shorten the path (--slide-us, --speed-m-s), change --alpha-deg or --offset-um, or enlarge the substrate (--substrate-um)", moved_um[0], moved_um[1])]
     OffSubstrate {
         /// Simulated time (µs) when detected.
         t_us: f64,

@@ -48,7 +48,7 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
         "the slider does not fit at its start: change --offset-um or enlarge the substrate (--substrate-um)".to_string()
     } else {
         format!(
-            "at {} m/s the longest slide that fits is {:.3} µs; shorten --slide-us or --speed-m-s, change --alpha or --offset-um, or enlarge the substrate (--substrate-um)",
+            "at {} m/s the longest slide that fits is {:.3} µs; shorten --slide-us or --speed-m-s, change --alpha-deg or --offset-um, or enlarge the substrate (--substrate-um)",
             params.support_speed,
             (t_max.max(0.0) / params.support_speed) * 1e6
         )

@@ -2,21 +2,55 @@
 
 use super::parse_list_or_range;
 use anyhow::{bail, Result};
+use surrogate::scene::plausible::{self, Plausible};
 use surrogate::units::{deg_to_rad, mn_to_n, um_to_m, us_to_s};
 
-/// `v` must be finite and > 0.
+/// The plausible range ([`surrogate::scene::plausible`]) of a flag, from the unit in its
+/// name: `…dt-us` the time step, other `…-us` a duration, `…speed-m-s` a speed, `…load-mn` a
+/// load, `…-n-m` a spring, other `…-um` a length; `None` for the rest.
+pub fn range_of(flag: &str) -> Option<&'static Plausible> {
+    Some(if flag.ends_with("dt-us") {
+        &plausible::DT_US
+    } else if flag.ends_with("-us") {
+        &plausible::DURATION_US
+    } else if flag.ends_with("speed-m-s") {
+        &plausible::SPEED_M_S
+    } else if flag.ends_with("load-mn") {
+        &plausible::LOAD_MN
+    } else if flag.ends_with("-n-m") {
+        &plausible::SPRING_N_M
+    } else if flag.ends_with("-um") {
+        &plausible::SIZE_UM
+    } else {
+        return None;
+    })
+}
+
+/// A value > 0 of `flag` checked against the flag's plausible range ([`range_of`]); the
+/// refusal names the flag, the value as typed, the unit and the likely slip.
+pub fn plausible(v: f64, flag: &str) -> Result<f64> {
+    match range_of(flag).map(|p| p.check(v)) {
+        Some(Err(why)) => bail!("`{flag} {v}`: {why}"),
+        _ => Ok(v),
+    }
+}
+
+/// `v` must be finite and > 0 (and plausible for the unit in the flag's name: [`plausible`]).
 pub fn positive(v: f64, flag: &str) -> Result<f64> {
     if v.is_finite() && v > 0.0 {
-        Ok(v)
+        plausible(v, flag)
     } else {
         bail!("`{flag}`: {v} must be a positive number")
     }
 }
 
-/// `v` must be finite and ≥ 0.
+/// `v` must be finite and ≥ 0 (0 is "none"; a positive value must be plausible for the unit
+/// in the flag's name: [`plausible`]).
 pub fn non_negative(v: f64, flag: &str) -> Result<f64> {
-    if v.is_finite() && v >= 0.0 {
+    if v.is_finite() && v == 0.0 {
         Ok(v)
+    } else if v.is_finite() && v > 0.0 {
+        plausible(v, flag)
     } else {
         bail!("`{flag}`: {v} must be a non-negative number")
     }
@@ -35,7 +69,7 @@ pub fn load(v: f64) -> Result<f64> {
     if !(v.is_finite() && v > 0.0) {
         bail!("`--load-mn`: {v} must be a positive load in mN");
     }
-    Ok(mn_to_n(v))
+    Ok(mn_to_n(plausible(v, "--load-mn")?))
 }
 
 /// `--load-mn` list or range (each > 0) → N.
@@ -129,6 +163,24 @@ pub fn grid(n: usize) -> Result<usize> {
         bail!("`--grid`: {n} must be at least 2 (both cell edges are included)");
     }
     Ok(n)
+}
+
+/// The warning for a landscape grid of `n` points per side that under-samples the finest
+/// feature of Δz of `scene` at its θ ([`surrogate::map::grid_need`]: the moiré of the two
+/// lattices, its second harmonic at 4 points per period), naming the `--grid` it needs;
+/// `None` when `n` resolves it. Cost: milliseconds (one structure-factor scan).
+pub fn grid_warning(scene: &surrogate::Scene, n: usize) -> Option<String> {
+    let need = surrogate::map::grid_need(scene);
+    let [pa, pb] = need.periods?;
+    (n < need.grid).then(|| {
+        format!(
+            "the {n}×{n} grid under-samples Δz: at θ = {}° the slider and substrate lattices make a moiré of wavelength {} µm, {pa} and {pb} periods along the repeat cell's edges, whose second harmonic needs `--grid {}` or more ({} points per period; docs/validation/maps.md); at {n} the map aliases (a checkerboard where there are stripes)",
+            surrogate::units::significant(surrogate::units::rad_to_deg(scene.slider.theta), 6),
+            surrogate::units::significant(surrogate::units::m_to_um(need.wavelength), 3),
+            need.grid,
+            surrogate::map::POINTS_PER_PERIOD
+        )
+    })
 }
 
 /// A time in µs that must be positive → s.

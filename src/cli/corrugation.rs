@@ -124,10 +124,11 @@ pub fn prepare(a: Args) -> Result<Prepared> {
     let load = checks::load(a.load_mn)?;
     let (distance, step) = checks::path(a.distance_um, a.step_um)?;
     let line = checks::line_deg(a.line_deg)?;
-    let sc = a.scene.resolve(a.theta)?;
+    let mut sc = a.scene.resolve(a.theta)?;
     checks::line_for(&sc.scene, line)?;
     if a.method == Method::Landscape {
         checks::grid(a.grid)?;
+        sc.warnings.extend(checks::grid_warning(&sc.scene, a.grid));
         if sc.scene.substrate.sigma_h > 0.0 {
             bail!("`--method landscape` needs a flat substrate (σ_h = 0): the landscape of a perturbed substrate is not periodic; use --method direct");
         }

@@ -148,9 +148,6 @@ fn execute(p: Prepared) -> Result<()> {
     } = p;
     let rep = Reporter::stderr();
     sc.log(&rep);
-    if let Some(note) = resonance_note(&sc.scene, &params.knobs) {
-        crate::runs::progress::Progress::note(&rep, &format!("note: {note}"));
-    }
     // θ is swept: the recorded scene does not keep a θ of its own.
     let mut recorded = scene_file(&sc.scene);
     recorded.slider.theta_deg = None;
@@ -176,6 +173,18 @@ fn execute(p: Prepared) -> Result<()> {
                 surrogate::units::s_to_ms(t0.elapsed().as_secs_f64()) / s.rows.max(1) as f64
             ),
         );
+    }
+    // the note only where it applies: some row's mount_resonance is true
+    if let (Some(note), Some(s)) = (resonance_note(&sc.scene, &params.knobs), stats) {
+        if s.resonant > 0 {
+            crate::runs::progress::Progress::note(
+                &rep,
+                &format!(
+                    "note: {note}; it applies to {} of {} rows",
+                    s.resonant, s.rows
+                ),
+            );
+        }
     }
     outs.finish()?;
     if let Some(s) = stats {

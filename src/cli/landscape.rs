@@ -111,11 +111,13 @@ pub fn run(a: Args) -> Result<()> {
 
 /// Every check of `superlube landscape`, before any work: flags, scene, outputs, size.
 pub fn prepare(a: Args) -> Result<Prepared> {
-    let sc = a.scene.resolve(a.theta)?;
+    let mut sc = a.scene.resolve(a.theta)?;
     let params = LandscapeParams {
         load: checks::load(a.load_mn)?,
         grid: checks::grid(a.grid)?,
     };
+    sc.warnings
+        .extend(checks::grid_warning(&sc.scene, params.grid));
     let extras: Vec<&str> = [
         ("--plot", a.plot.is_some()),
         ("--contact-map", a.contact_map.is_some()),

@@ -26,6 +26,7 @@ mod screen;
 mod slide;
 mod slurm;
 mod sweep_args;
+pub mod tips;
 mod tolerance;
 mod tolerance_args;
 mod value_enums;

@@ -303,8 +303,7 @@ impl SceneArgs {
                 );
             }
         }
-        let scene = file.into_scene()?;
-        scene.validate()?;
+        let scene = file.into_scene().map_err(|e| self.as_flag(e))?;
         let small = scene.slider_size_check().map_err(|e| {
             // the field as the user set it: the flag when one was given
             match (&self.overrides.slider_radius_um, &self.overrides.outline) {
@@ -316,6 +315,42 @@ impl SceneArgs {
             warnings: small.into_iter().chain(scene.edge_warning()).collect(),
             scene,
         })
+    }
+}
+
+impl SceneArgs {
+    /// A scene error on a field that a flag of this command line set, restated on the flag
+    /// and its value as typed (`` `--p-crit-gpa 4000`: P_crit is in GPa; … ``); any other
+    /// error unchanged.
+    fn as_flag(&self, e: surrogate::SceneError) -> anyhow::Error {
+        let surrogate::SceneError::Invalid { field, why, .. } = &e else {
+            return e.into();
+        };
+        let o = &self.overrides;
+        let num = |v: Option<f64>| v.map(|x| x.to_string());
+        let given = match field.as_str() {
+            "material.youngs_GPa" => ("--youngs-gpa", num(o.youngs_gpa)),
+            "coating.p_crit_GPa" => ("--p-crit-gpa", num(o.p_crit_gpa)),
+            "substrate.sigma_h_um" => ("--sigma-h-um", num(o.sigma_h_um)),
+            "slider.radius_um" => ("--slider-radius-um", num(o.slider_radius_um)),
+            "substrate.size_um" => ("--substrate-um", o.substrate_um.clone()),
+            "slider.offset_um" => ("--offset-um", o.offset_um.clone()),
+            "slider.tilt_k1_N_m" => ("--tilt-k1-n-m", num(o.tilt_k1_n_m)),
+            "slider.sphere_diameter_um" => (
+                "--slider-sphere-diameter-um",
+                num(o.slider_sphere_diameter_um),
+            ),
+            "substrate.sphere_diameter_um" | "sphere_diameter_um" => (
+                "--substrate-sphere-diameter-um",
+                num(o.substrate_sphere_diameter_um),
+            ),
+            "slider.lattice" => ("--slider-lattice", o.slider_lattice.clone()),
+            _ => return e.into(),
+        };
+        match given {
+            (flag, Some(v)) => anyhow::anyhow!("`{flag} {v}` ({field}): {why}"),
+            _ => e.into(),
+        }
     }
 }
 

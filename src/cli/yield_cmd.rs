@@ -55,7 +55,8 @@ pub struct Args {
     #[arg(
         long = "theta-sigma-deg",
         value_name = "DEG",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        conflicts_with = "theta_tol"
     )]
     theta_sigma_deg: Option<f64>,
     /// σ in degrees of a normal pull-direction offset (truncated at ±3σ) instead of the
@@ -63,7 +64,8 @@ pub struct Args {
     #[arg(
         long = "direction-sigma-deg",
         value_name = "DEG",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        conflicts_with = "direction_tol"
     )]
     direction_sigma_deg: Option<f64>,
     /// Coefficient of variation of each slider sphere's diameter (normal, truncated at ±3σ; 0:

@@ -256,6 +256,18 @@ pub fn figures(
                 load: mn_to_n(MAP_LOAD_MN),
                 grid: p.grid,
             };
+            // the grid must resolve the moiré's second harmonic (docs/validation/maps.md)
+            let need = surrogate::map::grid_need(&scene);
+            if need.periods.is_some() && p.grid < need.grid {
+                progress.note(&format!(
+                    "warning: the landscape at θ = {}° needs {} {} or more to resolve its moiré \
+                     (at {} it aliases; docs/validation/maps.md)",
+                    fmt_num(t),
+                    crate::study::input::Input::Grid,
+                    need.grid,
+                    p.grid
+                ));
+            }
             let mut rows = Vec::new();
             let stats = landscape(&scene, &lp, None, &mut rows, progress)?;
             let i = inputs("landscape", Some(&scene), record::landscape(&lp));

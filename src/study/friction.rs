@@ -73,6 +73,8 @@ pub struct FrictionStats {
     pub rows: u64,
     /// Rows without an estimate (their `error` column says why).
     pub failures: u64,
+    /// Rows whose `mount_resonance` column is true (the resonance note applies to them).
+    pub resonant: u64,
 }
 
 /// Cost estimate (for the size guard): at most `max_samples` solves per (θ, α, W).
@@ -200,6 +202,7 @@ pub fn friction(
                 .judged(p.mu_superlubric, scene.coating.p_crit);
             stats.rows += 1;
             stats.failures += !row.error.is_empty() as u64;
+            stats.resonant += (row.mount_resonance == Some(true)) as u64;
             rows.push(&row)?;
         }
         progress.advance(p.loads.len() as u64);

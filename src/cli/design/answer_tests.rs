@@ -79,6 +79,7 @@ fn pattern(ds: &DesignScene, n: usize) -> PatternResult {
                 contacts: 10.0,
                 seed_limits_mn: None,
                 yield_to_mn: None,
+                below_ladder_mn: None,
             },
         })
         .collect();

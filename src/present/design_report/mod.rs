@@ -414,6 +414,24 @@ mod tests {
         }
     }
 
+    /// trim_blocks eats the newline after a block tag: a line of text that ends with one
+    /// (`… {% endif %}`) joins the next line of output (a bullet merged into the one before:
+    /// "`yield_<p>.json`.- **DEM check**") unless an empty line follows it.
+    #[test]
+    fn no_line_of_text_ends_in_a_block_tag_that_eats_its_newline() {
+        let lines: Vec<&str> = super::TEMPLATE.lines().collect();
+        for (i, l) in lines.iter().enumerate() {
+            let t = l.trim();
+            let inline_end = !t.starts_with("{%") && t.ends_with("%}");
+            let next_empty = lines.get(i + 1).is_none_or(|n| n.trim().is_empty());
+            assert!(
+                !inline_end || next_empty,
+                "report.md.j2 line {}: text ending in a block tag joins the next line of output: `{t}`",
+                i + 1
+            );
+        }
+    }
+
     #[test]
     fn the_template_renders_the_answer_first_and_each_branch() {
         let md = render(&small(false, 2)).unwrap();

@@ -316,11 +316,18 @@ pub fn top_rows(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> Vec<TopR
                 theta: pm(format!("{}", b.theta_deg), p.tolerance.theta_tol_deg),
                 pull_x: pm(angle(b.direction_deg, dec), p.tolerance.direction_tol_deg),
                 alpha: angle(b.alpha_deg, dec),
-                limit_mn: format!(
-                    "{}{}",
-                    if b.score.exact { "" } else { "≤ " },
-                    b.score.superlubric_to_mn
-                ),
+                limit_mn: match b.score.below_ladder_mn {
+                    // located below the ladder's first load ([`super::words::below_ladder_words`])
+                    Some(w) if b.score.superlubric_to_mn == 0.0 && w > 0.0 => {
+                        format!("{} (below the ladder)", super::words::fmt_g(w, 3))
+                    }
+                    Some(_) if b.score.superlubric_to_mn == 0.0 => "0 (below the floor)".into(),
+                    _ => format!(
+                        "{}{}",
+                        if b.score.exact { "" } else { "≤ " },
+                        b.score.superlubric_to_mn
+                    ),
+                },
                 verdict: b.score.verdict.to_string(),
                 dem_centre: centre,
                 dem_corners: corners,
@@ -365,12 +372,14 @@ pub fn paragraph(pr: &PatternResult, a: &Answer, p: &DesignParams) -> String {
                 ". No design stays superlubric over the whole box even at the lowest load; this one is superlubric up to {} mN at its nominal orientation only.",
                 sc.nominal_to_mn
             );
+            m.push_str(&super::words::below_ladder_words(b, p));
         } else {
             let _ = write!(
                 m,
                 ". No design is superlubric even at the lowest load: this one has μ_est = {} there.",
                 fmt_g(sc.mu_worst, 3)
             );
+            m.push_str(&super::words::below_ladder_words(b, p));
         }
     } else {
         let how = match sc.verdict {

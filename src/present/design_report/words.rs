@@ -76,6 +76,7 @@ pub fn answer_line(
             b.score.nominal_to_mn,
             fmt_g(b.score.mu_worst, 3),
         );
+        m.push_str(&below_ladder_words(b, p));
     } else if b.score.superlubric_to_mn == 0.0 {
         let _ = write!(
             m,
@@ -85,6 +86,7 @@ pub fn answer_line(
             fmt_g(b.score.mu_worst, 3),
             b.score.intact_to_mn
         );
+        m.push_str(&below_ladder_words(b, p));
     } else {
         // the claim's load: the robust limit, or the nominal one where the tolerance box was
         // not searched to the end (the floor of many patterns: [`tolerance_words`])
@@ -235,6 +237,34 @@ pub fn answer_line(
     m
 }
 
+/// Where the robust limit of `b` is 0 and was located below the ladder's first load
+/// ([`crate::study::design::below_ladder`]), the sentence giving it with its meaning; empty
+/// otherwise.
+pub fn below_ladder_words(b: &Candidate, p: &DesignParams) -> String {
+    use crate::study::design::below_ladder::{FLOOR_FRACTION, RESOLUTION};
+    let Some(w) = b
+        .score
+        .below_ladder_mn
+        .filter(|_| b.score.superlubric_to_mn == 0.0)
+    else {
+        return String::new();
+    };
+    let first = p.loads.labels_mn().first().copied().unwrap_or(0.0);
+    let floor = fmt_g(first * FLOOR_FRACTION, 3);
+    if w > 0.0 {
+        format!(
+            " Below the ladder's first load ({first} mN), bisection over the same samples (to {} %, down to {floor} mN) finds it superlubric up to **{} mN**: its robust limit lies there, below every load of the ladder.",
+            100.0 * RESOLUTION,
+            fmt_g(w, 3)
+        )
+    } else {
+        format!(
+            " It fails even at {floor} mN ({} % of the ladder's first load, {first} mN, the floor of the search below the ladder): it carries no load superlubrically.",
+            100.0 * FLOOR_FRACTION
+        )
+    }
+}
+
 /// The tolerance sentences of the answer `b`: the robust limit over the box and the window at
 /// the nominal limit, and the nominal optimum where it differs (a borderline verdict is in the
 /// headline, [`answer_line`]).
@@ -272,8 +302,17 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
     if p.tolerance.theta_tol_deg > 0.0 || p.tolerance.direction_tol_deg > 0.0 {
         let _ = write!(
             m,
-            " Over the fabrication tolerance θ ±{}° × pull direction ±{}° (the pull direction stays fixed in the substrate frame when the slider is misaligned) it holds to **{} mN**",
-            p.tolerance.theta_tol_deg, p.tolerance.direction_tol_deg, sc.superlubric_to_mn
+            " Over the fabrication tolerance θ ±{}° × pull direction ±{}° (the pull direction stays fixed in the substrate frame when the slider is misaligned) it holds to **{} mN**{}",
+            p.tolerance.theta_tol_deg,
+            p.tolerance.direction_tol_deg,
+            match sc.below_ladder_mn {
+                Some(w) if sc.superlubric_to_mn == 0.0 && w > 0.0 => fmt_g(w, 3),
+                _ => sc.superlubric_to_mn.to_string(),
+            },
+            match sc.below_ladder_mn {
+                Some(w) if sc.superlubric_to_mn == 0.0 && w > 0.0 => " (below the ladder)",
+                _ => "",
+            }
         );
         if sc.nominal_to_mn > sc.superlubric_to_mn {
             let _ = write!(
@@ -297,6 +336,8 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
             m.push('.');
         }
     }
+    // the nominal optimum, said only where it is another design: one whose nominal limit is
+    // above both the answer's robust limit and its own nominal limit
     if let Some(n) = pr
         .ranking
         .iter()
@@ -305,6 +346,7 @@ pub fn tolerance_words(pr: &PatternResult, b: &Candidate, p: &DesignParams) -> S
             Some(b) if b.score.nominal_to_mn >= c.score.nominal_to_mn => Some(b),
             _ => Some(c),
         })
+        .filter(|n| n.score.nominal_to_mn > sc.nominal_to_mn)
     {
         let _ = write!(
             m,

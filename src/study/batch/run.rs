@@ -256,7 +256,14 @@ pub fn run_batch_with(
                             "DEM {}: μ = {:.5}{} ({:.0} s)",
                             o.name,
                             r.mu,
-                            if r.locked_in { ", LOCKED IN" } else { "" },
+                            if r.locked_in {
+                                format!(
+                                    "; {}",
+                                    crate::study::slide::locked_in_words(r.advance_ratio)
+                                )
+                            } else {
+                                String::new()
+                            },
                             r.wall_s
                         ),
                         (None, Some(e)) => format!("DEM {}: FAILED: {e}", o.name),

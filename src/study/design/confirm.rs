@@ -367,9 +367,9 @@ pub(super) fn confirm_stage(
     Ok(dem)
 }
 
-/// The design and load of the study-protocol check: the answer of the first pattern whose
-/// answer the DEM confirmed (else the first pattern's answer: the report says it is not
-/// confirmed), at the middle of its design-protocol runs up to its superlubric load (the
+/// The design and load of the study-protocol check: the answer of the best pattern (ranked by
+/// its rank-1 design, [`super::rank::compare`]) whose answer the DEM confirmed (else the best
+/// pattern's answer: the report says it is not confirmed), at the middle of its design-protocol runs up to its superlubric load (the
 /// confirmed loads), else at the middle confirmation load. So the measured difference is that
 /// of the design the report recommends, at a load where the shorter protocol ran on it.
 /// `confirm_loads` in N.
@@ -378,10 +378,21 @@ pub fn protocol_check_design<'a>(
     answers: &[answer::Answer],
     confirm_loads: &[f64],
 ) -> Option<ProtocolCheck<'a>> {
+    // the patterns best first, by their rank-1 designs (the ranking's one order), so the
+    // design recommended is the one the "Patterns compared" table ranks first
+    let mut order: Vec<usize> = (0..patterns.len().min(answers.len())).collect();
+    order.sort_by(
+        |&a, &b| match (patterns[a].ranking.first(), patterns[b].ranking.first()) {
+            (Some(x), Some(y)) => super::rank::compare(x, y),
+            (Some(_), None) => std::cmp::Ordering::Less,
+            (None, Some(_)) => std::cmp::Ordering::Greater,
+            (None, None) => std::cmp::Ordering::Equal,
+        },
+    );
     let with_index = || {
-        patterns
+        order
             .iter()
-            .zip(answers)
+            .map(|&k| (&patterns[k], &answers[k]))
             .filter_map(|(pr, a)| a.index.map(|i| (pr, i, a)))
     };
     let (pr, i, a) = with_index()

@@ -53,6 +53,7 @@ pub mod alpha_scan;
 pub mod alpha_scan_params;
 pub mod answer;
 pub mod answer_yield;
+pub mod below_ladder;
 pub mod best;
 pub mod confirm;
 pub mod confirm_params;

@@ -6,6 +6,7 @@
 //! the yield of each answer ([`YieldStage`]) — telling one [`Observer`] what it finds as typed
 //! events (no wording here).
 
+use super::below_ladder;
 use super::best;
 use super::confirm::{confirm_estimates, confirm_jobs, confirm_stage, run_batch, SlideOutcome};
 use super::ctx::Ctx;
@@ -270,6 +271,12 @@ impl<'a> Pipeline<'a> {
             walk.evaluated(&ranking);
         }
         ranking.sort_by(rank::compare);
+        self.below_ladder(
+            ds,
+            robust.is_some() || bx.is_point(),
+            &solvers,
+            &mut ranking,
+        )?;
         let walked = walk.end();
         self.tell_ranking(
             ds,
@@ -296,6 +303,39 @@ impl<'a> Pipeline<'a> {
             robust_floor_mn: floor_mn,
             trimmed: false,
         })
+    }
+
+    /// Where no design of the pattern holds the ladder's first load over its box (the best
+    /// robust limit 0, exact), the best [`below_ladder::BELOW_LADDER_DESIGNS`] designs' limits
+    /// located below it ([`below_ladder::locate`]) and the ranking re-sorted; `searched`:
+    /// whether this pass searches the box (not the nominal-only first pass). `solvers`: the
+    /// seeds' (empty: built here).
+    fn below_ladder(
+        &self,
+        ds: &DesignScene,
+        searched: bool,
+        solvers: &[Solver],
+        ranking: &mut [Candidate],
+    ) -> Result<()> {
+        let p = self.ctx.p;
+        if !searched || !below_ladder::needed(ranking) {
+            return Ok(());
+        }
+        let built;
+        let solvers = if solvers.is_empty() {
+            built = seed_solvers(ds, p, None)?;
+            &built[..]
+        } else {
+            solvers
+        };
+        for c in ranking.iter_mut().take(below_ladder::BELOW_LADDER_DESIGNS) {
+            if c.score.exact && c.score.superlubric_to_mn == 0.0 {
+                let b = below_ladder::locate(c, solvers, p)?;
+                c.score.below_ladder_mn = Some(label(n_to_mn(b.holds_to)));
+            }
+        }
+        ranking.sort_by(rank::compare);
+        Ok(())
     }
 
     /// Tells the observer of a pattern's ranking: the designs left at the floor (with a

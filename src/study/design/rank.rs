@@ -11,13 +11,20 @@
 //!    superlubric at every load W_1 … W_k (0: not even at the lowest load) — with a fabrication
 //!    tolerance, the **robust** limit: the lowest such load over every sample of the tolerance
 //!    box ([`crate::study::tolerance::RobustSearch`]): higher is better;
-//! 2. the window — the θ half-width, then the direction half-width, inside which the candidate
+//!    where it is 0, the load it holds to below the ladder's first load, when located
+//!    ([`super::below_ladder`]): higher is better;
+//! 2. `nominal_to` — the same limit at the exact (θ, α) alone: higher is better (the margin a
+//!    well-made device has; it also orders designs whose robust limits are all 0);
+//! 3. the window — the θ half-width, then the direction half-width, inside which the candidate
 //!    stays superlubric at its nominal limit load: wider is better (0 without tolerance);
-//! 3. `mu_worst` — the largest μ_est over those loads (over the lowest load alone when
+//! 4. `mu_worst` — the largest μ_est over those loads (over the lowest load alone when
 //!    `superlubric_to` is 0): lower is better;
-//! 4. `contacts` — the path-averaged contact number at `superlubric_to` (at the lowest load
+//! 5. `contacts` — the path-averaged contact number at `superlubric_to` (at the lowest load
 //!    when 0): more is better (the load is spread over more asperities);
-//! 5. then θ and α ascending (a fixed order for ties).
+//! 6. then θ and α ascending (a fixed order for ties).
+//!
+//! This one order ranks the designs of a pattern, the patterns (by their rank-1 designs) and
+//! picks the recommended design, so the recommended design is rank 1 wherever it is listed.
 //!
 //! A candidate not superlubric at the lowest load has only that load estimated
 //! ([`super::estimate`]); its `intact_to` then counts that load only.
@@ -119,6 +126,11 @@ pub struct Score {
     /// where the devices are too few for a bound; [`super::yield_rank`]). It orders before
     /// everything else; `None`: not computed.
     pub yield_to_mn: Option<f64>,
+    /// Where the robust limit is 0 (not even the ladder's first load holds over the box): the
+    /// load (mN) it holds to below the first load, located by bisection down to a floor
+    /// ([`super::below_ladder`]; `Some(0.0)`: below the floor). Orders right after the robust
+    /// limit; `None`: not searched.
+    pub below_ladder_mn: Option<f64>,
 }
 
 /// The score of the rows of one (θ, α), loads ascending.
@@ -145,6 +157,7 @@ pub fn score(rows: &[FrictionRow], p_crit: f64, mu_sl: f64) -> Score {
         contacts: upto.last().and_then(|r| r.contacts_mean).unwrap_or(0.0),
         seed_limits_mn: None,
         yield_to_mn: None,
+        below_ladder_mn: None,
     }
 }
 
@@ -214,7 +227,8 @@ fn group(exact: bool, superlubric_to_mn: f64) -> u8 {
 }
 
 /// What the ranking order compares of a candidate (the module docs' score, in order): its
-/// load at yield q where computed, its group, limit, windows, μ, contacts, then θ and α. [`compare`] orders candidates by it; the
+/// load at yield q where computed, its group, limit, nominal limit, windows, μ, contacts,
+/// then θ and α: the one tie rule of every table that lists designs or patterns. [`compare`] orders candidates by it; the
 /// robust search orders by it the best score each candidate could still reach
 /// ([`Key::reachable`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -223,6 +237,8 @@ pub struct Key {
     yield_to_mn: f64,
     group: u8,
     superlubric_to_mn: f64,
+    below_ladder_mn: f64,
+    nominal_to_mn: f64,
     theta_window_deg: f64,
     direction_window_deg: f64,
     mu_worst: f64,
@@ -239,6 +255,8 @@ impl Key {
             yield_to_mn: s.yield_to_mn.unwrap_or(f64::NEG_INFINITY),
             group: group(s.exact, s.superlubric_to_mn),
             superlubric_to_mn: s.superlubric_to_mn,
+            below_ladder_mn: s.below_ladder_mn.unwrap_or(0.0),
+            nominal_to_mn: s.nominal_to_mn,
             theta_window_deg: window(s.theta_window_deg),
             direction_window_deg: window(s.direction_window_deg),
             mu_worst: s.mu_worst,
@@ -272,6 +290,8 @@ impl Key {
             .total_cmp(&self.yield_to_mn)
             .then(self.group.cmp(&o.group))
             .then(o.superlubric_to_mn.total_cmp(&self.superlubric_to_mn))
+            .then(o.below_ladder_mn.total_cmp(&self.below_ladder_mn))
+            .then(o.nominal_to_mn.total_cmp(&self.nominal_to_mn))
             .then(o.theta_window_deg.total_cmp(&self.theta_window_deg))
             .then(o.direction_window_deg.total_cmp(&self.direction_window_deg))
             .then(self.mu_worst.total_cmp(&o.mu_worst))

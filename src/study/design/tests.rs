@@ -33,6 +33,7 @@ fn pattern(name: &str, n: usize) -> PatternResult {
                 contacts: 100.0,
                 seed_limits_mn: None,
                 yield_to_mn: None,
+                below_ladder_mn: None,
             },
         })
         .collect();

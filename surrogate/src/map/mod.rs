@@ -11,6 +11,7 @@ mod contact_line;
 mod corrugation;
 mod landscape;
 mod params;
+mod resolution;
 
 pub use cell::RepeatCell;
 pub use contact_line::{contact_line_direction, ContactLine};
@@ -20,6 +21,7 @@ pub use corrugation::{
 };
 pub use landscape::{compute_landscape, Landscape};
 pub use params::MapParams;
+pub use resolution::{grid_need, GridNeed, COINCIDENCE, MAX_PERIODS, POINTS_PER_PERIOD};
 
 use crate::error::SceneError;
 use crate::scene::Scene;

@@ -68,6 +68,11 @@ impl Material {
                 "must be a positive number",
             ));
         }
+        super::validate::plausible_field(
+            &format!("{table}.youngs_GPa"),
+            &super::plausible::YOUNGS_GPA,
+            pa_to_gpa(self.youngs),
+        )?;
         if !(self.poisson.is_finite() && self.poisson > -1.0 && self.poisson < 0.5) {
             return Err(SceneError::invalid(
                 &format!("{table}.poisson"),
@@ -82,7 +87,11 @@ impl Material {
                 "must be a positive number",
             ));
         }
-        Ok(())
+        super::validate::plausible_field(
+            &format!("{table}.density_g_cm3"),
+            &super::plausible::DENSITY_G_CM3,
+            kgm3_to_gcm3(self.density),
+        )
     }
 }
 
@@ -163,6 +172,11 @@ impl Coating {
                 "must be a positive number",
             ));
         }
+        super::validate::plausible_field(
+            "coating.p_crit_GPa",
+            &super::plausible::P_CRIT_GPA,
+            pa_to_gpa(self.p_crit),
+        )?;
         for (f, v) in [("coating.mu1", self.mu1), ("coating.mu2", self.mu2)] {
             if !(v.is_finite() && v >= 0.0) {
                 return Err(SceneError::invalid(f, v, "must be a non-negative number"));

@@ -11,6 +11,7 @@ mod material_file;
 mod mount;
 mod outline_file;
 mod pattern;
+pub mod plausible;
 #[allow(clippy::module_inception)]
 mod scene;
 mod sites;

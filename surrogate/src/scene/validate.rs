@@ -3,9 +3,16 @@
 //! edge.
 
 use super::pattern;
+use super::plausible::{self, Plausible};
 use super::Scene;
 use crate::error::SceneError;
-use crate::units::{m_to_um, nm_text, um_pair_text, um_text};
+use crate::units::{m_to_um, nm_text, significant, um_pair_text, um_text};
+
+/// `v` (user units) checked against the plausible range `p`; the error names `field`.
+pub(crate) fn plausible_field(field: &str, p: &Plausible, v: f64) -> Result<(), SceneError> {
+    p.check(v)
+        .map_err(|why| SceneError::invalid(field, significant(v, 9), &why))
+}
 
 /// Fewer slider spheres than this draw a warning ([`Scene::slider_size_check`]): a centre
 /// sphere and its ring of six in a triangular lattice.
@@ -15,6 +22,7 @@ impl Scene {
     /// Checks every field; the error names the first bad field in user units.
     pub fn validate(&self) -> Result<(), SceneError> {
         let um = um_text;
+        self.validate_plausible()?;
         if !(self.sphere_radius.is_finite() && self.sphere_radius > 0.0) {
             return Err(SceneError::invalid(
                 "sphere_diameter_um",
@@ -73,10 +81,22 @@ impl Scene {
         }
         let r_min = self.min_sphere_radius();
         if sh >= r_min {
+            let nm = m_to_um(sh) * 10f64.powi(-3);
+            let slip = if nm < m_to_um(r_min) {
+                format!(
+                    "; did you mean {} µm (the value typed in nm)?",
+                    significant(nm, 6)
+                )
+            } else {
+                String::new()
+            };
             return Err(SceneError::invalid(
                 "substrate.sigma_h_um",
                 um(sh),
-                &format!("must be smaller than the sphere radius {} µm", um(r_min)),
+                &format!(
+                    "σ_h is in µm and must be smaller than the sphere radius {} µm{slip}",
+                    um(r_min)
+                ),
             ));
         }
         self.slider.mount.validate("slider.tilt")?;
@@ -113,6 +133,59 @@ impl Scene {
             m.validate_in("substrate.material")?;
         }
         self.coating.validate()?;
+        Ok(())
+    }
+
+    /// The plausible ranges ([`super::plausible`]) of the scene's lengths and spring: sphere
+    /// diameters, lattice spacings, substrate sides, slider radius, σ_h, K1 (materials and the
+    /// coating check theirs). Refuses the first implausible one in user units, with the slip
+    /// it most likely is. O(1).
+    fn validate_plausible(&self) -> Result<(), SceneError> {
+        let mut d = vec![("sphere_diameter_um", 2.0 * self.sphere_radius)];
+        if let Some(r) = self.geometry.slider_sphere_radius {
+            d.push(("slider.sphere_diameter_um", 2.0 * r));
+        }
+        for (field, v) in d {
+            plausible_field(field, &plausible::DIAMETER_UM, m_to_um(v))?;
+        }
+        let g = &self.geometry;
+        for (l, sites, field) in [
+            (&self.slider.lattice, &g.slider_sites, "slider.lattice"),
+            (
+                &self.substrate.lattice,
+                &g.substrate_sites,
+                "substrate.lattice",
+            ),
+        ] {
+            let s = m_to_um(l.min_spacing());
+            if sites.is_none() && s.is_finite() && !plausible::SPACING_UM.contains(s) {
+                let why = plausible::SPACING_UM.check(s).unwrap_err();
+                return Err(SceneError::invalid(
+                    field,
+                    format!("{} µm nearest-site spacing", significant(s, 9)),
+                    &why,
+                ));
+            }
+        }
+        let [lx, ly] = self.substrate.size;
+        for v in [lx, ly] {
+            if v.is_finite() && v > 0.0 {
+                plausible_field("substrate.size_um", &plausible::SIZE_UM, m_to_um(v))?;
+            }
+        }
+        let r = self.slider.radius;
+        if r.is_finite() && r >= 0.0 {
+            plausible_field("slider.radius_um", &plausible::SIZE_UM, m_to_um(r))?;
+        }
+        let sh = self.substrate.sigma_h;
+        if sh.is_finite() && sh >= 0.0 {
+            plausible_field("substrate.sigma_h_um", &plausible::SIGMA_H_UM, m_to_um(sh))?;
+        }
+        if let super::Mount::Springs { k1 } = self.slider.mount {
+            if k1.is_finite() && k1 >= 0.0 {
+                plausible_field("slider.tilt_k1_N_m", &plausible::TILT_K1_N_M, k1)?;
+            }
+        }
         Ok(())
     }
 

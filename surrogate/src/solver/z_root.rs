@@ -269,7 +269,8 @@ impl ZRoot {
                 iters += 1;
                 if iters > params.max_iter || z_hi0 - z_lo > self.two_r {
                     return Err(SceneError::NoEquilibrium(format!(
-                        "load {load:e} N cannot be carried with overlap below the sphere diameter"
+                        "the load {} mN cannot be carried with overlap below the sphere diameter (load_mN)",
+                        crate::units::significant(crate::units::n_to_mn(load), 6)
                     )));
                 }
             }
