@@ -25,6 +25,22 @@ const SMALL: [&str; 12] = [
     "0",
 ];
 
+/// A rough substrate, 6 devices and a check of 2, the DEM on a short protocol.
+const DEM: [&str; 12] = [
+    "--sigma-h-um",
+    "0.002",
+    "--samples",
+    "6",
+    "--dem-check",
+    "2",
+    "--dem-equilibrate-us",
+    "1",
+    "--dem-relax-us",
+    "1",
+    "--dem-slide-us",
+    "10",
+];
+
 fn rows(path: &Path) -> Vec<HashMap<String, String>> {
     let mut r = csv::Reader::from_path(path).unwrap();
     let h = r.headers().unwrap().clone();
@@ -184,24 +200,7 @@ fn the_same_seed_gives_the_same_rows_whatever_the_threads() {
 fn the_dem_locates_the_setting_devices_and_checks_the_quote() {
     let d = tmpdir("yield-dem");
     let out = d.join("y");
-    run(
-        &[
-            "--sigma-h-um",
-            "0.002",
-            "--samples",
-            "6",
-            "--dem-check",
-            "2",
-            "--dem-equilibrate-us",
-            "1",
-            "--dem-relax-us",
-            "1",
-            "--dem-slide-us",
-            "10",
-        ],
-        &out,
-        "2",
-    );
+    run(&DEM, &out, "2");
     let s = summary(&out);
     let m = rows(&out.join("yield.csv"));
     assert_eq!(m.len(), 8, "6 devices and the check's 2 pooled");
@@ -302,4 +301,62 @@ fn bad_input_is_refused_naming_the_flag() {
         fails_naming(&refs, flag);
     }
     assert!(!out.exists(), "nothing is written for bad input");
+}
+
+/// A yield killed (SIGKILL) once some of its DEM runs are stored, then run again into the same
+/// folder, reruns none of them (each stored `slide.json` keeps its bytes and time), and ends
+/// with the same rows as an uninterrupted run on 1 thread in a fresh folder.
+#[test]
+fn a_killed_yield_resumes_reusing_its_dem_runs_whatever_the_threads() {
+    let d = tmpdir("yield-kill");
+    let flags = DEM;
+    let out = d.join("y");
+    let mut child = bin()
+        .arg("yield")
+        .args(SMALL)
+        .args(flags)
+        .arg("--out-dir")
+        .arg(&out)
+        .env("RAYON_NUM_THREADS", "2")
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let stored = |dir: &Path| -> Vec<(std::path::PathBuf, std::time::SystemTime)> {
+        let mut v: Vec<_> = std::fs::read_dir(dir.join("dem"))
+            .map(|r| {
+                r.filter_map(|e| {
+                    let p = e.ok()?.path().join("slide.json");
+                    let t = std::fs::metadata(&p).ok()?.modified().ok()?;
+                    Some((p, t))
+                })
+                .collect()
+            })
+            .unwrap_or_default();
+        v.sort();
+        v
+    };
+    let t0 = std::time::Instant::now();
+    while stored(&out).len() < 2 && t0.elapsed().as_secs() < 300 {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    child.kill().ok();
+    child.wait().unwrap();
+    let before = stored(&out);
+    assert!(!before.is_empty(), "no DEM run was stored before the kill");
+    run(&flags, &out, "2");
+    let after = stored(&out);
+    for (p, t) in &before {
+        let kept = after.iter().find(|(q, _)| q == p).map(|x| x.1);
+        assert_eq!(kept, Some(*t), "{} was run again", p.display());
+    }
+    let fresh = d.join("fresh");
+    run(&flags, &fresh, "1");
+    assert_eq!(
+        std::fs::read(out.join("yield.csv")).unwrap(),
+        std::fs::read(fresh.join("yield.csv")).unwrap()
+    );
+    std::fs::remove_dir_all(&d).ok();
 }

@@ -84,13 +84,7 @@ pub fn run_with(
     progress: &dyn Progress,
 ) -> Result<DemPart> {
     let mu_sl = p.limit.mu_superlubric;
-    let mut rounds = Rounds {
-        decider: oracle,
-        mu_sl,
-        resolution: p.resolution,
-        runs: 0,
-        rounds: 0,
-    };
+    let mut rounds = Rounds::new(oracle, mu_sl, p.resolution);
     let allowed = plan.max_runs.max(plan.check);
     let ranks = |n: usize| setting_ranks(n, p.quantile, p.confidence);
     let n = devices.len();

@@ -111,13 +111,7 @@ pub fn dem_monte_carlo(
         mu_superlubric: p.limit.mu_superlubric,
         dem: d,
     };
-    let mut rounds = Rounds {
-        decider: &decider,
-        mu_sl: p.limit.mu_superlubric,
-        resolution: p.resolution,
-        runs: 0,
-        rounds: 0,
-    };
+    let mut rounds = Rounds::new(&decider, p.limit.mu_superlubric, p.resolution);
     rounds.run(&mut devices, count, 20 * count, progress)?;
     let kn = Knowledge::of(&devices, count, p.limit.mu_superlubric, p.resolution);
     let rows: Vec<McRow> = devices

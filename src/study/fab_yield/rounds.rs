@@ -149,7 +149,18 @@ pub struct Rounds<'a> {
     pub rounds: usize,
 }
 
-impl Rounds<'_> {
+impl<'a> Rounds<'a> {
+    /// No rounds yet, on `decider`, with the verdict's μ_sl and the yield's resolution.
+    pub fn new(decider: &'a dyn DemOracle, mu_sl: f64, resolution: f64) -> Self {
+        Rounds {
+            decider,
+            mu_sl,
+            resolution,
+            runs: 0,
+            rounds: 0,
+        }
+    }
+
     /// The loads (N) device `d` (bounds `b`) is run at this round (module docs).
     fn loads_for(&self, d: &Device, b: &Bounds, k: &Knowledge) -> Vec<f64> {
         let t = k.threshold;

@@ -155,6 +155,22 @@ fn truths(seed: u64, n: usize, rho: Option<(usize, f64)>) -> Vec<Truth> {
         .collect()
 }
 
+/// The DEM part of a yield of 59 devices of `t` and a check of 10 (the last 10 truths), at
+/// most 40 runs.
+fn yield_of(t: &[Truth]) -> (YieldParams, Vec<Device>, super::dem_part::DemPart) {
+    let oracle = Oracle(t.to_vec());
+    let p = params(59);
+    let mut devices: Vec<Device> = (0..59).map(|i| device(i, t[i], false)).collect();
+    let fresh = || Ok((59..69).map(|i| device(i, t[i], true)).collect());
+    let plan = Plan {
+        check: 10,
+        check_load: None,
+        max_runs: 40,
+    };
+    let part = run_with(&oracle, &p, plan, &mut devices, fresh, &Silent).unwrap();
+    (p, devices, part)
+}
+
 /// 59 devices and a check of 10: every located device is located within the resolution of
 /// its true DEM critical load, no device keeps a load below its truth less the resolution,
 /// the quote and its bound equal the true order statistics of the pool to the resolution,
@@ -164,16 +180,7 @@ fn the_rounds_find_the_true_order_statistics() {
     let scene = surrogate::Scene::preset("tri-tri").unwrap();
     for seed in 1..=5 {
         let t = truths(seed, 69, None);
-        let oracle = Oracle(t.clone());
-        let p = params(59);
-        let mut devices: Vec<Device> = (0..59).map(|i| device(i, t[i], false)).collect();
-        let fresh = || Ok((59..69).map(|i| device(i, t[i], true)).collect());
-        let plan = Plan {
-            check: 10,
-            check_load: None,
-            max_runs: 40,
-        };
-        let part = run_with(&oracle, &p, plan, &mut devices, fresh, &Silent).unwrap();
+        let (p, devices, part) = yield_of(&t);
         let o = summary::outcome(&scene, &p, &devices, Some(&part));
         let s = &o.summary;
         assert!(part.runs <= 40, "seed {seed}: {} runs", part.runs);
@@ -222,16 +229,7 @@ fn the_rounds_find_the_true_order_statistics() {
 fn a_contradicting_check_lowers_the_quote_or_is_flagged() {
     let scene = surrogate::Scene::preset("tri-tri").unwrap();
     let t = truths(11, 69, Some((59, 1.15)));
-    let oracle = Oracle(t.clone());
-    let p = params(59);
-    let mut devices: Vec<Device> = (0..59).map(|i| device(i, t[i], false)).collect();
-    let fresh = || Ok((59..69).map(|i| device(i, t[i], true)).collect());
-    let plan = Plan {
-        check: 10,
-        check_load: None,
-        max_runs: 40,
-    };
-    let part = run_with(&oracle, &p, plan, &mut devices, fresh, &Silent).unwrap();
+    let (p, devices, part) = yield_of(&t);
     let s = summary::outcome(&scene, &p, &devices, Some(&part)).summary;
     // every check device fails at the first quote
     assert_eq!(s.dem_check_passed, 0);
