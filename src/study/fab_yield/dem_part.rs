@@ -93,7 +93,7 @@ pub fn run_with(
     let mut check_load = None;
     if plan.check > 0 {
         let kn = Knowledge::of(devices, ranks(n), mu_sl, p.resolution);
-        let quoted = summary::quote(&kn.values(devices, mu_sl, p.resolution), p.quantile);
+        let quoted = summary::quote(&kn.values(devices, mu_sl), p.quantile);
         if let Some(w) = plan.check_load.or(quoted) {
             let start = devices.len();
             devices.extend(fresh()?);

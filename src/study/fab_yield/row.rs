@@ -19,8 +19,9 @@ pub enum DecidedBy {
     Dem,
     /// The DEM located its critical load to the resolution (held at it, failed just above).
     Located,
-    /// It could set the quote or its bound but the DEM runs allowed were spent: kept at the
-    /// lower edge of what is known (conservative).
+    /// It could set the quote or its bound but the DEM runs allowed were spent: kept at its
+    /// prediction (its own DEM margin, else the design's bias-corrected band centre,
+    /// transferred through its estimate) inside what the DEM showed.
     Undecided,
 }
 
@@ -163,7 +164,7 @@ pub struct YieldSummary {
     /// Devices with at least one DEM run.
     pub dem_decided: usize,
     /// Devices that could set the quote or its bound when the DEM runs allowed were spent
-    /// (kept at the lower end of what is known: the quote is then conservative).
+    /// (kept at their prediction; the check on fresh devices guards the quote).
     pub undecided: usize,
     /// DEM runs made, the check's included.
     pub dem_runs: usize,

@@ -169,7 +169,7 @@ pub fn outcome(
     let mu = p.limit.mu_superlubric;
     let kn = dem.map(|part| Knowledge::of(devices, part.k, mu, p.resolution));
     let values: Vec<(f64, DecidedBy)> = match &kn {
-        Some(kn) => kn.values(devices, mu, p.resolution),
+        Some(kn) => kn.values(devices, mu),
         None => devices
             .iter()
             .map(|d| (d.estimate.load, DecidedBy::Estimate))
