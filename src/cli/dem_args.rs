@@ -310,14 +310,23 @@ impl DemArgs {
         checks::every(self.checkpoint_every, "--checkpoint-every", "checkpoint")?;
         checks::every(self.xyz_every, "--xyz-every", "snapshot")?;
         let mut sim = SimParams {
-            dt,
-            load,
-            equilibrate_time: equilibrate,
-            sample_interval: sample,
-            tangential: self.tangential.engine(),
+            protocol: dem::ProtocolParams {
+                load,
+                equilibrate_time: equilibrate,
+                sample_interval: sample,
+                ..Default::default()
+            },
+            contact: dem::ContactParams {
+                tangential: self.tangential.engine(),
+                ..Default::default()
+            },
+            numerics: dem::NumericsParams {
+                dt,
+                ..Default::default()
+            },
             ..SimParams::default()
         };
-        protocol.apply(&mut sim);
+        protocol.apply(&mut sim.protocol);
         let params = DemParams {
             sim,
             alpha,

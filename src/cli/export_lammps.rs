@@ -123,15 +123,24 @@ pub fn run(a: Args) -> Result<()> {
         None => contact_line_direction(&scene, scene.slider.theta, &MapParams::default()).angle,
     };
     let mut params = SimParams {
-        dt: a.dt_us.map(us_to_s),
-        load: mn_to_n(a.load_mn),
-        alpha: line + alpha,
-        equilibrate_time: us_to_s(a.equilibrate_us),
-        sample_interval: us_to_s(a.sample_us),
-        prune_substrate: a.prune,
+        protocol: dem::ProtocolParams {
+            load: mn_to_n(a.load_mn),
+            alpha: line + alpha,
+            equilibrate_time: us_to_s(a.equilibrate_us),
+            sample_interval: us_to_s(a.sample_us),
+            ..Default::default()
+        },
+        numerics: dem::NumericsParams {
+            dt: a.dt_us.map(us_to_s),
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            prune_substrate: a.prune,
+            ..Default::default()
+        },
         ..SimParams::default()
     };
-    a.protocol.apply(&mut params);
+    a.protocol.apply(&mut params.protocol);
     let opts = ExportOptions {
         mu: a.mu.unwrap_or(scene.coating.mu1),
         dump_interval: us_to_s(a.dump_us),

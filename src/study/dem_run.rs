@@ -9,7 +9,9 @@ use crate::runs::progress::Progress;
 use anyhow::{Context, Result};
 use dem::model::Friction;
 use dem::protocol::{run, step_counts, Phase, RunIo, RunKind};
-use dem::{choose_model, prepare, ModelChoice, ModelRequest, Prepared, SimParams, Start};
+use dem::{
+    choose_model_at, prepare_at, ModelChoice, ModelRequest, Nominal, Prepared, SimParams, Start,
+};
 use std::path::PathBuf;
 use surrogate::friction::TiltResonance;
 use surrogate::units::{n_to_mn, rad_to_deg, s_to_us};
@@ -61,10 +63,10 @@ impl Default for ModelSpec {
 }
 
 /// The reductions for `scene` and `sim` (pulling direction already set) per `spec`, with the
-/// reason ([`dem::choose_model`]; costs one surrogate solve and, for `auto` with sliding, the
-/// Prandtl–Tomlinson path of ~40 solves).
-pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec) -> Result<ModelChoice> {
-    let mut c = choose_model(scene, sim, spec.request)?;
+/// reason ([`dem::choose_model_at`] from the run's `nominal` solve; costs, for `auto` with
+/// sliding, the Prandtl–Tomlinson path of ~40 solves).
+pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec, nominal: &Nominal) -> ModelChoice {
+    let mut c = choose_model_at(scene, sim, spec.request, nominal);
     if spec.force_rigid_z && !c.rigid_z {
         c.rigid_z = true;
         c.model = "reduced";
@@ -74,7 +76,7 @@ pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec) -> Result<ModelCh
         c.active_set = false;
         c.reason.push_str("; active set off (asked for)");
     }
-    Ok(c)
+    c
 }
 
 /// A finished (or failed) DEM run.
@@ -121,15 +123,17 @@ pub fn run_dem(
 ) -> Result<DemOutcome> {
     let (line, dir) = direction(scene, p);
     let mut sim_params = p.sim.clone();
-    sim_params.alpha = dir;
-    let choice = choose(scene, &sim_params, p.model)?;
+    sim_params.protocol.alpha = dir;
+    // the surrogate's equilibrium at the load: solved once, for the model choice and the start
+    let nominal = Nominal::solve(scene, sim_params.protocol.load)?;
+    let choice = choose(scene, &sim_params, p.model, &nominal);
     choice.apply(&mut sim_params);
     progress.note(&format!("model: {} ({})", choice.model, choice.reason));
     let tilt = TiltResonance::with_ties(
         scene,
-        sim_params.k_slider_xy,
-        sim_params.k_substrate_xy,
-        sim_params.control_sphere_radius,
+        sim_params.mount.k_slider_xy,
+        sim_params.mount.k_substrate_xy,
+        sim_params.mount.control_sphere_radius,
     );
     // Only where the coating may fail while sliding (the auto model's test).
     if let Some(t) =
@@ -141,7 +145,7 @@ pub fn run_dem(
              \"The mount's resonance\")"
         ));
     }
-    let mut prepared = prepare(scene, sim_params, p.start, p.friction)?;
+    let mut prepared = prepare_at(scene, sim_params, p.start, p.friction, &nominal)?;
     let sim = &mut prepared.sim;
     progress.note(&format!(
         "stable step estimate: {:.4e} µs ({}); using dt = {:.4e} µs; {} particles ({} substrate spheres pruned)",
@@ -233,20 +237,20 @@ pub fn run_dem(
         particles: sim.particles(),
         pruned_substrate: prepared.start.pruned,
         particle_steps_per_s: steps as f64 * sim.particles() as f64 / wall_s.max(1e-9),
-        rigid_z: sim.params.rigid_z,
-        prune: sim.params.prune_substrate,
+        rigid_z: sim.params.mount.rigid_z,
+        prune: sim.params.active.prune_substrate,
         model: choice.model,
         model_requested: choice.requested,
         model_reason: choice.reason,
         tilt_pair_ratio: tilt.map(|t| t.ratio),
-        active_set: sim.params.active_set,
+        active_set: sim.params.active.enabled,
         mean_active_particles: sim.state.stats.particle_steps as f64 / sim.state.step.max(1) as f64
             + 1.0,
     };
     let case = DemCase {
         pattern: scene.pattern.clone(),
         theta_deg: label(rad_to_deg(scene.slider.theta)),
-        load_mn: label(n_to_mn(sim.params.load)),
+        load_mn: label(n_to_mn(sim.params.protocol.load)),
     };
     Ok(DemOutcome {
         prepared,

@@ -77,7 +77,7 @@ pub fn export_lammps(
     opts: &ExportOptions,
 ) -> Result<LammpsExport, DemError> {
     scene.validate()?;
-    if params.rigid_z {
+    if params.mount.rigid_z {
         return Err(DemError::invalid(
             "rigid_z",
             true,
@@ -100,34 +100,34 @@ pub fn export_lammps(
         ));
     }
     for (v, f) in [
-        (params.equilibrate_time, "equilibrate_us"),
-        (params.relax_time, "relax_us"),
-        (params.slide_time, "slide_us"),
-        (params.support_speed, "speed_m_s"),
+        (params.protocol.equilibrate_time, "equilibrate_us"),
+        (params.protocol.relax_time, "relax_us"),
+        (params.protocol.slide_time, "slide_us"),
+        (params.protocol.support_speed, "speed_m_s"),
     ] {
         let scale = if f == "speed_m_s" { 1.0 } else { 1e6 };
         check_nonneg(v, f, scale)?;
     }
-    if !(params.sample_interval.is_finite() && params.sample_interval > 0.0) {
+    if !(params.protocol.sample_interval.is_finite() && params.protocol.sample_interval > 0.0) {
         return Err(DemError::invalid(
             "sample_us",
-            params.sample_interval * 1e6,
+            params.protocol.sample_interval * 1e6,
             "must be positive",
         ));
     }
-    if !(params.k_slider_z >= params.k_slider_xy && params.k_slider_xy >= 0.0) {
+    if !(params.mount.k_slider_z >= params.mount.k_slider_xy && params.mount.k_slider_xy >= 0.0) {
         return Err(DemError::invalid(
             "k_slider_z",
-            params.k_slider_z,
+            params.mount.k_slider_z,
             "the bond split needs k_slider_z ≥ k_slider_xy ≥ 0 (N/m)",
         ));
     }
     let (m_sl, m_sb) = (scene.slider_material(), scene.substrate_material());
     let damping = if m_sl == m_sb {
-        damping::lammps_damping(params.gamma_n, params.gamma_t, m_sl.poisson)?
+        damping::lammps_damping(params.contact.gamma_n, params.contact.gamma_t, m_sl.poisson)?
     } else {
         let ratio = 6.0 * m_sl.g_star_with(&m_sb) / m_sl.e_star_with(&m_sb);
-        damping::lammps_damping_ratio(params.gamma_n, params.gamma_t, ratio)?
+        damping::lammps_damping_ratio(params.contact.gamma_n, params.contact.gamma_t, ratio)?
     };
     let friction = crate::model::Friction::Constant(crate::model::Constant { mu: opts.mu });
     let prep = crate::prepare(scene, params.clone(), Start::Surrogate, Some(friction))?;
@@ -150,13 +150,16 @@ pub fn export_lammps(
     let hertz = scene.hertz();
     let m_s = sim.spec.slider_sphere_mass();
     let m_b = sim.spec.substrate_sphere_mass();
-    let m_c = 0.5 * m_sl.sphere_mass(p.control_sphere_radius);
-    let viscous = (p.damping_time.is_finite() && p.damping_time > 0.0).then(|| DeckViscous {
-        gamma_sphere: micro::drag(m_s / p.damping_time),
-        control_ratio: m_c / m_s,
-        substrate_ratio: (m_b != m_s).then(|| m_b / m_s),
-        relative: p.damping_frame == crate::DampingFrame::Relative,
-    });
+    let m_c = 0.5 * m_sl.sphere_mass(p.mount.control_sphere_radius);
+    let viscous =
+        (p.numerics.damping_time.is_finite() && p.numerics.damping_time > 0.0).then(|| {
+            DeckViscous {
+                gamma_sphere: micro::drag(m_s / p.numerics.damping_time),
+                control_ratio: m_c / m_s,
+                substrate_ratio: (m_b != m_s).then(|| m_b / m_s),
+                relative: p.numerics.damping_frame == crate::DampingFrame::Relative,
+            }
+        });
     let mount = match scene.slider.mount {
         Mount::Locked => DeckMount::Locked,
         Mount::Free => DeckMount::Free,
@@ -165,7 +168,7 @@ pub fn export_lammps(
         },
     };
     let n = sim.spec.slider_sites.len();
-    let (sa, ca) = p.alpha.sin_cos();
+    let (sa, ca) = p.protocol.alpha.sin_cos();
     let (st, ct) = scene.slider.theta.sin_cos();
     let um = 1e6;
     let mount_text = match scene.slider.mount {
@@ -175,11 +178,11 @@ pub fn export_lammps(
     let direction = match opts.alpha_and_line {
         Some((a, l)) => format!(
             "{}° from x = contact line {}° + alpha {}°",
-            p.alpha.to_degrees(),
+            p.protocol.alpha.to_degrees(),
             l.to_degrees(),
             a.to_degrees()
         ),
-        None => format!("{}° from x", p.alpha.to_degrees()),
+        None => format!("{}° from x", p.protocol.alpha.to_degrees()),
     };
     let mut header = vec![
         "superlube Tier 3 (DEM) model for stock LAMMPS (packages GRANULAR, MOLECULE, RIGID)".to_string(),
@@ -201,16 +204,16 @@ pub fn export_lammps(
         ),
         format!(
             "load W = {} mN; pulling direction {direction}; support {} m/s, K0 = {} N/m, lead {} um",
-            p.load * 1e3,
-            p.support_speed,
-            p.k0,
-            p.support_lead * um
+            p.protocol.load * 1e3,
+            p.protocol.support_speed,
+            p.protocol.k0,
+            p.protocol.support_lead * um
         ),
         format!(
             "protocol: equilibrate {} us, relax {} us, slide {} us at dt = {} us (stable-step estimate {} us)",
-            p.equilibrate_time * um,
-            p.relax_time * um,
-            p.slide_time * um,
+            p.protocol.equilibrate_time * um,
+            p.protocol.relax_time * um,
+            p.protocol.slide_time * um,
             micro::time(sim.dt),
             micro::time(sim.dt_crit)
         ),
@@ -259,13 +262,13 @@ pub fn export_lammps(
                 (0..spec.substrate.len()).map(|j| micro::len(2.0 * spec.substrate_radius(j))),
             ),
             z_offset: micro::len(z_offset),
-            tau: (p.damping_time.is_finite() && p.damping_time > 0.0)
-                .then(|| micro::time(p.damping_time)),
+            tau: (p.numerics.damping_time.is_finite() && p.numerics.damping_time > 0.0)
+                .then(|| micro::time(p.numerics.damping_time)),
             slider_density: micro::density(spec.slider_material.density),
             substrate_density: micro::density(spec.substrate_material.density),
         }
     });
-    let window_start = (p.measure_from * ns as f64).round() as u64;
+    let window_start = (p.protocol.measure_from * ns as f64).round() as u64;
     let inputs = DeckInputs {
         header,
         steps,
@@ -288,20 +291,20 @@ pub fn export_lammps(
         contact_distance: micro::len(sim.spec.max_contact_distance()),
         r_eff: micro::len(hertz.r_eff),
         p0_prefactor_gpa: 2.0 * hertz.e_star / std::f64::consts::PI * 1e-9,
-        skin: micro::len(p.skin),
-        k_xy: micro::stiffness(p.k_slider_xy),
-        k_z: micro::stiffness(p.k_slider_z),
+        skin: micro::len(p.numerics.skin),
+        k_xy: micro::stiffness(p.mount.k_slider_xy),
+        k_z: micro::stiffness(p.mount.k_slider_z),
         tie_length: micro::len(opts.tie_length),
-        k_substrate: micro::stiffness(p.k_substrate_xy),
+        k_substrate: micro::stiffness(p.mount.k_substrate_xy),
         viscous,
-        load_per_control: micro::force(p.load) / (2 * n) as f64,
+        load_per_control: micro::force(p.protocol.load) / (2 * n) as f64,
         mount,
         half_distance: lay.half_distance.map(micro::len),
         theta_cs: [ct, st],
-        k0: micro::stiffness(p.k0),
-        lead: micro::len(p.support_lead),
+        k0: micro::stiffness(p.protocol.k0),
+        lead: micro::len(p.protocol.support_lead),
         alpha_cs: [ca, sa],
-        speed: micro::velocity(p.support_speed),
+        speed: micro::velocity(p.protocol.support_speed),
         support0: [micro::len(lay.support[0]), micro::len(lay.support[1])],
         support_id: lay.ids.support.first,
         sizes,
@@ -311,7 +314,7 @@ pub fn export_lammps(
         "superlube {} theta_deg={} load_mN={} mount={} (units micro, atom_style hybrid sphere bond)",
         scene.pattern,
         scene.slider.theta.to_degrees(),
-        p.load * 1e3,
+        p.protocol.load * 1e3,
         scene.slider.mount.name()
     );
     let data = data_file::render(&lay, &title);
@@ -328,8 +331,8 @@ pub fn export_lammps(
             Mount::Springs { k1 } => Some(k1),
             _ => None,
         },
-        load_mn: p.load * 1e3,
-        direction_deg: p.alpha.to_degrees(),
+        load_mn: p.protocol.load * 1e3,
+        direction_deg: p.protocol.alpha.to_degrees(),
         alpha_deg: opts.alpha_and_line.map(|(a, _)| a.to_degrees()),
         line_deg: opts.alpha_and_line.map(|(_, l)| l.to_degrees()),
         mu: opts.mu,
