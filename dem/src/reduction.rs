@@ -186,10 +186,46 @@ pub fn choose_model_at(
     } else {
         f64::INFINITY
     };
-    let exact = "prune and the active set are exact";
     let eta = stick_slip_eta(scene, params, solver);
     let coating_may_fail = p_ref * SLIDING_P_MAX_FACTOR >= scene.coating.p_crit;
-    let (rigid_z, reason) = match request {
+    let (rigid_z, reason) = decide(scene, request, kappa, s_n, p_ref, eta, coating_may_fail);
+    let implicit_mount = !rigid_z && request != ModelRequest::FullExplicit;
+    ModelChoice {
+        requested: request.name(),
+        model: if rigid_z {
+            "reduced"
+        } else if implicit_mount {
+            "full"
+        } else {
+            "full-explicit"
+        },
+        rigid_z,
+        implicit_mount,
+        prune: true,
+        active_set: true,
+        stiffness_ratio: kappa,
+        p_ref_gpa: p_ref * 1e-9,
+        stick_slip_eta: eta.map(|e| e.0),
+        coating_may_fail,
+        reason,
+    }
+}
+
+/// Whether `request` runs rigid-z, and why: `auto` keeps the full model where a contact may
+/// reach coating failure, where stick-slip is expected (η > [`STICK_SLIP_ETA`]) or beyond
+/// [`RIGID_Z_KAPPA_MAX`]; the reason quotes κ, S_n (N/m), the reference P_max `p_ref` (Pa) and
+/// η with F_max (N). Cost: O(1).
+fn decide(
+    scene: &Scene,
+    request: ModelRequest,
+    kappa: f64,
+    s_n: f64,
+    p_ref: f64,
+    eta: Option<(f64, f64)>,
+    coating_may_fail: bool,
+) -> (bool, String) {
+    let exact = "prune and the active set are exact";
+    match request {
         ModelRequest::Full => (
             false,
             format!("full model as requested (mount springs implicit, step set by the contacts); {exact}"),
@@ -251,25 +287,5 @@ pub fn choose_model_at(
                 )
             }
         }
-    };
-    let implicit_mount = !rigid_z && request != ModelRequest::FullExplicit;
-    ModelChoice {
-        requested: request.name(),
-        model: if rigid_z {
-            "reduced"
-        } else if implicit_mount {
-            "full"
-        } else {
-            "full-explicit"
-        },
-        rigid_z,
-        implicit_mount,
-        prune: true,
-        active_set: true,
-        stiffness_ratio: kappa,
-        p_ref_gpa: p_ref * 1e-9,
-        stick_slip_eta: eta.map(|e| e.0),
-        coating_may_fail,
-        reason,
     }
 }

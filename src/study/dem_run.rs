@@ -146,50 +146,9 @@ pub fn run_dem(
         ));
     }
     let mut prepared = prepare_at(scene, sim_params, p.start, p.friction, &nominal)?;
+    start_notes(&prepared, line, dir, p, progress);
     let sim = &mut prepared.sim;
-    progress.note(&format!(
-        "stable step estimate: {:.4e} µs ({}); using dt = {:.4e} µs; {} particles ({} substrate spheres pruned)",
-        s_to_us(prepared.stable.dt_crit),
-        prepared.stable.mode,
-        s_to_us(sim.dt),
-        sim.particles(),
-        prepared.start.pruned
-    ));
-    progress.note(&format!(
-        "pulling direction: {:.3}° from x = contact line {:.3}° ({}) + α {:.3}°",
-        rad_to_deg(dir),
-        rad_to_deg(line.angle),
-        if line.given {
-            format!("given by {}", crate::study::input::Input::LineDeg)
-        } else {
-            "moiré estimate".to_string()
-        },
-        rad_to_deg(p.alpha)
-    ));
-    if sim.dt > prepared.stable.dt_crit {
-        progress.note(&format!(
-            "warning: dt = {:.4e} µs exceeds the stable step estimate {:.4e} µs; the run will stop if it blows up",
-            s_to_us(sim.dt),
-            s_to_us(prepared.stable.dt_crit)
-        ));
-    }
-    let mut samples = Vec::new();
-    if let Some(path) = &p.resume {
-        if path.exists() {
-            samples = dem::checkpoint::load(path, sim)
-                .with_context(|| format!("resuming from {}", path.display()))?;
-            progress.note(&format!(
-                "resumed at step {} (t = {:.3} µs)",
-                sim.state.step,
-                s_to_us(sim.state.t)
-            ));
-        } else {
-            progress.note(&format!(
-                "no checkpoint at {} yet: starting fresh",
-                path.display()
-            ));
-        }
-    }
+    let mut samples = resume(p, sim, progress)?;
     let (ne, nr, ns, _) = step_counts(sim, kind);
     let total = ne + nr + ns;
     let first = sim.state.step;
@@ -226,8 +185,107 @@ pub fn run_dem(
     progress.finish();
     let wall_s = t0.elapsed().as_secs_f64();
     let steps = sim.state.step - first;
+    let info = run_info(
+        p,
+        dir,
+        &prepared,
+        steps,
+        wall_s,
+        choice,
+        tilt.map(|t| t.ratio),
+    );
+    let case = DemCase {
+        pattern: scene.pattern.clone(),
+        theta_deg: label(rad_to_deg(scene.slider.theta)),
+        load_mn: label(n_to_mn(prepared.sim.params.protocol.load)),
+    };
+    Ok(DemOutcome {
+        prepared,
+        samples,
+        steps_this_process: steps,
+        wall_s,
+        info,
+        case,
+        error: res.err(),
+    })
+}
+
+/// Notes the stable step and dt, the particles, the pulling direction (`dir`, rad from x) and
+/// the line it is measured from, and a dt beyond the stable step.
+fn start_notes(
+    prepared: &Prepared,
+    line: LineChoice,
+    dir: f64,
+    p: &DemParams,
+    progress: &dyn Progress,
+) {
+    let sim = &prepared.sim;
+    progress.note(&format!(
+        "stable step estimate: {:.4e} µs ({}); using dt = {:.4e} µs; {} particles ({} substrate spheres pruned)",
+        s_to_us(prepared.stable.dt_crit),
+        prepared.stable.mode,
+        s_to_us(sim.dt),
+        sim.particles(),
+        prepared.start.pruned
+    ));
+    progress.note(&format!(
+        "pulling direction: {:.3}° from x = contact line {:.3}° ({}) + α {:.3}°",
+        rad_to_deg(dir),
+        rad_to_deg(line.angle),
+        if line.given {
+            format!("given by {}", crate::study::input::Input::LineDeg)
+        } else {
+            "moiré estimate".to_string()
+        },
+        rad_to_deg(p.alpha)
+    ));
+    if sim.dt > prepared.stable.dt_crit {
+        progress.note(&format!(
+            "warning: dt = {:.4e} µs exceeds the stable step estimate {:.4e} µs; the run will stop if it blows up",
+            s_to_us(sim.dt),
+            s_to_us(prepared.stable.dt_crit)
+        ));
+    }
+}
+
+/// The samples of the checkpoint `p.resume` restored into `sim` (noted), or none when there is
+/// no checkpoint (yet).
+fn resume(p: &DemParams, sim: &mut dem::Sim, progress: &dyn Progress) -> Result<Vec<DemSample>> {
+    let mut samples = Vec::new();
+    if let Some(path) = &p.resume {
+        if path.exists() {
+            samples = dem::checkpoint::load(path, sim)
+                .with_context(|| format!("resuming from {}", path.display()))?;
+            progress.note(&format!(
+                "resumed at step {} (t = {:.3} µs)",
+                sim.state.step,
+                s_to_us(sim.state.t)
+            ));
+        } else {
+            progress.note(&format!(
+                "no checkpoint at {} yet: starting fresh",
+                path.display()
+            ));
+        }
+    }
+    Ok(samples)
+}
+
+/// The run facts of the summary: direction (`dir`, rad from x) and the line, dt and the stable
+/// step, particles, throughput over the `steps` this process took in `wall_s` (s), the model
+/// `choice`, the mount's tilt-pair ratio, the active set's mean size.
+fn run_info(
+    p: &DemParams,
+    dir: f64,
+    prepared: &Prepared,
+    steps: u64,
+    wall_s: f64,
+    choice: ModelChoice,
+    tilt_pair_ratio: Option<f64>,
+) -> RunInfo {
+    let sim = &prepared.sim;
     let alpha_deg = label(rad_to_deg(p.alpha));
-    let info = RunInfo {
+    RunInfo {
         alpha_deg,
         line_deg: rad_to_deg(dir) - alpha_deg,
         direction_deg: rad_to_deg(dir),
@@ -242,23 +300,9 @@ pub fn run_dem(
         model: choice.model,
         model_requested: choice.requested,
         model_reason: choice.reason,
-        tilt_pair_ratio: tilt.map(|t| t.ratio),
+        tilt_pair_ratio,
         active_set: sim.params.active.enabled,
         mean_active_particles: sim.state.stats.particle_steps as f64 / sim.state.step.max(1) as f64
             + 1.0,
-    };
-    let case = DemCase {
-        pattern: scene.pattern.clone(),
-        theta_deg: label(rad_to_deg(scene.slider.theta)),
-        load_mn: label(n_to_mn(sim.params.protocol.load)),
-    };
-    Ok(DemOutcome {
-        prepared,
-        samples,
-        steps_this_process: steps,
-        wall_s,
-        info,
-        case,
-        error: res.err(),
-    })
+    }
 }

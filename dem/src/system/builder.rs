@@ -57,20 +57,7 @@ pub fn from_scene_at(
     let mut sub_radii = scene.substrate_radii().map(|r| r.to_vec());
     let all = sub.len();
     if params.active.prune_substrate {
-        let c = scene.slider.offset;
-        let travel =
-            params.protocol.support_speed * params.protocol.slide_time + params.active.prune_margin;
-        let e = [
-            c[0] + travel * params.protocol.alpha.cos(),
-            c[1] + travel * params.protocol.alpha.sin(),
-        ];
-        let reach = scene.slider.radius + scene.max_contact_distance() + params.active.prune_margin;
-        let keep = |p: &[f64; 3]| seg_dist2([p[0], p[1]], c, e) <= reach * reach;
-        if let Some(r) = &mut sub_radii {
-            let mut it = sub.iter();
-            r.retain(|_| keep(it.next().unwrap()));
-        }
-        sub.retain(keep);
+        prune(scene, params, &mut sub, &mut sub_radii);
     }
     // slider sphere i's anchor offset R − r_i (none for one size)
     let r_ref = scene.slider_sphere_radius();
@@ -149,6 +136,31 @@ pub fn from_scene_at(
             pruned,
         },
     )
+}
+
+/// Reduction (a): leaves out the substrate spheres (and their radii) farther than the slider
+/// radius + the largest contact distance + `prune_margin` from the slider centre's path.
+/// O(N).
+fn prune(
+    scene: &Scene,
+    params: &SimParams,
+    sub: &mut Vec<[f64; 3]>,
+    sub_radii: &mut Option<Vec<f64>>,
+) {
+    let c = scene.slider.offset;
+    let travel =
+        params.protocol.support_speed * params.protocol.slide_time + params.active.prune_margin;
+    let e = [
+        c[0] + travel * params.protocol.alpha.cos(),
+        c[1] + travel * params.protocol.alpha.sin(),
+    ];
+    let reach = scene.slider.radius + scene.max_contact_distance() + params.active.prune_margin;
+    let keep = |p: &[f64; 3]| seg_dist2([p[0], p[1]], c, e) <= reach * reach;
+    if let Some(r) = sub_radii {
+        let mut it = sub.iter();
+        r.retain(|_| keep(it.next().unwrap()));
+    }
+    sub.retain(keep);
 }
 
 fn seg_dist2(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {

@@ -37,3 +37,55 @@ pub(super) fn timestep(s: &mut String, d: &DeckInputs) {
     w!(s, "balance         1.0 shift xy 20 1.0");
     w!(s, "");
 }
+
+/// The viscous bath's fixes: `fix viscous` with a γ per type (per-site sizes: one per size),
+/// and in the relative frame the slider's add-back of γ·v_control; a comment when τ = ∞.
+pub(super) fn viscous(s: &mut String, d: &DeckInputs) {
+    match d.numerics.viscous {
+        Some(v) if d.sizes.is_some() => {
+            let z = d.sizes.as_ref().unwrap();
+            crate::export::deck_sizes::viscous(s, z, v.gamma_sphere * v.control_ratio, v.relative);
+        }
+        Some(v) => {
+            w!(
+                s,
+                "# 0 K Langevin-equivalent damping F = -m v / tau (gamma = m/tau per type)"
+            );
+            let sub = match v.substrate_ratio {
+                Some(r) => format!(" scale 1 {}", N(r)),
+                None => String::new(),
+            };
+            w!(
+                s,
+                "fix             visc damped viscous {}{sub} scale 3 {} scale 4 {}",
+                N(v.gamma_sphere),
+                N(v.control_ratio),
+                N(v.control_ratio)
+            );
+            if v.relative {
+                w!(s, "# relative frame (the Rust default): slider spheres are damped relative to the control layer's");
+                w!(s, "# velocity: add back gamma * v_control");
+                w!(s, "compute         vctrl ctrl reduce ave vx vy vz   # = vcm (equal masses), once per step");
+                w!(
+                    s,
+                    "variable        rvx equal {}*c_vctrl[1]",
+                    N(v.gamma_sphere)
+                );
+                w!(
+                    s,
+                    "variable        rvy equal {}*c_vctrl[2]",
+                    N(v.gamma_sphere)
+                );
+                w!(
+                    s,
+                    "variable        rvz equal {}*c_vctrl[3]",
+                    N(v.gamma_sphere)
+                );
+                w!(s, "fix             relsl slider addforce v_rvx v_rvy v_rvz");
+            }
+        }
+        None => {
+            w!(s, "# no viscous damping (tau = infinity)");
+        }
+    }
+}
