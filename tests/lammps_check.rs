@@ -4,8 +4,6 @@
 //! Without `lmp` this test prints that it is skipped and passes — unless
 //! `SUPERLUBE_REQUIRE_LAMMPS=1` (CI sets it in `.ci/run`), which turns the skip into a failure.
 
-use std::path::{Path, PathBuf};
-
 mod common;
 use common::lammps::*;
 

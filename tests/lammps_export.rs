@@ -6,8 +6,6 @@
 //! Without `lmp` the tests that need it print that they are skipped and pass — unless
 //! `SUPERLUBE_REQUIRE_LAMMPS=1` (CI sets it in `.ci/run`), which turns the skip into a failure.
 
-use std::path::{Path, PathBuf};
-
 mod common;
 use common::lammps::*;
 

@@ -182,7 +182,7 @@ impl Context<'_> {
         let (sa, ca) = p.protocol.alpha.sin_cos();
         let (st, ct) = scene.slider.theta.sin_cos();
         let window_start = (p.protocol.measure_from * steps.slide as f64).round() as u64;
-        let inputs = DeckInputs {
+        DeckInputs {
             header,
             steps,
             numerics: DeckNumerics {
@@ -231,8 +231,7 @@ impl Context<'_> {
                 support_id: lay.ids.support.first,
             },
             sizes,
-        };
-        inputs
+        }
     }
 
     /// The data file's title line.
