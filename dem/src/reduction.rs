@@ -81,7 +81,7 @@ pub enum ModelRequest {
     /// The cheapest model within its measured error for this scene (default).
     Auto,
     /// The full model (slider spheres on k_z springs), with the exact reductions, its linear
-    /// mount network integrated implicitly ([`crate::SimParams::implicit_mount`]): the step is
+    /// mount network integrated implicitly ([`crate::MountParams::implicit_mount`]): the step is
     /// set by the contacts.
     Full,
     /// The full model integrated by velocity-Verlet throughout (the step set by the stiff k_z

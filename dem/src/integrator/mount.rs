@@ -1,5 +1,5 @@
 //! [`Mount`]: the implicit step of the slider mount's linear z network (full model with
-//! [`crate::SimParams::implicit_mount`]).
+//! [`crate::MountParams::implicit_mount`]).
 //!
 //! The network: each slider sphere i on its k_z spring to its anchor `g_i·q` on the control
 //! layer (`q = (Z, t_x, t_y)`, `g_i = (1, y_i, −x_i)`), the spheres' damping `−m_s(ż_i − r g_i·q̇)/τ`
