@@ -23,16 +23,28 @@ const STEPS: u64 = 200;
 fn study_sim(rigid_z: bool, prune: bool, active_set: bool, slide: bool, forced: bool) -> dem::Sim {
     let scene = surrogate::Scene::preset("square-tri").expect("preset square-tri");
     let params = SimParams {
-        load: 1.4e-3,
-        alpha: 90f64.to_radians(),
-        rigid_z,
-        prune_substrate: prune,
-        active_set,
-        // 0: always run the eligible passes in parallel (no timing probes)
-        parallel_min_work: if forced {
-            0
-        } else {
-            SimParams::default().parallel_min_work
+        protocol: dem::ProtocolParams {
+            load: 1.4e-3,
+            alpha: 90f64.to_radians(),
+            ..Default::default()
+        },
+        mount: dem::MountParams {
+            rigid_z,
+            ..Default::default()
+        },
+        numerics: dem::NumericsParams {
+            // 0: always run the eligible passes in parallel (no timing probes)
+            parallel_min_work: if forced {
+                0
+            } else {
+                SimParams::default().numerics.parallel_min_work
+            },
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            prune_substrate: prune,
+            enabled: active_set,
+            ..Default::default()
         },
         ..SimParams::default()
     };

@@ -207,7 +207,7 @@ pub fn header_fields(sim: &Sim) -> Vec<(String, String)> {
     // serde_json writes ∞ as null: keep the knobs that may be infinite exact
     h.push((
         "params.damping_time_exact".into(),
-        format!("{:?}", sim.params.damping_time),
+        format!("{:?}", sim.params.numerics.damping_time),
     ));
     match &sim.spec.scene {
         Some(scene) => {

@@ -6,13 +6,14 @@
 //! Layout (one folder per concern): [`model`] (contact sub-models), [`system`] (particles and
 //! state), [`neighbor`] (cell list + Verlet list with skin), [`integrator`] (velocity-Verlet
 //! with damping: [`Sim`]), [`protocol`] (equilibrate / slide / lock-in), [`params`] (every knob:
-//! [`SimParams`]), [`checkpoint`] (atomic save/resume), [`stability`] (stable-step estimate).
+//! [`SimParams`], composed of protocol, contact, mount, numerics and active-set parts), [`checkpoint`] (atomic save/resume), [`stability`] (stable-step estimate).
 //!
 //! Quick use:
 //! ```no_run
 //! # use dem::*;
 //! let scene = surrogate::Scene::preset("square-tri").unwrap();
-//! let params = SimParams { load: 1.4e-3, ..SimParams::default() };
+//! let mut params = SimParams::default();
+//! params.protocol.load = 1.4e-3;
 //! let prep = prepare(&scene, params, Start::Surrogate, None).unwrap();
 //! let mut sim = prep.sim;
 //! let mut samples = Vec::new();
@@ -26,6 +27,7 @@ pub mod export;
 pub mod integrator;
 pub mod model;
 pub mod neighbor;
+pub mod nominal;
 pub mod params;
 pub mod path;
 pub mod protocol;
@@ -36,11 +38,15 @@ pub mod system;
 pub use error::DemError;
 pub use integrator::observe::Snapshot;
 pub use integrator::{Observables, Sim};
-pub use params::{DampingFrame, SimParams, Tangential};
+pub use nominal::Nominal;
+pub use params::{
+    ActiveSetParams, ContactParams, DampingFrame, MountParams, NumericsParams, ProtocolParams,
+    SimParams, Tangential,
+};
 pub use path::check_path;
-pub use reduction::{choose_model, ModelChoice, ModelRequest};
+pub use reduction::{choose_model, choose_model_at, ModelChoice, ModelRequest};
 pub use stability::{stable_step, StabilityInput, StableStep};
-pub use system::{from_scene, Start, StartInfo, SystemSpec};
+pub use system::{from_scene, from_scene_at, Start, StartInfo, SystemSpec};
 
 use model::{ContactModel, Friction, HertzNormal, Mindlin, PressureSwitched};
 use surrogate::Scene;
@@ -66,14 +72,14 @@ pub fn contact_model(
     ContactModel {
         normal: HertzNormal {
             hertz: scene.hertz(),
-            gamma_n: params.gamma_n,
+            gamma_n: params.contact.gamma_n,
         },
         tangential: Mindlin::between(
             &scene.slider_material(),
             &scene.substrate_material(),
-            params.gamma_t,
+            params.contact.gamma_t,
         ),
-        history: params.tangential,
+        history: params.contact.tangential,
         friction: friction.unwrap_or(Friction::PressureSwitched(PressureSwitched::from(
             &scene.coating,
         ))),
@@ -119,7 +125,7 @@ pub fn stability_input(
     };
     let m_control = scene
         .slider_material()
-        .sphere_mass(params.control_sphere_radius);
+        .sphere_mass(params.mount.control_sphere_radius);
     StabilityInput {
         m_slider,
         m_substrate,
@@ -160,7 +166,7 @@ fn tilt_omega2(scene: &Scene, params: &SimParams, m_sphere: f64, m_control: f64)
         syy += y * y;
         sxy += x * y;
     }
-    let unit = if params.rigid_z {
+    let unit = if params.mount.rigid_z {
         m_control + m_sphere
     } else {
         m_control
@@ -175,23 +181,54 @@ fn tilt_omega2(scene: &Scene, params: &SimParams, m_sphere: f64, m_control: f64)
 
 /// Checks the slide path against the substrate ([`check_path`]), lays out `scene` (its θ,
 /// offset, mount), starts it per `start`, estimates the stable step (contact stiffness at
-/// `max(1.5·P_max(surrogate), P_crit)`), and builds the [`Sim`] with `params.dt` or
-/// `dt_safety × dt_crit`.
+/// `max(1.5·P_max(surrogate), P_crit)`), and builds the [`Sim`] with `params.numerics.dt` or
+/// `dt_safety × dt_crit`. Cost: one surrogate solve ([`Nominal`]) and O(N log N);
+/// [`prepare_at`] reuses a run's nominal solve.
 pub fn prepare(
     scene: &Scene,
     params: SimParams,
     start: Start,
     friction: Option<Friction>,
 ) -> Result<Prepared, DemError> {
-    if !(params.load.is_finite() && params.load > 0.0) {
+    check_run(scene, &params)?;
+    let nominal = Nominal::solve(scene, params.protocol.load)?;
+    build(scene, params, start, friction, &nominal)
+}
+
+/// [`prepare`] from the run's nominal solve `nominal` (of `scene` at `params.protocol.load`,
+/// as [`choose_model_at`] took it). Cost: O(N log N).
+pub fn prepare_at(
+    scene: &Scene,
+    params: SimParams,
+    start: Start,
+    friction: Option<Friction>,
+    nominal: &Nominal,
+) -> Result<Prepared, DemError> {
+    check_run(scene, &params)?;
+    build(scene, params, start, friction, nominal)
+}
+
+/// Refuses a load that is not positive and a slide path off the substrate.
+fn check_run(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
+    if !(params.protocol.load.is_finite() && params.protocol.load > 0.0) {
         return Err(DemError::invalid(
             "load_mN",
-            params.load * 1e3,
+            params.protocol.load * 1e3,
             "must be positive",
         ));
     }
-    check_path(scene, &params)?;
-    let (spec, info) = from_scene(scene, &params, start)?;
+    check_path(scene, params)
+}
+
+/// The checked run's layout, stable step and engine.
+fn build(
+    scene: &Scene,
+    params: SimParams,
+    start: Start,
+    friction: Option<Friction>,
+    nominal: &Nominal,
+) -> Result<Prepared, DemError> {
+    let (spec, info) = from_scene_at(scene, &params, start, &nominal.eq);
     let p_ref = (1.5 * info.p_max).max(scene.coating.p_crit);
     let inp = stability_input(
         scene,
@@ -201,7 +238,10 @@ pub fn prepare(
         p_ref,
     );
     let stable = stable_step(&inp, &params);
-    let dt = params.dt.unwrap_or(params.dt_safety * stable.dt_crit);
+    let dt = params
+        .numerics
+        .dt
+        .unwrap_or(params.numerics.dt_safety * stable.dt_crit);
     let model = contact_model(scene, &params, friction);
     let sim = Sim::new(spec, model, params, dt, stable.dt_crit)?;
     Ok(Prepared {

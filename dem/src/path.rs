@@ -10,7 +10,7 @@ use surrogate::Scene;
 /// Nothing to check when the run does not slide. The error names the flags to change and the
 /// longest slide that would fit. Cost O(1).
 pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
-    let travel = params.support_speed * params.slide_time;
+    let travel = params.protocol.support_speed * params.protocol.slide_time;
     if travel.is_nan() || travel <= 0.0 {
         return Ok(());
     }
@@ -22,7 +22,7 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
     let half = [0.5 * scene.substrate.size[0], 0.5 * scene.substrate.size[1]];
     let lim = [half[0] - reach, half[1] - reach];
     let c0 = scene.slider.offset;
-    let (s, c) = params.alpha.sin_cos();
+    let (s, c) = params.protocol.alpha.sin_cos();
     let d = [c, s];
     let c1 = [c0[0] + travel * d[0], c0[1] + travel * d[1]];
     let over = |p: [f64; 2]| (p[0].abs() - lim[0]).max(p[1].abs() - lim[1]);
@@ -49,8 +49,8 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
     } else {
         format!(
             "at {} m/s the longest slide that fits is {:.3} µs; shorten --slide-us or --speed-m-s, change --alpha-deg or --offset-um, or enlarge the substrate (--substrate-um)",
-            params.support_speed,
-            (t_max.max(0.0) / params.support_speed) * 1e6
+            params.protocol.support_speed,
+            (t_max.max(0.0) / params.protocol.support_speed) * 1e6
         )
     };
     Err(DemError::Path(format!(
@@ -60,7 +60,7 @@ pub fn check_path(scene: &Scene, params: &SimParams) -> Result<(), DemError> {
         c0[0] * um,
         c0[1] * um,
         travel * um,
-        params.alpha.to_degrees(),
+        params.protocol.alpha.to_degrees(),
         scene.slider.radius * um,
         scene.max_slider_sphere_radius() * um,
         drift * um,

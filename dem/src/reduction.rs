@@ -15,10 +15,10 @@
 //!   (Prandtl–Tomlinson η ≤ [`STICK_SLIP_ETA`], [`stick_slip_eta`]); the full model elsewhere
 //!   (the measurements behind the limits are in `docs/validation/dem-engine.md`, "Model choice").
 
-use crate::{DemError, SimParams};
+use crate::{DemError, Nominal, SimParams};
 use serde::Serialize;
 use surrogate::map::{path_profile, MapParams};
-use surrogate::solver::{Model, Pose, Solver};
+use surrogate::solver::Solver;
 use surrogate::Scene;
 
 /// Prandtl–Tomlinson parameter of the slide: `η = 2π·F_max/(K0·a)` from the surrogate's
@@ -28,7 +28,10 @@ use surrogate::Scene;
 /// expected (docs/physics.md, "Estimating friction without dynamics"). Returns `(η, F_max)`, or `None` when the run does
 /// not slide or the path cannot be solved. Cost: ~40 surrogate solves (tens of ms).
 pub fn stick_slip_eta(scene: &Scene, params: &SimParams, solver: &Solver) -> Option<(f64, f64)> {
-    if params.slide_time <= 0.0 || params.support_speed <= 0.0 || params.k0 <= 0.0 {
+    if params.protocol.slide_time <= 0.0
+        || params.protocol.support_speed <= 0.0
+        || params.protocol.k0 <= 0.0
+    {
         return None;
     }
     let lat = scene.substrate.lattice;
@@ -42,14 +45,17 @@ pub fn stick_slip_eta(scene: &Scene, params: &SimParams, solver: &Solver) -> Opt
     let prof = path_profile(
         solver,
         scene.slider.theta,
-        params.load,
-        params.alpha,
+        params.protocol.load,
+        params.protocol.alpha,
         &mp,
         &|| {},
     )
     .ok()?;
     let f_max = prof.max_pull().max(0.0);
-    Some((2.0 * std::f64::consts::PI * f_max / (params.k0 * a), f_max))
+    Some((
+        2.0 * std::f64::consts::PI * f_max / (params.protocol.k0 * a),
+        f_max,
+    ))
 }
 
 /// Largest `κ = S_n(P_max)/k_z` for which `auto` uses rigid-z: the square-tri study scene up to
@@ -75,7 +81,7 @@ pub enum ModelRequest {
     /// The cheapest model within its measured error for this scene (default).
     Auto,
     /// The full model (slider spheres on k_z springs), with the exact reductions, its linear
-    /// mount network integrated implicitly ([`crate::SimParams::implicit_mount`]): the step is
+    /// mount network integrated implicitly ([`crate::MountParams::implicit_mount`]): the step is
     /// set by the contacts.
     Full,
     /// The full model integrated by velocity-Verlet throughout (the step set by the stiff k_z
@@ -144,41 +150,82 @@ pub struct ModelChoice {
 impl ModelChoice {
     /// Sets the reductions in `p`.
     pub fn apply(&self, p: &mut SimParams) {
-        p.rigid_z = self.rigid_z;
-        p.implicit_mount = self.implicit_mount && !self.rigid_z;
-        p.prune_substrate = self.prune;
-        p.active_set = self.active_set;
+        p.mount.rigid_z = self.rigid_z;
+        p.mount.implicit_mount = self.implicit_mount && !self.rigid_z;
+        p.active.prune_substrate = self.prune;
+        p.active.enabled = self.active_set;
     }
 }
 
-/// Decides rigid-z, prune and the active set for `scene` at `params.load` (see the module
-/// doc). Cost: one surrogate solve (milliseconds).
+/// Decides rigid-z, prune and the active set for `scene` at `params.protocol.load` (see the
+/// module doc). Cost: one surrogate solve (milliseconds) and, with sliding, the path of
+/// [`stick_slip_eta`]; [`choose_model_at`] reuses a run's [`Nominal`] solve.
 pub fn choose_model(
     scene: &Scene,
     params: &SimParams,
     request: ModelRequest,
 ) -> Result<ModelChoice, DemError> {
-    let solver = Solver::new(scene)?;
-    let eq = solver.solve(
-        Pose {
-            theta: scene.slider.theta,
-            shift: [0.0, 0.0],
-        },
-        params.load,
-        Model::Auto,
-    )?;
+    let nominal = Nominal::solve(scene, params.protocol.load)?;
+    Ok(choose_model_at(scene, params, request, &nominal))
+}
+
+/// [`choose_model`] from the run's nominal solve `nominal` (at `params.protocol.load`).
+/// Cost: with sliding, the ~40 solves of [`stick_slip_eta`]; none otherwise.
+pub fn choose_model_at(
+    scene: &Scene,
+    params: &SimParams,
+    request: ModelRequest,
+    nominal: &Nominal,
+) -> ModelChoice {
+    let (solver, eq) = (&nominal.solver, &nominal.eq);
     let p_ref = eq.p_max;
     let r_eff = scene.hertz().r_eff;
     let s_n = std::f64::consts::PI * p_ref * r_eff;
-    let kappa = if params.k_slider_z > 0.0 {
-        s_n / params.k_slider_z
+    let kappa = if params.mount.k_slider_z > 0.0 {
+        s_n / params.mount.k_slider_z
     } else {
         f64::INFINITY
     };
-    let exact = "prune and the active set are exact";
-    let eta = stick_slip_eta(scene, params, &solver);
+    let eta = stick_slip_eta(scene, params, solver);
     let coating_may_fail = p_ref * SLIDING_P_MAX_FACTOR >= scene.coating.p_crit;
-    let (rigid_z, reason) = match request {
+    let (rigid_z, reason) = decide(scene, request, kappa, s_n, p_ref, eta, coating_may_fail);
+    let implicit_mount = !rigid_z && request != ModelRequest::FullExplicit;
+    ModelChoice {
+        requested: request.name(),
+        model: if rigid_z {
+            "reduced"
+        } else if implicit_mount {
+            "full"
+        } else {
+            "full-explicit"
+        },
+        rigid_z,
+        implicit_mount,
+        prune: true,
+        active_set: true,
+        stiffness_ratio: kappa,
+        p_ref_gpa: p_ref * 1e-9,
+        stick_slip_eta: eta.map(|e| e.0),
+        coating_may_fail,
+        reason,
+    }
+}
+
+/// Whether `request` runs rigid-z, and why: `auto` keeps the full model where a contact may
+/// reach coating failure, where stick-slip is expected (η > [`STICK_SLIP_ETA`]) or beyond
+/// [`RIGID_Z_KAPPA_MAX`]; the reason quotes κ, S_n (N/m), the reference P_max `p_ref` (Pa) and
+/// η with F_max (N). Cost: O(1).
+fn decide(
+    scene: &Scene,
+    request: ModelRequest,
+    kappa: f64,
+    s_n: f64,
+    p_ref: f64,
+    eta: Option<(f64, f64)>,
+    coating_may_fail: bool,
+) -> (bool, String) {
+    let exact = "prune and the active set are exact";
+    match request {
         ModelRequest::Full => (
             false,
             format!("full model as requested (mount springs implicit, step set by the contacts); {exact}"),
@@ -240,25 +287,5 @@ pub fn choose_model(
                 )
             }
         }
-    };
-    let implicit_mount = !rigid_z && request != ModelRequest::FullExplicit;
-    Ok(ModelChoice {
-        requested: request.name(),
-        model: if rigid_z {
-            "reduced"
-        } else if implicit_mount {
-            "full"
-        } else {
-            "full-explicit"
-        },
-        rigid_z,
-        implicit_mount,
-        prune: true,
-        active_set: true,
-        stiffness_ratio: kappa,
-        p_ref_gpa: p_ref * 1e-9,
-        stick_slip_eta: eta.map(|e| e.0),
-        coating_may_fail,
-        reason,
-    })
+    }
 }

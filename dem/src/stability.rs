@@ -68,22 +68,25 @@ pub fn stable_step(inp: &StabilityInput, params: &SimParams) -> StableStep {
     let kt = 8.0 * inp.g_star * a;
     let (ms, mb) = (inp.m_slider, inp.m_substrate);
     let mut modes: Vec<(&'static str, f64)> = vec![
-        ("slider sphere lateral", (params.k_slider_xy + sn + kt) / ms),
+        (
+            "slider sphere lateral",
+            (params.mount.k_slider_xy + sn + kt) / ms,
+        ),
         (
             "substrate sphere lateral",
-            (params.k_substrate_xy + sn + kt) / mb,
+            (params.mount.k_substrate_xy + sn + kt) / mb,
         ),
         // (1/m_s + 1/m_b) = 1/m_eff; for equal masses (sn + kt)/(m/2), bit for bit 2(sn + kt)/m
         ("contact pair", (sn + kt) / reduced_mass(ms, mb)),
     ];
     let m_body = inp.n_slider as f64 * (inp.m_control + ms);
-    let implicit = params.implicit_mount && !params.rigid_z;
+    let implicit = params.mount.implicit_mount && !params.mount.rigid_z;
     if implicit {
         modes.push((
             "slider spheres vs control layer (lateral springs)",
-            params.k_slider_xy * (1.0 / inp.m_control + 1.0 / ms),
+            params.mount.k_slider_xy * (1.0 / inp.m_control + 1.0 / ms),
         ));
-    } else if params.rigid_z {
+    } else if params.mount.rigid_z {
         modes.push((
             "slider body on its contacts (z)",
             inp.n_contacts as f64 * sn / m_body,
@@ -91,11 +94,11 @@ pub fn stable_step(inp: &StabilityInput, params: &SimParams) -> StableStep {
     } else {
         modes.push((
             "slider sphere vs control layer (z spring)",
-            params.k_slider_z * (1.0 / inp.m_control + 1.0 / ms),
+            params.mount.k_slider_z * (1.0 / inp.m_control + 1.0 / ms),
         ));
         modes.push((
             "slider sphere on contact + z spring",
-            (params.k_slider_z + sn) / ms,
+            (params.mount.k_slider_z + sn) / ms,
         ));
     }
     if inp.tilt_omega2 > 0.0 && !implicit {
@@ -137,7 +140,10 @@ mod tests {
     #[test]
     fn each_body_has_its_own_mass() {
         let p = SimParams {
-            implicit_mount: true,
+            mount: crate::MountParams {
+                implicit_mount: true,
+                ..Default::default()
+            },
             ..SimParams::default()
         };
         let m = 3e-14;

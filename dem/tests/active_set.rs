@@ -5,7 +5,7 @@
 mod common;
 use common::*;
 use dem::protocol::{run, RunIo, RunKind};
-use dem::{prepare, SimParams, Start};
+use dem::{prepare, Start};
 use std::collections::BTreeSet;
 
 /// The tolerance this engine states for the active set (relative, per time-series column).
@@ -20,15 +20,16 @@ fn active_set_gives_the_same_time_series() {
     let scene = small("square-tri", 12.0, 10.2);
     for rigid_z in [false, true] {
         let series = |active_set: bool| {
-            let p = SimParams {
-                rigid_z,
-                active_set,
-                equilibrate_time: 0.3e-6,
-                relax_time: 0.3e-6,
-                slide_time: if rigid_z { 4e-6 } else { 1.5e-6 },
-                support_speed: 1.0,
-                sample_interval: 0.01e-6,
-                ..slide_params(&scene)
+            let p = {
+                let mut params = slide_params(&scene);
+                params.mount.rigid_z = rigid_z;
+                params.active.enabled = active_set;
+                params.protocol.equilibrate_time = 0.3e-6;
+                params.protocol.relax_time = 0.3e-6;
+                params.protocol.slide_time = if rigid_z { 4e-6 } else { 1.5e-6 };
+                params.protocol.support_speed = 1.0;
+                params.protocol.sample_interval = 0.01e-6;
+                params
             };
             let mut sim = prepare(&scene, p, Start::Surrogate, None).unwrap().sim;
             let s = run_slide(&mut sim);
@@ -68,15 +69,16 @@ fn active_set_gives_the_same_time_series() {
 #[test]
 fn new_contacts_are_picked_up_before_they_touch() {
     let scene = small("square-tri", 9.0, 0.0);
-    let p = SimParams {
-        rigid_z: true,
-        active_set: true,
-        equilibrate_time: 0.2e-6,
-        relax_time: 0.2e-6,
-        slide_time: 3e-6,
-        support_speed: 2.0,
-        alpha: 90f64.to_radians(),
-        ..slide_params(&scene)
+    let p = {
+        let mut params = slide_params(&scene);
+        params.mount.rigid_z = true;
+        params.active.enabled = true;
+        params.protocol.equilibrate_time = 0.2e-6;
+        params.protocol.relax_time = 0.2e-6;
+        params.protocol.slide_time = 3e-6;
+        params.protocol.support_speed = 2.0;
+        params.protocol.alpha = 90f64.to_radians();
+        params
     };
     let mut sim = prepare(&scene, p.clone(), Start::Surrogate, None)
         .unwrap()
@@ -111,9 +113,10 @@ fn new_contacts_are_picked_up_before_they_touch() {
         .sim;
     let mut b = prepare(
         &scene,
-        SimParams {
-            active_set: false,
-            ..p
+        {
+            let mut params = p;
+            params.active.enabled = false;
+            params
         },
         Start::Surrogate,
         None,
@@ -131,11 +134,12 @@ fn new_contacts_are_picked_up_before_they_touch() {
 #[test]
 fn active_set_runs_are_deterministic_and_resume_bit_identically() {
     let scene = small("square-tri", 9.0, 10.2);
-    let p = SimParams {
-        active_set: true,
-        chunk_min: 4,
-        parallel_min_work: 0,
-        ..slide_params(&scene)
+    let p = {
+        let mut params = slide_params(&scene);
+        params.active.enabled = true;
+        params.numerics.chunk_min = 4;
+        params.numerics.parallel_min_work = 0;
+        params
     };
     let go = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()

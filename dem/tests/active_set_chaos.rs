@@ -31,16 +31,25 @@ fn slide(active_set: bool, load_factor: f64) -> (Vec<Sample>, f64, u64, f64) {
     let s = scene();
     let n = s.slider_sites().len() as f64;
     let p = SimParams {
-        load: 1.4e-3 / 3505.0 * n * load_factor,
-        alpha: 0.0,
-        rigid_z: false,
-        implicit_mount: true,
-        active_set,
-        equilibrate_time: 10e-6,
-        relax_time: 10e-6,
-        slide_time: 300e-6,
-        support_speed: 0.1,
-        sample_interval: 0.1e-6,
+        protocol: dem::ProtocolParams {
+            load: 1.4e-3 / 3505.0 * n * load_factor,
+            alpha: 0.0,
+            equilibrate_time: 10e-6,
+            relax_time: 10e-6,
+            slide_time: 300e-6,
+            support_speed: 0.1,
+            sample_interval: 0.1e-6,
+            ..Default::default()
+        },
+        mount: dem::MountParams {
+            rigid_z: false,
+            implicit_mount: true,
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            enabled: active_set,
+            ..Default::default()
+        },
         ..SimParams::default()
     };
     let mut sim = prepare(&s, p.clone(), Start::Surrogate, None).unwrap().sim;
@@ -58,7 +67,7 @@ fn slide(active_set: bool, load_factor: f64) -> (Vec<Sample>, f64, u64, f64) {
         samples,
         sum.mu,
         sim.state.stats.late_pairs,
-        (p.equilibrate_time + p.relax_time) * 1e6,
+        (p.protocol.equilibrate_time + p.protocol.relax_time) * 1e6,
     )
 }
 

@@ -23,11 +23,17 @@ fn load_for(scene: &Scene) -> f64 {
 
 fn params(scene: &Scene) -> SimParams {
     SimParams {
-        load: load_for(scene),
-        prune_substrate: true,
-        slide_time: 0.0,
-        equilibrate_time: 3e-6,
-        sample_interval: 0.05e-6,
+        protocol: dem::ProtocolParams {
+            load: load_for(scene),
+            slide_time: 0.0,
+            equilibrate_time: 3e-6,
+            sample_interval: 0.05e-6,
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            prune_substrate: true,
+            ..Default::default()
+        },
         ..SimParams::default()
     }
 }
@@ -83,7 +89,7 @@ fn assert_settles_on_the_surrogate(scene: &Scene, p: SimParams, start: Start, la
         surrogate.p_max
     );
     assert!(
-        (o.contact_fz / sim.params.load - 1.0).abs() < 0.02,
+        (o.contact_fz / sim.params.protocol.load - 1.0).abs() < 0.02,
         "{label}: load not carried"
     );
 }
@@ -107,9 +113,10 @@ fn equilibrium_agrees_with_the_surrogate() {
 fn equilibrium_from_a_gap_reaches_the_surrogate_answer() {
     for (pattern, theta) in [("tri-tri", 0.0), ("square-tri", 10.2)] {
         let scene = small(pattern, 12.0, theta);
-        let p = SimParams {
-            equilibrate_time: 8e-6,
-            ..params(&scene)
+        let p = {
+            let mut sp = params(&scene);
+            sp.protocol.equilibrate_time = 8e-6;
+            sp
         };
         let label = format!("from gap, {pattern} {theta}°");
         assert_settles_on_the_surrogate(&scene, p, Start::Gap(20e-9), &label);
@@ -120,17 +127,18 @@ fn equilibrium_from_a_gap_reaches_the_surrogate_answer() {
 fn undamped_run_conserves_energy() {
     let scene = small("tri-tri", 6.0, 30.0);
     let mut p = params(&scene);
-    p.damping_time = f64::INFINITY;
-    p.gamma_n = 0.0;
-    p.gamma_t = 0.0;
+    p.numerics.damping_time = f64::INFINITY;
+    p.contact.gamma_n = 0.0;
+    p.contact.gamma_t = 0.0;
     let Prepared {
         mut sim, stable, ..
     } = prepare(
         &scene,
-        SimParams {
-            dt: None,
-            dt_safety: 0.1,
-            ..p
+        {
+            let mut params = p;
+            params.numerics.dt = None;
+            params.numerics.dt_safety = 0.1;
+            params
         },
         Start::Gap(2e-9),
         Some(Friction::Constant(Constant { mu: 0.0 })),
@@ -146,7 +154,8 @@ fn undamped_run_conserves_energy() {
             let e = sim.energy();
             drift = drift.max((e - e0).abs());
             // energy released by the fall: W·(Z0 − Z)
-            scale = scale.max(sim.params.load * (sim.spec.control_z - sim.state.cl_x[2]).abs());
+            scale = scale
+                .max(sim.params.protocol.load * (sim.spec.control_z - sim.state.cl_x[2]).abs());
         }
     }
     eprintln!(
@@ -172,17 +181,19 @@ fn too_large_a_step_is_reported_not_nan() {
         (true, Start::Surrogate),
         (true, Start::Gap(20e-9)),
     ] {
-        let p = SimParams {
-            active_set,
-            ..params(&scene)
+        let p = {
+            let mut sp = params(&scene);
+            sp.active.enabled = active_set;
+            sp
         };
         let probe = prepare(&scene, p.clone(), start, None).unwrap();
         let dt_crit = probe.stable.dt_crit;
         let Prepared { mut sim, .. } = prepare(
             &scene,
-            SimParams {
-                dt: Some(30.0 * dt_crit),
-                ..p
+            {
+                let mut params = p;
+                params.numerics.dt = Some(30.0 * dt_crit);
+                params
             },
             start,
             None,
@@ -209,13 +220,19 @@ fn too_large_a_step_is_reported_not_nan() {
 
 fn slide_params(scene: &Scene) -> SimParams {
     SimParams {
-        load: load_for(scene),
-        prune_substrate: true,
-        equilibrate_time: 0.2e-6,
-        relax_time: 0.2e-6,
-        slide_time: 0.4e-6,
-        support_speed: 1.0,
-        sample_interval: 0.02e-6,
+        protocol: dem::ProtocolParams {
+            load: load_for(scene),
+            equilibrate_time: 0.2e-6,
+            relax_time: 0.2e-6,
+            slide_time: 0.4e-6,
+            support_speed: 1.0,
+            sample_interval: 0.02e-6,
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            prune_substrate: true,
+            ..Default::default()
+        },
         ..SimParams::default()
     }
 }
@@ -225,10 +242,11 @@ fn slide_params(scene: &Scene) -> SimParams {
 #[test]
 fn results_do_not_depend_on_the_thread_count() {
     let scene = small("square-tri", 9.0, 10.2);
-    let p = SimParams {
-        chunk_min: 4,
-        parallel_min_work: 0,
-        ..slide_params(&scene)
+    let p = {
+        let mut params = slide_params(&scene);
+        params.numerics.chunk_min = 4;
+        params.numerics.parallel_min_work = 0;
+        params
     };
     let go = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()
@@ -309,7 +327,7 @@ fn the_peak_pressure_of_a_sample_is_the_largest_at_any_step_since_the_last() {
         let mut sim = prepare(&scene, p.clone(), Start::Surrogate, None)
             .unwrap()
             .sim;
-        sim.params.sample_interval = k * sim.dt;
+        sim.params.protocol.sample_interval = k * sim.dt;
         let samples = run_slide(&mut sim);
         (sim.state, samples)
     };
@@ -338,8 +356,11 @@ fn the_peak_pressure_of_a_sample_is_the_largest_at_any_step_since_the_last() {
     );
     let summary = dem::protocol::slide_summary(&every_10th, &p, 0, 0.0);
     let (t0, t1) = (
-        (p.equilibrate_time + p.relax_time + p.measure_from * p.slide_time) * 1e6,
-        (p.equilibrate_time + p.relax_time + p.slide_time) * 1e6,
+        (p.protocol.equilibrate_time
+            + p.protocol.relax_time
+            + p.protocol.measure_from * p.protocol.slide_time)
+            * 1e6,
+        (p.protocol.equilibrate_time + p.protocol.relax_time + p.protocol.slide_time) * 1e6,
     );
     let in_window = every_step
         .iter()
@@ -359,15 +380,16 @@ fn the_peak_pressure_of_a_sample_is_the_largest_at_any_step_since_the_last() {
 fn steady_sliding_force_is_mu_w() {
     let scene = small("square-tri", 12.0, 0.0);
     let mu = 0.3;
-    let p = SimParams {
-        alpha: 90f64.to_radians(),
-        rigid_z: true,
-        equilibrate_time: 0.5e-6,
-        relax_time: 0.5e-6,
-        slide_time: 3e-6,
-        support_speed: 1.0,
-        measure_from: 1.0 / 3.0,
-        ..slide_params(&scene)
+    let p = {
+        let mut params = slide_params(&scene);
+        params.protocol.alpha = 90f64.to_radians();
+        params.mount.rigid_z = true;
+        params.protocol.equilibrate_time = 0.5e-6;
+        params.protocol.relax_time = 0.5e-6;
+        params.protocol.slide_time = 3e-6;
+        params.protocol.support_speed = 1.0;
+        params.protocol.measure_from = 1.0 / 3.0;
+        params
     };
     let Prepared { mut sim, .. } = prepare(
         &scene,
@@ -428,12 +450,13 @@ fn lock_in_is_detected() {
 fn pruning_the_substrate_is_exact() {
     let scene = small("square-tri", 9.0, 10.2);
     let series = |prune: bool| {
-        let p = SimParams {
-            prune_substrate: prune,
-            rigid_z: true,
-            relax_time: 0.3e-6,
-            slide_time: 1.5e-6,
-            ..slide_params(&scene)
+        let p = {
+            let mut params = slide_params(&scene);
+            params.active.prune_substrate = prune;
+            params.mount.rigid_z = true;
+            params.protocol.relax_time = 0.3e-6;
+            params.protocol.slide_time = 1.5e-6;
+            params
         };
         let Prepared { mut sim, start, .. } = prepare(&scene, p, Start::Surrogate, None).unwrap();
         let samples = run_slide(&mut sim);
@@ -459,11 +482,12 @@ fn pruning_the_substrate_is_exact() {
 fn pipelined_steps_equal_single_steps() {
     let scene = small("square-tri", 9.0, 10.2);
     for active_set in [false, true] {
-        let p = SimParams {
-            active_set,
-            chunk_min: 4,
-            parallel_min_work: 0,
-            ..slide_params(&scene)
+        let p = {
+            let mut params = slide_params(&scene);
+            params.active.enabled = active_set;
+            params.numerics.chunk_min = 4;
+            params.numerics.parallel_min_work = 0;
+            params
         };
         let mut a = prepare(&scene, p.clone(), Start::Surrogate, None)
             .unwrap()

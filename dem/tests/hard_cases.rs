@@ -13,7 +13,7 @@
 mod common;
 use common::{params, small};
 use dem::protocol::RunKind;
-use dem::{prepare, DemError, SimParams, Start};
+use dem::{prepare, DemError, Start};
 use surrogate::Scene;
 
 /// The models: name, rigid z, implicit mount.
@@ -37,25 +37,27 @@ fn balance(
     m: (&str, bool, bool),
     factor: Option<f64>,
 ) -> Result<f64, DemError> {
-    let base = SimParams {
-        load: load(scene, w_mn),
-        rigid_z: m.1,
-        implicit_mount: m.2,
-        active_set: true,
-        equilibrate_time: 2e-6,
-        ..params(scene)
+    let base = {
+        let mut sp = params(scene);
+        sp.protocol.load = load(scene, w_mn);
+        sp.mount.rigid_z = m.1;
+        sp.mount.implicit_mount = m.2;
+        sp.active.enabled = true;
+        sp.protocol.equilibrate_time = 2e-6;
+        sp
     };
     let p = match factor {
         None => base,
         Some(f) => {
             let probe = prepare(scene, base.clone(), Start::Surrogate, None)?;
-            SimParams {
-                dt: Some(f * probe.stable.dt_crit),
-                ..base
+            {
+                let mut params = base;
+                params.numerics.dt = Some(f * probe.stable.dt_crit);
+                params
             }
         }
     };
-    let w = p.load;
+    let w = p.protocol.load;
     let mut sim = prepare(scene, p, Start::Surrogate, None)?.sim;
     let mut samples = Vec::new();
     dem::protocol::run(

@@ -15,12 +15,13 @@ use surrogate::Scene;
 fn scene_and_params(implicit: bool) -> (Scene, SimParams) {
     let mut scene = small("square-tri", 15.0, 0.0);
     scene.coating.p_crit = 1.6e9;
-    let p = SimParams {
-        load: load_for(&scene) * 2.45 / 1.4,
-        slide_time: 0.6e-6,
-        implicit_mount: implicit,
-        active_set: true,
-        ..slide_params(&scene)
+    let p = {
+        let mut params = slide_params(&scene);
+        params.protocol.load = load_for(&scene) * 2.45 / 1.4;
+        params.protocol.slide_time = 0.6e-6;
+        params.mount.implicit_mount = implicit;
+        params.active.enabled = true;
+        params
     };
     (scene, p)
 }
@@ -54,7 +55,17 @@ fn failed(samples: &[Sample], slide_from_us: f64) -> f64 {
 fn implicit_mount_agrees_with_the_explicit_full_model() {
     let go = |implicit: bool, dt: Option<f64>| {
         let (scene, p) = scene_and_params(implicit);
-        let prep = prepare(&scene, SimParams { dt, ..p }, Start::Surrogate, None).unwrap();
+        let prep = prepare(
+            &scene,
+            {
+                let mut params = p;
+                params.numerics.dt = dt;
+                params
+            },
+            Start::Surrogate,
+            None,
+        )
+        .unwrap();
         let mode = prep.stable.mode;
         let mut sim = prep.sim;
         let samples = run_slide(&mut sim);
@@ -107,10 +118,11 @@ fn implicit_mount_agrees_with_the_explicit_full_model() {
 #[test]
 fn implicit_mount_is_deterministic_and_resumes_bit_identically() {
     let (scene, p) = scene_and_params(true);
-    let p = SimParams {
-        chunk_min: 4,
-        parallel_min_work: 0,
-        ..p
+    let p = {
+        let mut params = p;
+        params.numerics.chunk_min = 4;
+        params.numerics.parallel_min_work = 0;
+        params
     };
     let fresh = || {
         prepare(&scene, p.clone(), Start::Surrogate, None)
@@ -161,9 +173,10 @@ fn implicit_mount_is_deterministic_and_resumes_bit_identically() {
     // the explicit engine refuses this checkpoint, naming the flag that differs
     let mut x = prepare(
         &scene,
-        SimParams {
-            implicit_mount: false,
-            ..p.clone()
+        {
+            let mut params = p.clone();
+            params.mount.implicit_mount = false;
+            params
         },
         Start::Surrogate,
         None,

@@ -7,7 +7,7 @@ mod common;
 use common::*;
 use dem::model::{Constant, Friction};
 use dem::protocol::RunKind;
-use dem::{prepare, Prepared, SimParams, Start};
+use dem::{prepare, Prepared, Start};
 use surrogate::solver::{Model, Pose, Solver};
 use surrogate::{Mount, Scene};
 
@@ -28,14 +28,15 @@ fn undamped_run_conserves_energy_with_each_mount() {
         scene.substrate.sigma_h = 0.01e-6;
         scene.slider.offset = [1.0e-6, 0.4e-6];
         scene.slider.mount = mount;
-        let p = SimParams {
-            damping_time: f64::INFINITY,
-            gamma_n: 0.0,
-            gamma_t: 0.0,
-            dt: None,
-            dt_safety: 0.1,
-            active_set,
-            ..params(&scene)
+        let p = {
+            let mut sp = params(&scene);
+            sp.numerics.damping_time = f64::INFINITY;
+            sp.contact.gamma_n = 0.0;
+            sp.contact.gamma_t = 0.0;
+            sp.numerics.dt = None;
+            sp.numerics.dt_safety = 0.1;
+            sp.active.enabled = active_set;
+            sp
         };
         let Prepared {
             mut sim, stable, ..
@@ -59,7 +60,8 @@ fn undamped_run_conserves_energy_with_each_mount() {
             if k % 100 == 0 {
                 let e = sim.energy();
                 drift = drift.max((e - e0).abs());
-                scale = scale.max(sim.params.load * (sim.spec.control_z - sim.state.cl_x[2]).abs());
+                scale = scale
+                    .max(sim.params.protocol.load * (sim.spec.control_z - sim.state.cl_x[2]).abs());
                 tilt = tilt.max(sim.state.tilt[0].abs().max(sim.state.tilt[1].abs()));
             }
         }
@@ -90,13 +92,14 @@ fn undamped_run_conserves_energy_with_each_mount() {
 /// surrogate's rigid body in z) and returns the engine. The damping time is cut to 0.1 µs (the
 /// equilibrium does not depend on it) so the lightly damped tilt modes settle in a few µs.
 fn settle(scene: &Scene, time: f64, k_lateral: f64) -> dem::Sim {
-    let p = SimParams {
-        rigid_z: true,
-        damping_time: 0.1e-6,
-        equilibrate_time: time,
-        k_slider_xy: k_lateral,
-        k_substrate_xy: k_lateral,
-        ..params(scene)
+    let p = {
+        let mut sp = params(scene);
+        sp.mount.rigid_z = true;
+        sp.numerics.damping_time = 0.1e-6;
+        sp.protocol.equilibrate_time = time;
+        sp.mount.k_slider_xy = k_lateral;
+        sp.mount.k_substrate_xy = k_lateral;
+        sp
     };
     let mut sim = prepare(scene, p, Start::Surrogate, None).unwrap().sim;
     run_kind(&mut sim, RunKind::Equilibrate);
@@ -199,9 +202,10 @@ fn tilted_equilibrium_matches_the_surrogate_and_the_torque_balance() {
 fn locked_and_springs_agree_on_a_symmetric_scene() {
     let mut scene = small("tri-tri", 12.0, 0.0);
     let go = |scene: &Scene| {
-        let p = SimParams {
-            equilibrate_time: 0.5e-6,
-            ..params(scene)
+        let p = {
+            let mut sp = params(scene);
+            sp.protocol.equilibrate_time = 0.5e-6;
+            sp
         };
         let mut sim = prepare(scene, p, Start::Gap(5e-9), None).unwrap().sim;
         let s = run_kind(&mut sim, RunKind::Equilibrate);

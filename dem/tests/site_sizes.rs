@@ -51,14 +51,23 @@ fn two_slider_sizes_settle_with_each_pairs_own_contact_distance() {
         ("full-explicit", false, false),
     ] {
         let params = SimParams {
-            load,
-            rigid_z,
-            implicit_mount,
-            active_set: false,
-            prune_substrate: true,
-            equilibrate_time: 3e-6,
-            slide_time: 0.0,
-            sample_interval: 0.1e-6,
+            protocol: dem::ProtocolParams {
+                load,
+                equilibrate_time: 3e-6,
+                slide_time: 0.0,
+                sample_interval: 0.1e-6,
+                ..Default::default()
+            },
+            mount: dem::MountParams {
+                rigid_z,
+                implicit_mount,
+                ..Default::default()
+            },
+            active: dem::ActiveSetParams {
+                enabled: false,
+                prune_substrate: true,
+                ..Default::default()
+            },
             ..SimParams::default()
         };
         let prep = prepare(&scene, params, Start::Gap(1e-9), None).unwrap();
@@ -121,12 +130,13 @@ fn the_active_set_matches_every_sphere_integrated_with_per_site_sizes() {
     let scene = scene(&dir);
     for rigid_z in [false, true] {
         let go = |active_set: bool| {
-            let params = SimParams {
-                load: 1e-3,
-                rigid_z,
-                implicit_mount: !rigid_z,
-                active_set,
-                ..common::slide_params(&scene)
+            let params = {
+                let mut params = common::slide_params(&scene);
+                params.protocol.load = 1e-3;
+                params.mount.rigid_z = rigid_z;
+                params.mount.implicit_mount = !rigid_z;
+                params.active.enabled = active_set;
+                params
             };
             let mut sim = prepare(&scene, params, Start::Surrogate, None).unwrap().sim;
             let samples = common::run_slide(&mut sim);

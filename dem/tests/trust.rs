@@ -10,13 +10,14 @@ use dem::{prepare, DemError, SimParams, Start};
 use surrogate::{Mount, Scene};
 
 fn short(scene: &Scene) -> SimParams {
-    SimParams {
-        rigid_z: true,
-        active_set: true,
-        equilibrate_time: 0.1e-6,
-        relax_time: 0.1e-6,
-        slide_time: 0.3e-6,
-        ..slide_params(scene)
+    {
+        let mut params = slide_params(scene);
+        params.mount.rigid_z = true;
+        params.active.enabled = true;
+        params.protocol.equilibrate_time = 0.1e-6;
+        params.protocol.relax_time = 0.1e-6;
+        params.protocol.slide_time = 0.3e-6;
+        params
     }
 }
 
@@ -90,9 +91,10 @@ fn checkpoint_refuses_a_run_with_other_inputs() {
     }
     let e = load_into(
         &scene,
-        &SimParams {
-            active_margin: 10e-9,
-            ..p.clone()
+        &{
+            let mut params = p.clone();
+            params.active.margin = 10e-9;
+            params
         },
         None,
         &path,
@@ -162,10 +164,11 @@ fn edited_or_corrupt_checkpoints_are_refused_with_their_own_message() {
 #[test]
 fn a_path_off_the_substrate_is_refused_before_the_run() {
     let scene = small("square-tri", 12.0, 0.0);
-    let p = SimParams {
-        slide_time: 20e-6,
-        support_speed: 1.0,
-        ..slide_params(&scene)
+    let p = {
+        let mut params = slide_params(&scene);
+        params.protocol.slide_time = 20e-6;
+        params.protocol.support_speed = 1.0;
+        params
     };
     let e = match prepare(&scene, p, Start::Surrogate, None) {
         Err(e) => e,
@@ -186,7 +189,10 @@ fn a_path_off_the_substrate_is_refused_before_the_run() {
     assert!(m.contains("longest slide that fits is 13.500 µs"), "{m}");
     let study = Scene::preset("square-tri").unwrap();
     let p = SimParams {
-        alpha: 90f64.to_radians(),
+        protocol: dem::ProtocolParams {
+            alpha: 90f64.to_radians(),
+            ..Default::default()
+        },
         ..SimParams::default()
     };
     dem::check_path(&study, &p).unwrap();
@@ -197,13 +203,14 @@ fn a_path_off_the_substrate_is_refused_before_the_run() {
 #[test]
 fn leaving_the_substrate_is_reported_as_such() {
     let scene = small("square-tri", 12.0, 0.0);
-    let p = SimParams {
-        slide_time: 1e-6,
-        support_speed: 2.0,
-        ..short(&scene)
+    let p = {
+        let mut params = short(&scene);
+        params.protocol.slide_time = 1e-6;
+        params.protocol.support_speed = 2.0;
+        params
     };
     let mut sim = prepare(&scene, p, Start::Surrogate, None).unwrap().sim;
-    sim.params.slide_time = 12e-6;
+    sim.params.protocol.slide_time = 12e-6;
     let mut samples = Vec::new();
     let e = run(
         &mut sim,
@@ -273,8 +280,11 @@ fn xyz_is_replaced_by_a_fresh_run_and_continued_exactly_on_resume() {
 fn the_model_choice_follows_stiffness_coating_failure_and_stick_slip() {
     use dem::{choose_model, ModelRequest};
     let p = |w: f64| SimParams {
-        load: w,
-        alpha: 90f64.to_radians(),
+        protocol: dem::ProtocolParams {
+            load: w,
+            alpha: 90f64.to_radians(),
+            ..Default::default()
+        },
         ..SimParams::default()
     };
     let study = Scene::preset("square-tri").unwrap();
@@ -287,9 +297,10 @@ fn the_model_choice_follows_stiffness_coating_failure_and_stick_slip() {
         c.stiffness_ratio
     );
     assert!(c.stick_slip_eta.unwrap() < 1.0);
-    let along = SimParams {
-        alpha: 0.0,
-        ..p(1.4e-3)
+    let along = {
+        let mut params = p(1.4e-3);
+        params.protocol.alpha = 0.0;
+        params
     };
     let c = choose_model(&study, &along, ModelRequest::Auto).unwrap();
     eprintln!("study 1.4 mN, α = 0°: {} — {}", c.model, c.reason);
@@ -300,9 +311,10 @@ fn the_model_choice_follows_stiffness_coating_failure_and_stick_slip() {
     );
     assert!(c.stick_slip_eta.unwrap() > 1.0);
     // equilibration only: no sliding, no stick-slip question
-    let eq = SimParams {
-        slide_time: 0.0,
-        ..along
+    let eq = {
+        let mut params = along;
+        params.protocol.slide_time = 0.0;
+        params
     };
     let c = choose_model(&study, &eq, ModelRequest::Auto).unwrap();
     assert!(c.rigid_z && c.stick_slip_eta.is_none(), "{}", c.reason);
@@ -332,5 +344,5 @@ fn the_model_choice_follows_stiffness_coating_failure_and_stick_slip() {
     choose_model(&tt, &q.clone(), ModelRequest::Auto)
         .unwrap()
         .apply(&mut q);
-    assert!(!q.rigid_z && q.prune_substrate && q.active_set);
+    assert!(!q.mount.rigid_z && q.active.prune_substrate && q.active.enabled);
 }

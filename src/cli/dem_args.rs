@@ -1,85 +1,23 @@
 //! Flags shared by `superlube equilibrate` and `superlube slide` (the DEM tier), turned into a
 //! scene and [`DemParams`], and the writing of their outputs.
 
+pub use super::contact_args::ContactArgs;
+pub use super::model_args::{ModelArg, ModelArgs};
 use super::parse_list_or_range;
 use super::protocol_args::ProtocolArgs;
+pub use super::start_args::StartArgs;
 use super::{checks, SceneArgs};
 use crate::runs::sink::csv_bytes;
 use crate::runs::{meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs};
-use crate::study::dem_run::{DemOutcome, DemParams, ModelSpec};
+use crate::study::dem_run::{DemOutcome, DemParams};
 use crate::study::record;
 use anyhow::{bail, Result};
-use dem::model::{Constant, Friction};
 use dem::protocol::RunIo;
-use dem::{SimParams, Start};
+use dem::SimParams;
 use serde::Serialize;
 use std::path::PathBuf;
-use surrogate::units::NM;
 
 use super::scene_args::Resolved;
-
-/// How the slider starts.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum StartKind {
-    /// At the surrogate's quasi-static equilibrium height (contacts already loaded): short
-    /// equilibration.
-    Surrogate,
-    /// Resting `--gap-nm` above first touch, falling under the load.
-    Gap,
-}
-
-/// Which DEM model (`--model`).
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ModelArg {
-    /// The cheapest model within its measured error for this scene (reason printed).
-    Auto,
-    /// Slider spheres on their k_z springs; the linear mount network (k_z springs, control
-    /// layer Z and tilts, mount springs) integrated implicitly, the contacts explicitly: the
-    /// step is set by the contacts (docs/validation/dem-integrator.md).
-    Full,
-    /// The full model with velocity-Verlet on everything (step set by the k_z springs): the
-    /// reference for `full`.
-    FullExplicit,
-    /// Rigid-z: slider spheres rigid in z on the control layer.
-    Reduced,
-}
-
-impl ModelArg {
-    /// The engine's request.
-    pub fn request(self) -> dem::ModelRequest {
-        match self {
-            ModelArg::Auto => dem::ModelRequest::Auto,
-            ModelArg::Full => dem::ModelRequest::Full,
-            ModelArg::FullExplicit => dem::ModelRequest::FullExplicit,
-            ModelArg::Reduced => dem::ModelRequest::Reduced,
-        }
-    }
-}
-
-/// The tangential history of the contacts' Mindlin spring (`--tangential`).
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum TangentialArg {
-    /// History = elastic displacement: a stuck contact's force follows its contact radius when
-    /// the load changes (LAMMPS `mindlin`).
-    Mindlin,
-    /// History = elastic force (incremental stiffness): a stuck contact keeps its force when its
-    /// load changes (LAMMPS `mindlin_force`).
-    MindlinForce,
-    /// History = elastic displacement, scaled down with the contact radius on unloading: a
-    /// stuck contact sheds force as a² (LAMMPS `mindlin_rescale`).
-    MindlinRescale,
-}
-
-impl TangentialArg {
-    /// The engine's sub-model.
-    pub fn engine(self) -> dem::Tangential {
-        match self {
-            TangentialArg::Mindlin => dem::Tangential::Mindlin,
-            TangentialArg::MindlinForce => dem::Tangential::MindlinForce,
-            TangentialArg::MindlinRescale => dem::Tangential::MindlinRescale,
-        }
-    }
-}
 
 /// `--theta-deg` (`None`: the scene's), `--alpha-deg` (degrees) and `--load-mn` (mN) values.
 pub type Lists = (Vec<Option<f64>>, Vec<f64>, Vec<f64>);
@@ -135,49 +73,12 @@ pub struct DemArgs {
     /// Time step in µs (> 0) [default: 0.25 × the estimated stable step, printed at start].
     #[arg(long = "dt-us", value_name = "US", allow_hyphen_values = true)]
     pub dt_us: Option<f64>,
-    /// How the slider starts: at the surrogate's equilibrium, or from a gap of `--gap-nm`.
-    #[arg(long, value_enum, default_value_t = StartKind::Surrogate)]
-    pub start: StartKind,
-    /// Gap in nm above first touch for `--start gap` (> 0).
-    #[arg(
-        long = "gap-nm",
-        value_name = "NM",
-        default_value_t = 20.0,
-        allow_hyphen_values = true
-    )]
-    pub gap_nm: f64,
-    /// Model: `auto` picks rigid-z where its measured error is small for this scene and keeps
-    /// the full model near coating failure, where stick-slip is expected and beyond the measured
-    /// stiffness ratio (the choice and its reason are printed and in the JSON); `full` integrates
-    /// the stiff mount springs implicitly (step set by the contacts), `full-explicit` is the same
-    /// model by velocity-Verlet throughout (many more steps), for reference; pruning and the
-    /// active set are exact and on in every model.
-    #[arg(long, value_enum, default_value_t = ModelArg::Auto)]
-    pub model: ModelArg,
-    /// Reduction: slider spheres move rigidly with the control layer in z (replaces the stiff
-    /// 10⁶ N/m z-springs; allows a larger time step). Same as `--model reduced`.
-    #[arg(long = "rigid-z")]
-    pub rigid_z: bool,
-    /// Leave out substrate spheres that the slider can never touch along its path (exact; on in
-    /// every `--model`, kept for compatibility).
-    #[arg(long)]
-    pub prune: bool,
-    /// Integrate every particle every step instead of only the active set (the active set is
-    /// exact to round-off; this is for comparisons and timing).
-    #[arg(long = "no-active-set")]
-    pub no_active_set: bool,
-    /// Tangential history of the contacts' Mindlin spring: `mindlin` stores the elastic
-    /// displacement (its force jumps with the contact radius when a stuck contact's load
-    /// changes), `mindlin-force` stores the elastic force (incremental stiffness, kept until
-    /// the contact slips), `mindlin-rescale` scales the displacement down with the contact
-    /// radius on unloading; LAMMPS `pair granular` conventions. Measured in
-    /// docs/validation/dem-integrator.md.
-    #[arg(long, value_enum, default_value_t = TangentialArg::Mindlin)]
-    pub tangential: TangentialArg,
-    /// Constant friction coefficient (≥ 0) for every contact instead of the coating's
-    /// pressure-switched μ1/μ2 (reference runs).
-    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
-    pub mu: Option<f64>,
+    #[command(flatten)]
+    pub start: StartArgs,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub contact: ContactArgs,
     /// Sampling interval of the time series in µs (> 0). Each row's `p_max_peak_GPa` and the
     /// `slide` summary's `max_p_max_GPa` cover every step between rows, so a finer interval is not
     /// needed to catch pressure peaks.
@@ -297,27 +198,25 @@ impl DemArgs {
             .dt_us
             .map(|dt| checks::time_us(dt, "--dt-us"))
             .transpose()?;
-        let friction = self
-            .mu
-            .map(|mu| checks::non_negative(mu, "--mu"))
-            .transpose()?
-            .map(|mu| Friction::Constant(Constant { mu }));
-        let gap = checks::positive(self.gap_nm, "--gap-nm")? * NM;
-        let start = match self.start {
-            StartKind::Surrogate => Start::Surrogate,
-            StartKind::Gap => Start::Gap(gap),
-        };
+        let friction = self.contact.friction()?;
+        let start = self.start.start()?;
         checks::every(self.checkpoint_every, "--checkpoint-every", "checkpoint")?;
         checks::every(self.xyz_every, "--xyz-every", "snapshot")?;
         let mut sim = SimParams {
-            dt,
-            load,
-            equilibrate_time: equilibrate,
-            sample_interval: sample,
-            tangential: self.tangential.engine(),
+            protocol: dem::ProtocolParams {
+                load,
+                equilibrate_time: equilibrate,
+                sample_interval: sample,
+                ..Default::default()
+            },
+            contact: self.contact.params(),
+            numerics: dem::NumericsParams {
+                dt,
+                ..Default::default()
+            },
             ..SimParams::default()
         };
-        protocol.apply(&mut sim);
+        protocol.apply(&mut sim.protocol);
         let params = DemParams {
             sim,
             alpha,
@@ -335,11 +234,7 @@ impl DemArgs {
             } else {
                 None
             },
-            model: ModelSpec {
-                request: self.model.request(),
-                force_rigid_z: self.rigid_z,
-                active_set: !self.no_active_set,
-            },
+            model: self.model.spec(),
         };
         Ok(params)
     }

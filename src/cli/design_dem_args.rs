@@ -111,12 +111,18 @@ impl DesignDemArgs {
             None => std::thread::available_parallelism().map_or(1, |n| n.get()),
         };
         let sim = SimParams {
-            dt,
-            load: mn_to_n(1.0),
-            equilibrate_time: us_to_s(self.equilibrate_us),
-            relax_time: us_to_s(self.relax_us),
-            slide_time: us_to_s(self.slide_us),
-            support_speed: self.speed_m_s,
+            protocol: dem::ProtocolParams {
+                load: mn_to_n(1.0),
+                equilibrate_time: us_to_s(self.equilibrate_us),
+                relax_time: us_to_s(self.relax_us),
+                slide_time: us_to_s(self.slide_us),
+                support_speed: self.speed_m_s,
+                ..Default::default()
+            },
+            numerics: dem::NumericsParams {
+                dt,
+                ..Default::default()
+            },
             ..SimParams::default()
         };
         Ok((design_run_params(sim, line, self.model.request()), jobs))

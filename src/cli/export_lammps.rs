@@ -122,16 +122,7 @@ pub fn run(a: Args) -> Result<()> {
         Some(l) => l,
         None => contact_line_direction(&scene, scene.slider.theta, &MapParams::default()).angle,
     };
-    let mut params = SimParams {
-        dt: a.dt_us.map(us_to_s),
-        load: mn_to_n(a.load_mn),
-        alpha: line + alpha,
-        equilibrate_time: us_to_s(a.equilibrate_us),
-        sample_interval: us_to_s(a.sample_us),
-        prune_substrate: a.prune,
-        ..SimParams::default()
-    };
-    a.protocol.apply(&mut params);
+    let params = sim_params(&a, line + alpha);
     let opts = ExportOptions {
         mu: a.mu.unwrap_or(scene.coating.mu1),
         dump_interval: us_to_s(a.dump_us),
@@ -179,4 +170,29 @@ pub fn run(a: Args) -> Result<()> {
         files::DECK
     );
     Ok(())
+}
+
+/// The exported run's knobs from the flags (checked by the caller), pulling `direction` (rad
+/// from x): the study's defaults but the load, the protocol, dt, the sample interval, `--prune`.
+fn sim_params(a: &Args, direction: f64) -> SimParams {
+    let mut params = SimParams {
+        protocol: dem::ProtocolParams {
+            load: mn_to_n(a.load_mn),
+            alpha: direction,
+            equilibrate_time: us_to_s(a.equilibrate_us),
+            sample_interval: us_to_s(a.sample_us),
+            ..Default::default()
+        },
+        numerics: dem::NumericsParams {
+            dt: a.dt_us.map(us_to_s),
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            prune_substrate: a.prune,
+            ..Default::default()
+        },
+        ..SimParams::default()
+    };
+    a.protocol.apply(&mut params.protocol);
+    params
 }

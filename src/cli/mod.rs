@@ -5,6 +5,7 @@
 
 mod campaign;
 mod checks;
+mod contact_args;
 mod corrugation;
 mod dem_args;
 mod design;
@@ -17,6 +18,7 @@ mod friction_args;
 mod lammps_check;
 mod landscape;
 mod merge;
+mod model_args;
 mod patterns;
 mod protocol_args;
 mod recipe_args;
@@ -25,6 +27,7 @@ mod scene_args;
 mod screen;
 mod slide;
 mod slurm;
+mod start_args;
 mod sweep_args;
 pub mod tips;
 mod tolerance;

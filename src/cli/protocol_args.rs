@@ -5,7 +5,7 @@
 
 use super::checks::non_negative;
 use anyhow::{bail, Result};
-use dem::SimParams;
+use dem::ProtocolParams;
 use surrogate::units::us_to_s;
 
 /// The sliding protocol of one DEM run, in µs and m/s as given on the command line.
@@ -47,11 +47,12 @@ impl ProtocolArgs {
         speed_m_s: 0.0,
     };
 
-    /// Sets the protocol on `sim`: `relax_time`, `slide_time` (s) and `support_speed` (m/s).
-    pub fn apply(&self, sim: &mut SimParams) {
-        sim.relax_time = us_to_s(self.relax_us);
-        sim.slide_time = us_to_s(self.slide_us);
-        sim.support_speed = self.speed_m_s;
+    /// Sets its part of the DEM protocol `p`: `relax_time`, `slide_time` (s) and
+    /// `support_speed` (m/s).
+    pub fn apply(&self, p: &mut ProtocolParams) {
+        p.relax_time = us_to_s(self.relax_us);
+        p.slide_time = us_to_s(self.slide_us);
+        p.support_speed = self.speed_m_s;
     }
 
     /// Checks every flag, naming it: times ≥ 0 and finite, speed ≥ 0 and finite; a run that

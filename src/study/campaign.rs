@@ -192,12 +192,18 @@ impl CampaignParams {
         scene.validate()?;
         let params = DemParams {
             sim: SimParams {
-                dt: self.dt,
-                load: mn_to_n(load_mn),
-                equilibrate_time: self.times[0],
-                relax_time: self.times[1],
-                slide_time: self.times[2],
-                support_speed: self.speed,
+                protocol: dem::ProtocolParams {
+                    load: mn_to_n(load_mn),
+                    equilibrate_time: self.times[0],
+                    relax_time: self.times[1],
+                    slide_time: self.times[2],
+                    support_speed: self.speed,
+                    ..Default::default()
+                },
+                numerics: dem::NumericsParams {
+                    dt: self.dt,
+                    ..Default::default()
+                },
                 ..SimParams::default()
             },
             alpha: deg_to_rad(s.alpha_deg),

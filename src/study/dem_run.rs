@@ -9,7 +9,9 @@ use crate::runs::progress::Progress;
 use anyhow::{Context, Result};
 use dem::model::Friction;
 use dem::protocol::{run, step_counts, Phase, RunIo, RunKind};
-use dem::{choose_model, prepare, ModelChoice, ModelRequest, Prepared, SimParams, Start};
+use dem::{
+    choose_model_at, prepare_at, ModelChoice, ModelRequest, Nominal, Prepared, SimParams, Start,
+};
 use std::path::PathBuf;
 use surrogate::friction::TiltResonance;
 use surrogate::units::{n_to_mn, rad_to_deg, s_to_us};
@@ -61,10 +63,10 @@ impl Default for ModelSpec {
 }
 
 /// The reductions for `scene` and `sim` (pulling direction already set) per `spec`, with the
-/// reason ([`dem::choose_model`]; costs one surrogate solve and, for `auto` with sliding, the
-/// Prandtl–Tomlinson path of ~40 solves).
-pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec) -> Result<ModelChoice> {
-    let mut c = choose_model(scene, sim, spec.request)?;
+/// reason ([`dem::choose_model_at`] from the run's `nominal` solve; costs, for `auto` with
+/// sliding, the Prandtl–Tomlinson path of ~40 solves).
+pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec, nominal: &Nominal) -> ModelChoice {
+    let mut c = choose_model_at(scene, sim, spec.request, nominal);
     if spec.force_rigid_z && !c.rigid_z {
         c.rigid_z = true;
         c.model = "reduced";
@@ -74,7 +76,7 @@ pub fn choose(scene: &Scene, sim: &SimParams, spec: ModelSpec) -> Result<ModelCh
         c.active_set = false;
         c.reason.push_str("; active set off (asked for)");
     }
-    Ok(c)
+    c
 }
 
 /// A finished (or failed) DEM run.
@@ -121,15 +123,17 @@ pub fn run_dem(
 ) -> Result<DemOutcome> {
     let (line, dir) = direction(scene, p);
     let mut sim_params = p.sim.clone();
-    sim_params.alpha = dir;
-    let choice = choose(scene, &sim_params, p.model)?;
+    sim_params.protocol.alpha = dir;
+    // the surrogate's equilibrium at the load: solved once, for the model choice and the start
+    let nominal = Nominal::solve(scene, sim_params.protocol.load)?;
+    let choice = choose(scene, &sim_params, p.model, &nominal);
     choice.apply(&mut sim_params);
     progress.note(&format!("model: {} ({})", choice.model, choice.reason));
     let tilt = TiltResonance::with_ties(
         scene,
-        sim_params.k_slider_xy,
-        sim_params.k_substrate_xy,
-        sim_params.control_sphere_radius,
+        sim_params.mount.k_slider_xy,
+        sim_params.mount.k_substrate_xy,
+        sim_params.mount.control_sphere_radius,
     );
     // Only where the coating may fail while sliding (the auto model's test).
     if let Some(t) =
@@ -141,51 +145,10 @@ pub fn run_dem(
              \"The mount's resonance\")"
         ));
     }
-    let mut prepared = prepare(scene, sim_params, p.start, p.friction)?;
+    let mut prepared = prepare_at(scene, sim_params, p.start, p.friction, &nominal)?;
+    start_notes(&prepared, line, dir, p, progress);
     let sim = &mut prepared.sim;
-    progress.note(&format!(
-        "stable step estimate: {:.4e} µs ({}); using dt = {:.4e} µs; {} particles ({} substrate spheres pruned)",
-        s_to_us(prepared.stable.dt_crit),
-        prepared.stable.mode,
-        s_to_us(sim.dt),
-        sim.particles(),
-        prepared.start.pruned
-    ));
-    progress.note(&format!(
-        "pulling direction: {:.3}° from x = contact line {:.3}° ({}) + α {:.3}°",
-        rad_to_deg(dir),
-        rad_to_deg(line.angle),
-        if line.given {
-            format!("given by {}", crate::study::input::Input::LineDeg)
-        } else {
-            "moiré estimate".to_string()
-        },
-        rad_to_deg(p.alpha)
-    ));
-    if sim.dt > prepared.stable.dt_crit {
-        progress.note(&format!(
-            "warning: dt = {:.4e} µs exceeds the stable step estimate {:.4e} µs; the run will stop if it blows up",
-            s_to_us(sim.dt),
-            s_to_us(prepared.stable.dt_crit)
-        ));
-    }
-    let mut samples = Vec::new();
-    if let Some(path) = &p.resume {
-        if path.exists() {
-            samples = dem::checkpoint::load(path, sim)
-                .with_context(|| format!("resuming from {}", path.display()))?;
-            progress.note(&format!(
-                "resumed at step {} (t = {:.3} µs)",
-                sim.state.step,
-                s_to_us(sim.state.t)
-            ));
-        } else {
-            progress.note(&format!(
-                "no checkpoint at {} yet: starting fresh",
-                path.display()
-            ));
-        }
-    }
+    let mut samples = resume(p, sim, progress)?;
     let (ne, nr, ns, _) = step_counts(sim, kind);
     let total = ne + nr + ns;
     let first = sim.state.step;
@@ -222,31 +185,19 @@ pub fn run_dem(
     progress.finish();
     let wall_s = t0.elapsed().as_secs_f64();
     let steps = sim.state.step - first;
-    let alpha_deg = label(rad_to_deg(p.alpha));
-    let info = RunInfo {
-        alpha_deg,
-        line_deg: rad_to_deg(dir) - alpha_deg,
-        direction_deg: rad_to_deg(dir),
-        dt_us: s_to_us(sim.dt),
-        dt_crit_us: s_to_us(prepared.stable.dt_crit),
-        dt_crit_mode: prepared.stable.mode,
-        particles: sim.particles(),
-        pruned_substrate: prepared.start.pruned,
-        particle_steps_per_s: steps as f64 * sim.particles() as f64 / wall_s.max(1e-9),
-        rigid_z: sim.params.rigid_z,
-        prune: sim.params.prune_substrate,
-        model: choice.model,
-        model_requested: choice.requested,
-        model_reason: choice.reason,
-        tilt_pair_ratio: tilt.map(|t| t.ratio),
-        active_set: sim.params.active_set,
-        mean_active_particles: sim.state.stats.particle_steps as f64 / sim.state.step.max(1) as f64
-            + 1.0,
-    };
+    let info = run_info(
+        p,
+        dir,
+        &prepared,
+        steps,
+        wall_s,
+        choice,
+        tilt.map(|t| t.ratio),
+    );
     let case = DemCase {
         pattern: scene.pattern.clone(),
         theta_deg: label(rad_to_deg(scene.slider.theta)),
-        load_mn: label(n_to_mn(sim.params.load)),
+        load_mn: label(n_to_mn(prepared.sim.params.protocol.load)),
     };
     Ok(DemOutcome {
         prepared,
@@ -257,4 +208,101 @@ pub fn run_dem(
         case,
         error: res.err(),
     })
+}
+
+/// Notes the stable step and dt, the particles, the pulling direction (`dir`, rad from x) and
+/// the line it is measured from, and a dt beyond the stable step.
+fn start_notes(
+    prepared: &Prepared,
+    line: LineChoice,
+    dir: f64,
+    p: &DemParams,
+    progress: &dyn Progress,
+) {
+    let sim = &prepared.sim;
+    progress.note(&format!(
+        "stable step estimate: {:.4e} µs ({}); using dt = {:.4e} µs; {} particles ({} substrate spheres pruned)",
+        s_to_us(prepared.stable.dt_crit),
+        prepared.stable.mode,
+        s_to_us(sim.dt),
+        sim.particles(),
+        prepared.start.pruned
+    ));
+    progress.note(&format!(
+        "pulling direction: {:.3}° from x = contact line {:.3}° ({}) + α {:.3}°",
+        rad_to_deg(dir),
+        rad_to_deg(line.angle),
+        if line.given {
+            format!("given by {}", crate::study::input::Input::LineDeg)
+        } else {
+            "moiré estimate".to_string()
+        },
+        rad_to_deg(p.alpha)
+    ));
+    if sim.dt > prepared.stable.dt_crit {
+        progress.note(&format!(
+            "warning: dt = {:.4e} µs exceeds the stable step estimate {:.4e} µs; the run will stop if it blows up",
+            s_to_us(sim.dt),
+            s_to_us(prepared.stable.dt_crit)
+        ));
+    }
+}
+
+/// The samples of the checkpoint `p.resume` restored into `sim` (noted), or none when there is
+/// no checkpoint (yet).
+fn resume(p: &DemParams, sim: &mut dem::Sim, progress: &dyn Progress) -> Result<Vec<DemSample>> {
+    let mut samples = Vec::new();
+    if let Some(path) = &p.resume {
+        if path.exists() {
+            samples = dem::checkpoint::load(path, sim)
+                .with_context(|| format!("resuming from {}", path.display()))?;
+            progress.note(&format!(
+                "resumed at step {} (t = {:.3} µs)",
+                sim.state.step,
+                s_to_us(sim.state.t)
+            ));
+        } else {
+            progress.note(&format!(
+                "no checkpoint at {} yet: starting fresh",
+                path.display()
+            ));
+        }
+    }
+    Ok(samples)
+}
+
+/// The run facts of the summary: direction (`dir`, rad from x) and the line, dt and the stable
+/// step, particles, throughput over the `steps` this process took in `wall_s` (s), the model
+/// `choice`, the mount's tilt-pair ratio, the active set's mean size.
+fn run_info(
+    p: &DemParams,
+    dir: f64,
+    prepared: &Prepared,
+    steps: u64,
+    wall_s: f64,
+    choice: ModelChoice,
+    tilt_pair_ratio: Option<f64>,
+) -> RunInfo {
+    let sim = &prepared.sim;
+    let alpha_deg = label(rad_to_deg(p.alpha));
+    RunInfo {
+        alpha_deg,
+        line_deg: rad_to_deg(dir) - alpha_deg,
+        direction_deg: rad_to_deg(dir),
+        dt_us: s_to_us(sim.dt),
+        dt_crit_us: s_to_us(prepared.stable.dt_crit),
+        dt_crit_mode: prepared.stable.mode,
+        particles: sim.particles(),
+        pruned_substrate: prepared.start.pruned,
+        particle_steps_per_s: steps as f64 * sim.particles() as f64 / wall_s.max(1e-9),
+        rigid_z: sim.params.mount.rigid_z,
+        prune: sim.params.active.prune_substrate,
+        model: choice.model,
+        model_requested: choice.requested,
+        model_reason: choice.reason,
+        tilt_pair_ratio,
+        active_set: sim.params.active.enabled,
+        mean_active_particles: sim.state.stats.particle_steps as f64 / sim.state.step.max(1) as f64
+            + 1.0,
+    }
 }

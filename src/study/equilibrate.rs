@@ -22,7 +22,7 @@ pub fn equilibrate(
     }
     let result = equilibrate_summary(
         &out.samples,
-        n_to_mn(out.prepared.sim.params.load),
+        n_to_mn(out.prepared.sim.params.protocol.load),
         out.prepared.sim.state.step,
         out.wall_s,
         &out.prepared.start,

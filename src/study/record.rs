@@ -138,18 +138,18 @@ pub fn verdict_rule(mu_sl: f64, p_crit: f64) -> Value {
 /// engine knob (θ is in the scene).
 pub fn dem(scene: &surrogate::Scene, p: &DemParams) -> Value {
     let mut engine = p.sim.clone();
-    engine.alpha = super::dem_run::direction(scene, p).1;
+    engine.protocol.alpha = super::dem_run::direction(scene, p).1;
     let s = &engine;
     let mut v = json!({
-        "load_mN": label(n_to_mn(s.load)),
+        "load_mN": label(n_to_mn(s.protocol.load)),
         "alpha_deg": label(rad_to_deg(p.alpha)),
         "line_deg": p.line.map(rad_to_deg),
-        "equilibrate_us": label(s_to_us(s.equilibrate_time)),
-        "relax_us": label(s_to_us(s.relax_time)),
-        "slide_us": label(s_to_us(s.slide_time)),
-        "speed_m_s": s.support_speed,
-        "dt_us": s.dt.map(|d| label(s_to_us(d))),
-        "sample_us": label(s_to_us(s.sample_interval)),
+        "equilibrate_us": label(s_to_us(s.protocol.equilibrate_time)),
+        "relax_us": label(s_to_us(s.protocol.relax_time)),
+        "slide_us": label(s_to_us(s.protocol.slide_time)),
+        "speed_m_s": s.protocol.support_speed,
+        "dt_us": s.numerics.dt.map(|d| label(s_to_us(d))),
+        "sample_us": label(s_to_us(s.protocol.sample_interval)),
         // what `max_p_max_GPa` is: since this key, the largest p0 at any step (before it, at
         // the samples only), so a stored run of an older build is never mixed with new ones
         "p_max_observed": "every step",

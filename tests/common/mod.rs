@@ -1,6 +1,7 @@
 //! Helpers shared by the command-line integration tests.
 #![allow(dead_code)] // each test binary uses a subset
 
+pub mod lammps;
 mod small_scene;
 
 pub use small_scene::SMALL_SCENE;

@@ -141,7 +141,7 @@ pub fn layout(
     let rho = spec.slider_material.density;
     let rho_sb = spec.substrate_material.density;
     let d_sb = 2.0 * spec.substrate_sphere_radius;
-    let dc = 2.0 * params.control_sphere_radius;
+    let dc = 2.0 * params.mount.control_sphere_radius;
     let mut atoms = Vec::with_capacity(spec.substrate.len() + 3 * n + 1);
     let mut id = 0u64;
     let mut push = |kind, pos, diameter, density, molecule| {
@@ -211,10 +211,10 @@ pub fn layout(
         c[0] /= n as f64;
         c[1] /= n as f64;
     }
-    let (sa, ca) = params.alpha.sin_cos();
+    let (sa, ca) = params.protocol.alpha.sin_cos();
     let support = [
-        c[0] + params.support_lead * ca,
-        c[1] + params.support_lead * sa,
+        c[0] + params.protocol.support_lead * ca,
+        c[1] + params.protocol.support_lead * sa,
         zc + tie_length,
     ];
     let sup_first = lat_first + n as u64;

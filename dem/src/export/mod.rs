@@ -19,6 +19,7 @@
 //! body; the same translational dynamics, its own rotational inertia).
 
 pub mod check;
+mod context;
 pub mod damping;
 pub mod data_file;
 pub mod deck;
@@ -28,6 +29,7 @@ pub mod layout;
 pub mod meta;
 pub mod micro;
 pub mod options;
+mod validate;
 
 pub use check::{check_dump, CheckSummary, FailedContact, FrameReport};
 pub use deck::files;
@@ -37,9 +39,10 @@ pub use options::ExportOptions;
 
 use crate::protocol::{step_counts, RunKind};
 use crate::{DemError, SimParams, Start};
-use deck::{DeckInputs, DeckMount, DeckPair, DeckViscous};
+use context::Context;
+use deck::DeckInputs;
 use std::path::{Path, PathBuf};
-use surrogate::{Mount, Scene};
+use surrogate::Scene;
 
 /// The rendered export: file contents and metadata.
 #[derive(Debug, Clone)]
@@ -54,310 +57,41 @@ pub struct LammpsExport {
     pub meta: ExportMeta,
 }
 
-fn check_nonneg(v: f64, field: &str, unit_scale: f64) -> Result<(), DemError> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(())
-    } else {
-        Err(DemError::invalid(
-            field,
-            v * unit_scale,
-            "must be a non-negative number",
-        ))
-    }
-}
-
 /// Exports `scene` (at its own θ and offset) with the knobs `params` (load, α = pulling
 /// direction from x, protocol times, dt or its safety factor, damping, stiffnesses) and the
 /// constant μ and dump interval of `opts`. Errors name the bad field (user units) before any
 /// work; `rigid_z` cannot be exported (LAMMPS has no per-axis rigid coupling of free spheres).
+/// Pipeline: validate → [`crate::prepare`] → [`layout()`] → header, deck inputs (one part of the
+/// deck per part of [`SimParams`]) → deck, data file, `export.json`, README.
 /// Cost: one surrogate solve and O(N) text.
 pub fn export_lammps(
     scene: &Scene,
     params: &SimParams,
     opts: &ExportOptions,
 ) -> Result<LammpsExport, DemError> {
-    scene.validate()?;
-    if params.rigid_z {
-        return Err(DemError::invalid(
-            "rigid_z",
-            true,
-            "the rigid-z reduction has no LAMMPS equivalent; export the full model",
-        ));
-    }
-    if !(opts.mu.is_finite() && opts.mu >= 0.0) {
-        return Err(DemError::invalid(
-            "mu",
-            opts.mu,
-            "must be a non-negative number",
-        ));
-    }
-    check_nonneg(opts.dump_interval, "dump_us", 1e6)?;
-    if !(opts.tie_length.is_finite() && opts.tie_length > 0.0) {
-        return Err(DemError::invalid(
-            "tie_length_um",
-            opts.tie_length * 1e6,
-            "must be positive",
-        ));
-    }
-    for (v, f) in [
-        (params.equilibrate_time, "equilibrate_us"),
-        (params.relax_time, "relax_us"),
-        (params.slide_time, "slide_us"),
-        (params.support_speed, "speed_m_s"),
-    ] {
-        let scale = if f == "speed_m_s" { 1.0 } else { 1e6 };
-        check_nonneg(v, f, scale)?;
-    }
-    if !(params.sample_interval.is_finite() && params.sample_interval > 0.0) {
-        return Err(DemError::invalid(
-            "sample_us",
-            params.sample_interval * 1e6,
-            "must be positive",
-        ));
-    }
-    if !(params.k_slider_z >= params.k_slider_xy && params.k_slider_xy >= 0.0) {
-        return Err(DemError::invalid(
-            "k_slider_z",
-            params.k_slider_z,
-            "the bond split needs k_slider_z ≥ k_slider_xy ≥ 0 (N/m)",
-        ));
-    }
-    let (m_sl, m_sb) = (scene.slider_material(), scene.substrate_material());
-    let damping = if m_sl == m_sb {
-        damping::lammps_damping(params.gamma_n, params.gamma_t, m_sl.poisson)?
-    } else {
-        let ratio = 6.0 * m_sl.g_star_with(&m_sb) / m_sl.e_star_with(&m_sb);
-        damping::lammps_damping_ratio(params.gamma_n, params.gamma_t, ratio)?
-    };
+    let damping = validate::validate(scene, params, opts)?;
     let friction = crate::model::Friction::Constant(crate::model::Constant { mu: opts.mu });
     let prep = crate::prepare(scene, params.clone(), Start::Surrogate, Some(friction))?;
     let sim = &prep.sim;
-    let p = &sim.params;
-    let (ne, nr, ns, every) = step_counts(sim, RunKind::Slide);
-    let dump_every = if opts.dump_interval > 0.0 {
-        ((opts.dump_interval / sim.dt).round() as u64).max(1)
-    } else {
-        0
-    };
-    let steps = meta::Steps {
-        equilibrate: ne,
-        relax: nr,
-        slide: ns,
-        sample_every: every,
-        dump_every,
-    };
-    let lay = layout::layout(&sim.spec, &scene.slider_sites_local(), p, opts.tie_length);
-    let hertz = scene.hertz();
-    let m_s = sim.spec.slider_sphere_mass();
-    let m_b = sim.spec.substrate_sphere_mass();
-    let m_c = 0.5 * m_sl.sphere_mass(p.control_sphere_radius);
-    let viscous = (p.damping_time.is_finite() && p.damping_time > 0.0).then(|| DeckViscous {
-        gamma_sphere: micro::drag(m_s / p.damping_time),
-        control_ratio: m_c / m_s,
-        substrate_ratio: (m_b != m_s).then(|| m_b / m_s),
-        relative: p.damping_frame == crate::DampingFrame::Relative,
-    });
-    let mount = match scene.slider.mount {
-        Mount::Locked => DeckMount::Locked,
-        Mount::Free => DeckMount::Free,
-        Mount::Springs { k1 } => DeckMount::Springs {
-            k1: micro::stiffness(k1),
-        },
-    };
-    let n = sim.spec.slider_sites.len();
-    let (sa, ca) = p.alpha.sin_cos();
-    let (st, ct) = scene.slider.theta.sin_cos();
-    let um = 1e6;
-    let mount_text = match scene.slider.mount {
-        Mount::Springs { k1 } => format!("springs, K1 = {k1} N/m"),
-        m => m.name().to_string(),
-    };
-    let direction = match opts.alpha_and_line {
-        Some((a, l)) => format!(
-            "{}° from x = contact line {}° + alpha {}°",
-            p.alpha.to_degrees(),
-            l.to_degrees(),
-            a.to_degrees()
-        ),
-        None => format!("{}° from x", p.alpha.to_degrees()),
-    };
-    let mut header = vec![
-        "superlube Tier 3 (DEM) model for stock LAMMPS (packages GRANULAR, MOLECULE, RIGID)".to_string(),
-        format!("generated by: {}", if opts.command.is_empty() { "superlube export-lammps" } else { &opts.command }),
-        format!(
-            "scene: {}, theta = {}°, offset = [{}, {}] um, sigma_h = {} um (seed {}), mount {}",
-            scene.pattern,
-            scene.slider.theta.to_degrees(),
-            scene.slider.offset[0] * um,
-            scene.slider.offset[1] * um,
-            scene.substrate.sigma_h * um,
-            scene.substrate.seed,
-            mount_text
-        ),
-        format!(
-            "particles: {} substrate, {n} slider, {n} control, 1 support ({} LAMMPS atoms: the control layer has two sub-layers)",
-            sim.spec.substrate.len(),
-            lay.atoms.len()
-        ),
-        format!(
-            "load W = {} mN; pulling direction {direction}; support {} m/s, K0 = {} N/m, lead {} um",
-            p.load * 1e3,
-            p.support_speed,
-            p.k0,
-            p.support_lead * um
-        ),
-        format!(
-            "protocol: equilibrate {} us, relax {} us, slide {} us at dt = {} us (stable-step estimate {} us)",
-            p.equilibrate_time * um,
-            p.relax_time * um,
-            p.slide_time * um,
-            micro::time(sim.dt),
-            micro::time(sim.dt_crit)
-        ),
-        format!(
-            "start: the surrogate's equilibrium ({} contacts, P_max {} GPa, z {} um), as the Rust engine",
-            prep.start.contacts,
-            prep.start.p_max * 1e-9,
-            prep.start.z * um
-        ),
-    ];
-    let (r_sl, r_sb) = (
-        sim.spec.slider_sphere_radius,
-        sim.spec.substrate_sphere_radius,
+    let lay = layout::layout(
+        &sim.spec,
+        &scene.slider_sites_local(),
+        &sim.params,
+        opts.tie_length,
     );
-    if r_sl != r_sb {
-        header.push(format!(
-            "spheres: slider diameter {} um, substrate diameter {} um (per-atom diameters; R_eff = {} um, contact distance {} um)",
-            2.0 * r_sl * um,
-            2.0 * r_sb * um,
-            hertz.r_eff * um,
-            (r_sl + r_sb) * um
-        ));
-    }
-    if let Some(w) = scene.edge_warning() {
-        header.push(format!("warning: {w}"));
-    }
-    let spec = &sim.spec;
-    let sizes = spec.has_sizes().then(|| {
-        let n_sl = spec.slider_sites.len();
-        let masses: Vec<f64> = (0..n_sl)
-            .map(|i| spec.slider_material.sphere_mass(spec.slider_radius(i)))
-            .collect();
-        let z_offset = (0..n_sl)
-            .map(|i| masses[i] * (spec.slider_sphere_radius - spec.slider_radius(i)))
-            .sum::<f64>()
-            / masses.iter().sum::<f64>();
-        header.push(format!(
-            "spheres: per-site sizes (each atom its own diameter and mass; {} slider, {} substrate diameters)",
-            n_sl, spec.substrate.len()
-        ));
-        deck_sizes::DeckSizes {
-            slider_diameters: deck_sizes::distinct(
-                (0..n_sl).map(|i| micro::len(2.0 * spec.slider_radius(i))),
-            ),
-            substrate_diameters: deck_sizes::distinct(
-                (0..spec.substrate.len()).map(|j| micro::len(2.0 * spec.substrate_radius(j))),
-            ),
-            z_offset: micro::len(z_offset),
-            tau: (p.damping_time.is_finite() && p.damping_time > 0.0)
-                .then(|| micro::time(p.damping_time)),
-            slider_density: micro::density(spec.slider_material.density),
-            substrate_density: micro::density(spec.substrate_material.density),
-        }
-    });
-    let window_start = (p.measure_from * ns as f64).round() as u64;
-    let inputs = DeckInputs {
-        header,
-        steps,
-        window_start,
-        dt: micro::time(sim.dt),
-        youngs: micro::pressure(m_sl.youngs),
-        poisson: m_sl.poisson,
-        pair: (m_sl != m_sb).then(|| {
-            // the one material whose E/(2(1 − ν²)) is the pair's E* (at the slider's ν), and the
-            // pair's Mindlin stiffness 8G* given explicitly
-            let nu = m_sl.poisson;
-            DeckPair {
-                youngs: micro::pressure(2.0 * (1.0 - nu * nu) * hertz.e_star),
-                k_t: micro::pressure(8.0 * m_sl.g_star_with(&m_sb)),
-                substrate: [micro::pressure(m_sb.youngs), m_sb.poisson],
-            }
-        }),
-        damping,
-        mu: opts.mu,
-        contact_distance: micro::len(sim.spec.max_contact_distance()),
-        r_eff: micro::len(hertz.r_eff),
-        p0_prefactor_gpa: 2.0 * hertz.e_star / std::f64::consts::PI * 1e-9,
-        skin: micro::len(p.skin),
-        k_xy: micro::stiffness(p.k_slider_xy),
-        k_z: micro::stiffness(p.k_slider_z),
-        tie_length: micro::len(opts.tie_length),
-        k_substrate: micro::stiffness(p.k_substrate_xy),
-        viscous,
-        load_per_control: micro::force(p.load) / (2 * n) as f64,
-        mount,
-        half_distance: lay.half_distance.map(micro::len),
-        theta_cs: [ct, st],
-        k0: micro::stiffness(p.k0),
-        lead: micro::len(p.support_lead),
-        alpha_cs: [ca, sa],
-        speed: micro::velocity(p.support_speed),
-        support0: [micro::len(lay.support[0]), micro::len(lay.support[1])],
-        support_id: lay.ids.support.first,
-        sizes,
+    let cx = Context {
+        scene,
+        prep: &prep,
+        lay: &lay,
+        opts,
+        steps: steps(sim, opts),
     };
+    let mut header = cx.header();
+    let sizes = cx.sizes(&mut header);
+    let inputs = cx.deck_inputs(damping, header, sizes);
     let deck = deck::render(&inputs);
-    let title = format!(
-        "superlube {} theta_deg={} load_mN={} mount={} (units micro, atom_style hybrid sphere bond)",
-        scene.pattern,
-        scene.slider.theta.to_degrees(),
-        p.load * 1e3,
-        scene.slider.mount.name()
-    );
-    let data = data_file::render(&lay, &title);
-    let meta = ExportMeta {
-        format: meta::FORMAT.to_string(),
-        command: opts.command.clone(),
-        pattern: scene.pattern.clone(),
-        theta_deg: scene.slider.theta.to_degrees(),
-        offset_um: scene.slider.offset.map(|v| v * um),
-        sigma_h_um: scene.substrate.sigma_h * um,
-        seed: scene.substrate.seed,
-        mount: scene.slider.mount.name().to_string(),
-        tilt_k1_n_m: match scene.slider.mount {
-            Mount::Springs { k1 } => Some(k1),
-            _ => None,
-        },
-        load_mn: p.load * 1e3,
-        direction_deg: p.alpha.to_degrees(),
-        alpha_deg: opts.alpha_and_line.map(|(a, _)| a.to_degrees()),
-        line_deg: opts.alpha_and_line.map(|(_, l)| l.to_degrees()),
-        mu: opts.mu,
-        mu1: scene.coating.mu1,
-        mu2: scene.coating.mu2,
-        p_crit_gpa: scene.coating.p_crit * 1e-9,
-        sphere_radius_um: r_sb * um,
-        slider_sphere_radius_um: (r_sl != r_sb).then_some(r_sl * um),
-        slider_radii_um: spec
-            .slider_radii
-            .as_ref()
-            .map(|r| r.iter().map(|v| v * um).collect()),
-        substrate_radii_um: spec
-            .substrate_radii
-            .as_ref()
-            .map(|r| r.iter().map(|v| v * um).collect()),
-        e_star_gpa: hertz.e_star * 1e-9,
-        r_eff_um: hertz.r_eff * um,
-        dt_us: sim.dt * um,
-        steps,
-        ids: lay.ids,
-        surrogate: meta::SurrogateStart {
-            contacts: prep.start.contacts,
-            p_max_gpa: prep.start.p_max * 1e-9,
-            z_um: prep.start.z * um,
-        },
-        atoms: lay.atoms.len() as u64,
-    };
+    let data = data_file::render(&lay, &cx.title());
+    let meta = cx.meta();
     let readme = readme(&meta, &inputs);
     Ok(LammpsExport {
         data,
@@ -365,6 +99,23 @@ pub fn export_lammps(
         readme,
         meta,
     })
+}
+
+/// The protocol's step counts of `sim` and the dump interval of `opts` in steps.
+fn steps(sim: &crate::Sim, opts: &ExportOptions) -> meta::Steps {
+    let (ne, nr, ns, every) = step_counts(sim, RunKind::Slide);
+    let dump_every = if opts.dump_interval > 0.0 {
+        ((opts.dump_interval / sim.dt).round() as u64).max(1)
+    } else {
+        0
+    };
+    meta::Steps {
+        equilibrate: ne,
+        relax: nr,
+        slide: ns,
+        sample_every: every,
+        dump_every,
+    }
 }
 
 fn readme(m: &ExportMeta, d: &DeckInputs) -> String {
@@ -416,7 +167,7 @@ constant-μ run is not valid. Other deviations: see the deck's header and `dem/l
         every = st.sample_every,
         dump = files::DUMP,
         de = st.dump_every,
-        win = st.slide - d.window_start.min(st.slide),
+        win = st.slide - d.drive.window_start.min(st.slide),
         mu = m.mu,
         pc = m.p_crit_gpa,
         mu1 = m.mu1,

@@ -17,7 +17,7 @@ pub struct ExportOptions {
     /// The command that made the export (recorded in the deck header and `export.json`).
     pub command: String,
     /// Pulling angle α from the contact line (rad) and the contact-line angle from the substrate
-    /// x axis (rad), for the record (the model uses `SimParams::alpha` = their sum).
+    /// x axis (rad), for the record (the model uses `ProtocolParams::alpha` = their sum).
     pub alpha_and_line: Option<(f64, f64)>,
 }
 

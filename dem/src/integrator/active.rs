@@ -42,7 +42,11 @@ impl Sim {
     pub(crate) fn free_omega2(&self) -> [f64; 3] {
         let p = &self.params;
         let (m, mb) = (self.body.m_s, self.body.m_b);
-        [p.k_slider_xy / m, p.k_slider_z / m, p.k_substrate_xy / mb]
+        [
+            p.mount.k_slider_xy / m,
+            p.mount.k_slider_z / m,
+            p.mount.k_substrate_xy / mb,
+        ]
     }
 
     /// The step maps of `n` steps of the three free deviation modes (slider z: the implicit
@@ -66,7 +70,7 @@ impl Sim {
     pub(crate) fn advance_sl(&self, maps: &[StepMap; 3], d: [f64; 6]) -> [f64; 6] {
         let (x, vx) = maps[0].apply(d[0], d[3]);
         let (y, vy) = maps[0].apply(d[1], d[4]);
-        let (z, vz) = if self.params.rigid_z {
+        let (z, vz) = if self.params.mount.rigid_z {
             (0.0, 0.0)
         } else {
             maps[1].apply(d[2], d[5])
@@ -114,7 +118,7 @@ impl Sim {
         }
         self.scatter();
         self.materialize(&was_sl, &was_sub);
-        let all = !self.params.active_set;
+        let all = !self.params.active.enabled;
         let old_pairs: Vec<(u32, u32)> = {
             let s = &self.state;
             s.act
@@ -123,7 +127,7 @@ impl Sim {
                 .map(|&k| (s.pairs.i[k as usize], s.pairs.j[k as usize]))
                 .collect()
         };
-        let slack = 0.5 * (self.params.skin - self.params.active_margin);
+        let slack = 0.5 * (self.params.numerics.skin - self.params.active.margin);
         if all || initial || self.build_disp2() > slack * slack {
             self.rebuild();
         }
@@ -154,10 +158,10 @@ impl Sim {
     /// Half-displacement limit (m) that triggers an active-set evaluation.
     #[inline]
     pub(super) fn trigger(&self) -> f64 {
-        if self.params.active_set {
-            0.5 * self.params.active_margin
+        if self.params.active.enabled {
+            0.5 * self.params.active.margin
         } else {
-            0.5 * self.params.skin
+            0.5 * self.params.numerics.skin
         }
     }
 
@@ -173,7 +177,7 @@ impl Sim {
     fn ring_since_mark(&self, steps: u64) -> [f64; 2] {
         let mk = &self.state.mark;
         let [w_xy, w_z, w_b] = self.free_omega2();
-        let w_sl = if self.params.rigid_z {
+        let w_sl = if self.params.mount.rigid_z {
             w_xy
         } else {
             w_xy.max(w_z)
@@ -201,7 +205,7 @@ impl Sim {
             s.tilt[0] - mk.tilt[0],
             s.tilt[1] - mk.tilt[1],
         ];
-        if !self.params.rigid_z {
+        if !self.params.mount.rigid_z {
             for k in 0..3 {
                 dq[k] += s.common.w[k] - mk.w[k];
             }
@@ -282,7 +286,7 @@ impl Sim {
         let c = &s.common;
         let (q, qd) = (self.q(), self.qdot());
         let g = g_of(o);
-        let (z, vz) = if self.params.rigid_z {
+        let (z, vz) = if self.params.mount.rigid_z {
             if self.body.tilt.is_some() {
                 (dot3(g, q), dot3(g, qd))
             } else {
@@ -366,7 +370,7 @@ impl Sim {
     /// Rebuilds the candidate pair list from the global positions (keeps histories).
     fn rebuild(&mut self) {
         let s = &mut self.state;
-        let cutoff = self.spec.max_contact_distance() + self.params.skin;
+        let cutoff = self.spec.max_contact_distance() + self.params.numerics.skin;
         s.pairs = build_pairs(&s.sub_x, &self.sub_h, &s.sl_x, cutoff, &s.pairs);
         s.ref_sub.clone_from(&s.sub_x);
         s.ref_sl.clone_from(&s.sl_x);
@@ -394,14 +398,23 @@ mod tests {
         scene.coating.p_crit = 1e6;
         for rigid_z in [true, false] {
             let p = SimParams {
-                load: 1.4e-3 / 3505.0 * scene.slider_sites().len() as f64,
-                prune_substrate: true,
-                active_set: true,
-                rigid_z,
-                equilibrate_time: 0.2e-6,
-                relax_time: 0.2e-6,
-                slide_time: 3e-6,
-                support_speed: 1.0,
+                protocol: crate::ProtocolParams {
+                    load: 1.4e-3 / 3505.0 * scene.slider_sites().len() as f64,
+                    equilibrate_time: 0.2e-6,
+                    relax_time: 0.2e-6,
+                    slide_time: 3e-6,
+                    support_speed: 1.0,
+                    ..Default::default()
+                },
+                mount: crate::MountParams {
+                    rigid_z,
+                    ..Default::default()
+                },
+                active: crate::ActiveSetParams {
+                    prune_substrate: true,
+                    enabled: true,
+                    ..Default::default()
+                },
                 ..SimParams::default()
             };
             let mut sim = crate::prepare(&scene, p, crate::Start::Surrogate, None)

@@ -136,8 +136,8 @@ impl Sim {
             na,
             nba,
             np,
-            self.params.chunk_min,
-            self.params.parallel_min_work,
+            self.params.numerics.chunk_min,
+            self.params.numerics.parallel_min_work,
         );
         idx.parts.clear();
         idx.parts.resize(idx.chunks.n_sl_chunks(na), [0.0; 6]);

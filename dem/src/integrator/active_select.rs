@@ -28,7 +28,7 @@ impl Sim {
     ) -> (Vec<u32>, Vec<u32>, Vec<u32>) {
         let n = was_sl.len();
         let nb = was_sub.len();
-        let margin = self.params.active_margin;
+        let margin = self.params.active.margin;
         let two_r = self.spec.contact_distance();
         let mut sl_on = vec![false; n];
         let mut sub_on = vec![false; nb];
@@ -76,7 +76,7 @@ impl Sim {
             dev_sl[i as usize] = Some(self.state.ringing.sl_dev[k]);
         }
         let [w_xy, w_z, w_b] = self.free_omega2();
-        let rigid = self.params.rigid_z;
+        let rigid = self.params.mount.rigid_z;
         let (mut on, mut off) = (0u64, 0u64);
         let mut ring_sl = Vec::new();
         let mut ring_sl_dev = Vec::new();
@@ -194,7 +194,7 @@ impl Sim {
             c.d[k] += sign * d[k];
             c.dv[k] += sign * d[3 + k];
         }
-        if !self.params.rigid_z {
+        if !self.params.mount.rigid_z {
             for r in 0..3 {
                 c.dz[r] += sign * d[2] * g[r];
                 c.dzv[r] += sign * d[5] * g[r];

@@ -105,7 +105,7 @@ impl Body {
         let m_b = spec.substrate_sphere_mass();
         let m_c = spec
             .slider_material
-            .sphere_mass(params.control_sphere_radius);
+            .sphere_mass(params.mount.control_sphere_radius);
         let m_cl = n as f64 * m_c;
         let sizes = spec.has_sizes().then(|| {
             let sl_r: Vec<f64> = (0..n).map(|i| spec.slider_radius(i)).collect();
@@ -129,7 +129,7 @@ impl Body {
                 sub_r,
             }
         });
-        let mz = match (&sizes, params.rigid_z) {
+        let mz = match (&sizes, params.mount.rigid_z) {
             (Some(z), true) => m_cl + z.sl_m.iter().sum::<f64>(),
             (None, true) => m_cl + n as f64 * m_s,
             (_, false) => m_cl,
@@ -146,12 +146,12 @@ impl Body {
             arm[0] = arm[0].max(o[0].abs());
             arm[1] = arm[1].max(o[1].abs());
         }
-        let unit = if params.rigid_z { m_c + m_s } else { m_c };
+        let unit = if params.mount.rigid_z { m_c + m_s } else { m_c };
         let tilt = spec.tilt_stiffness.map(|k| {
             let mut m = [[0.0; 3]; 3];
             match &sizes {
                 // each sphere moves with the layer in z with its own mass
-                Some(z) if params.rigid_z => {
+                Some(z) if params.mount.rigid_z => {
                     for (o, mi) in off.iter().zip(&z.sl_m) {
                         let g = g_of(*o);
                         for a in 0..3 {

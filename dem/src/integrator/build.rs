@@ -33,25 +33,25 @@ impl Sim {
                 "the slider has no spheres",
             ));
         }
-        if params.active_set {
-            let m = params.active_margin;
-            if !(m.is_finite() && m > 0.0 && m <= params.skin) {
+        if params.active.enabled {
+            let m = params.active.margin;
+            if !(m.is_finite() && m > 0.0 && m <= params.numerics.skin) {
                 return Err(DemError::invalid(
                     "active_margin_nm",
                     m * 1e9,
                     &format!(
                         "must be positive and at most the neighbour skin ({} nm)",
-                        params.skin * 1e9
+                        params.numerics.skin * 1e9
                     ),
                 ));
             }
             let ks = [
-                params.k_slider_xy,
-                params.k_substrate_xy,
-                if params.rigid_z {
+                params.mount.k_slider_xy,
+                params.mount.k_substrate_xy,
+                if params.mount.rigid_z {
                     1.0
                 } else {
-                    params.k_slider_z
+                    params.mount.k_slider_z
                 },
             ];
             if ks.iter().any(|k| !(k.is_finite() && *k > 0.0)) {
@@ -63,8 +63,8 @@ impl Sim {
             }
         }
         let body = Body::new(&spec, &params);
-        let mount =
-            (params.implicit_mount && !params.rigid_z).then(|| Mount::new(&body, &params, dt));
+        let mount = (params.mount.implicit_mount && !params.mount.rigid_z)
+            .then(|| Mount::new(&body, &params, dt));
         // The implicit mount cannot blow up, so a step beyond the contacts' limit would not end
         // in a non-finite state but in contacts that gain energy (the slider is thrown off):
         // refuse it up front, with the message of an unstable run.

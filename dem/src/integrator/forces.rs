@@ -46,7 +46,7 @@ impl<'a> SubstrateForce<'a> {
             sub_start: &idx.sub_start,
             sub_items: &idx.sub_items,
             sites: &spec.substrate,
-            kt: params.k_substrate_xy,
+            kt: params.mount.k_substrate_xy,
             m,
             inv_tau,
             hm: h / m,
@@ -118,7 +118,7 @@ impl Sim {
     /// step's fused first pass ([`Sim::kick_drift`]).
     pub(crate) fn forces(&mut self, exec: Exec, h: f64, defer_substrate: bool) {
         let p = &self.params;
-        let rel = p.damping_frame == DampingFrame::Relative;
+        let rel = p.numerics.damping_frame == DampingFrame::Relative;
         let inv_tau = self.inv_tau();
         let (q, qd) = (self.q(), self.qdot());
         let s = &mut self.state;
@@ -160,10 +160,10 @@ impl Sim {
                 },
                 rel,
                 tilting: self.body.tilt.is_some(),
-                rigid: p.rigid_z,
+                rigid: p.mount.rigid_z,
                 implicit: self.mount.is_some(),
-                kxy: p.k_slider_xy,
-                kz: p.k_slider_z,
+                kxy: p.mount.k_slider_xy,
+                kz: p.mount.k_slider_z,
                 m_s: self.body.m_s,
                 m_eff: self.body.m_eff,
                 inv_tau,
@@ -206,21 +206,21 @@ impl Sim {
                 [0.0; 2]
             };
             for k in 0..2 {
-                c.fu[k] = -p.k_slider_xy * c.u[k] - m * (c.v[k] - vref[k]) * inv_tau;
+                c.fu[k] = -p.mount.k_slider_xy * c.u[k] - m * (c.v[k] - vref[k]) * inv_tau;
                 kick(&mut c.v[k], c.fu[k], h, m);
-                c.fd[k] = -p.k_slider_xy * c.d[k] - m * c.dv[k] * inv_tau;
+                c.fd[k] = -p.mount.k_slider_xy * c.d[k] - m * c.dv[k] * inv_tau;
                 kick(&mut c.dv[k], c.fd[k], h, m);
             }
             if implicit {
                 // the z mode is advanced by the implicit mount step
                 c.fw = [0.0; 3];
                 c.fdz = [0.0; 3];
-            } else if !p.rigid_z {
+            } else if !p.mount.rigid_z {
                 let sref = if rel { qd } else { [0.0; 3] };
                 for k in 0..3 {
-                    c.fw[k] = -p.k_slider_z * c.w[k] - m * (c.s[k] - sref[k]) * inv_tau;
+                    c.fw[k] = -p.mount.k_slider_z * c.w[k] - m * (c.s[k] - sref[k]) * inv_tau;
                     kick(&mut c.s[k], c.fw[k], h, m);
-                    c.fdz[k] = -p.k_slider_z * c.dz[k] - m * c.dzv[k] * inv_tau;
+                    c.fdz[k] = -p.mount.k_slider_z * c.dz[k] - m * c.dzv[k] * inv_tau;
                     kick(&mut c.dzv[k], c.fdz[k], h, m);
                 }
             }
@@ -233,16 +233,16 @@ impl Sim {
             // reaction of the free slider spheres: the common mode (N_in·k·u, k_z·G_in·w)
             // plus the sum of their ringing deviations (k·Σδ, k_z·Σδz g)
             let c = &s.common;
-            f[0] += n_in * p.k_slider_xy * c.u[0] + p.k_slider_xy * c.d[0];
-            f[1] += n_in * p.k_slider_xy * c.u[1] + p.k_slider_xy * c.d[1];
-            if !p.rigid_z && !implicit {
+            f[0] += n_in * p.mount.k_slider_xy * c.u[0] + p.mount.k_slider_xy * c.d[0];
+            f[1] += n_in * p.mount.k_slider_xy * c.u[1] + p.mount.k_slider_xy * c.d[1];
+            if !p.mount.rigid_z && !implicit {
                 let gw = mat_vec(&self.idx.g_in, c.w);
-                f[2] += p.k_slider_z * (gw[0] + c.dz[0]);
-                qt[0] += p.k_slider_z * (gw[1] + c.dz[1]);
-                qt[1] += p.k_slider_z * (gw[2] + c.dz[2]);
+                f[2] += p.mount.k_slider_z * (gw[0] + c.dz[0]);
+                qt[0] += p.mount.k_slider_z * (gw[1] + c.dz[1]);
+                qt[1] += p.mount.k_slider_z * (gw[2] + c.dz[2]);
             }
         }
-        f[2] -= p.load;
+        f[2] -= p.protocol.load;
         match &self.body.tilt {
             _ if implicit => {
                 // Z and the tilts are advanced by the implicit mount step
@@ -262,8 +262,8 @@ impl Sim {
         f[1] -= self.body.m_cl * (s.cl_v[1] - vr[1]) * inv_tau;
         if s.spring_on {
             let d = spring_stretch(p, s.support, s.cl_x);
-            f[0] += p.k0 * d[0];
-            f[1] += p.k0 * d[1];
+            f[0] += p.protocol.k0 * d[0];
+            f[1] += p.protocol.k0 * d[1];
         }
         s.cl_f = f;
         s.tilt_f = qt;

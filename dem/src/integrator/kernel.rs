@@ -34,10 +34,10 @@ pub(crate) fn nan_max(a: f64, b: f64) -> f64 {
 /// α) minus the control layer's centre `cl`, in x and y. The spring force is K0 times this.
 #[inline]
 pub(crate) fn spring_stretch(p: &SimParams, support: [f64; 2], cl: [f64; 3]) -> [f64; 2] {
-    let (sa, ca) = p.alpha.sin_cos();
+    let (sa, ca) = p.protocol.alpha.sin_cos();
     [
-        support[0] - p.support_lead * ca - cl[0],
-        support[1] - p.support_lead * sa - cl[1],
+        support[0] - p.protocol.support_lead * ca - cl[0],
+        support[1] - p.protocol.support_lead * sa - cl[1],
     ]
 }
 

@@ -1,5 +1,5 @@
 //! [`Mount`]: the implicit step of the slider mount's linear z network (full model with
-//! [`crate::SimParams::implicit_mount`]).
+//! [`crate::MountParams::implicit_mount`]).
 //!
 //! The network: each slider sphere i on its k_z spring to its anchor `g_i·q` on the control
 //! layer (`q = (Z, t_x, t_y)`, `g_i = (1, y_i, −x_i)`), the spheres' damping `−m_s(ż_i − r g_i·q̇)/τ`
@@ -68,7 +68,7 @@ impl Mount {
     pub fn new(body: &Body, params: &SimParams, dt: f64) -> Mount {
         let n = body.off.len() as f64;
         let m_s = body.m_s;
-        let kz = params.k_slider_z;
+        let kz = params.mount.k_slider_z;
         let gamma = 0.5 * dt * dt * kz;
         let a = 2.0 * m_s + gamma;
         let (m, kt, g_all, tilting) = match &body.tilt {
@@ -116,14 +116,14 @@ impl Mount {
             }
             a_each
         });
-        let t = params.damping_time;
+        let t = params.numerics.damping_time;
         let inv_tau = if t.is_finite() && t > 0.0 {
             1.0 / t
         } else {
             0.0
         };
         let h = 0.5 * dt;
-        let rel = params.damping_frame == DampingFrame::Relative;
+        let rel = params.numerics.damping_frame == DampingFrame::Relative;
         Mount {
             gamma,
             a,
@@ -179,8 +179,8 @@ impl Mount {
         let h = 0.5 * dt;
         let m_s = body.m_s;
         let hm = h / m_s;
-        let kz = params.k_slider_z;
-        let load = params.load;
+        let kz = params.mount.k_slider_z;
+        let load = params.protocol.load;
         let off = &body.off;
         let g_in = if mt.tilting {
             idx.g_in

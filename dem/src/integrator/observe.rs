@@ -50,13 +50,13 @@ impl Sim {
         let mut zsum = s.act.sl_x.iter().map(|x| x[2]).sum::<f64>();
         if self.idx.n_in > 0 {
             let mut qw = self.q();
-            if !self.params.rigid_z {
+            if !self.params.mount.rigid_z {
                 for k in 0..3 {
                     qw[k] += s.common.w[k];
                 }
             }
             zsum += dot3(self.idx.s_in, qw);
-            if !self.params.rigid_z {
+            if !self.params.mount.rigid_z {
                 zsum += s.common.dz[0];
             }
         }
@@ -65,15 +65,16 @@ impl Sim {
             zsum -= z.sl_dz.iter().sum::<f64>();
         }
         o.z = zsum / s.sl_x.len() as f64;
-        let (sa, ca) = self.params.alpha.sin_cos();
+        let (sa, ca) = self.params.protocol.alpha.sin_cos();
         if s.spring_on {
             let d = [s.support[0] - s.cl_x[0], s.support[1] - s.cl_x[1]];
-            o.spring_force = self.params.k0 * (d[0] * ca + d[1] * sa - self.params.support_lead);
+            o.spring_force = self.params.protocol.k0
+                * (d[0] * ca + d[1] * sa - self.params.protocol.support_lead);
             let ds = [s.support[0] - s.support0[0], s.support[1] - s.support0[1]];
             o.support_travel = ds[0] * ca + ds[1] * sa;
             let dc = [
-                s.cl_x[0] - (s.support0[0] - self.params.support_lead * ca),
-                s.cl_x[1] - (s.support0[1] - self.params.support_lead * sa),
+                s.cl_x[0] - (s.support0[0] - self.params.protocol.support_lead * ca),
+                s.cl_x[1] - (s.support0[1] - self.params.protocol.support_lead * sa),
             ];
             o.slider_travel = dc[0] * ca + dc[1] * sa;
         }
@@ -96,7 +97,7 @@ impl Sim {
         let s = &self.state;
         let p = &self.params;
         let m = self.body.m_s;
-        let rigid = p.rigid_z;
+        let rigid = p.mount.rigid_z;
         let a = &s.act;
         let mut e = 0.0;
         let sizes = self.body.sizes.as_ref();
@@ -130,10 +131,10 @@ impl Sim {
         for (k, x) in a.sl_x.iter().enumerate() {
             let o = self.body.off[a.sl[k] as usize];
             let d = [x[0] - s.cl_x[0] - o[0], x[1] - s.cl_x[1] - o[1]];
-            e += 0.5 * p.k_slider_xy * (d[0] * d[0] + d[1] * d[1]);
+            e += 0.5 * p.mount.k_slider_xy * (d[0] * d[0] + d[1] * d[1]);
             if !rigid {
                 let az = if tilting { dot3(g_of(o), q) } else { q[0] };
-                e += 0.5 * p.k_slider_z * (x[2] - az).powi(2);
+                e += 0.5 * p.mount.k_slider_z * (x[2] - az).powi(2);
             }
         }
         // inactive slider spheres (common mode)
@@ -142,19 +143,19 @@ impl Sim {
         e += n_in
             * 0.5
             * (m * (c.v[0].powi(2) + c.v[1].powi(2))
-                + p.k_slider_xy * (c.u[0].powi(2) + c.u[1].powi(2)));
+                + p.mount.k_slider_xy * (c.u[0].powi(2) + c.u[1].powi(2)));
         if !rigid && self.idx.n_in > 0 {
             e += 0.5 * m * dot3(c.s, mat_vec(&self.idx.g_in, c.s));
-            e += 0.5 * p.k_slider_z * dot3(c.w, mat_vec(&self.idx.g_in, c.w));
+            e += 0.5 * p.mount.k_slider_z * dot3(c.w, mat_vec(&self.idx.g_in, c.w));
         }
         for (k, x) in a.sub_x.iter().enumerate() {
             let q = self.spec.substrate[a.sub[k] as usize];
-            e += 0.5 * p.k_substrate_xy * ((x[0] - q[0]).powi(2) + (x[1] - q[1]).powi(2));
+            e += 0.5 * p.mount.k_substrate_xy * ((x[0] - q[0]).powi(2) + (x[1] - q[1]).powi(2));
         }
-        e += p.load * s.cl_x[2];
+        e += p.protocol.load * s.cl_x[2];
         if s.spring_on {
             let d = spring_stretch(p, s.support, s.cl_x);
-            e += 0.5 * p.k0 * (d[0] * d[0] + d[1] * d[1]);
+            e += 0.5 * p.protocol.k0 * (d[0] * d[0] + d[1] * d[1]);
         }
         e
     }
@@ -268,7 +269,11 @@ impl Sim {
             let d = [
                 x[0] - s.cl_x[0] - o[0],
                 x[1] - s.cl_x[1] - o[1],
-                if self.params.rigid_z { 0.0 } else { x[2] - az },
+                if self.params.mount.rigid_z {
+                    0.0
+                } else {
+                    x[2] - az
+                },
             ];
             let m = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
             if m.is_nan() || m > r {
@@ -287,7 +292,7 @@ impl Sim {
             .iter()
             .map(|d| (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt())
             .fold(0.0, f64::max);
-        let z = if self.params.rigid_z {
+        let z = if self.params.mount.rigid_z {
             0.0
         } else {
             c.w[0].abs() + c.w[1].abs() * ay + c.w[2].abs() * ax
@@ -303,7 +308,7 @@ impl Sim {
             return Err(self.unstable("the slider fell through the substrate".into()));
         }
         // relative to the smaller sphere when the two bodies' sizes differ
-        let bound = self.params.overlap_bound
+        let bound = self.params.numerics.overlap_bound
             * match sizes {
                 None => self
                     .spec

@@ -146,7 +146,7 @@ impl Sim {
     /// 1 / damping time (1/s), 0 when damping is off.
     #[inline]
     pub(crate) fn inv_tau(&self) -> f64 {
-        let t = self.params.damping_time;
+        let t = self.params.numerics.damping_time;
         if t.is_finite() && t > 0.0 {
             1.0 / t
         } else {
@@ -167,27 +167,27 @@ impl Sim {
     /// Releases the lateral hold of the control layer and attaches the pulling spring with the
     /// support `support_lead` ahead along α (zero initial spring force).
     pub fn attach_spring(&mut self) {
-        let (sa, ca) = self.params.alpha.sin_cos();
+        let (sa, ca) = self.params.protocol.alpha.sin_cos();
         let p = &self.params;
         let s = &mut self.state;
         s.held_xy = false;
         s.spring_on = true;
         s.support = [
-            s.cl_x[0] + p.support_lead * ca,
-            s.cl_x[1] + p.support_lead * sa,
+            s.cl_x[0] + p.protocol.support_lead * ca,
+            s.cl_x[1] + p.protocol.support_lead * sa,
         ];
         s.support0 = s.support;
         // Only the control-layer force changes: the spring is at rest length (adds 0 up to
         // rounding); the pair histories are not touched.
         let d = spring_stretch(p, s.support, s.cl_x);
-        s.cl_f[0] += p.k0 * d[0];
-        s.cl_f[1] += p.k0 * d[1];
+        s.cl_f[0] += p.protocol.k0 * d[0];
+        s.cl_f[1] += p.protocol.k0 * d[1];
     }
 
     /// Sets the support moving at `support_speed` along α.
     pub fn start_support(&mut self) {
-        let (sa, ca) = self.params.alpha.sin_cos();
-        let v = self.params.support_speed;
+        let (sa, ca) = self.params.protocol.alpha.sin_cos();
+        let v = self.params.protocol.support_speed;
         self.state.support_v = [v * ca, v * sa];
     }
 

@@ -93,7 +93,7 @@ impl Sim {
     pub fn run_steps(&mut self, n: u64) -> Result<(), DemError> {
         let threads = rayon::current_num_threads();
         // parallel_min_work = 0 forces the parallel passes (no timing probes)
-        let forced = self.params.parallel_min_work == 0;
+        let forced = self.params.numerics.parallel_min_work == 0;
         let team = threads > 1
             && self.idx.chunks.par
             && (forced || (n >= MIN_TEAM_STEPS && self.tuner.wants_par()));
@@ -158,7 +158,7 @@ impl Sim {
             kick(&mut c.v[k], c.fu[k], h, m);
             kick(&mut c.dv[k], c.fd[k], h, m);
         }
-        if !self.params.rigid_z {
+        if !self.params.mount.rigid_z {
             for k in 0..3 {
                 kick(&mut c.s[k], c.fw[k], h, m);
                 kick(&mut c.dzv[k], c.fdz[k], h, m);
@@ -172,7 +172,7 @@ impl Sim {
     fn drift_frame(&mut self) {
         let dt = self.dt;
         let implicit = self.mount.is_some();
-        let rigid = self.params.rigid_z || implicit;
+        let rigid = self.params.mount.rigid_z || implicit;
         let s = &mut self.state;
         for k in 0..if implicit { 2 } else { 3 } {
             s.cl_x[k] += dt * s.cl_v[k];
@@ -217,7 +217,7 @@ impl Sim {
         let sizes = self.body.sizes.as_ref();
         let hm = h / self.body.m_s;
         let hm_b = h / self.body.m_b;
-        let rigid = self.params.rigid_z;
+        let rigid = self.params.mount.rigid_z;
         // z already advanced by the implicit mount step
         let implicit = self.mount.is_some();
         let q = self.q();
@@ -411,17 +411,26 @@ mod tests {
         };
         let force = 1e-6;
         let params = SimParams {
-            implicit_mount: implicit,
-            damping_time: tau,
-            damping_frame: DampingFrame::Absolute,
-            load: force,
-            dt: Some(dt),
+            protocol: crate::ProtocolParams {
+                load: force,
+                ..Default::default()
+            },
+            mount: crate::MountParams {
+                implicit_mount: implicit,
+                ..Default::default()
+            },
+            numerics: crate::NumericsParams {
+                damping_time: tau,
+                damping_frame: DampingFrame::Absolute,
+                dt: Some(dt),
+                ..Default::default()
+            },
             ..SimParams::default()
         };
         let model = crate::contact_model(&scene, &params, None);
         let mut sim = Sim::new(spec, model, params, dt, dt).unwrap();
         let m_s = sim.body.m_s;
-        let (kz, mc) = (sim.params.k_slider_z, sim.body.mz);
+        let (kz, mc) = (sim.params.mount.k_slider_z, sim.body.mz);
         let omega = (kz * (1.0 / mc + 1.0 / m_s)).sqrt();
         let h = 0.5 * dt;
         let mut out = Vec::new();

@@ -71,9 +71,14 @@ pub fn step_counts(sim: &Sim, kind: RunKind) -> (u64, u64, u64, u64) {
     let n = |t: f64| (t / sim.dt).round().max(0.0) as u64;
     let (r, s) = match kind {
         RunKind::Equilibrate => (0, 0),
-        RunKind::Slide => (n(p.relax_time), n(p.slide_time)),
+        RunKind::Slide => (n(p.protocol.relax_time), n(p.protocol.slide_time)),
     };
-    (n(p.equilibrate_time), r, s, n(p.sample_interval).max(1))
+    (
+        n(p.protocol.equilibrate_time),
+        r,
+        s,
+        n(p.protocol.sample_interval).max(1),
+    )
 }
 
 /// Steps a fresh `sim` through the slide protocol one [`Sim::step`] at a time, with the phase

@@ -40,9 +40,9 @@ pub struct SlideSummary {
 /// Summary over the slide window `[measure_from·T, T]` of sliding time T (samples with
 /// `t_us` measured from the run start; sliding starts at `equilibrate + relax`).
 pub fn slide_summary(samples: &[Sample], p: &SimParams, steps: u64, wall_s: f64) -> SlideSummary {
-    let t0 = (p.equilibrate_time + p.relax_time) * 1e6;
-    let a = t0 + p.measure_from * p.slide_time * 1e6;
-    let b = t0 + p.slide_time * 1e6;
+    let t0 = (p.protocol.equilibrate_time + p.protocol.relax_time) * 1e6;
+    let a = t0 + p.protocol.measure_from * p.protocol.slide_time * 1e6;
+    let b = t0 + p.protocol.slide_time * 1e6;
     let w: Vec<Sample> = samples
         .iter()
         .filter(|s| s.t_us >= a - 1e-9 && s.t_us <= b + 1e-9)
@@ -56,8 +56,13 @@ pub fn slide_summary(samples: &[Sample], p: &SimParams, steps: u64, wall_s: f64)
         .sum::<f64>()
         / n)
         .sqrt();
-    let li = lock_in(&w, p.k0, p.support_speed, p.lock_in_ratio);
-    let load_mn = p.load * 1e3;
+    let li = lock_in(
+        &w,
+        p.protocol.k0,
+        p.protocol.support_speed,
+        p.protocol.lock_in_ratio,
+    );
+    let load_mn = p.protocol.load * 1e3;
     SlideSummary {
         friction_mn: f,
         friction_std_mn: sd,

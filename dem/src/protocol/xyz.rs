@@ -77,7 +77,7 @@ pub fn append_frame(path: &Path, sim: &Sim) -> std::io::Result<u64> {
             snap.failed_slider[i] as u8
         ));
     }
-    let rc = sim.params.control_sphere_radius * um;
+    let rc = sim.params.mount.control_sphere_radius * um;
     b.push_str(&format!(
         "C {:.6} {:.6} {:.6} {rc} 0\n",
         s.cl_x[0] * um,

@@ -2,8 +2,8 @@
 //! quasi-static equilibrium or from a gap.
 
 use super::SystemSpec;
-use crate::{DemError, SimParams};
-use surrogate::solver::{Model, Pose, Solver};
+use crate::{DemError, Nominal, SimParams};
+use surrogate::solver::Equilibrium;
 use surrogate::Scene;
 
 /// How the slider starts.
@@ -32,40 +32,32 @@ pub struct StartInfo {
 /// reductions), with the slider's and the substrate's own sphere radii: one per body, or each
 /// sphere's own where a site file gives per-site sizes (`SystemSpec::slider_radii`,
 /// `substrate_radii`; slider sphere i starts `R − r_i` above the body's reference height, its
-/// top on the slider plate). Cost: one surrogate solve, O(N log N).
+/// top on the slider plate). Cost: one surrogate solve, O(N log N); [`from_scene_at`] reuses a
+/// run's nominal solve.
 pub fn from_scene(
     scene: &Scene,
     params: &SimParams,
     start: Start,
 ) -> Result<(SystemSpec, StartInfo), DemError> {
-    let solver = Solver::new(scene)?;
-    let eq = solver.solve(
-        Pose {
-            theta: scene.slider.theta,
-            shift: [0.0, 0.0],
-        },
-        params.load,
-        Model::Auto,
-    )?;
+    let nominal = Nominal::solve(scene, params.protocol.load)?;
+    Ok(from_scene_at(scene, params, start, &nominal.eq))
+}
+
+/// [`from_scene`] from the surrogate's equilibrium `eq` of `scene` at `params.protocol.load`
+/// (the run's [`Nominal`] solve). Cost: O(N log N).
+pub fn from_scene_at(
+    scene: &Scene,
+    params: &SimParams,
+    start: Start,
+    eq: &Equilibrium,
+) -> (SystemSpec, StartInfo) {
     let sites = scene.slider_sites();
     let n = sites.len();
     let mut sub = scene.substrate_spheres();
     let mut sub_radii = scene.substrate_radii().map(|r| r.to_vec());
     let all = sub.len();
-    if params.prune_substrate {
-        let c = scene.slider.offset;
-        let travel = params.support_speed * params.slide_time + params.prune_margin;
-        let e = [
-            c[0] + travel * params.alpha.cos(),
-            c[1] + travel * params.alpha.sin(),
-        ];
-        let reach = scene.slider.radius + scene.max_contact_distance() + params.prune_margin;
-        let keep = |p: &[f64; 3]| seg_dist2([p[0], p[1]], c, e) <= reach * reach;
-        if let Some(r) = &mut sub_radii {
-            let mut it = sub.iter();
-            r.retain(|_| keep(it.next().unwrap()));
-        }
-        sub.retain(keep);
+    if params.active.prune_substrate {
+        prune(scene, params, &mut sub, &mut sub_radii);
     }
     // slider sphere i's anchor offset R − r_i (none for one size)
     let r_ref = scene.slider_sphere_radius();
@@ -74,12 +66,12 @@ pub fn from_scene(
     let (slider_z, control_z) = match start {
         Start::Surrogate => {
             let mut z = vec![eq.z; n];
-            let k = if params.rigid_z {
+            let k = if params.mount.rigid_z {
                 f64::INFINITY
             } else {
-                params.k_slider_z
+                params.mount.k_slider_z
             };
-            let zc = eq.z - params.load / (eq.contacts.len().max(1) as f64) / k;
+            let zc = eq.z - params.protocol.load / (eq.contacts.len().max(1) as f64) / k;
             let mut touching = vec![false; n];
             for c in &eq.contacts {
                 touching[c.slider as usize] = true;
@@ -116,7 +108,7 @@ pub fn from_scene(
             .collect(),
         None => slider_z,
     };
-    Ok((
+    (
         SystemSpec {
             substrate: sub,
             slider_sites: sites,
@@ -143,7 +135,32 @@ pub fn from_scene(
             p_max: eq.p_max,
             pruned,
         },
-    ))
+    )
+}
+
+/// Reduction (a): leaves out the substrate spheres (and their radii) farther than the slider
+/// radius + the largest contact distance + `prune_margin` from the slider centre's path.
+/// O(N).
+fn prune(
+    scene: &Scene,
+    params: &SimParams,
+    sub: &mut Vec<[f64; 3]>,
+    sub_radii: &mut Option<Vec<f64>>,
+) {
+    let c = scene.slider.offset;
+    let travel =
+        params.protocol.support_speed * params.protocol.slide_time + params.active.prune_margin;
+    let e = [
+        c[0] + travel * params.protocol.alpha.cos(),
+        c[1] + travel * params.protocol.alpha.sin(),
+    ];
+    let reach = scene.slider.radius + scene.max_contact_distance() + params.active.prune_margin;
+    let keep = |p: &[f64; 3]| seg_dist2([p[0], p[1]], c, e) <= reach * reach;
+    if let Some(r) = sub_radii {
+        let mut it = sub.iter();
+        r.retain(|_| keep(it.next().unwrap()));
+    }
+    sub.retain(keep);
 }
 
 fn seg_dist2(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {

@@ -9,6 +9,6 @@ pub mod builder;
 pub mod spec;
 pub mod state;
 
-pub use builder::{from_scene, Start, StartInfo};
+pub use builder::{from_scene, from_scene_at, Start, StartInfo};
 pub use spec::SystemSpec;
 pub use state::{Active, ActiveStats, CommonMode, FrameMark, PairHist, PairList, Ringing, State};

@@ -22,11 +22,17 @@ pub fn load_for(scene: &Scene) -> f64 {
 /// Equilibration-only knobs for a small scene (3 µs under load).
 pub fn params(scene: &Scene) -> SimParams {
     SimParams {
-        load: load_for(scene),
-        prune_substrate: true,
-        slide_time: 0.0,
-        equilibrate_time: 3e-6,
-        sample_interval: 0.05e-6,
+        protocol: dem::ProtocolParams {
+            load: load_for(scene),
+            slide_time: 0.0,
+            equilibrate_time: 3e-6,
+            sample_interval: 0.05e-6,
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            prune_substrate: true,
+            ..Default::default()
+        },
         ..SimParams::default()
     }
 }
@@ -34,13 +40,19 @@ pub fn params(scene: &Scene) -> SimParams {
 /// Short sliding knobs (0.2 + 0.2 + 0.4 µs at 1 m/s).
 pub fn slide_params(scene: &Scene) -> SimParams {
     SimParams {
-        load: load_for(scene),
-        prune_substrate: true,
-        equilibrate_time: 0.2e-6,
-        relax_time: 0.2e-6,
-        slide_time: 0.4e-6,
-        support_speed: 1.0,
-        sample_interval: 0.02e-6,
+        protocol: dem::ProtocolParams {
+            load: load_for(scene),
+            equilibrate_time: 0.2e-6,
+            relax_time: 0.2e-6,
+            slide_time: 0.4e-6,
+            support_speed: 1.0,
+            sample_interval: 0.02e-6,
+            ..Default::default()
+        },
+        active: dem::ActiveSetParams {
+            prune_substrate: true,
+            ..Default::default()
+        },
         ..SimParams::default()
     }
 }

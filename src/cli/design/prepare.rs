@@ -111,18 +111,24 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         .transpose()?;
     let study = SimParams::default();
     let sim = SimParams {
-        dt,
-        load: mn_to_n(1.0),
-        equilibrate_time: us_to_s(a.dem_equilibrate_us),
-        relax_time: us_to_s(a.dem_relax_us),
-        slide_time: us_to_s(a.dem_slide_us),
-        support_speed: a.dem_speed_m_s,
+        protocol: dem::ProtocolParams {
+            load: mn_to_n(1.0),
+            equilibrate_time: us_to_s(a.dem_equilibrate_us),
+            relax_time: us_to_s(a.dem_relax_us),
+            slide_time: us_to_s(a.dem_slide_us),
+            support_speed: a.dem_speed_m_s,
+            ..Default::default()
+        },
+        numerics: dem::NumericsParams {
+            dt,
+            ..Default::default()
+        },
         ..SimParams::default()
     };
-    let dem_is_study_protocol = sim.equilibrate_time == study.equilibrate_time
-        && sim.relax_time == study.relax_time
-        && sim.slide_time == study.slide_time
-        && sim.support_speed == study.support_speed;
+    let dem_is_study_protocol = sim.protocol.equilibrate_time == study.protocol.equilibrate_time
+        && sim.protocol.relax_time == study.protocol.relax_time
+        && sim.protocol.slide_time == study.protocol.slide_time
+        && sim.protocol.support_speed == study.protocol.support_speed;
     let dem = design_run_params(sim, line, a.dem_model.request());
     let dem_shard = match &a.shard {
         Some(t) => {

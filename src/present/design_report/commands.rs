@@ -48,13 +48,13 @@ pub fn protocol_flags(p: &DesignParams, study: bool, model: dem::ModelRequest) -
         let _ = write!(
             f,
             " --equilibrate-us {} --relax-us {} --slide-us {} --speed-m-s {}",
-            label(s_to_us(s.equilibrate_time)),
-            label(s_to_us(s.relax_time)),
-            label(s_to_us(s.slide_time)),
-            s.support_speed
+            label(s_to_us(s.protocol.equilibrate_time)),
+            label(s_to_us(s.protocol.relax_time)),
+            label(s_to_us(s.protocol.slide_time)),
+            s.protocol.support_speed
         );
     }
-    if let Some(dt) = s.dt {
+    if let Some(dt) = s.numerics.dt {
         let _ = write!(f, " --dt-us {}", label(s_to_us(dt)));
     }
     let _ = write!(f, " --model {}", model.name());

@@ -487,10 +487,10 @@ pub fn answer_run(pr: &PatternResult, c: &Candidate, p: &DesignParams) -> Answer
     let export = format!(
         "superlube export-lammps --scene {file} --alpha-deg {} --load-mn {w}{line} --equilibrate-us {} --relax-us {} --slide-us {} --speed-m-s {} --out-dir answer_{name}/lammps",
         c.alpha_deg,
-        label(s_to_us(s.equilibrate_time)),
-        label(s_to_us(s.relax_time)),
-        label(s_to_us(s.slide_time)),
-        s.support_speed
+        label(s_to_us(s.protocol.equilibrate_time)),
+        label(s_to_us(s.protocol.relax_time)),
+        label(s_to_us(s.protocol.slide_time)),
+        s.protocol.support_speed
     );
     AnswerRun {
         pattern: name.clone(),

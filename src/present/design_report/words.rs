@@ -43,10 +43,10 @@ pub fn protocol_words(p: &DesignParams) -> String {
     let s = &p.confirm.dem.sim;
     format!(
         "equilibrate {} + relax {} + slide {} µs at {} m/s, friction over the last two thirds of the slide",
-        label(s_to_us(s.equilibrate_time)),
-        label(s_to_us(s.relax_time)),
-        label(s_to_us(s.slide_time)),
-        s.support_speed
+        label(s_to_us(s.protocol.equilibrate_time)),
+        label(s_to_us(s.protocol.relax_time)),
+        label(s_to_us(s.protocol.slide_time)),
+        s.protocol.support_speed
     )
 }
 

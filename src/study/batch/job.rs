@@ -155,7 +155,7 @@ pub fn run_name(scene: &Scene, params: &DemParams) -> String {
         scene.pattern.replace(['/', '\\', ' '], "-"),
         label(rad_to_deg(scene.slider.theta)),
         label(rad_to_deg(params.alpha)),
-        label(n_to_mn(params.sim.load)),
+        label(n_to_mn(params.sim.protocol.load)),
         sh,
         seed,
         material_label(scene),

@@ -34,15 +34,15 @@ pub fn dem_params(
     protocol: DemProtocol,
 ) -> crate::study::dem_run::DemParams {
     let mut d = p.confirm.dem.clone();
-    d.sim.load = load;
+    d.sim.protocol.load = load;
     d.alpha = deg_to_rad(alpha_deg);
     d.line = p.alpha_scan.line;
     if protocol == DemProtocol::Study {
         let s = dem::SimParams::default();
-        d.sim.equilibrate_time = s.equilibrate_time;
-        d.sim.relax_time = s.relax_time;
-        d.sim.slide_time = s.slide_time;
-        d.sim.support_speed = s.support_speed;
+        d.sim.protocol.equilibrate_time = s.protocol.equilibrate_time;
+        d.sim.protocol.relax_time = s.protocol.relax_time;
+        d.sim.protocol.slide_time = s.protocol.slide_time;
+        d.sim.protocol.support_speed = s.protocol.support_speed;
     }
     d
 }

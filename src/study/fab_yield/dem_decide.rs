@@ -110,7 +110,7 @@ impl DemDecider<'_> {
         let line = contact_line(&scene, self.dem.params.line);
         let alpha = label(direction - rad_to_deg(line.angle));
         let mut d = self.dem.params.clone();
-        d.sim.load = ask.load;
+        d.sim.protocol.load = ask.load;
         d.alpha = deg_to_rad(alpha);
         if ask.mount_resonance && d.model.request == dem::ModelRequest::Reduced {
             d.model.request = dem::ModelRequest::Auto;

@@ -117,14 +117,23 @@ pub fn window_stats(samples: &[Sample], t0_us: f64, t1_us: f64) -> ([f64; 2], [f
 /// direction is `s.direction`, set by the caller).
 pub fn sim_params(s: &StudyScene, pr: &Protocol, d: &DemSetting) -> SimParams {
     SimParams {
-        dt_safety: d.dt_fraction,
-        tangential: d.tangential,
-        load: s.load,
-        equilibrate_time: pr.equilibrate,
-        relax_time: pr.relax,
-        slide_time: d.slide_time,
-        support_speed: pr.speed,
-        sample_interval: pr.sample,
+        protocol: dem::ProtocolParams {
+            load: s.load,
+            equilibrate_time: pr.equilibrate,
+            relax_time: pr.relax,
+            slide_time: d.slide_time,
+            support_speed: pr.speed,
+            sample_interval: pr.sample,
+            ..Default::default()
+        },
+        contact: dem::ContactParams {
+            tangential: d.tangential,
+            ..Default::default()
+        },
+        numerics: dem::NumericsParams {
+            dt_safety: d.dt_fraction,
+            ..Default::default()
+        },
         ..SimParams::default()
     }
 }
@@ -207,7 +216,7 @@ type KnobPlan = (Knob, Vec<(DemSetting, Setting)>);
 /// fraction, Mindlin history, the protocol's slide, active set on.
 pub fn default_setting(pr: &Protocol) -> DemSetting {
     DemSetting {
-        dt_fraction: SimParams::default().dt_safety,
+        dt_fraction: SimParams::default().numerics.dt_safety,
         model: ModelRequest::Full,
         tangential: Tangential::Mindlin,
         slide_time: pr.slide,

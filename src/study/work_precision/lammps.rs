@@ -102,12 +102,13 @@ fn export_and_run(
     exe: &str,
     dir: &Path,
 ) -> anyhow::Result<LammpsResult> {
-    let params = dem::SimParams {
-        alpha: s.direction,
+    let params = {
+        let mut params = sim_params(s, pr, d);
+        params.protocol.alpha = s.direction;
         // only the substrate spheres the slider can reach along its path (exact: the others
         // never touch it)
-        prune_substrate: true,
-        ..sim_params(s, pr, d)
+        params.active.prune_substrate = true;
+        params
     };
     let opts = ExportOptions {
         mu: s.scene.coating.mu1,
