@@ -24,9 +24,9 @@
 //!
 //! Same inputs and seed give the same result whatever the number of threads: each device's
 //! draw comes from its own stream, its estimates depend on it alone, and the DEM's do not
-//! depend on the thread count. Cost: the estimate's part ≈ (samples + check) × (one ladder path
-//! + 8–15 single-load estimates) / threads; the DEM's at most `max_runs` runs (about 3 per
-//! located device and 1 per device shown above the quote, plus the check).
+//! depend on the thread count. Cost: the estimate's part ≈ (samples + check) × (one ladder
+//! path and 8–15 single-load estimates) / threads; the DEM's at most `max_runs` runs (about 3
+//! per located device and 1 per device shown above the quote, plus the check).
 
 pub mod calibration;
 pub mod critical;
