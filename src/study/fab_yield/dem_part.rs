@@ -10,8 +10,9 @@
 
 use super::dem_decide::{DemDecider, YieldDem};
 use super::device::Device;
-use super::rounds::{setting_ranks, DemOracle, Knowledge, Rounds};
-use super::{estimate_range, summary, YieldParams};
+use super::estimate::estimate_range;
+use super::params::YieldParams;
+use super::rounds::{quote, setting_ranks, DemOracle, Knowledge, Rounds};
 use crate::runs::progress::Progress;
 use anyhow::Result;
 use surrogate::Scene;
@@ -93,7 +94,7 @@ pub fn run_with(
     let mut check_load = None;
     if plan.check > 0 {
         let kn = Knowledge::of(devices, ranks(n), mu_sl, p.resolution);
-        let quoted = summary::quote(&kn.values(devices, mu_sl), p.quantile);
+        let quoted = quote(&kn.values(devices, mu_sl), p.quantile);
         if let Some(w) = plan.check_load.or(quoted) {
             let start = devices.len();
             devices.extend(fresh()?);

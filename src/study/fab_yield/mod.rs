@@ -33,10 +33,12 @@ pub mod critical;
 pub mod dem_decide;
 pub mod dem_part;
 pub mod device;
+pub mod estimate;
 pub mod fabrication;
 pub mod interval;
 pub mod margin;
 pub mod monte_carlo;
+pub mod params;
 pub mod rounds;
 pub mod row;
 pub mod summary;
@@ -47,156 +49,20 @@ pub use calibration::{Band, BandSource, Pair};
 pub use critical::{critical_load, CriticalLoad, Limit, Probe, DEFAULT_RESOLUTION};
 pub use dem_decide::{YieldDem, DEFAULT_MAX_RUNS};
 pub use device::{DemRun, Device};
+pub use estimate::{estimate_devices, estimate_range};
 pub use fabrication::{FabricationModel, FabricationRecord, OffsetLaw, Sample};
+pub use params::{bound_samples, BadKnob, YieldOutcome, YieldParams};
 pub use row::{CurvePoint, DecidedBy, DemCheckRun, DemFailure, YieldRow, YieldSummary};
 
 use crate::runs::progress::Progress;
-use crate::study::rows::label;
-use crate::study::tolerance::LimitParams;
 use anyhow::Result;
-use rayon::prelude::*;
-use std::ops::Range;
-use surrogate::solver::Solver;
 use surrogate::Scene;
-
-/// Every knob of a yield (SI inside; angles in degrees as given).
-#[derive(Debug, Clone)]
-pub struct YieldParams {
-    /// Nominal θ (degrees).
-    pub theta_deg: f64,
-    /// Nominal pull direction from the substrate's x axis (degrees).
-    pub direction_deg: f64,
-    /// What varies between devices.
-    pub fabrication: FabricationModel,
-    /// Devices drawn (≥ 1).
-    pub samples: usize,
-    /// q in (0, 1): the fraction of devices the quoted load must hold.
-    pub quantile: f64,
-    /// γ in (0, 1): confidence of the intervals and of the bound.
-    pub confidence: f64,
-    /// Bisection resolution: a fraction of the load (> 0).
-    pub resolution: f64,
-    /// The ladder (N), μ_sl, contact line and the estimate's knobs.
-    pub limit: LimitParams,
-    /// The DEM's settings (`None`: no DEM).
-    pub dem: Option<YieldDem>,
-}
-
-/// What a yield found.
-#[derive(Debug, Clone)]
-pub struct YieldOutcome {
-    /// One row per device, the check's included (`yield.csv`).
-    pub rows: Vec<YieldRow>,
-    /// The answer (`summary.json`).
-    pub summary: YieldSummary,
-    /// Single-load estimates made (cost).
-    pub estimates: usize,
-}
-
-/// The fewest devices for a one-sided 95 %/95 % bound of the load at 95 % yield (Wilks: 59),
-/// the devices of a yield unless asked otherwise.
-pub fn bound_samples() -> usize {
-    interval::min_samples(0.95, 0.95)
-}
-
-/// A knob of a yield that is out of its range (the caller names its flag or field).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BadKnob {
-    /// `samples` is 0.
-    Samples,
-    /// `quantile` outside (0, 1).
-    Quantile,
-    /// `confidence` outside (0, 1).
-    Confidence,
-    /// `resolution` outside (0, 0.5].
-    Resolution,
-}
-
-impl YieldParams {
-    /// Which knob is out of range (`None`: all are in range): samples ≥ 1, q and γ in (0, 1),
-    /// the resolution in (0, 0.5]. The one check of `superlube yield` and of the design's
-    /// yield stage; each words it with its own flags.
-    pub fn bad_knob(
-        samples: usize,
-        quantile: f64,
-        confidence: f64,
-        resolution: f64,
-    ) -> Option<BadKnob> {
-        let frac = |v: f64| v.is_finite() && v > 0.0 && v < 1.0;
-        if samples == 0 {
-            Some(BadKnob::Samples)
-        } else if !frac(quantile) {
-            Some(BadKnob::Quantile)
-        } else if !frac(confidence) {
-            Some(BadKnob::Confidence)
-        } else if !(resolution.is_finite() && resolution > 0.0 && resolution <= 0.5) {
-            Some(BadKnob::Resolution)
-        } else {
-            None
-        }
-    }
-}
 
 /// The yield of the design (θ, direction) of `scene` (see the module docs). Progress: the
 /// stage `yield: critical loads` over the devices, then the DEM's stages.
 pub fn fab_yield(scene: &Scene, p: &YieldParams, progress: &dyn Progress) -> Result<YieldOutcome> {
     let devices = estimate_devices(scene, p, progress)?;
     decide(scene, p, devices, progress)
-}
-
-/// Steps 1–2 of [`fab_yield`]: the yield's devices drawn and their critical loads by the
-/// estimate (no DEM decision yet), in sample order: what a caller may store to resume
-/// ([`Device`] is serialisable; its floats round-trip exactly through JSON). Progress: the
-/// stage `yield: critical loads`. Cost: the estimate's part (module docs).
-pub fn estimate_devices(
-    scene: &Scene,
-    p: &YieldParams,
-    progress: &dyn Progress,
-) -> Result<Vec<Device>> {
-    estimate_range(scene, p, 0..p.samples, "yield: critical loads", progress)
-}
-
-/// The devices of samples `range` and their critical loads by the estimate, in sample order
-/// (the check's devices are `samples..samples + check`, [`Device::check`] set). The one way a
-/// yield draws its devices. Cost: `range.len()` × one device's estimate / threads.
-pub fn estimate_range(
-    scene: &Scene,
-    p: &YieldParams,
-    range: Range<usize>,
-    stage: &str,
-    progress: &dyn Progress,
-) -> Result<Vec<Device>> {
-    let samples: Vec<Sample> = range
-        .clone()
-        .map(|i| p.fabrication.sample(scene, i))
-        .collect();
-    progress.stage(stage, samples.len() as u64, "devices");
-    let estimated: Vec<Result<CriticalLoad>> = samples
-        .par_iter()
-        .map(|s| {
-            let solver = Solver::new(&s.scene(scene))?;
-            let c = critical_load(
-                &solver,
-                label(p.theta_deg + s.theta_offset_deg),
-                label(p.direction_deg + s.direction_offset_deg),
-                &p.limit,
-                p.resolution,
-            );
-            progress.advance(1);
-            c
-        })
-        .collect();
-    progress.finish();
-    let mut devices = Vec::with_capacity(samples.len());
-    for (sample, c) in samples.into_iter().zip(estimated) {
-        devices.push(Device {
-            check: sample.index >= p.samples,
-            sample,
-            estimate: c?,
-            dem: Vec::new(),
-        });
-    }
-    Ok(devices)
 }
 
 /// Steps 3–5 of [`fab_yield`] on `devices` from [`estimate_devices`] (same `scene` and `p`):

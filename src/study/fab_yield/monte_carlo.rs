@@ -13,8 +13,11 @@
 
 use super::dem_decide::{DemDecider, YieldDem};
 use super::device::Device;
+use super::estimate::estimate_range;
+use super::interval;
+use super::params::YieldParams;
 use super::rounds::{Knowledge, Rounds};
-use super::{estimate_range, interval, YieldParams, YieldSummary};
+use super::row::YieldSummary;
 use crate::runs::progress::Progress;
 use crate::study::rows::label;
 use anyhow::Result;

@@ -43,6 +43,14 @@ pub fn setting_ranks(n: usize, q: f64, confidence: f64) -> usize {
         .max(1)
 }
 
+/// The quoted load (N) of `values` at q: the load a fraction q hold ([`interval::quantile_load`];
+/// `None` when none holds any load).
+pub fn quote(values: &[(f64, DecidedBy)], q: f64) -> Option<f64> {
+    let mut w: Vec<f64> = values.iter().map(|v| v.0).collect();
+    w.sort_by(f64::total_cmp);
+    interval::quantile_load(&w, q).filter(|&w| w > 0.0)
+}
+
 /// What is known of every device at one moment: the band, each device's bounds and the
 /// threshold T (N).
 #[derive(Debug, Clone)]

@@ -12,20 +12,12 @@
 use super::dem_part::DemPart;
 use super::device::Device;
 use super::interval;
-use super::rounds::Knowledge;
+use super::params::{YieldOutcome, YieldParams};
+use super::rounds::{quote, Knowledge};
 use super::row::{CurvePoint, DecidedBy, DemCheckRun, DemFailure, YieldSummary};
-use super::{YieldOutcome, YieldParams};
 use crate::study::rows::label;
 use surrogate::units::n_to_mn;
 use surrogate::Scene;
-
-/// The quoted load (N) of `values` at q: the load a fraction q hold ([`interval::quantile_load`];
-/// `None` when none holds any load).
-pub fn quote(values: &[(f64, DecidedBy)], q: f64) -> Option<f64> {
-    let mut w: Vec<f64> = values.iter().map(|v| v.0).collect();
-    w.sort_by(f64::total_cmp);
-    interval::quantile_load(&w, q).filter(|&w| w > 0.0)
-}
 
 /// How many of the `sorted` critical loads are ≥ `w` (the devices holding `w`).
 fn holding(sorted: &[f64], w: f64) -> usize {
