@@ -73,7 +73,7 @@ pub fn dem_work(s: &YieldSummary) -> String {
     };
     let undecided = if s.undecided > 0 {
         format!(
-            "; {} device(s) that could still set them kept at their predicted critical load (DEM runs spent)",
+            "; {} device(s) that could still set them kept at the lower end of what is known (DEM runs spent: the quote is conservative)",
             s.undecided
         )
     } else {

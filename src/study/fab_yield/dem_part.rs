@@ -94,7 +94,7 @@ pub fn run_with(
     let mut check_load = None;
     if plan.check > 0 {
         let kn = Knowledge::of(devices, ranks(n), mu_sl, p.resolution);
-        let quoted = quote(&kn.values(devices, mu_sl), p.quantile);
+        let quoted = quote(&kn.values(devices, mu_sl, p.resolution), p.quantile);
         if let Some(w) = plan.check_load.or(quoted) {
             let start = devices.len();
             devices.extend(fresh()?);

@@ -98,8 +98,9 @@ impl Knowledge {
     /// Each device's critical load (N) as the yield counts it and who set it: located → its
     /// DEM value; at or above T → the estimate's (its W_c under the global band, else the
     /// band's centre transferred), kept inside its bounds; undecided (the runs were spent) →
-    /// its prediction ([`Device::predicted`]) kept inside its bounds.
-    pub fn values(&self, devices: &[Device], mu_sl: f64) -> Vec<(f64, DecidedBy)> {
+    /// the lower end of its bounds (where the DEM failed it below its band, its own margin's
+    /// prediction less twice the `resolution`).
+    pub fn values(&self, devices: &[Device], mu_sl: f64, resolution: f64) -> Vec<(f64, DecidedBy)> {
         devices
             .iter()
             .zip(&self.bounds)
@@ -117,11 +118,14 @@ impl Knowledge {
                         DecidedBy::Dem
                     };
                     (w.clamp(b.low, b.high), by)
+                } else if b.low > 0.0 {
+                    // the runs are spent: the floor of what is known (conservative)
+                    (b.low, DecidedBy::Undecided)
                 } else {
-                    // the runs are spent: its prediction (its own DEM margin, else the band's
-                    // bias-corrected centre) inside what is known
-                    let w = d.predicted(&self.band, mu_sl);
-                    (w.clamp(b.low, b.high), DecidedBy::Undecided)
+                    // the DEM failed it below its band: its own margin's prediction, less
+                    // twice the resolution
+                    let w = d.predicted(&self.band, mu_sl) * (1.0 - 2.0 * resolution);
+                    (w.clamp(0.0, b.high), DecidedBy::Undecided)
                 }
             })
             .collect()

@@ -19,9 +19,8 @@ pub enum DecidedBy {
     Dem,
     /// The DEM located its critical load to the resolution (held at it, failed just above).
     Located,
-    /// It could set the quote or its bound but the DEM runs allowed were spent: kept at its
-    /// prediction (its own DEM margin, else the design's bias-corrected band centre,
-    /// transferred through its estimate) inside what the DEM showed.
+    /// It could set the quote or its bound but the DEM runs allowed were spent: kept at the
+    /// lower end of what is known (the design's band and its DEM runs; conservative).
     Undecided,
 }
 
@@ -164,7 +163,7 @@ pub struct YieldSummary {
     /// Devices with at least one DEM run.
     pub dem_decided: usize,
     /// Devices that could set the quote or its bound when the DEM runs allowed were spent
-    /// (kept at their prediction; the check on fresh devices guards the quote).
+    /// (kept at the lower end of what is known: the quote is then conservative).
     pub undecided: usize,
     /// DEM runs made, the check's included.
     pub dem_runs: usize,

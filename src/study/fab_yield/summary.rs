@@ -161,7 +161,7 @@ pub fn outcome(
     let mu = p.limit.mu_superlubric;
     let kn = dem.map(|part| Knowledge::of(devices, part.k, mu, p.resolution));
     let values: Vec<(f64, DecidedBy)> = match &kn {
-        Some(kn) => kn.values(devices, mu),
+        Some(kn) => kn.values(devices, mu, p.resolution),
         None => devices
             .iter()
             .map(|d| (d.estimate.load, DecidedBy::Estimate))
