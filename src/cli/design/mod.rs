@@ -231,7 +231,7 @@ pub struct Args {
     /// measure the shorter protocol's friction difference.
     #[arg(long = "no-protocol-check")]
     no_protocol_check: bool,
-    /// The opt-in yield stage (`--yield-samples`).
+    /// The yield stage (on by default; `--no-yield`).
     #[command(flatten)]
     fab_yield: yield_args::YieldArgs,
     /// Output directory: report.md, ranking.csv, the CSVs and PNGs behind them, dem/ (the DEM

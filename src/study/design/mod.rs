@@ -29,10 +29,10 @@
 //!    with the study's protocol to measure the difference there: [`protocol_check_design`]).
 //! 7. **Report data** ([`report_data::ReportDataStage`]): each pattern's answer ([`answer`]),
 //!    the tolerance maps around the answers and, with recipes, the P_crit sweep ([`p_crit`]).
-//! 8. **Yield** ([`yield_stage::YieldStage`], opt-in: `design --yield-samples N`): per answer
+//! 8. **Yield** ([`yield_stage::YieldStage`], on by default, `design --no-yield` off): per answer
 //!    the fraction of fabricated devices (offsets over the tolerance box, fresh substrates)
 //!    that stay superlubric at a load and the load at yield q with its confidence bound
-//!    ([`crate::study::fab_yield`]), the DEM deciding where the estimate cannot.
+//!    ([`crate::study::fab_yield`]), the DEM locating the devices that set them.
 //!
 //! [`design`] hands each pattern's result to the command's hook as soon as the pattern is
 //! complete (its own CSVs and PNGs are written then), keeps only what the later stages and the

@@ -1,4 +1,4 @@
-//! Stage 8 of a design, the yield, opt-in ([`DesignParams::fab_yield`]): the yield
+//! Stage 8 of a design, the yield, on by default ([`DesignParams::fab_yield`]): the yield
 //! of each pattern's answer — the fraction of fabricated devices that stay superlubric at a
 //! load, and the load that a fraction q of them hold with its one-sided confidence bound
 //! ([`crate::study::fab_yield`]).
@@ -8,16 +8,17 @@
 //! fabrication tolerance (θ and pull-direction offsets uniform over ± the design's
 //! `--theta-tol-deg` × `--direction-tol-deg`), a fresh substrate per device at the scene's σ_h whose seed is never the scene's own nor one
 //! of the design's searched `--seeds` ([`FabricationModel::excluded_seeds`]), the design's load
-//! ladder, μ_sl, contact line and estimate knobs. With the DEM, the devices the estimate
-//! cannot decide at the quoted load get a DEM run with the design's protocol and model, and
-//! `dem_check` fresh devices a DEM check there (runs in `yield/<pattern>/`, reused by a
-//! re-run); without (`--no-dem`), the estimate's part only. The estimate's part (each device's
+//! ladder, μ_sl, contact line and estimate knobs. With the DEM, the devices that can set the
+//! quoted load or its bound get their DEM critical load, located with the design's protocol
+//! and model, and `dem_check` fresh devices a DEM check at the quote, pooled in (at most 40
+//! runs; in `yield/<pattern>/`, reused by a re-run); without (`--no-dem`), the estimate's part
+//! only. The estimate's part (each device's
 //! critical load) is stored per design (`stages/<pattern>/yield_<θ>_<direction>.json`,
 //! [`stored_devices`]) and reused by a re-run and by the answer's own yield after
 //! `--rank-by yield` ranked it.
 //!
 //! Cost per answer: samples × (one ladder path + 8–15 single-load estimates) / threads for the
-//! estimate (seconds on the study's scenes), plus (devices in the band + check) DEM runs.
+//! estimate (seconds on the study's scenes), plus at most 40 DEM runs, the check's included.
 
 pub use super::answer_yield::AnswerYield;
 use super::ctx::Ctx;
