@@ -186,7 +186,7 @@ def yield_(scene: SceneLike = None, *, progress: Any = None, threads: Optional[i
     """Yield of one design (``superlube yield``; ``yield`` is a Python keyword): the fraction
     of fabricated devices (θ and pull-direction offsets within the tolerance, a fresh substrate
     each) that stay superlubric at a load, the load a fraction q of them hold (mN) and its
-    one-sided confidence bound; the DEM decides the devices the estimate cannot.
+    one-sided confidence bound; the DEM locates the critical loads of the devices that set them.
 
     Options (``superlube yield --help``): ``theta_deg``, ``direction_deg`` (degrees from x),
     ``theta_tol_deg``, ``direction_tol_deg``, ``theta_sigma_deg``, ``direction_sigma_deg``,
@@ -194,13 +194,15 @@ def yield_(scene: SceneLike = None, *, progress: Any = None, threads: Optional[i
     ``confidence`` (0.95), ``resolution`` (0.01), ``sample_seed``, ``searched_seeds``,
     ``load_mN``, ``no_dem``, ``dem_check``, the ``dem_…`` protocol options, ``jobs`` and
     ``out_dir`` (a directory, kept: yield.csv, summary.json, yield.png, dem/). Cost: about 0.6 s
-    of estimates per device on the study's scenes, plus one DEM run per device in the band.
+    of estimates per device on the study's scenes, plus at most 40 DEM runs (the check's
+    included).
 
     Returns ``(devices, summary)``: ``yield.csv`` as a DataFrame (one row per device:
     ``sample, theta_offset_deg, direction_offset_deg, seed, …, critical_load_mN,
-    critical_load_low_mN, critical_load_high_mN, decided_by``) and ``summary.json`` as a dict
-    (``load_at_quantile_mN``, ``load_at_quantile_bound_mN``, ``dem_check_passed``,
-    ``dem_check_total``, ``fabrication``, ``curve`` …).
+    critical_load_low_mN, critical_load_high_mN, decided_by``, the check's devices pooled in)
+    and ``summary.json`` as a dict (``load_at_quantile_mN``, ``load_at_quantile_bound_mN``,
+    ``dem_check_passed``, ``dem_check_total``, ``dem_check_consistent``, ``band``, ``pairs``,
+    ``fabrication``, ``curve`` …).
     """
     tmp, paths = _go("yield", [_scene(scene)], options, {"out-dir": "yield"}, progress, threads)
     try:
