@@ -63,11 +63,11 @@ pub fn check(s: &YieldSummary) -> Option<String> {
 pub fn dem_work(s: &YieldSummary) -> String {
     let band = match s.band.coverage {
         Some(c) => format!(
-            "the design's own band from {} DEM/estimate pairs (P_max ratio {:.3}–{:.3}, coverage {} %)",
+            "the design's own band from {} DEM/estimate pairs (P_max ratio {:.3}–{:.3}, coverage {:.1} %)",
             s.band.pairs,
             s.band.p_ratio[0],
             s.band.p_ratio[1],
-            pct(label(c * 1000.0).round() / 1000.0)
+            100.0 * c
         ),
         None => "the global band (too few DEM/estimate pairs for the design's own)".into(),
     };

@@ -50,12 +50,6 @@ pub struct Bounds {
 }
 
 impl Device {
-    /// Whether the estimate cannot decide the device at `w` (N): `w` lies in its band bracket
-    /// (W_low, W_high].
-    pub fn in_band(&self, w: f64) -> bool {
-        self.estimate.low < w && w <= self.estimate.high
-    }
-
     /// The highest load (N) the DEM held.
     pub fn held(&self) -> Option<f64> {
         self.dem
@@ -79,18 +73,6 @@ impl Device {
     pub fn located(&self, resolution: f64) -> Option<f64> {
         match (self.held(), self.failed()) {
             (Some(a), Some(b)) if a < b && b - a <= resolution * b => Some(a),
-            _ => None,
-        }
-    }
-
-    /// What the DEM says of the device at `w` (N): `Some(true)` when it held at a load ≥ `w`,
-    /// `Some(false)` when it failed at a load ≤ `w`, `None` when no run decides `w`.
-    pub fn dem_at(&self, w: f64) -> Option<bool> {
-        let held = self.held().is_some_and(|a| a >= w);
-        let failed = self.failed().is_some_and(|b| b <= w);
-        match (held, failed) {
-            (true, false) => Some(true),
-            (false, true) => Some(false),
             _ => None,
         }
     }
@@ -261,15 +243,11 @@ mod tests {
             (b.low, b.high, b.located)
         };
         let d = device(1.2, 1.6, 1.9, &[]);
-        assert!(d.in_band(1.5) && d.in_band(1.9) && !d.in_band(1.2) && !d.in_band(2.0));
         assert_eq!(b(&d), (1.2, 1.9, false));
         let failed = device(1.2, 1.6, 1.9, &[(1.5, false)]);
         assert_eq!(b(&failed), (1.2, 1.5, false));
-        assert_eq!(failed.dem_at(1.5), Some(false));
-        assert_eq!(failed.dem_at(1.4), None);
         let held = device(1.2, 1.6, 1.9, &[(1.7, true)]);
         assert_eq!(b(&held), (1.7, 1.9, false));
-        assert_eq!(held.dem_at(1.65), Some(true));
         let odd = device(1.2, 1.6, 1.9, &[(1.0, false)]);
         assert_eq!(b(&odd), (0.0, 1.0, false));
         let located = device(1.2, 1.6, 1.9, &[(1.4, false), (1.39, true)]);
