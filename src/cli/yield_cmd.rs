@@ -18,7 +18,7 @@ use crate::runs::{
 use crate::study::fab_yield::monte_carlo::dem_monte_carlo;
 use crate::study::fab_yield::{
     bound_samples, fab_yield, BadKnob, FabricationModel, OffsetLaw, YieldDem, YieldParams,
-    YieldSummary, DEFAULT_RESOLUTION,
+    YieldSummary, DEFAULT_MAX_RUNS, DEFAULT_RESOLUTION,
 };
 use crate::study::record;
 use crate::study::rows::label;
@@ -153,6 +153,17 @@ pub struct Args {
         conflicts_with = "no_dem"
     )]
     dem_check_load_mn: Option<f64>,
+    /// Most DEM runs of the yield, the check's included: the devices still undecided when they
+    /// are spent count at the lower end of what is known of them (safe, less sharp). Where the
+    /// estimate ranks the devices poorly (rough substrates) a sharp bound needs about one run
+    /// per device plus a few per located one.
+    #[arg(
+        long = "dem-max-runs",
+        value_name = "N",
+        default_value_t = DEFAULT_MAX_RUNS,
+        conflicts_with = "no_dem"
+    )]
+    dem_max_runs: usize,
     /// Validation: after the yield, N fresh devices each get their own critical load from the
     /// DEM alone (located to --resolution), written to DIR/dem_monte_carlo.csv, and
     /// DIR/monte_carlo.json sets the quote and its bound against that distribution (its 5th
@@ -306,6 +317,14 @@ fn prepare(a: &Args) -> Result<(Resolved, YieldParams)> {
         .dem_check_load_mn
         .map(|w| checks::positive(w, "--dem-check-load-mn").map(surrogate::units::mn_to_n))
         .transpose()?;
+    if !a.no_dem && a.dem_max_runs < a.dem_check.max(1) {
+        bail!(
+            "`--dem-max-runs`: {} runs cannot hold the check's {} (--dem-check); give at least {}, or --no-dem",
+            a.dem_max_runs,
+            a.dem_check,
+            a.dem_check.max(1)
+        );
+    }
     let dem = if a.no_dem {
         None
     } else {
@@ -323,7 +342,9 @@ fn prepare(a: &Args) -> Result<(Resolved, YieldParams)> {
         resolution: a.resolution,
         limit,
         dem: dem.map(|(params, jobs)| {
-            YieldDem::new(params, (a.dem_check, check_load), jobs, a.out.join("dem"))
+            let mut d = YieldDem::new(params, (a.dem_check, check_load), jobs, a.out.join("dem"));
+            d.max_runs = a.dem_max_runs;
+            d
         }),
     };
     Ok((sc, params))
@@ -351,6 +372,7 @@ fn inputs(scene: &surrogate::Scene, p: &YieldParams) -> Inputs {
             "friction": record::friction_knobs(&p.limit.friction),
             "dem": p.dem.as_ref().map(|d| record::dem(scene, &d.params)),
             "dem_check": p.dem.as_ref().map(|d| d.check),
+            "dem_max_runs": p.dem.as_ref().map(|d| d.max_runs),
             "dem_check_load_mN": p.dem.as_ref().and_then(|d| d.check_load).map(mn),
         }),
     }

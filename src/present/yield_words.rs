@@ -72,8 +72,16 @@ pub fn dem_work(s: &YieldSummary) -> String {
         None => "the global band (too few DEM/estimate pairs for the design's own)".into(),
     };
     let undecided = if s.undecided > 0 {
+        let ceiling = match s.ceiling_mN {
+            Some([Some(q), Some(b)]) => format!(
+                "; more DEM runs could lift the quote to at most {} mN and its bound to {} mN",
+                load(q),
+                load(b)
+            ),
+            _ => String::new(),
+        };
         format!(
-            "; {} device(s) that could still set them kept at the lower end of what is known (DEM runs spent: the quote is conservative)",
+            "; {} device(s) that could still set them kept at the lower end of what is known (the quote is conservative){ceiling}",
             s.undecided
         )
     } else {

@@ -85,7 +85,8 @@ pub fn run_with(
     progress: &dyn Progress,
 ) -> Result<DemPart> {
     let mu_sl = p.limit.mu_superlubric;
-    let mut rounds = Rounds::new(oracle, mu_sl, p.resolution);
+    let mut rounds =
+        Rounds::new(oracle, mu_sl, p.resolution).stopping_when_sharp(p.quantile, p.confidence);
     let allowed = plan.max_runs.max(plan.check);
     let ranks = |n: usize| setting_ranks(n, p.quantile, p.confidence);
     let n = devices.len();

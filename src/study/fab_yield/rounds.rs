@@ -13,7 +13,10 @@
 //!   transferred through its estimate), then three runs a resolution apart around the
 //!   prediction its own margin gives (W*·(1 − r), W*, W*·(1 + r), inside what is known), so
 //!   that a good prediction locates it in one round; bisection once its bracket is within
-//!   twice the resolution, or after [`STRADDLES`] such rounds.
+//!   twice the resolution, once its runs put the prediction outside what they know (a
+//!   prediction shown wrong is not walked after a resolution at a time), or after
+//!   [`STRADDLES`] such rounds. Where only one side is known, the bisection's other end is
+//!   the band's end, or [`GUARD`] resolutions beyond the known side once the runs crossed it.
 //!
 //! After each round the band is calibrated again on every run's pair ([`super::calibration`]),
 //! which narrows the other devices' brackets. It ends when no device is undecided, or when
@@ -30,8 +33,17 @@ use crate::runs::progress::Progress;
 use anyhow::Result;
 use surrogate::units::n_to_mn;
 
-/// Runs a located device may get as straddles before bisection takes over.
+/// Rounds of straddles a located device may get before bisection takes over.
 pub const STRADDLES: usize = 2;
+
+/// Resolutions within which the rounds of a yield call its quote and bound sharp
+/// ([`Rounds::stopping_when_sharp`]): the DEM's own accuracy, twice the resolution of a
+/// located load.
+pub const SHARP: f64 = 2.0;
+
+/// Resolutions the bisection's open end is set beyond the known side where the runs have
+/// crossed the band's end.
+pub const GUARD: f64 = 8.0;
 
 /// The number of lowest critical loads that set the quote at `q` and its bound at confidence
 /// `confidence` among `n` devices: max(n − ⌈q n⌉ + 1, Wilks rank), at least 1.
@@ -49,6 +61,41 @@ pub fn quote(values: &[(f64, DecidedBy)], q: f64) -> Option<f64> {
     let mut w: Vec<f64> = values.iter().map(|v| v.0).collect();
     w.sort_by(f64::total_cmp);
     interval::quantile_load(&w, q).filter(|&w| w > 0.0)
+}
+
+/// The quote at `q` and its bound at confidence `g` (N) of the critical loads `w`, each `None`
+/// where it does not exist (no load held; too few devices for the bound).
+pub fn answer(w: &[f64], q: f64, g: f64) -> (Option<f64>, Option<f64>) {
+    let mut w = w.to_vec();
+    w.sort_by(f64::total_cmp);
+    let quote = interval::quantile_load(&w, q).filter(|&x| x > 0.0);
+    let bound = interval::wilks_rank(w.len(), q, g).map(|r| w[r - 1]);
+    (quote, bound)
+}
+
+/// How far more DEM runs could still move an answer: its quote and bound as counted now
+/// (undecided devices at the lower end of what is known) and at their ceiling (every
+/// undecided device at the upper end), N.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sharpness {
+    /// The quote and its bound as counted now.
+    pub now: (Option<f64>, Option<f64>),
+    /// The quote and its bound with every undecided device at its upper end.
+    pub ceiling: (Option<f64>, Option<f64>),
+}
+
+impl Sharpness {
+    /// The largest relative rise of the quote or the bound from `now` to `ceiling` (0 when
+    /// neither can rise; infinite where one is 0 or missing now but not at the ceiling).
+    pub fn gain(&self) -> f64 {
+        let rise = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) if a > 0.0 => (b / a - 1.0).max(0.0),
+            (None, None) => 0.0,
+            (Some(_), None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        rise(self.now.0, self.ceiling.0).max(rise(self.now.1, self.ceiling.1))
+    }
 }
 
 /// What is known of every device at one moment: the band, each device's bounds and the
@@ -130,6 +177,56 @@ impl Knowledge {
             })
             .collect()
     }
+
+    /// [`Knowledge::values`] and the same with every undecided device at the upper end of its
+    /// bounds, as the quote at `q` and its bound at confidence `g` ([`Sharpness`]).
+    pub fn sharpness(
+        &self,
+        devices: &[Device],
+        (mu_sl, resolution): (f64, f64),
+        (q, g): (f64, f64),
+    ) -> Sharpness {
+        let values = self.values(devices, mu_sl, resolution);
+        let now: Vec<f64> = values.iter().map(|v| v.0).collect();
+        let ceiling: Vec<f64> = values
+            .iter()
+            .zip(&self.bounds)
+            .map(|(v, b)| match v.1 {
+                DecidedBy::Undecided => b.high.max(v.0),
+                _ => v.0,
+            })
+            .collect();
+        Sharpness {
+            now: answer(&now, q, g),
+            ceiling: answer(&ceiling, q, g),
+        }
+    }
+}
+
+/// Where device `d`'s bisection runs (N): between its highest held and lowest failed load;
+/// where only one side is known, the other is its bracket's end `b`, or, where the runs have
+/// crossed that end, the known side moved by [`GUARD`] resolutions.
+fn bracket(d: &Device, b: &Bounds, r: f64) -> (f64, f64) {
+    let lo = |f: f64| {
+        if b.low > 0.0 && b.low < f * (1.0 - 2.0 * r) {
+            b.low
+        } else {
+            f * (1.0 - GUARD * r)
+        }
+    };
+    let hi = |a: f64| {
+        if b.high > a * (1.0 + 2.0 * r) {
+            b.high
+        } else {
+            a * (1.0 + GUARD * r)
+        }
+    };
+    match (d.held(), d.failed()) {
+        (Some(a), Some(f)) => (a, f),
+        (None, Some(f)) => (lo(f), f),
+        (Some(a), None) => (a, hi(a)),
+        (None, None) => (b.low, b.high),
+    }
 }
 
 /// What runs the DEM for the rounds: [`DemDecider`], or a known function in the tests.
@@ -156,6 +253,11 @@ pub struct Rounds<'a> {
     pub runs: usize,
     /// Rounds made so far.
     pub rounds: usize,
+    /// Stop once the undecided devices could lift neither the quote at q nor its bound at
+    /// confidence γ by more than this fraction and none of them has failed a DEM run (a
+    /// failed device is always located): `(q, γ, fraction)`; `None`: run until every device
+    /// is decided or the runs are spent.
+    pub sharp: Option<(f64, f64, f64)>,
 }
 
 impl<'a> Rounds<'a> {
@@ -167,7 +269,15 @@ impl<'a> Rounds<'a> {
             resolution,
             runs: 0,
             rounds: 0,
+            sharp: None,
         }
+    }
+
+    /// These rounds, stopping once the quote at `q` and its bound at confidence `g` are sharp
+    /// to [`SHARP`] resolutions (the undecided devices could lift neither by more).
+    pub fn stopping_when_sharp(mut self, q: f64, g: f64) -> Self {
+        self.sharp = Some((q, g, SHARP * self.resolution));
+        self
     }
 
     /// The loads (N) device `d` (bounds `b`) is run at this round (module docs).
@@ -179,7 +289,7 @@ impl<'a> Rounds<'a> {
         if pred >= t && f.is_none_or(|f| f > t) {
             return vec![t];
         }
-        let mut x = if pred > 0.0 {
+        let x = if pred > 0.0 {
             pred
         } else {
             0.5 * d.estimate.load
@@ -191,28 +301,19 @@ impl<'a> Rounds<'a> {
                 Vec::new()
             };
         }
-        let straddles = d.dem.len().saturating_sub(1) / 3;
-        match (a, f) {
-            (Some(a), Some(f)) if f - a <= 2.0 * r * f || straddles >= STRADDLES => {
-                vec![0.5 * (a + f)]
-            }
-            (Some(a), None) if straddles >= STRADDLES => vec![x.max(1.05 * a)],
-            (None, Some(f)) if straddles >= STRADDLES => vec![x.min(0.95 * f)],
-            _ => {
-                // three runs a resolution apart around the prediction, inside the bracket:
-                // two neighbours that disagree locate it
-                if let Some(a) = a {
-                    x = x.max(a / (1.0 - r));
-                }
-                if let Some(f) = f {
-                    x = x.min(f / (1.0 + r));
-                }
-                [x * (1.0 - r), x, x * (1.0 + r)]
-                    .into_iter()
-                    .filter(|&w| a.is_none_or(|a| w > a) && f.is_none_or(|f| w < f))
-                    .collect()
-            }
+        let (lo, hi) = bracket(d, b, r);
+        let near = x > lo && x < hi;
+        if hi - lo <= 2.0 * r * hi || !near || d.dem.len() > 3 * STRADDLES {
+            // located to twice the resolution, or the prediction proved wrong: bisection
+            return vec![0.5 * (lo + hi)];
         }
+        // three runs a resolution apart around the prediction, inside the bracket: two
+        // neighbours that disagree locate it
+        let x = x.max(lo / (1.0 - r)).min(hi / (1.0 + r));
+        [x * (1.0 - r), x, x * (1.0 + r)]
+            .into_iter()
+            .filter(|&w| a.is_none_or(|a| w > a) && f.is_none_or(|f| w < f))
+            .collect()
     }
 
     /// Runs rounds on `devices` with `k` setting ranks until none is undecided or `allowed`
@@ -231,6 +332,18 @@ impl<'a> Rounds<'a> {
             let budget = allowed.saturating_sub(self.runs);
             if todo.is_empty() || budget == 0 {
                 break;
+            }
+            let failed = todo.iter().any(|&i| devices[i].failed().is_some());
+            if let Some((q, g, within)) = self.sharp.filter(|_| !failed) {
+                let sharp = kn.sharpness(devices, (self.mu_sl, self.resolution), (q, g));
+                if sharp.gain() <= within {
+                    progress.note(&format!(
+                        "yield: DEM rounds stop: the {} undecided device(s) could lift the quote and its bound by at most {:.1} %",
+                        todo.len(),
+                        100.0 * sharp.gain()
+                    ));
+                    break;
+                }
             }
             let pred: Vec<f64> = todo
                 .iter()

@@ -142,6 +142,11 @@ pub struct YieldSummary {
     /// Its one-sided lower bound at confidence γ (mN; Wilks: the `bound_rank`-th lowest
     /// critical load; `null` when the samples are too few, see `min_samples_for_bound`).
     pub load_at_quantile_bound_mN: Option<f64>,
+    /// How high more DEM runs could lift the quote and its bound (mN): both with every device
+    /// still undecided at the upper end of what is known of it (equal to the quote and bound
+    /// when none is undecided; `null` without the DEM).
+    #[serde(default)]
+    pub ceiling_mN: Option<[Option<f64>; 2]>,
     /// Rank of the order statistic of the bound.
     pub bound_rank: Option<usize>,
     /// Fewest samples for a bound at q and γ.

@@ -192,6 +192,12 @@ pub fn outcome(
         resolution: p.resolution,
         load_at_quantile_mN: qc.load.map(mn),
         load_at_quantile_bound_mN: qc.bound.map(mn),
+        ceiling_mN: kn.as_ref().map(|k| {
+            let c = k
+                .sharpness(devices, (mu, p.resolution), (p.quantile, p.confidence))
+                .ceiling;
+            [c.0.map(mn), c.1.map(mn)]
+        }),
         bound_rank: interval::wilks_rank(n, p.quantile, p.confidence),
         min_samples_for_bound: interval::min_samples(p.quantile, p.confidence),
         yield_at_quantile_load: qc.load.map(|w| holding(&sorted, w) as f64 / n as f64),

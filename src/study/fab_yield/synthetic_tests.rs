@@ -14,7 +14,7 @@ use super::dem_part::{run_with, Plan};
 use super::device::{DemRun, Device};
 use super::fabrication::{FabricationModel, OffsetLaw, Sample};
 use super::params::YieldParams;
-use super::rounds::DemOracle;
+use super::rounds::{DemOracle, SHARP};
 use super::row::DecidedBy;
 use super::{interval, summary};
 use crate::runs::progress::{Progress, Silent};
@@ -26,11 +26,13 @@ use surrogate::friction::FrictionParams;
 const P_CRIT_GPA: f64 = 4.0;
 const MU: f64 = 0.005;
 
-/// The synthetic truth of one device: c (GPa N^−1/3) and ρ.
+/// The synthetic truth of one device: c (GPa N^−1/3), ρ and, for a device whose DEM fails by
+/// something its P_max does not show (friction), the load (N) above which it fails.
 #[derive(Clone, Copy)]
 struct Truth {
     c: f64,
     rho: f64,
+    fails_above: Option<f64>,
 }
 
 impl Truth {
@@ -38,7 +40,8 @@ impl Truth {
         (P_CRIT_GPA / self.c).powi(3)
     }
     fn dem_w(&self) -> f64 {
-        (P_CRIT_GPA / (self.rho * self.c)).powi(3)
+        let w = (P_CRIT_GPA / (self.rho * self.c)).powi(3);
+        self.fails_above.map_or(w, |f| f.min(w))
     }
 }
 
@@ -55,7 +58,7 @@ impl DemOracle for Oracle {
                 Decision {
                     run: DemRun {
                         load: a.load,
-                        superlubric: p <= P_CRIT_GPA,
+                        superlubric: p <= P_CRIT_GPA && t.fails_above.is_none_or(|f| a.load <= f),
                         p_max_GPa: Some(p),
                         mu: Some(MU),
                     },
@@ -151,7 +154,11 @@ fn truths(seed: u64, n: usize, rho: Option<(usize, f64)>) -> Vec<Truth> {
                     r = v;
                 }
             }
-            Truth { c, rho: r }
+            Truth {
+                c,
+                rho: r,
+                fails_above: None,
+            }
         })
         .collect()
 }
@@ -159,6 +166,14 @@ fn truths(seed: u64, n: usize, rho: Option<(usize, f64)>) -> Vec<Truth> {
 /// The DEM part of a yield of 59 devices of `t` and a check of 10 (the last 10 truths), at
 /// most 40 runs.
 fn yield_of(t: &[Truth]) -> (YieldParams, Vec<Device>, super::dem_part::DemPart) {
+    yield_within(t, 40)
+}
+
+/// [`yield_of`] with at most `max_runs` runs.
+fn yield_within(
+    t: &[Truth],
+    max_runs: usize,
+) -> (YieldParams, Vec<Device>, super::dem_part::DemPart) {
     let oracle = Oracle(t.to_vec());
     let p = params(59);
     let mut devices: Vec<Device> = (0..59).map(|i| device(i, t[i], false)).collect();
@@ -166,59 +181,87 @@ fn yield_of(t: &[Truth]) -> (YieldParams, Vec<Device>, super::dem_part::DemPart)
     let plan = Plan {
         check: 10,
         check_load: None,
-        max_runs: 40,
+        max_runs,
     };
     let part = run_with(&oracle, &p, plan, &mut devices, fresh, &Silent).unwrap();
     (p, devices, part)
 }
 
 /// 59 devices and a check of 10: every located device is located within the resolution of
-/// its true DEM critical load, no device keeps a load below its truth less the resolution,
-/// the quote and its bound equal the true order statistics of the pool to the resolution,
-/// and the runs stay within 40.
+/// its true DEM critical load, no device keeps a load below its truth less the resolution
+/// (where the DEM failed it) or above its truth, the rounds stop only when the quote and its
+/// bound are sharp ([`SHARP`] resolutions) or the runs are spent, the quote and its bound lie
+/// at or below the true order statistics of the pool and within the resolution plus that
+/// sharpness of them, and the runs stay within 40.
 #[test]
 fn the_rounds_find_the_true_order_statistics() {
     let scene = surrogate::Scene::preset("tri-tri").unwrap();
+    let sharp = SHARP * 0.01;
     for seed in 1..=5 {
         let t = truths(seed, 69, None);
         let (p, devices, part) = yield_of(&t);
         let o = summary::outcome(&scene, &p, &devices, Some(&part));
         let s = &o.summary;
         assert!(part.runs <= 40, "seed {seed}: {} runs", part.runs);
-        assert_eq!(
-            s.undecided, 0,
-            "seed {seed}: {} runs, {} rounds, located {:?}, band {:?}",
-            s.dem_runs, s.dem_rounds, s.located, s.band
+        let [Some(cq), Some(cb)] = s.ceiling_mN.unwrap() else {
+            panic!("seed {seed}: no ceiling");
+        };
+        let (q, b) = (
+            s.load_at_quantile_mN.unwrap(),
+            s.load_at_quantile_bound_mN.unwrap(),
+        );
+        assert!(
+            s.undecided == 0
+                || part.runs == 40
+                || (cq <= q * (1.0 + sharp) && cb <= b * (1.0 + sharp)),
+            "seed {seed}: {} undecided after {} runs, ceiling {cq} {cb} against {q} {b}",
+            s.undecided,
+            part.runs
         );
         assert_eq!(s.band.source, BandSource::Design, "seed {seed}");
         for (d, r) in devices.iter().zip(&o.rows) {
             let truth = t[d.sample.index].dem_w();
             let v = r.critical_load_mN * 1e-3;
+            // located: at or below its truth; undecided: the floor of its bracket, which
+            // rests on the band's coverage, so within the resolution above its truth at most
+            match r.decided_by {
+                DecidedBy::Located => assert!(v <= truth * 1.0001, "seed {seed}: {v} > {truth}"),
+                DecidedBy::Undecided => {
+                    assert!(v <= truth * 1.0101, "seed {seed}: {v} > {truth}")
+                }
+                _ => {}
+            }
             if r.decided_by == DecidedBy::Located {
                 assert!(
-                    v <= truth && truth - v <= 0.01 * truth * 1.001,
+                    truth - v <= 0.01 * truth * 1.001,
                     "seed {seed}: located {v} vs truth {truth}"
                 );
             }
             if d.failed().is_some() {
-                assert!(v >= truth * (1.0 - 0.0101), "seed {seed}: {v} vs {truth}");
+                assert!(
+                    v >= truth * (1.0 - 0.0101 - sharp),
+                    "seed {seed}: {v} vs {truth}"
+                );
             }
         }
         let mut true_w: Vec<f64> = t.iter().map(Truth::dem_w).collect();
         true_w.sort_by(f64::total_cmp);
         let want_q = interval::quantile_load(&true_w, 0.95).unwrap();
         let want_b = true_w[interval::wilks_rank(69, 0.95, 0.95).unwrap() - 1];
-        let q = s.load_at_quantile_mN.unwrap() * 1e-3;
-        let b = s.load_at_quantile_bound_mN.unwrap() * 1e-3;
+        let (q, b) = (q * 1e-3, b * 1e-3);
         assert!(
-            (q - want_q).abs() <= 0.0101 * want_q,
+            q <= want_q * 1.0101 && q >= want_q * (1.0 - 0.0101 - sharp),
             "seed {seed}: quote {q} vs {want_q}"
         );
         assert!(
-            b <= want_b * 1.0001 && b >= want_b * (1.0 - 0.0101),
+            b <= want_b * 1.0101 && b >= want_b * (1.0 - 0.0101 - sharp),
             "seed {seed}: bound {b} vs {want_b}"
         );
         assert_eq!(s.dem_check_consistent, Some(true), "seed {seed}");
+        eprintln!(
+            "RUNS seed {seed}: {} runs, {} undecided, q {q} want {want_q}, b {b} want {want_b}",
+            part.runs, s.undecided
+        );
     }
 }
 
@@ -240,4 +283,25 @@ fn a_contradicting_check_lowers_the_quote_or_is_flagged() {
     let held = (59..69).filter(|&i| t[i].dem_w() >= q).count();
     let (_, hi) = interval::clopper_pearson(held, 10, 0.95);
     assert!(hi >= 0.95 || s.dem_check_consistent == Some(false));
+}
+
+/// A check device whose DEM fails it 20 % below its estimate by something its P_max does not
+/// show (so its own margin keeps predicting it above where it fails) fails at the quote and
+/// is then bracketed by bisection to the resolution plus the rounds' sharpness, never above
+/// its truth, in at most 10 runs, not walked down a resolution a run.
+#[test]
+fn a_device_far_below_its_prediction_is_bisected_not_walked() {
+    let mut t = truths(3, 69, None);
+    t[59].fails_above = Some(0.8 * t[59].dem_w());
+    let scene = surrogate::Scene::preset("tri-tri").unwrap();
+    let (p, devices, part) = yield_within(&t, 80);
+    let d = &devices[59];
+    let truth = t[59].dem_w();
+    let o = summary::outcome(&scene, &p, &devices, Some(&part));
+    let v = o.rows[59].critical_load_mN * 1e-3;
+    assert!(
+        v <= truth * 1.0001 && truth - v <= (0.0101 + SHARP * 0.01) * truth,
+        "{v} vs {truth}"
+    );
+    assert!(d.dem.len() <= 10, "{} runs: {:?}", d.dem.len(), d.dem);
 }
