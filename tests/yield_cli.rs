@@ -295,6 +295,7 @@ fn bad_input_is_refused_naming_the_flag() {
         (&["--theta-sigma-deg", "-0.1"][..], "--theta-sigma-deg"),
         (&["--resolution", "0"][..], "--resolution"),
         (&["--searched-seeds", "1,x"][..], "--searched-seeds"),
+        (&["--dem-max-runs", "3"][..], "--dem-max-runs"),
     ] {
         let args = base(extra);
         let refs: Vec<&str> = args.iter().map(String::as_str).collect();
