@@ -49,64 +49,45 @@
 //! [`observer`] (worded by `crate::present::design_report::log`), one
 //! line in [`pipeline::Pipeline`].
 
-pub mod alpha_scan;
-pub mod alpha_scan_params;
-pub mod answer;
-pub mod answer_yield;
-pub mod below_ladder;
-pub mod best;
 pub mod confirm;
-pub mod confirm_params;
-mod ctx;
-mod dem_entry;
-mod domain;
-pub mod estimate;
 pub mod evaluate;
 mod inputs;
-mod limit;
+pub mod limit;
+pub mod model;
 pub mod observer;
-mod outcome;
-pub mod p_crit;
 pub mod params;
-mod pattern_result;
 pub mod pipeline;
-pub mod rank;
-pub mod recipe_answer;
+pub mod ranking;
 pub mod report_data;
 pub mod robust;
-pub mod robust_searches;
 pub mod screen;
-pub mod screen_params;
 pub mod shortlist;
-pub mod shortlist_params;
+mod stage_env;
 pub mod store;
 pub mod symmetry_words;
-pub mod tolerance_params;
-pub mod trim;
-pub mod walk;
-pub mod yield_params;
-pub mod yield_rank;
 pub mod yield_stage;
 
-pub use dem_entry::DemEntry;
-pub use domain::{
+pub use inputs::inputs;
+pub use limit::LimitKnobs;
+pub use model::{
+    answer, rank, trim, AnswerMap, DemEntry, DesignOutcome, EvalStage, Evaluated, PatternResult,
+    Stop,
+};
+pub use observer::{Event, Observer};
+pub use params::{
+    tolerance_box, AlphaScanParams, ConfirmParams, DesignParams, DesignScene, ScreenStageParams,
+    ShortlistParams, ToleranceParams,
+};
+pub use pipeline::PatternHook;
+pub use ranking::below_ladder;
+pub use report_data::{best, p_crit, recipe_answer};
+pub use screen::domain::{
     cut, default_domain, line_note, theta_note, OutsideDomain, ThetaNote, THETA_STEP_DEG,
     WIDE_DOMAIN_DEG, WIDE_THETA_STEP_DEG,
 };
-pub use inputs::{inputs, screen_params};
-pub use limit::tolerance_box;
-pub use observer::{Event, Observer};
-pub use outcome::DesignOutcome;
-pub use pattern_result::{AnswerMap, EvalStage, Evaluated, PatternResult};
-pub use pipeline::PatternHook;
-pub use store::tag;
-pub use store::Timing;
-pub use walk::Stop;
-
-pub use params::{
-    AlphaScanParams, ConfirmParams, DesignParams, DesignScene, ScreenStageParams, ShortlistParams,
-    ToleranceParams,
-};
+pub use screen::screen_params;
+pub use stage_env::StageEnv;
+pub use store::{tag, Timing};
 
 use anyhow::Result;
 pub use confirm::{dem_params, loads_to_confirm, protocol_check_design, run_name, ProtocolCheck};
@@ -128,4 +109,4 @@ pub fn design(
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod test_design;
