@@ -3,30 +3,38 @@
 //! For one or more pattern pairs, a range of orientations θ and a list of loads, the design
 //! answers: *which orientation θ and pulling direction α keep friction ultra-low without coating
 //! failure, up to which load, and how sure are we?* [`design`] runs the stages in order:
-//! [`pipeline::Pipeline::run`], each stage a type in its own file with a `run` that takes the
-//! previous stage's output, each telling the one [`Observer`] the command passes in what it
-//! finds as typed [`Event`]s (no wording here):
+//! [`pipeline::Pipeline::run`], the flat list. Each stage is a folder with its own params and
+//! a stage value holding only what it reads (its params and a [`StageEnv`]: the shared
+//! [`LimitKnobs`], the store, the observer), all of one shape,
+//! `XStage::new(env, &params).run(input)`, each telling the one [`Observer`] the command
+//! passes in what it finds as typed [`Event`]s (no wording here). The data they pass on is
+//! [`model`], below every stage; the cross-stage rules (designs kept, the floor across many
+//! patterns) are the [`pipeline::Plan`], computed once.
 //!
 //! 1. **Screen** ([`screen::ScreenStage`]): θ cut to the pair's fundamental domain
 //!    ([`symmetry_words`]; square-tri 0–15°, tri-tri 0–30°; the α scan covers one α period),
 //!    then every θ × W screened ([`crate::study::screen`]): contacts, P_max, coating failure.
 //! 2. **Shortlist** ([`shortlist::ShortlistStage`]): per θ the load `W_c` up to which the
 //!    coating stays intact; every orientation that survives the highest load, plus the best few
-//!    of each lower load level. The levels are taken from the top by a [`walk::LevelWalk`]
-//!    until no lower level can reach the best superlubric load found.
-//! 3. **α scan** ([`alpha_scan`]) and 4. **friction estimate** ([`estimate`]) of a level's
-//!    orientations ([`evaluate::EvaluateStage`]): contact line, corrugation versus α (coarse
-//!    grid, then refined near the minimum), the friction estimate μ_est (`surrogate::friction`)
-//!    along the best α's at every load.
+//!    of each lower load level. The levels are taken from the top by a
+//!    [`shortlist::walk::LevelWalk`] until no lower level can reach the best superlubric load
+//!    found.
+//! 3. **α scan** ([`evaluate::alpha_scan`]) and 4. **friction estimate**
+//!    ([`evaluate::estimate`]) of a level's orientations ([`evaluate::EvaluateStage`]):
+//!    contact line, corrugation versus α (coarse grid, then refined near the minimum), the
+//!    friction estimate μ_est (`surrogate::friction`) along the best α's at every load.
 //! 5. **Robust search** ([`robust::RobustStage`], with a tolerance): the robust limit, the
 //!    highest load up to which superlubric (coating intact on the sliding path AND μ_est < 0.02
-//!    at every load up to it) at every sample of the tolerance box; the candidates are ranked
-//!    by it, then the θ window, the direction window, μ_est, contacts ([`rank`]).
-//! 6. **DEM confirmation** ([`confirm`]): the top [`ConfirmParams::designs`] designs of each
-//!    pattern at the confirmation loads and at the corners of their tolerance boxes
-//!    (borderline designs first), independent `slide` runs side by side, one thread each
-//!    (plus, with a protocol shorter than the study's, the design the report recommends once
-//!    with the study's protocol to measure the difference there: [`protocol_check_design`]).
+//!    at every load up to it) at every sample of the tolerance box; then the **ranking**
+//!    ([`ranking::RankStage`]): by it, then the θ window, the direction window, μ_est, contacts
+//!    ([`rank`]), the limits below the ladder where none holds its first load, and with
+//!    `--rank-by yield` by the yield ([`ranking::by_yield`]).
+//! 6. **DEM confirmation** ([`confirm::ConfirmStage`]): per pattern the estimates the DEM is
+//!    compared with, then the top [`ConfirmParams::designs`] designs of each pattern at the
+//!    confirmation loads and at the corners of their tolerance boxes (borderline designs
+//!    first), independent `slide` runs side by side, one thread each (plus, with a protocol
+//!    shorter than the study's, the design the report recommends once with the study's
+//!    protocol to measure the difference there: [`protocol_check_design`]).
 //! 7. **Report data** ([`report_data::ReportDataStage`]): each pattern's answer ([`answer`]),
 //!    the tolerance maps around the answers and, with recipes, the P_crit sweep ([`p_crit`]).
 //! 8. **Yield** ([`yield_stage::YieldStage`], on by default, `design --no-yield` off): per answer
@@ -41,13 +49,12 @@
 //! the global CSVs with sidecars (`crate::present::design_report`, a layer above this one).
 //!
 //! Every stage is stored under the output directory with the inputs that made it
-//! ([`store`]; the records: `inputs.rs`): a re-run with the same `--out-dir` reuses every
-//! finished stage and DEM run, and one with other inputs is refused with the differences
-//! named. Adding a stage: a file with its type (a `run` from the previous stage's output to
-//! its own), its knobs in a params struct of its own (a field of [`DesignParams`]; in a
-//! sibling `<stage>_params.rs`, so that `params.rs` need not import the stage), its events in
-//! [`observer`] (worded by `crate::present::design_report::log`), one
-//! line in [`pipeline::Pipeline`].
+//! ([`store`]; the design's record: `inputs.rs`, each stage's beside it): a re-run with the
+//! same `--out-dir` reuses every finished stage and DEM run, and one with other inputs is
+//! refused with the differences named. Adding a stage: a folder with its stage value and its
+//! params (a field of [`DesignParams`], or derived by the plan), the data it passes on in
+//! [`model`], its events in [`observer`] (worded by `crate::present::design_report::log`),
+//! one line in [`pipeline::Pipeline`], a unit test beside it.
 
 pub mod confirm;
 pub mod evaluate;

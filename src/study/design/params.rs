@@ -57,14 +57,10 @@ impl DesignParams {
         }
     }
 
-    /// The rule each pattern's answer is decided by: the top `confirm.designs`, μ_sl, and
-    /// whether the tolerance box has corners.
+    /// The rule each pattern's answer is decided by ([`LimitKnobs::answer_rule`], the top
+    /// `confirm.designs`). Cost: a copy of the loads.
     pub fn answer_rule(&self) -> AnswerRule {
-        AnswerRule {
-            designs: self.confirm.designs,
-            mu_superlubric: self.mu_superlubric,
-            corners: !tolerance_box(self).is_point(),
-        }
+        self.limit_knobs().answer_rule(self.confirm.designs)
     }
 }
 

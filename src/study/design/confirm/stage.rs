@@ -12,7 +12,7 @@ use super::protocol_check::{protocol_check_design, ProtocolCheck};
 use super::runner::BatchRunner;
 use super::runner::DemRunner;
 use crate::study::batch::{SlideJob, SlideOutcome};
-use crate::study::design::model::answer::{answer, Answer, AnswerRule};
+use crate::study::design::model::answer::{answer, Answer};
 use crate::study::design::model::{ConfirmEntry, DemEntry, DemProtocol, PatternResult};
 use crate::study::design::observer::Event;
 use crate::study::design::stage_env::StageEnv;
@@ -36,15 +36,6 @@ impl<'a> ConfirmStage<'a> {
             env,
             params,
             runner,
-        }
-    }
-
-    /// The rule the answers are decided by (the top K, μ_sl, whether the box has corners).
-    pub fn answer_rule(&self) -> AnswerRule {
-        AnswerRule {
-            designs: self.params.designs,
-            mu_superlubric: self.env.limit.mu_superlubric,
-            corners: !self.env.limit.tolerance_box().is_point(),
         }
     }
 
@@ -79,7 +70,7 @@ impl<'a> ConfirmStage<'a> {
         let mut outcomes = self.runner.run(&jobs, cp.jobs, &dir, obs.progress())?;
         let mut dem = to_entries(&entries, &outcomes);
         if cp.protocol_check && !cp.dem_is_study_protocol {
-            let rule = self.answer_rule();
+            let rule = self.env.limit.answer_rule(cp.designs);
             let answers: Vec<Answer> = patterns
                 .iter()
                 .map(|pr| answer(pr, &dem, true, &rule))

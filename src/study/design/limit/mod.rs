@@ -10,7 +10,7 @@ mod tolerance_params;
 
 pub use tolerance_params::ToleranceParams;
 
-use super::model::DesignScene;
+use super::model::{AnswerRule, DesignScene};
 use crate::study::load::Loads;
 use crate::study::record;
 use crate::study::tolerance::{LimitParams, ToleranceBox};
@@ -63,6 +63,16 @@ impl LimitKnobs {
             t.theta_tol_step_deg,
             t.direction_tol_step_deg,
         )
+    }
+
+    /// The rule each pattern's answer is decided by, the DEM confirming the top `designs`:
+    /// μ_sl, and whether the tolerance box has corners whose runs must confirm too.
+    pub fn answer_rule(&self, designs: usize) -> AnswerRule {
+        AnswerRule {
+            designs,
+            mu_superlubric: self.mu_superlubric,
+            corners: !self.tolerance_box().is_point(),
+        }
     }
 
     /// The recorded inputs of a superlubric limit (loads in mN, threshold, contact line in

@@ -1,4 +1,4 @@
-//! What the DEM confirmation stage ([`super::confirm`]) returns: each run ([`DemEntry`]), which
+//! What the DEM confirmation stage ([`super::super::confirm`]) returns: each run ([`DemEntry`]), which
 //! design it checks, where and with which protocol ([`ConfirmEntry`], [`DemProtocol`]). Types
 //! only, below the stages that read them (the answer, the report data).
 

@@ -20,7 +20,7 @@ pub struct DesignOutcome {
     /// The answer per pattern (the ranking checked against the DEM, [`super::answer`]).
     pub answers: Vec<Answer>,
     /// Per pattern, the tolerance map around its answer (θ points per row, rows) when the
-    /// design has a tolerance ([`super::super::report_data::tolerance_map`]).
+    /// design has a tolerance ([`super::super::report_data::tolerance_map()`]).
     pub maps: Vec<Option<AnswerMap>>,
     /// With recipes (`--vary`): the best named recipe's robust limit at each coating strength
     /// of [`super::p_crit_sweep::P_CRIT_SWEEP_GPA`].

@@ -16,9 +16,10 @@
 mod order;
 mod pattern;
 mod plan;
+mod search;
 
-pub use order::{Order, Search};
 pub use plan::{Floor, Plan, MIN_KEPT};
+pub use search::{Order, Search};
 
 use super::confirm::{BatchRunner, ConfirmStage, DemRunner};
 use super::inputs::inputs;

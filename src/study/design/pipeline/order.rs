@@ -1,33 +1,11 @@
-//! The order the pipeline takes the patterns in ([`Order`], [`Pipeline::order`]) and how a
-//! pass searches the tolerance box ([`Search`]).
+//! The order the pipeline takes the patterns in ([`Pipeline::order`]).
 
+use super::search::{Order, Search};
 use super::Pipeline;
 use crate::study::design::model::{rank, Candidate, DesignScene};
 use crate::study::design::observer::Event;
 use crate::study::design::report_data::best::BEST_PATTERNS;
-use crate::study::design::robust::RobustParams;
 use anyhow::Result;
-
-/// How [`Pipeline::pattern`] searches the tolerance box.
-#[derive(Debug, Clone, Copy)]
-pub enum Search {
-    /// No robust search: the nominal limits only (the first pass of [`Pipeline::order`]).
-    Nominal,
-    /// The robust search ([`crate::study::design::robust::RobustStage`]) with these knobs:
-    /// above the floor, until the best `keep` designs of the pattern are exact.
-    Robust(RobustParams),
-}
-
-/// The order [`Pipeline::run`] takes the patterns in, and whether a robust floor applies
-/// across them.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Order {
-    /// Indices into the patterns, in the order taken.
-    pub patterns: Vec<usize>,
-    /// Whether the patterns are taken best nominal design first, each robust search above the
-    /// floor of the best [`BEST_PATTERNS`] found so far.
-    pub cross: bool,
-}
 
 impl Pipeline<'_> {
     /// The order in which [`Pipeline::run`] takes the patterns ([`Order`]).

@@ -2,7 +2,8 @@
 //! shortlist, then per level as the [`LevelWalk`] takes them 3–4. the evaluation and 5. the
 //! robust search, then 5. the ranking.
 
-use super::{Pipeline, Search};
+use super::search::Search;
+use super::Pipeline;
 use crate::study::design::evaluate::{EvaluateStage, LevelInput};
 use crate::study::design::limit::{seed_solvers, solver_of};
 use crate::study::design::model::{rank, Candidate, DesignScene, Evaluated, PatternResult};

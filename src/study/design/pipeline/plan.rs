@@ -42,8 +42,8 @@ impl Plan {
     pub fn new(p: &DesignParams) -> Plan {
         let keep = p.confirm.designs.max(MIN_KEPT);
         let dem = !p.confirm.no_dem;
+        let limit = p.limit_knobs();
         Plan {
-            limit: p.limit_knobs(),
             keep,
             confirmed: p.confirm.designs,
             dem,
@@ -52,7 +52,7 @@ impl Plan {
                 by_yield: p.fab_yield.clone().filter(|y| y.rank_by == RankBy::Yield),
             },
             report: ReportDataParams {
-                answer: p.answer_rule(),
+                answer: limit.answer_rule(p.confirm.designs),
                 dem_ran: dem,
             },
             fab_yield: p.fab_yield.clone().map(|knobs| YieldRunParams {
@@ -62,6 +62,7 @@ impl Plan {
                     jobs: p.confirm.jobs,
                 }),
             }),
+            limit,
         }
     }
 

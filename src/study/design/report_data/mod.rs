@@ -1,5 +1,5 @@
 //! Stage 7 of a design, the report data ([`ReportDataStage`], its knobs [`ReportDataParams`]):
-//! each pattern's answer, the tolerance maps around the answers ([`tolerance_map`]), the best
+//! each pattern's answer, the tolerance maps around the answers ([`tolerance_map()`]), the best
 //! patterns ([`best`]), the recipes' decisions ([`recipe_answer`]) and the P_crit sweep
 //! ([`p_crit`]).
 

@@ -1,6 +1,6 @@
 //! Stage 7 of a design, the report data: what the report is built from — each
 //! pattern's answer (its ranking checked against the DEM, [`crate::study::design::model::answer`]), the tolerance
-//! map around the answers ([`super::tolerance_map`]) and, with recipes, the best named recipe's limit
+//! map around the answers ([`super::tolerance_map()`]) and, with recipes, the best named recipe's limit
 //! against the coating's strength ([`super::p_crit`]). Cost: one tolerance map per mapped
 //! answer (17 × 9 points at the design's loads) and one robust search per other P_crit.
 
