@@ -149,10 +149,13 @@ impl<'a> Pipeline<'a> {
         let mut done: Vec<Option<PatternResult>> = vec![None; scenes.len()];
         let mut floor = Floor::new(order.cross);
         for &i in &order.patterns {
+            // 1–5: screen, shortlist, per level evaluate and robust search, ranking
             let search = Search::Robust(self.plan.robust(floor.mn(), order.cross));
             let mut pr = self.pattern(&scenes[i], search)?;
             floor.record(&pr);
+            // 5. with `--rank-by yield`, the top designs ranked by their yield
             rank_stage.by_yield(&mut pr)?;
+            // 6. the estimates the DEM is compared with, in the pattern's files
             confirm.estimates(&mut pr)?;
             pr.resonance_flagged = rank::resonance_flagged(&pr.ranking);
             if self.p.confirm.dem_shard.is_all() {
