@@ -92,7 +92,7 @@ fn pattern(ds: &DesignScene, n: usize) -> PatternResult {
 
 /// The DEM entries of every confirmation run of `pr`, each with μ_DEM `mu(entry)` (P_max 3 GPa).
 fn runs(pr: &PatternResult, p: &DesignParams, mu: &dyn Fn(&DemEntry) -> f64) -> Vec<DemEntry> {
-    let (_, entries) = confirm_jobs(std::slice::from_ref(pr), p);
+    let (_, entries) = confirm_jobs(std::slice::from_ref(pr), &p.confirm, &p.limit_knobs());
     let outcomes: Vec<_> = entries
         .iter()
         .map(|e| crate::study::batch::SlideOutcome {
@@ -128,7 +128,7 @@ fn borderline_designs_run_first_and_every_top_design_has_its_corners() {
     let (scenes, p) = params(&[]);
     let mut pr = pattern(&scenes[0], 4);
     pr.ranking[1].score.verdict = Verdict::Borderline;
-    let (jobs, entries) = confirm_jobs(std::slice::from_ref(&pr), &p);
+    let (jobs, entries) = confirm_jobs(std::slice::from_ref(&pr), &p.confirm, &p.limit_knobs());
     assert_eq!(jobs.len(), entries.len());
     let ranks: Vec<usize> = entries.iter().map(|e| e.rank).collect();
     let first_other = ranks.iter().position(|&r| r != 2).unwrap();
@@ -183,7 +183,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
     // every run superlubric: rank 1 confirmed at its own loads
     let all_ok = runs(&pr, &p, &|_| 0.01);
     assert!(
-        matches!(check(&pr, 1, &all_ok, &p), Check::Confirmed(ref w) if w == &vec![0.01, 0.06])
+        matches!(check(&pr, 1, &all_ok, &p.answer_rule()), Check::Confirmed(ref w) if w == &vec![0.01, 0.06])
     );
     // rank 1's corner (+0.1°, −0.5°) fails at its limit load: contradicted, naming the corner;
     // a corner failing only at the next load above does not count
@@ -198,7 +198,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
         }
     };
     let dem = runs(&pr, &p, &corner_fails);
-    match check(&pr, 1, &dem, &p) {
+    match check(&pr, 1, &dem, &p.answer_rule()) {
         Check::Contradicted(why) => {
             let why = why.to_string();
             assert!(why.contains("μ_DEM"), "{why}");
@@ -206,7 +206,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
         }
         c => panic!("{c:?}"),
     }
-    let a = answer(&pr, &dem, true, &p);
+    let a = answer(&pr, &dem, true, &p.answer_rule());
     assert_eq!(a.index, Some(1), "the next design whose box holds");
     assert!(matches!(a.check, Check::Confirmed(_)));
     // only the failures above the limit: confirmed
@@ -218,7 +218,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
         }
     };
     assert!(matches!(
-        check(&pr, 1, &runs(&pr, &p, &above), &p),
+        check(&pr, 1, &runs(&pr, &p, &above), &p.answer_rule()),
         Check::Confirmed(_)
     ));
     // no corner run at all: not confirmed
@@ -226,7 +226,10 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
         .into_iter()
         .filter(|e| e.run.theta_offset_deg == 0.0 && e.run.direction_offset_deg == 0.0)
         .collect();
-    assert_eq!(check(&pr, 1, &centre_only, &p), Check::Unchecked);
+    assert_eq!(
+        check(&pr, 1, &centre_only, &p.answer_rule()),
+        Check::Unchecked
+    );
     // the answer's words: the corners of the answer's own box
     let o = crate::study::design::DesignOutcome {
         patterns: vec![pr.clone()],
@@ -263,7 +266,7 @@ fn the_answer_needs_the_corners_at_the_robust_limit() {
 fn a_borderline_answer_is_never_a_plain_yes() {
     let (scenes, p) = params(&["--no-dem"]);
     let mut pr = pattern(&scenes[0], 1);
-    let a = answer(&pr, &[], false, &p);
+    let a = answer(&pr, &[], false, &p.answer_rule());
     let plain = answer_line(&pr, &a, &[], &p, 0.09);
     assert!(
         plain.contains("stays superlubric up to **0.06 mN**"),

@@ -7,6 +7,7 @@ use super::scenes::scenes;
 use super::Args;
 use super::DEFAULT_THETA;
 use crate::runs::output::check_outputs;
+use crate::study::dem_run::DemParams;
 use crate::study::design::{
     cut, AlphaScanParams, ConfirmParams, DesignParams, DesignScene, ScreenStageParams,
     ShortlistParams, ToleranceParams,
@@ -19,6 +20,36 @@ use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
     let theta_text = a.theta.clone().unwrap_or_else(|| DEFAULT_THETA.to_string());
     let thetas_deg = checks::thetas_deg(&theta_text)?;
+    let loads = loads(a)?;
+    let mu_superlubric = a.verdict.mu_superlubric()?;
+    let shortlist = shortlist(a)?;
+    let alpha_scan = alpha_scan(a)?;
+    let friction = a.friction.params()?;
+    let confirm = confirm(a, &loads, alpha_scan.line)?;
+    let tolerance = tolerance(a)?;
+    let params = DesignParams {
+        loads: crate::study::load::Loads::new(loads),
+        mu_superlubric,
+        screen: ScreenStageParams {
+            thetas_deg,
+            theta_default: a.theta.is_none(),
+            symmetry_cut: !a.no_symmetry_cut,
+        },
+        shortlist,
+        alpha_scan,
+        friction,
+        tolerance,
+        confirm,
+        fab_yield: a.fab_yield.params()?,
+    };
+    let scenes = scenes(a)?;
+    check_domains(&scenes, &params)?;
+    check_outputs(&[("--out-dir", Some(&a.out.join("report.md")))])?;
+    Ok((scenes, params))
+}
+
+/// `--load-mn` (N), strictly increasing.
+fn loads(a: &Args) -> Result<Vec<f64>> {
     let loads = checks::loads(&a.load_mn)?;
     if let Some(k) = loads.windows(2).position(|w| w[1] <= w[0]) {
         bail!(
@@ -27,13 +58,25 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             a.load_mn.split(',').nth(k + 1).unwrap_or("?").trim()
         );
     }
-    let mu_superlubric = a.verdict.mu_superlubric()?;
+    Ok(loads)
+}
+
+/// The shortlist's flags.
+fn shortlist(a: &Args) -> Result<ShortlistParams> {
     if a.per_level == 0 {
         bail!("`--per-level`: 0 would keep no orientation below the top level; give ≥ 1");
     }
     if a.max_top == 0 {
         bail!("`--max-top`: 0 would keep no orientation of the top level; give ≥ 1");
     }
+    Ok(ShortlistParams {
+        per_level: a.per_level,
+        max_top: a.max_top,
+    })
+}
+
+/// The α scan's flags, the contact line included (SI).
+fn alpha_scan(a: &Args) -> Result<AlphaScanParams> {
     if a.alphas_per_theta == 0 {
         bail!("`--best-alphas`: give ≥ 1");
     }
@@ -63,7 +106,19 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             a.scan_um
         );
     }
-    let friction = a.friction.params()?;
+    Ok(AlphaScanParams {
+        alpha_step_deg: step,
+        alpha_refine_deg: refine,
+        line,
+        scan_length,
+        scan_step,
+        alphas_per_theta: a.alphas_per_theta,
+    })
+}
+
+/// The DEM confirmation's flags: how many designs, at which of `loads` (N), how many runs side
+/// by side, the protocol and model (with the contact line `line`), the shard.
+fn confirm(a: &Args, loads: &[f64], line: Option<f64>) -> Result<ConfirmParams> {
     if !a.no_dem && a.confirm == 0 {
         bail!("`--confirm`: 0 designs to confirm with the DEM on; give --confirm ≥ 1, or --no-dem to stop before the DEM");
     }
@@ -96,6 +151,31 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         Some(j) => j,
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
+    let (dem, dem_is_study_protocol) = dem_protocol(a, line)?;
+    let dem_shard = match &a.shard {
+        Some(t) => {
+            if a.no_dem {
+                bail!("`--shard`: shards the DEM confirmation runs, but --no-dem skips them");
+            }
+            crate::runs::shard::Shard::parse(t, "--shard")?
+        }
+        None => crate::runs::shard::Shard::ALL,
+    };
+    Ok(ConfirmParams {
+        designs: a.confirm,
+        loads: confirm_loads,
+        no_dem: a.no_dem,
+        jobs,
+        dem_shard,
+        dem,
+        dem_is_study_protocol,
+        protocol_check: !a.no_protocol_check,
+    })
+}
+
+/// The DEM protocol and model of every confirmation run (with the contact line `line`), and
+/// whether the protocol is the study's.
+fn dem_protocol(a: &Args, line: Option<f64>) -> Result<(DemParams, bool)> {
     let times = [
         (a.dem_equilibrate_us, "--dem-equilibrate-us"),
         (a.dem_slide_us, "--dem-slide-us"),
@@ -130,15 +210,11 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         && sim.protocol.slide_time == study.protocol.slide_time
         && sim.protocol.support_speed == study.protocol.support_speed;
     let dem = design_run_params(sim, line, a.dem_model.request());
-    let dem_shard = match &a.shard {
-        Some(t) => {
-            if a.no_dem {
-                bail!("`--shard`: shards the DEM confirmation runs, but --no-dem skips them");
-            }
-            crate::runs::shard::Shard::parse(t, "--shard")?
-        }
-        None => crate::runs::shard::Shard::ALL,
-    };
+    Ok((dem, dem_is_study_protocol))
+}
+
+/// The fabrication tolerance's flags.
+fn tolerance(a: &Args) -> Result<ToleranceParams> {
     let (theta_tol_deg, direction_tol_deg) = a.tol.checked()?;
     let theta_tol_step_deg = checks::positive(a.theta_tol_step, "--theta-tol-step-deg")?;
     let direction_tol_step_deg =
@@ -147,48 +223,18 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         .seeds
         .as_deref()
         .map_or(Ok(Vec::new()), |t| checks::seed_list(t, "--extra-seeds"))?;
-    let params = DesignParams {
-        loads: crate::study::load::Loads::new(loads),
-        mu_superlubric,
-        screen: ScreenStageParams {
-            thetas_deg,
-            theta_default: a.theta.is_none(),
-            symmetry_cut: !a.no_symmetry_cut,
-        },
-        shortlist: ShortlistParams {
-            per_level: a.per_level,
-            max_top: a.max_top,
-        },
-        alpha_scan: AlphaScanParams {
-            alpha_step_deg: step,
-            alpha_refine_deg: refine,
-            line,
-            scan_length,
-            scan_step,
-            alphas_per_theta: a.alphas_per_theta,
-        },
-        friction,
-        tolerance: ToleranceParams {
-            theta_tol_deg,
-            direction_tol_deg,
-            theta_tol_step_deg,
-            direction_tol_step_deg,
-            seeds,
-        },
-        confirm: ConfirmParams {
-            designs: a.confirm,
-            loads: confirm_loads,
-            no_dem: a.no_dem,
-            jobs,
-            dem_shard,
-            dem,
-            dem_is_study_protocol,
-            protocol_check: !a.no_protocol_check,
-        },
-        fab_yield: a.fab_yield.params()?,
-    };
-    let scenes = scenes(a)?;
-    for s in &scenes {
+    Ok(ToleranceParams {
+        theta_tol_deg,
+        direction_tol_deg,
+        theta_tol_step_deg,
+        direction_tol_step_deg,
+        seeds,
+    })
+}
+
+/// The tolerance and the extra seeds against each pattern's θ domain and substrate.
+fn check_domains(scenes: &[DesignScene], params: &DesignParams) -> Result<()> {
+    for s in scenes {
         let (_, sym) = cut(s, &params.screen)?;
         let (lo, hi) = (sym.domain().lo_deg, sym.domain().hi_deg);
         if 2.0 * params.tolerance.theta_tol_deg >= hi - lo {
@@ -206,6 +252,5 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
             );
         }
     }
-    check_outputs(&[("--out-dir", Some(&a.out.join("report.md")))])?;
-    Ok((scenes, params))
+    Ok(())
 }

@@ -1,6 +1,6 @@
 //! The flags of `design`'s yield stage ([`crate::study::design::yield_stage`]), on by default.
 
-use crate::study::design::yield_params::RankBy;
+use crate::study::design::yield_stage::RankBy;
 use crate::study::design::yield_stage::YieldStageParams;
 use crate::study::fab_yield::{bound_samples, BadKnob, YieldParams, DEFAULT_RESOLUTION};
 use anyhow::{bail, Result};

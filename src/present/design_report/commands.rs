@@ -136,7 +136,7 @@ pub fn slide_command(
             p,
             protocol == DemProtocol::Study,
             pr.ranking.get(d.rank.saturating_sub(1)).map_or(p.confirm.dem.model.request, |c| {
-                crate::study::design::confirm::dem_model(pr, c, p).request
+                crate::study::design::confirm::dem_model(pr, c, &p.confirm).request
             })
         ),
         d.run_dir,

@@ -462,7 +462,7 @@ pub fn answer_run(pr: &PatternResult, c: &Candidate, p: &DesignParams) -> Answer
         protocol_flags(
             p,
             false,
-            crate::study::design::confirm::dem_model(pr, c, p).request
+            crate::study::design::confirm::dem_model(pr, c, &p.confirm).request
         )
     );
     let range = |tol: f64, min: f64| label((2.0 * tol).max(min));

@@ -3,30 +3,38 @@
 //! For one or more pattern pairs, a range of orientations θ and a list of loads, the design
 //! answers: *which orientation θ and pulling direction α keep friction ultra-low without coating
 //! failure, up to which load, and how sure are we?* [`design`] runs the stages in order:
-//! [`pipeline::Pipeline::run`], each stage a type in its own file with a `run` that takes the
-//! previous stage's output, each telling the one [`Observer`] the command passes in what it
-//! finds as typed [`Event`]s (no wording here):
+//! [`pipeline::Pipeline::run`], the flat list. Each stage is a folder with its own params and
+//! a stage value holding only what it reads (its params and a [`StageEnv`]: the shared
+//! [`LimitKnobs`], the store, the observer), all of one shape,
+//! `XStage::new(env, &params).run(input)`, each telling the one [`Observer`] the command
+//! passes in what it finds as typed [`Event`]s (no wording here). The data they pass on is
+//! [`model`], below every stage; the cross-stage rules (designs kept, the floor across many
+//! patterns) are the [`pipeline::Plan`], computed once.
 //!
 //! 1. **Screen** ([`screen::ScreenStage`]): θ cut to the pair's fundamental domain
 //!    ([`symmetry_words`]; square-tri 0–15°, tri-tri 0–30°; the α scan covers one α period),
 //!    then every θ × W screened ([`crate::study::screen`]): contacts, P_max, coating failure.
 //! 2. **Shortlist** ([`shortlist::ShortlistStage`]): per θ the load `W_c` up to which the
 //!    coating stays intact; every orientation that survives the highest load, plus the best few
-//!    of each lower load level. The levels are taken from the top by a [`walk::LevelWalk`]
-//!    until no lower level can reach the best superlubric load found.
-//! 3. **α scan** ([`alpha_scan`]) and 4. **friction estimate** ([`estimate`]) of a level's
-//!    orientations ([`evaluate::EvaluateStage`]): contact line, corrugation versus α (coarse
-//!    grid, then refined near the minimum), the friction estimate μ_est (`surrogate::friction`)
-//!    along the best α's at every load.
+//!    of each lower load level. The levels are taken from the top by a
+//!    [`shortlist::walk::LevelWalk`] until no lower level can reach the best superlubric load
+//!    found.
+//! 3. **α scan** ([`evaluate::alpha_scan`]) and 4. **friction estimate**
+//!    ([`evaluate::estimate`]) of a level's orientations ([`evaluate::EvaluateStage`]):
+//!    contact line, corrugation versus α (coarse grid, then refined near the minimum), the
+//!    friction estimate μ_est (`surrogate::friction`) along the best α's at every load.
 //! 5. **Robust search** ([`robust::RobustStage`], with a tolerance): the robust limit, the
 //!    highest load up to which superlubric (coating intact on the sliding path AND μ_est < 0.02
-//!    at every load up to it) at every sample of the tolerance box; the candidates are ranked
-//!    by it, then the θ window, the direction window, μ_est, contacts ([`rank`]).
-//! 6. **DEM confirmation** ([`confirm`]): the top [`ConfirmParams::designs`] designs of each
-//!    pattern at the confirmation loads and at the corners of their tolerance boxes
-//!    (borderline designs first), independent `slide` runs side by side, one thread each
-//!    (plus, with a protocol shorter than the study's, the design the report recommends once
-//!    with the study's protocol to measure the difference there: [`protocol_check_design`]).
+//!    at every load up to it) at every sample of the tolerance box; then the **ranking**
+//!    ([`ranking::RankStage`]): by it, then the θ window, the direction window, μ_est, contacts
+//!    ([`rank`]), the limits below the ladder where none holds its first load, and with
+//!    `--rank-by yield` by the yield ([`ranking::by_yield`]).
+//! 6. **DEM confirmation** ([`confirm::ConfirmStage`]): per pattern the estimates the DEM is
+//!    compared with, then the top [`ConfirmParams::designs`] designs of each pattern at the
+//!    confirmation loads and at the corners of their tolerance boxes (borderline designs
+//!    first), independent `slide` runs side by side, one thread each (plus, with a protocol
+//!    shorter than the study's, the design the report recommends once with the study's
+//!    protocol to measure the difference there: [`protocol_check_design`]).
 //! 7. **Report data** ([`report_data::ReportDataStage`]): each pattern's answer ([`answer`]),
 //!    the tolerance maps around the answers and, with recipes, the P_crit sweep ([`p_crit`]).
 //! 8. **Yield** ([`yield_stage::YieldStage`], on by default, `design --no-yield` off): per answer
@@ -41,72 +49,52 @@
 //! the global CSVs with sidecars (`crate::present::design_report`, a layer above this one).
 //!
 //! Every stage is stored under the output directory with the inputs that made it
-//! ([`store`]; the records: `inputs.rs`): a re-run with the same `--out-dir` reuses every
-//! finished stage and DEM run, and one with other inputs is refused with the differences
-//! named. Adding a stage: a file with its type (a `run` from the previous stage's output to
-//! its own), its knobs in a params struct of its own (a field of [`DesignParams`]; in a
-//! sibling `<stage>_params.rs`, so that `params.rs` need not import the stage), its events in
-//! [`observer`] (worded by `crate::present::design_report::log`), one
-//! line in [`pipeline::Pipeline`].
+//! ([`store`]; the design's record: `inputs.rs`, each stage's beside it): a re-run with the
+//! same `--out-dir` reuses every finished stage and DEM run, and one with other inputs is
+//! refused with the differences named. Adding a stage: a folder with its stage value and its
+//! params (a field of [`DesignParams`], or derived by the plan), the data it passes on in
+//! [`model`], its events in [`observer`] (worded by `crate::present::design_report::log`),
+//! one line in [`pipeline::Pipeline`], a unit test beside it.
 
-pub mod alpha_scan;
-pub mod alpha_scan_params;
-pub mod answer;
-pub mod answer_yield;
-pub mod below_ladder;
-pub mod best;
 pub mod confirm;
-pub mod confirm_params;
-mod ctx;
-mod dem_entry;
-mod domain;
-pub mod estimate;
 pub mod evaluate;
 mod inputs;
-mod limit;
+pub mod limit;
+pub mod model;
 pub mod observer;
-mod outcome;
-pub mod p_crit;
 pub mod params;
-mod pattern_result;
 pub mod pipeline;
-pub mod rank;
-pub mod recipe_answer;
+pub mod ranking;
 pub mod report_data;
 pub mod robust;
-pub mod robust_searches;
 pub mod screen;
-pub mod screen_params;
 pub mod shortlist;
-pub mod shortlist_params;
+mod stage_env;
 pub mod store;
 pub mod symmetry_words;
-pub mod tolerance_params;
-pub mod trim;
-pub mod walk;
-pub mod yield_params;
-pub mod yield_rank;
 pub mod yield_stage;
 
-pub use dem_entry::DemEntry;
-pub use domain::{
+pub use inputs::inputs;
+pub use limit::LimitKnobs;
+pub use model::{
+    answer, rank, trim, AnswerMap, DemEntry, DesignOutcome, EvalStage, Evaluated, PatternResult,
+    Stop,
+};
+pub use observer::{Event, Observer};
+pub use params::{
+    tolerance_box, AlphaScanParams, ConfirmParams, DesignParams, DesignScene, ScreenStageParams,
+    ShortlistParams, ToleranceParams,
+};
+pub use pipeline::PatternHook;
+pub use ranking::below_ladder;
+pub use report_data::{best, p_crit, recipe_answer};
+pub use screen::domain::{
     cut, default_domain, line_note, theta_note, OutsideDomain, ThetaNote, THETA_STEP_DEG,
     WIDE_DOMAIN_DEG, WIDE_THETA_STEP_DEG,
 };
-pub use inputs::{inputs, screen_params};
-pub use limit::tolerance_box;
-pub use observer::{Event, Observer};
-pub use outcome::DesignOutcome;
-pub use pattern_result::{AnswerMap, EvalStage, Evaluated, PatternResult};
-pub use pipeline::PatternHook;
-pub use store::tag;
-pub use store::Timing;
-pub use walk::Stop;
-
-pub use params::{
-    AlphaScanParams, ConfirmParams, DesignParams, DesignScene, ScreenStageParams, ShortlistParams,
-    ToleranceParams,
-};
+pub use screen::screen_params;
+pub use stage_env::StageEnv;
+pub use store::{tag, Timing};
 
 use anyhow::Result;
 pub use confirm::{dem_params, loads_to_confirm, protocol_check_design, run_name, ProtocolCheck};
@@ -128,4 +116,4 @@ pub fn design(
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod test_design;

@@ -3,10 +3,9 @@
 //! holds no wording: the command's observer words the events
 //! (`crate::present::design_report::log`), a test's records them.
 
-use super::domain::ThetaNote;
-use super::rank::Candidate;
+use super::model::{Candidate, Stop};
+use super::screen::domain::ThetaNote;
 use super::symmetry_words::PairSymmetry;
-use super::Stop;
 use crate::runs::progress::{Progress, Silent};
 use std::path::Path;
 
@@ -149,7 +148,7 @@ pub enum Event<'a> {
         points: u64,
     },
     /// The best recipe's limit is re-evaluated at the coating strengths of
-    /// [`super::p_crit::P_CRIT_SWEEP_GPA`].
+    /// [`super::model::P_CRIT_SWEEP_GPA`].
     PCritSweep {
         /// Pattern (recipe) name.
         pattern: &'a str,
@@ -162,7 +161,7 @@ pub enum Event<'a> {
         summary: &'a crate::study::fab_yield::YieldSummary,
     },
     /// `--rank-by yield`: the estimate's yield of a pattern's top designs begins
-    /// ([`super::yield_rank`]).
+    /// ([`super::ranking::by_yield`]).
     YieldRank {
         /// Pattern name.
         pattern: &'a str,

@@ -1,34 +1,20 @@
 //! [`DesignParams`]: every knob of `superlube design`, as the composition of each stage's own
-//! params (each defined beside its stage) and the knobs the stages share.
+//! params (each defined in its stage's folder) and the knobs the stages share. No stage
+//! imports it: the pipeline's plan ([`super::pipeline::Plan`]) hands each stage its own part
+//! and the shared [`LimitKnobs`].
 
-pub use super::alpha_scan_params::AlphaScanParams;
-pub use super::confirm_params::ConfirmParams;
-pub use super::screen_params::ScreenStageParams;
-pub use super::shortlist_params::ShortlistParams;
-pub use super::tolerance_params::ToleranceParams;
+pub use super::confirm::ConfirmParams;
+pub use super::evaluate::AlphaScanParams;
+use super::limit::LimitKnobs;
+pub use super::limit::ToleranceParams;
+use super::model::AnswerRule;
+pub use super::model::DesignScene;
+pub use super::screen::ScreenStageParams;
+pub use super::shortlist::ShortlistParams;
+use super::yield_stage::YieldStageParams;
 use crate::study::load::Loads;
+use crate::study::tolerance::ToleranceBox;
 use surrogate::friction::FrictionParams;
-
-/// One pattern pair of a design: its name (the pattern, or a scene file's stem; used in file
-/// names), the validated scene (SI, θ = 0), the scene flags that reproduce it on another
-/// command's command line, and the warnings to report.
-#[derive(Debug, Clone)]
-pub struct DesignScene {
-    /// Name used in the report and the file names (`square-tri`, `my_scene`).
-    pub name: String,
-    /// The scene (SI); its `slider.theta` is ignored (θ is swept).
-    pub scene: surrogate::Scene,
-    /// Scene flags reproducing it (`--pattern square-tri --sigma-h-um 0.01`).
-    pub flags: Vec<String>,
-    /// Warnings about the scene (edge overhang…).
-    pub warnings: Vec<String>,
-    /// What `superlube patterns` recorded of it, when it comes from an `index.csv`.
-    pub facts: Option<crate::study::patterns::CandidateFacts>,
-    /// What the design knows of it as a recipe of `design --vary` (why it lies outside the
-    /// validated range; the DEM decides such a recipe, [`super::confirm`]); `None`: not a
-    /// recipe.
-    pub recipe: Option<crate::study::recipe::RecipeFacts>,
-}
 
 /// Every knob of a design (SI inside; angles as the degree decimals the user meant, so that
 /// every reproduction command prints them exactly): each stage's own params, and the knobs the
@@ -43,17 +29,49 @@ pub struct DesignParams {
     pub screen: ScreenStageParams,
     /// The shortlist's ([`super::shortlist`]).
     pub shortlist: ShortlistParams,
-    /// The α scan's, the contact line included ([`super::alpha_scan`]).
+    /// The α scan's, the contact line included ([`super::evaluate::alpha_scan`]).
     pub alpha_scan: AlphaScanParams,
-    /// The friction estimate's knobs ([`super::estimate`]), shared by every stage that
-    /// estimates a limit (the robust search, the DEM's comparisons, the tolerance maps).
+    /// The friction estimate's knobs ([`super::evaluate::estimate`]), shared by every stage
+    /// that estimates a limit (the robust search, the DEM's comparisons, the tolerance maps).
     pub friction: FrictionParams,
-    /// The fabrication tolerance the robust limit holds over ([`super::tolerance_box`]; the
-    /// robust search, the tolerance maps, the DEM's corners and the yield use it).
+    /// The fabrication tolerance the robust limit holds over ([`LimitKnobs::tolerance_box`];
+    /// the robust search, the tolerance maps, the DEM's corners and the yield use it).
     pub tolerance: ToleranceParams,
     /// The DEM confirmation's ([`super::confirm`]).
     pub confirm: ConfirmParams,
     /// The yield of each answer over fabrication ([`super::yield_stage`]); `None`: the stage
-    /// does not run (the default: its DEM decisions take minutes per answer).
-    pub fab_yield: Option<super::yield_params::YieldStageParams>,
+    /// does not run.
+    pub fab_yield: Option<YieldStageParams>,
+}
+
+impl DesignParams {
+    /// The knobs the stages share ([`LimitKnobs`]): the loads, μ_sl, the contact line, the
+    /// estimate's knobs and the tolerance. Cost: a copy of the load list and the seeds.
+    pub fn limit_knobs(&self) -> LimitKnobs {
+        LimitKnobs {
+            loads: self.loads.clone(),
+            mu_superlubric: self.mu_superlubric,
+            line: self.alpha_scan.line,
+            friction: self.friction,
+            tolerance: self.tolerance.clone(),
+        }
+    }
+
+    /// The rule each pattern's answer is decided by ([`LimitKnobs::answer_rule`], the top
+    /// `confirm.designs`). Cost: a copy of the loads.
+    pub fn answer_rule(&self) -> AnswerRule {
+        self.limit_knobs().answer_rule(self.confirm.designs)
+    }
+}
+
+/// The tolerance box of the design's `theta_tol_deg` × `direction_tol_deg` (degrees, ±),
+/// sampled at most `theta_tol_step_deg` / `direction_tol_step_deg` apart.
+pub fn tolerance_box(p: &DesignParams) -> ToleranceBox {
+    let t = &p.tolerance;
+    ToleranceBox::new(
+        t.theta_tol_deg,
+        t.direction_tol_deg,
+        t.theta_tol_step_deg,
+        t.direction_tol_step_deg,
+    )
 }
