@@ -144,6 +144,7 @@ fn bad_yield_flags_name_the_flag() {
         "--yield-confidence",
     );
     run(&["--no-yield", "--yield-samples", "5"], "--no-yield");
+    run(&["--yield-dem-max-runs", "4"], "--yield-dem-max-runs");
     assert!(!out.join("report.md").exists());
     std::fs::remove_dir_all(&d).ok();
 }

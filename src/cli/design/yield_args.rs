@@ -2,7 +2,9 @@
 
 use crate::study::design::yield_stage::RankBy;
 use crate::study::design::yield_stage::YieldStageParams;
-use crate::study::fab_yield::{bound_samples, BadKnob, YieldParams, DEFAULT_RESOLUTION};
+use crate::study::fab_yield::{
+    bound_samples, BadKnob, YieldParams, DEFAULT_MAX_RUNS, DEFAULT_RESOLUTION,
+};
 use anyhow::{bail, Result};
 
 /// The yield stage's flags: `--no-yield` turns it off, the others set its knobs.
@@ -44,6 +46,12 @@ pub struct YieldArgs {
     /// then pooled into its yield (0: none).
     #[arg(long = "yield-dem-check", value_name = "N", default_value_t = 10)]
     pub yield_dem_check: usize,
+    /// With the DEM: most DEM runs per answer's yield, the check's included. Devices still
+    /// undecided when they are spent count at the lower end of what is known (safe, less
+    /// sharp; the log says how far more runs could lift the quote). On rough substrates a sharp
+    /// bound needs about one run per device.
+    #[arg(long = "yield-dem-max-runs", value_name = "N", default_value_t = DEFAULT_MAX_RUNS)]
+    pub yield_dem_max_runs: usize,
     /// What orders each pattern's designs: `worst-case` (the robust limit over the tolerance
     /// box and the searched seeds) or `yield` (the top max(--confirm, 3) designs by the load
     /// at --yield-quantile yield, its confidence bound, by the estimate; the robust order among
@@ -83,6 +91,14 @@ impl YieldArgs {
             Some(BadKnob::Confidence) => bail!("`--yield-confidence`: {g} must lie strictly between 0 and 1"),
             Some(BadKnob::Resolution) | None => {}
         }
+        if self.yield_dem_max_runs < self.yield_dem_check.max(1) {
+            bail!(
+                "`--yield-dem-max-runs`: {} runs cannot hold the check's {} (--yield-dem-check); give at least {}, or --no-yield",
+                self.yield_dem_max_runs,
+                self.yield_dem_check,
+                self.yield_dem_check.max(1)
+            );
+        }
         Ok(Some(YieldStageParams {
             samples,
             quantile: q,
@@ -90,6 +106,7 @@ impl YieldArgs {
             resolution: DEFAULT_RESOLUTION,
             seed: self.yield_seed,
             dem_check: self.yield_dem_check,
+            dem_max_runs: self.yield_dem_max_runs,
             rank_by,
         }))
     }

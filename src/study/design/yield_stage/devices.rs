@@ -86,6 +86,10 @@ pub fn yield_params(
         confidence: y.confidence,
         resolution: y.resolution,
         limit: limit.limit(),
-        dem: dem.map(|d| YieldDem::new(d.dem.clone(), (y.dem_check, None), d.jobs, dem_dir)),
+        dem: dem.map(|d| {
+            let mut dem = YieldDem::new(d.dem.clone(), (y.dem_check, None), d.jobs, dem_dir);
+            dem.max_runs = y.dem_max_runs;
+            dem
+        }),
     }
 }

@@ -20,6 +20,8 @@ pub struct YieldStageParams {
     /// Fresh devices run with the DEM at the quoted load as a check (0: none; ignored without
     /// the DEM).
     pub dem_check: usize,
+    /// Most DEM runs per answer's yield, the check's included (≥ `dem_check`, ≥ 1).
+    pub dem_max_runs: usize,
     /// What orders each pattern's designs ([`RankBy`]).
     pub rank_by: RankBy,
 }

@@ -43,6 +43,7 @@ fn each_answer_gets_its_yield_and_a_rerun_reuses_the_devices() {
             resolution: 0.5,
             seed: 7,
             dem_check: 0,
+            dem_max_runs: 40,
             rank_by: RankBy::WorstCase,
         },
         dem: None,
