@@ -1,13 +1,13 @@
 //! `superlube slurm <command> [its flags] --shards N --out-dir DIR`: checks the sweep command line
 //! exactly as running it would, then writes the Slurm scripts of [`crate::runs::slurm`].
 
-use super::{prepare_sweep, Cli, SweepPlan, SWEEP_COMMANDS};
+use super::sweep_commands::SweepCommands;
 use crate::runs::slurm::{format_time, job, shard_file, valid_time, SlurmParams};
 use crate::runs::{
     meta::Inputs, output::check_outputs, output::Outputs, progress::Progress, progress::Reporter,
 };
 use anyhow::{bail, Context, Result};
-use clap::{CommandFactory, FromArgMatches, Parser};
+use clap::{CommandFactory, Parser};
 use std::path::{Path, PathBuf};
 
 /// Options of `superlube slurm` (they may also follow the sweep command's flags).
@@ -155,29 +155,6 @@ fn word(v: Option<String>, flag: &str) -> Result<Option<String>> {
     Ok(v)
 }
 
-/// Parses and checks a sweep command line (`superlube <words>`) exactly as running it would.
-fn check_sweep(words: &[String]) -> Result<(&'static str, SweepPlan)> {
-    let argv = std::iter::once("superlube".to_string()).chain(words.iter().cloned());
-    let matches = Cli::command().try_get_matches_from(argv).map_err(|e| {
-        anyhow::anyhow!(
-            "{}",
-            e.render()
-                .to_string()
-                .trim_start_matches("error: ")
-                .trim_end()
-        )
-    })?;
-    let cli = Cli::from_arg_matches(&matches).map_err(|e| anyhow::anyhow!("{e}"))?;
-    match prepare_sweep(cli.command)? {
-        Some(p) => Ok(p),
-        None => bail!(
-            "`superlube slurm` runs sweeps: {} (got `{}`)",
-            SWEEP_COMMANDS.join(", "),
-            words.first().map_or("", String::as_str)
-        ),
-    }
-}
-
 /// The absolute, lexically normalised form of `p`.
 fn absolute(p: &Path) -> Result<PathBuf> {
     let abs = std::env::current_dir()
@@ -197,7 +174,7 @@ fn absolute(p: &Path) -> Result<PathBuf> {
 }
 
 /// Runs `superlube slurm`.
-pub fn run(a: Args) -> Result<()> {
+pub fn run(a: Args, sweeps: &SweepCommands) -> Result<()> {
     let (own, rest) = split(&a.command);
     let after = OptsOnly::try_parse_from(&own).map_err(|e| {
         anyhow::anyhow!(
@@ -254,10 +231,10 @@ pub fn run(a: Args) -> Result<()> {
         );
     }
     let command = rest.first().cloned().unwrap_or_default();
-    if !SWEEP_COMMANDS.contains(&command.as_str()) {
+    if !sweeps.names.contains(&command.as_str()) {
         bail!(
             "`superlube slurm` runs sweeps: {} (got `{command}`)",
-            SWEEP_COMMANDS.join(", ")
+            sweeps.names.join(", ")
         );
     }
     let args: Vec<String> = rest[1..].to_vec();
@@ -271,7 +248,7 @@ pub fn run(a: Args) -> Result<()> {
     if !rest.iter().any(|w| w == "--force") {
         words.push("--force".into());
     }
-    let (name, whole) = check_sweep(&words)?;
+    let (name, whole) = (sweeps.check)(&words)?;
     // 2. Enough items for the shards, then task 0's exact command line.
     whole.sweep.shard(
         crate::runs::shard::Shard {
@@ -290,7 +267,7 @@ pub fn run(a: Args) -> Result<()> {
             .to_string_lossy()
             .into(),
     ]);
-    let (_, part) = check_sweep(&task0)?;
+    let (_, part) = (sweeps.check)(&task0)?;
     let files = ["array.sbatch", "merge.sbatch", "submit.sh"].map(|f| dir.join(f));
     check_outputs(&[
         ("--out-dir", Some(&files[0])),

@@ -448,7 +448,7 @@ pub fn write_figures(
     rows: &[PatternRow],
 ) -> Result<()> {
     let changed = wrote.iter().any(|w| w == "patterns.csv");
-    super::redraw(store, outs, wrote, "patterns.png", changed, |path| {
+    super::redraw::redraw(store, outs, wrote, "patterns.png", changed, |path| {
         chart_png(path, &limit_chart(o, rows))
     });
     for i in best_order(o, CONTACT_MAPS) {
@@ -456,7 +456,7 @@ pub fn write_figures(
         // the equilibrium is solved only for a map to redraw
         if changed || !store.path(&rel).exists() {
             if let Some(b) = best_contacts(o, i)? {
-                super::redraw(store, outs, wrote, &rel, true, |path| {
+                super::redraw::redraw(store, outs, wrote, &rel, true, |path| {
                     contact_map_png(path, &b.scene, mn_to_n(b.load_mn), &b.eq)
                 });
             }

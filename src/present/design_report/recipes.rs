@@ -442,7 +442,7 @@ pub fn write_figures(
     let changed = wrote.iter().any(|w| w == "patterns.csv");
     for (k, file) in s.iter().enumerate() {
         if let Some(c) = field_chart(rows, k) {
-            super::redraw(store, outs, wrote, file, changed, |path| {
+            super::redraw::redraw(store, outs, wrote, file, changed, |path| {
                 chart_png(path, &c)
             });
         }

@@ -3,16 +3,10 @@
 //! edge.
 
 use super::pattern;
-use super::plausible::{self, Plausible};
+use super::plausible::{self, plausible_field};
 use super::Scene;
 use crate::error::SceneError;
 use crate::units::{m_to_um, nm_text, significant, um_pair_text, um_text};
-
-/// `v` (user units) checked against the plausible range `p`; the error names `field`.
-pub(crate) fn plausible_field(field: &str, p: &Plausible, v: f64) -> Result<(), SceneError> {
-    p.check(v)
-        .map_err(|why| SceneError::invalid(field, significant(v, 9), &why))
-}
 
 /// Fewer slider spheres than this draw a warning ([`Scene::slider_size_check`]): a centre
 /// sphere and its ring of six in a triangular lattice.
@@ -252,7 +246,7 @@ impl Scene {
 
     /// Checks that a Bravais lattice (no basis, no site file replacing it) keeps its spheres
     /// apart: nearest sites at least one sphere diameter apart (within the relative
-    /// [`pattern::TOUCH_TOL`], 1e-6), for user scenes
+    /// [`super::touch::TOUCH_TOL`], 1e-6), for user scenes
     /// ([`crate::SceneFile::into_scene`]; a test may build denser rails on purpose). Errors
     /// name `slider.lattice` / `substrate.lattice`. O(1).
     pub fn check_lattice_spacing(&self) -> Result<(), SceneError> {
@@ -276,7 +270,7 @@ impl Scene {
             ),
         ] {
             let s = l.min_spacing();
-            if basis.len() <= 1 && sites.is_none() && pattern::overlaps(s, d) {
+            if basis.len() <= 1 && sites.is_none() && super::touch::overlaps(s, d) {
                 return Err(SceneError::invalid(
                     field,
                     format!("{} µm nearest-site spacing", um_text(s)),
