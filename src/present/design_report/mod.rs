@@ -27,6 +27,7 @@
 //! (each pattern's files), [`finish()`] (the global files), `markdown.rs` (`report.md`), `publish.rs`
 //! (the entry points), `notes.rs` (the log lines), `redraw.rs` (a figure drawn when stale).
 
+mod answer_line;
 pub mod charts;
 pub mod commands;
 pub mod data;
