@@ -133,6 +133,8 @@ impl Series {
     }
 }
 
+/// One panel of the diagram in `area`: a line per knob (or a point per method, `by_method`)
+/// of `rows`, the exact strip, the legend at `legend`.
 fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
@@ -147,12 +149,7 @@ fn panel<DB: DrawingBackend>(
             Series::Knob(r.knob)
         }
     };
-    let mut knobs: Vec<Series> = Vec::new();
-    for r in rows {
-        if !knobs.contains(&series_of(r)) {
-            knobs.push(series_of(r));
-        }
-    }
+    let knobs = distinct(rows.iter().map(series_of));
     let costed: Vec<&&WorkPrecisionRow> = rows.iter().filter(|r| r.cost_cpu_s > 0.0).collect();
     let (x0, x1) = cost_range(&costed);
     let pairs: Vec<(f64, f64)> = costed.iter().map(|r| (r.error_rel, r.noise_rel)).collect();
@@ -233,6 +230,17 @@ fn panel<DB: DrawingBackend>(
         .draw()
         .map_err(perr("legend"))?;
     Ok(())
+}
+
+/// The distinct series of `all`, in order of first appearance.
+fn distinct(all: impl Iterator<Item = Series>) -> Vec<Series> {
+    let mut out: Vec<Series> = Vec::new();
+    for k in all {
+        if !out.contains(&k) {
+            out.push(k);
+        }
+    }
+    out
 }
 
 /// The diagram's plotting area: log₁₀ cost against log₁₀ error.
