@@ -8,6 +8,7 @@ use super::transverse::{leaves_crest, lowest};
 use super::FrictionParams;
 use crate::error::SceneError;
 use crate::map::check_slider_stays_on_substrate;
+use crate::scene::Scene;
 use crate::solver::{check_load, Solver};
 use serde::{Deserialize, Serialize};
 
@@ -131,20 +132,7 @@ pub fn estimate_friction_loads(
     params: &FrictionParams,
 ) -> Result<Vec<Result<FrictionEstimate, SceneError>>, SceneError> {
     params.validate()?;
-    if !theta.is_finite() {
-        return Err(SceneError::invalid(
-            "theta_deg",
-            theta.to_degrees(),
-            "must be finite",
-        ));
-    }
-    if !direction.is_finite() {
-        return Err(SceneError::invalid(
-            "alpha_deg",
-            direction.to_degrees(),
-            "the pulling direction must be finite",
-        ));
-    }
+    check_angles(theta, direction)?;
     let scene = solver.scene();
     let e = [direction.cos(), direction.sin()];
     let e_perp = [-e[1], e[0]];
@@ -173,21 +161,7 @@ pub fn estimate_friction_loads(
         (0.0, 0, 0.0)
     };
     // the path, then (where there is one) the path with the search across the pull
-    let reaches = [
-        (0.0, "friction.length_um"),
-        (side, "friction.transverse_um"),
-    ];
-    for &(r, field) in &reaches[..if side > 0.0 { 2 } else { 1 }] {
-        let reach = [r * e_perp[0].abs(), r * e_perp[1].abs()];
-        check_slider_stays_on_substrate(
-            scene,
-            [
-                [end[0].min(0.0) - reach[0], end[1].min(0.0) - reach[1]],
-                [end[0].max(0.0) + reach[0], end[1].max(0.0) + reach[1]],
-            ],
-            field,
-        )?;
-    }
+    check_reaches(scene, end, e_perp, side)?;
 
     let valid: Vec<f64> = loads
         .iter()
@@ -205,21 +179,7 @@ pub fn estimate_friction_loads(
 
     // 3. One equilibrium per sample and load along the path from its start, reduced to the
     //    sums the estimate needs: one path (and pair search) per distinct start.
-    let mut groups: std::collections::BTreeMap<i64, Vec<usize>> = Default::default();
-    for (i, &j) in start.iter().enumerate() {
-        groups.entry(j).or_default().push(i);
-    }
-    let mut solved: Vec<Option<Result<Vec<Sample>, SceneError>>> =
-        valid.iter().map(|_| None).collect();
-    for (&j, members) in &groups {
-        let y = j as f64 * h_side;
-        let group_loads: Vec<f64> = members.iter().map(|&i| valid[i]).collect();
-        let origin = [y * e_perp[0], y * e_perp[1]];
-        let path = solve_samples(solver, theta, origin, e, &group_loads, &s, params);
-        for (&i, r) in members.iter().zip(path) {
-            solved[i] = Some(r);
-        }
-    }
+    let solved = solve_by_start(solver, theta, e, &valid, &start, &s, h_side, params);
     let body = Body::of(solver, params);
     let tilt = TiltResonance::of(scene, params);
     let mut per_valid = start.into_iter().zip(solved).zip(placement_p_max);
@@ -239,6 +199,83 @@ pub fn estimate_friction_loads(
             Ok(est)
         })
         .collect())
+}
+
+/// Errs on a non-finite θ or pulling direction (rad).
+fn check_angles(theta: f64, direction: f64) -> Result<(), SceneError> {
+    if !theta.is_finite() {
+        return Err(SceneError::invalid(
+            "theta_deg",
+            theta.to_degrees(),
+            "must be finite",
+        ));
+    }
+    if !direction.is_finite() {
+        return Err(SceneError::invalid(
+            "alpha_deg",
+            direction.to_degrees(),
+            "the pulling direction must be finite",
+        ));
+    }
+    Ok(())
+}
+
+/// Errs when the slider leaves the substrate along the path to `end` (m), or, with a search
+/// across the pull (`side` > 0, m), along the path swept `side` along `e_perp`.
+fn check_reaches(
+    scene: &Scene,
+    end: [f64; 2],
+    e_perp: [f64; 2],
+    side: f64,
+) -> Result<(), SceneError> {
+    let reaches = [
+        (0.0, "friction.length_um"),
+        (side, "friction.transverse_um"),
+    ];
+    for &(r, field) in &reaches[..if side > 0.0 { 2 } else { 1 }] {
+        let reach = [r * e_perp[0].abs(), r * e_perp[1].abs()];
+        check_slider_stays_on_substrate(
+            scene,
+            [
+                [end[0].min(0.0) - reach[0], end[1].min(0.0) - reach[1]],
+                [end[0].max(0.0) + reach[0], end[1].max(0.0) + reach[1]],
+            ],
+            field,
+        )?;
+    }
+    Ok(())
+}
+
+/// The samples of each `valid` load along the path `s` (m, along `e`) from its start (`start`:
+/// in samples of `h_side` across the pull): one path, and pair search, per distinct start.
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+fn solve_by_start(
+    solver: &Solver,
+    theta: f64,
+    e: [f64; 2],
+    valid: &[f64],
+    start: &[i64],
+    s: &[f64],
+    h_side: f64,
+    params: &FrictionParams,
+) -> Vec<Option<Result<Vec<Sample>, SceneError>>> {
+    let e_perp = [-e[1], e[0]];
+    let mut groups: std::collections::BTreeMap<i64, Vec<usize>> = Default::default();
+    for (i, &j) in start.iter().enumerate() {
+        groups.entry(j).or_default().push(i);
+    }
+    let mut solved: Vec<Option<Result<Vec<Sample>, SceneError>>> =
+        valid.iter().map(|_| None).collect();
+    for (&j, members) in &groups {
+        let y = j as f64 * h_side;
+        let group_loads: Vec<f64> = members.iter().map(|&i| valid[i]).collect();
+        let origin = [y * e_perp[0], y * e_perp[1]];
+        let path = solve_samples(solver, theta, origin, e, &group_loads, s, params);
+        for (&i, r) in members.iter().zip(path) {
+            solved[i] = Some(r);
+        }
+    }
+    solved
 }
 
 /// Transverse forces |F_⊥| (N) up to this fraction of the load W count as none (the round-off
@@ -369,6 +406,50 @@ impl Body {
     }
 }
 
+/// The path-average weights of the n + 1 samples: periodic paths average the n distinct
+/// samples of one period (the last repeats the first); quasi-periodic ones use the trapezoid
+/// rule over [0, L].
+fn path_weights(n: usize, periodic: bool) -> Vec<f64> {
+    (0..=n)
+        .map(|k| match (periodic, k == 0 || k == n) {
+            (true, _) if k == n => 0.0,
+            (true, _) => 1.0 / n as f64,
+            (false, true) => 0.5 / n as f64,
+            (false, false) => 1.0 / n as f64,
+        })
+        .collect()
+}
+
+/// μ and its spread over the starts from the inertial model where the path can stick and
+/// slip: `f` the pull (N) at the samples `smp` (step `h`, m), `k_spring` (N/m) in series.
+#[allow(clippy::too_many_arguments)]
+fn stick_slip_mu(
+    smp: &[Sample],
+    f: &[f64],
+    h: f64,
+    body: &Body,
+    k_spring: f64,
+    params: &FrictionParams,
+    load: f64,
+) -> (f64, f64) {
+    let coat: Vec<f64> = smp.iter().map(|x| x.coating).collect();
+    let (friction, spread) = inertial::ensemble(
+        f,
+        &coat,
+        h,
+        &Inertial {
+            mass: body.mass,
+            gamma: body.gamma,
+            k: k_spring,
+            speed: params.speed,
+            duration: params.slide_time,
+            window_start: params.window_start,
+        },
+        params.starts,
+    );
+    (friction / load, spread / load)
+}
+
 /// Steps 3–4 of the estimate from the solved samples of one load.
 #[allow(clippy::too_many_arguments)]
 fn from_samples(
@@ -386,14 +467,7 @@ fn from_samples(
 ) -> FrictionEstimate {
     // 3. Path averages: periodic paths average the n distinct samples of one period (the last
     //    repeats the first); quasi-periodic ones use the trapezoid rule over [0, L].
-    let weights: Vec<f64> = (0..=n)
-        .map(|k| match (period.is_some(), k == 0 || k == n) {
-            (true, _) if k == n => 0.0,
-            (true, _) => 1.0 / n as f64,
-            (false, true) => 0.5 / n as f64,
-            (false, false) => 1.0 / n as f64,
-        })
-        .collect();
+    let weights = path_weights(n, period.is_some());
     let avg = |f: &dyn Fn(&Sample) -> f64| -> f64 {
         smp.iter().zip(&weights).map(|(x, w)| w * f(x)).sum()
     };
@@ -431,22 +505,7 @@ fn from_samples(
     let (mu_est, mu_est_spread) = if pt.eta <= 1.0 {
         (mu_quasi, 0.0)
     } else {
-        let coat: Vec<f64> = smp.iter().map(|x| x.coating).collect();
-        let (friction, spread) = inertial::ensemble(
-            &f,
-            &coat,
-            h,
-            &Inertial {
-                mass: body.mass,
-                gamma: body.gamma,
-                k: k_spring,
-                speed: params.speed,
-                duration: params.slide_time,
-                window_start: params.window_start,
-            },
-            params.starts,
-        );
-        (friction / load, spread / load)
+        stick_slip_mu(smp, &f, h, body, k_spring, params, load)
     };
     FrictionEstimate {
         theta,
