@@ -176,7 +176,7 @@ pub fn inspect(
 /// Checks the sidecar of the partial file `partial`: there, not complete, and of the same
 /// sweep and shard as this run (`inputs`, `shard`).
 fn check_sidecar(partial: &Path, inputs: &Inputs, shard: Option<&ShardInfo>) -> Result<()> {
-    let sidecar = Sidecar::of(&partial).map_err(|e| {
+    let sidecar = Sidecar::of(partial).map_err(|e| {
         anyhow::anyhow!(
             "`--resume`: {e:#}; cannot tell which inputs {} comes from: delete it to start over",
             partial.display()

@@ -344,19 +344,14 @@ impl Graph {
             .map(|f| names_outside_uses(&f.code))
             .collect();
         let mut edges = BTreeSet::new();
-        for i in 0..g.files.len() {
+        for (i, names) in names_in_code.iter().enumerate() {
             for b in &g.bindings[i] {
                 // a re-export is no edge unless the file's own code names it too; a named module
                 // is none either (the paths through it are); a glob is one to its module
                 if b.name.is_some() && g.modules.contains_key(&b.target) {
                     continue;
                 }
-                if b.public
-                    && !b
-                        .name
-                        .as_ref()
-                        .is_some_and(|n| names_in_code[i].contains(n))
-                {
+                if b.public && !b.name.as_ref().is_some_and(|n| names.contains(n)) {
                     continue;
                 }
                 if let Some(to) = g.resolve(&b.target, 0) {

@@ -284,7 +284,7 @@ mod tests {
         let s = |v: &str| v.to_string();
         let mut d = small(false, 0);
         d.fairness = s("Compared at equal slider area.");
-        d.compared = vec![super::patterns::PatternLine {
+        d.compared = vec![super::super::patterns::PatternLine {
             rank: 1,
             pattern: s("p001"),
             outline: s("disc r=100"),
