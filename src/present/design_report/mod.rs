@@ -1,12 +1,13 @@
 //! The design's final outputs: `report.md` (the answer first), the CSVs behind it, the PNGs —
 //! each with its sidecar, each rewritten only when its bytes change. The design workflow
-//! (`crate::study::design::design`) returns its [`DesignOutcome`]; the command calls [`publish`].
+//! (`crate::study::design::design`) returns its
+//! [`DesignOutcome`](crate::study::design::DesignOutcome); the command calls [`publish`].
 //!
 //! | file | content |
 //! |---|---|
 //! | `report.md` | the answer table (a row per pattern) and a paragraph per answer, how to run each answer, how to read it, how sure (DEM vs estimate), ranking, shortlist, wall times, reproduction commands: `report.md.j2` over [`ReportData`] |
 //! | `answer_<p>.toml` | each answer's scene with its θ set ([`top::answer_toml`]), run by the report's `slide`, `tolerance` and `export-lammps` commands |
-//! | `ranking.csv` | [`RankingRow`] per candidate, best first within each pattern |
+//! | `ranking.csv` | [`RankingRow`](crate::study::design::rank::RankingRow) per candidate, best first within each pattern |
 //! | `shortlist_<p>.csv` | [`ShortlistRow`] per screened θ: coating-intact load, P_max and contacts there, level, kept, evaluated |
 //! | `screen_<p>.csv` | the screen (the `screen` schema; a stage file) |
 //! | `corrugation_<p>.csv` | the α scans of the evaluated θ (the `corrugation` schema) |
