@@ -1,10 +1,16 @@
 #!/usr/bin/env python3
 """Lists the non-test functions over N lines (env N, default 100; `fn` line to closing brace, by
 brace count; test modules and tests.rs / *_tests.rs skipped) under the given roots (default:
-src, surrogate/src, dem/src). Usage: python3 scripts/long-functions.py [ROOT...]"""
+src, surrogate/src, dem/src). Usage: python3 scripts/long-functions.py [--check] [ROOT...]
+With --check it exits 1 when a function outside the PENDING folders is over the limit (the
+limit itself is enforced by tests/architecture, `no_function_over_100_lines`, whose
+LONG_FUNCTIONS_PENDING lists the same folders: being restructured on their own branches)."""
 import re,sys,os
 N=int(os.environ.get('N','100'))
-roots=sys.argv[1:] or ['src','surrogate/src','dem/src']
+PENDING=('src/study/design/','src/cli/design/','src/study/fab_yield/')
+args=sys.argv[1:]
+check='--check' in args
+roots=[a for a in args if a!='--check'] or ['src','surrogate/src','dem/src']
 def strip(line, state):
     # remove strings, chars and comments; state: in block comment / raw string
     out='';i=0
@@ -74,3 +80,7 @@ for root in roots:
                 i+=1
 for r in sorted(res,reverse=True): print(f'{r[0]:5d} {r[1]}:{r[2]} {r[3]}')
 print('total',len(res))
+if check:
+    over=[r for r in res if not r[1].startswith(PENDING)]
+    print(f'outside {", ".join(PENDING)}: {len(over)}')
+    sys.exit(1 if over else 0)

@@ -286,34 +286,9 @@ fn lammps_and_the_rust_dem_agree_with_two_sphere_sizes() {
     );
     let lrows = csv(&dir.join("timeseries.csv"));
     assert_ramp_agrees(&rows, &lrows, 5);
-    let fr = json(&dir.join("rust.json"))["friction_mN"]
-        .as_f64()
-        .unwrap();
-    let fl = deck_friction(&log);
-    eprintln!("two sizes: P_max {pl} / {pr} GPa; friction LAMMPS {fl} / Rust {fr} mN");
-    assert!(fr > 0.3 * 0.5 * 0.05, "the slider must slide: {fr} mN");
-    assert!(
-        (fl - fr).abs() < 0.05 * fr,
-        "friction LAMMPS {fl} vs Rust {fr} mN"
-    );
+    assert_friction_agrees("two sizes", &dir, &log, (pl, pr));
 
-    let out = bin()
-        .arg("lammps-check")
-        .arg(dir.join("contacts.dump"))
-        .arg("--out")
-        .arg(dir.join("check.csv"))
-        .output()
-        .unwrap();
-    assert_ok("lammps-check", &out);
-    let dt = meta["dt_us"].as_f64().unwrap();
-    let mut matched = 0;
-    for f in &csv(&dir.join("check.csv")) {
-        let t = f["step"] * dt;
-        if frame_matches(f, t, &lrows) {
-            matched += 1;
-        }
-    }
-    assert!(matched >= 60, "{matched} frames matched the time series");
+    assert_check_matches(&dir, &meta, &lrows, 60);
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -507,32 +482,7 @@ fn lammps_and_the_rust_dem_agree_with_per_site_sizes() {
     );
     let lrows = csv(&dir.join("timeseries.csv"));
     assert_ramp_agrees(&rows, &lrows, 5);
-    let fr = json(&dir.join("rust.json"))["friction_mN"]
-        .as_f64()
-        .unwrap();
-    let fl = deck_friction(&log);
-    eprintln!("per-site sizes: P_max {pl} / {pr} GPa; friction LAMMPS {fl} / Rust {fr} mN");
-    assert!(fr > 0.3 * 0.5 * 0.05, "the slider must slide: {fr} mN");
-    assert!(
-        (fl - fr).abs() < 0.05 * fr,
-        "friction LAMMPS {fl} vs Rust {fr} mN"
-    );
-    let out = bin()
-        .arg("lammps-check")
-        .arg(dir.join("contacts.dump"))
-        .arg("--out")
-        .arg(dir.join("check.csv"))
-        .output()
-        .unwrap();
-    assert_ok("lammps-check", &out);
-    let dt = meta["dt_us"].as_f64().unwrap();
-    let mut matched = 0;
-    for f in &csv(&dir.join("check.csv")) {
-        let t = f["step"] * dt;
-        if frame_matches(f, t, &lrows) {
-            matched += 1;
-        }
-    }
-    assert!(matched >= 60, "{matched} frames matched the time series");
+    assert_friction_agrees("per-site sizes", &dir, &log, (pl, pr));
+    assert_check_matches(&dir, &meta, &lrows, 60);
     let _ = std::fs::remove_dir_all(&dir);
 }

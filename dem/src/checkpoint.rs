@@ -447,6 +447,19 @@ pub fn load(path: &Path, sim: &mut Sim) -> Result<Vec<Sample>, DemError> {
 /// Why a loaded state cannot be resumed (a non-finite value, a size or index out of range),
 /// or `None`.
 fn inconsistent(s: &crate::system::State, n: usize, nb: usize) -> Option<String> {
+    if let Some(f) = non_finite(s) {
+        return Some(format!(
+            "non-finite value in the {f} (the file holds a state that cannot be resumed)"
+        ));
+    }
+    if !fits(s, n, nb) {
+        return Some("array sizes or indices do not fit the scene".into());
+    }
+    None
+}
+
+/// The first part of the state `s` that holds a non-finite value, or `None`.
+fn non_finite(s: &crate::system::State) -> Option<&'static str> {
     fn finite<const N: usize>(v: &[[f64; N]]) -> bool {
         v.iter().all(|x| x.iter().all(|c| c.is_finite()))
     }
@@ -525,11 +538,13 @@ fn inconsistent(s: &crate::system::State, n: usize, nb: usize) -> Option<String>
                 && s.mark.u.iter().chain(&s.mark.tilt).all(|c| c.is_finite()),
         ),
     ];
-    if let Some((f, _)) = fields.iter().find(|(_, ok)| !ok) {
-        return Some(format!(
-            "non-finite value in the {f} (the file holds a state that cannot be resumed)"
-        ));
-    }
+    fields.iter().find(|(_, ok)| !ok).map(|(f, _)| *f)
+}
+
+/// Whether the array sizes and indices of `s` fit a scene of `n` slider and `nb` substrate
+/// spheres (sorted active and ringing lists, pair indices in range, consistent lengths).
+fn fits(s: &crate::system::State, n: usize, nb: usize) -> bool {
+    let a = &s.act;
     let np = s.pairs.i.len();
     let sizes_ok = s.sub_x.len() == nb
         && s.sub_v.len() == nb
@@ -564,8 +579,5 @@ fn inconsistent(s: &crate::system::State, n: usize, nb: usize) -> Option<String>
             a.sl.binary_search(&s.pairs.i[k as usize]).is_ok()
                 && a.sub.binary_search(&s.pairs.j[k as usize]).is_ok()
         });
-    if !(sizes_ok && idx_ok) {
-        return Some("array sizes or indices do not fit the scene".into());
-    }
-    None
+    sizes_ok && idx_ok
 }

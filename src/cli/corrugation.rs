@@ -1,14 +1,13 @@
 //! `superlube corrugation`: flags → [`crate::study::corrugation::corrugation`] → CSV (streamed)
 //! and line plot, each with its sidecar.
 
-use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
-use super::{checks, SceneArgs, SweepPlan};
+use super::{checks, SceneArgs};
 use crate::plot::figures::corrugation_png;
 use crate::runs::sink::Tee;
 use crate::runs::{
-    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
-    output::SweepRun, progress::Progress, progress::Reporter, sweep::Sweep,
+    meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Progress,
+    progress::Reporter, sweep::Sweep,
 };
 use crate::study::corrugation::{
     check_paths, contact_line, corrugation, estimate, CorrugationParams, Method,
@@ -94,23 +93,7 @@ pub struct Args {
 }
 
 /// A checked `superlube corrugation`, ready to run.
-pub struct Prepared {
-    a: Args,
-    sc: Resolved,
-    params: CorrugationParams,
-    run: SweepRun,
-    estimate: Estimate,
-}
-
-impl Prepared {
-    /// The sweep and its cost (for `superlube slurm`).
-    pub fn plan(&self) -> SweepPlan {
-        SweepPlan {
-            sweep: self.run.sweep.clone(),
-            estimate: self.estimate.clone(),
-        }
-    }
-}
+pub type Prepared = super::prepared::Prepared<Args, CorrugationParams>;
 
 /// Runs `superlube corrugation`.
 pub fn run(a: Args) -> Result<()> {

@@ -107,28 +107,7 @@ pub fn run(a: Args) -> Result<()> {
         .out_dir
         .clone()
         .unwrap_or_else(|| PathBuf::from("figures"));
-    if !(a.theta_step.is_finite() && a.theta_step > 0.0 && a.theta_step <= 30.0) {
-        bail!(
-            "`--theta-step-deg`: {} must be in (0, 30] degrees",
-            a.theta_step
-        );
-    }
-    let (distance, step) = checks::path(a.distance_um, a.step_um)?;
-    let params = FiguresParams {
-        sweep_thetas: checks::thetas(&format!("0:30:{}", a.theta_step))
-            .map_err(|e| anyhow::anyhow!("`--theta-step-deg`: {e}"))?,
-        corrugation: CorrugationParams {
-            load: 0.0,
-            alphas: checks::alphas(&a.alpha)?,
-            line: None,
-            distance,
-            step,
-            method: a.corrugation_method,
-            grid: checks::grid(a.grid)?,
-        },
-        grid: a.grid,
-        groups: a.only.clone(),
-    };
+    let params = figures_params(&a)?;
     check_outputs(&[("--out-dir", Some(&out_dir.join("x.csv")))])?;
     params.estimate().check(a.force)?;
     let rep = Reporter::stderr();
@@ -143,63 +122,93 @@ pub fn run(a: Args) -> Result<()> {
     );
     figures(&params, &rep, &mut |fig, inputs| {
         outs.set_inputs(inputs);
-        let base = out.join(fig.name());
-        let (csv, png) = (with_ext(&base, "csv"), with_ext(&base, "png"));
-        match &fig {
-            Figure::Sweep { scene, rows, .. } => {
-                outs.write(
-                    "--out-dir",
-                    Some(&csv),
-                    csv_bytes(rows),
-                    Some(rows.len() as u64),
-                );
-                outs.attempt("--out-dir", &png, || sweep_png(&png, scene, rows));
-            }
-            Figure::ContactMap {
-                scene, load, eq, ..
-            } => {
-                let rows = ContactRow::all(eq);
-                outs.write(
-                    "--out-dir",
-                    Some(&csv),
-                    csv_bytes(&rows),
-                    Some(rows.len() as u64),
-                );
-                outs.attempt("--out-dir", &png, || {
-                    contact_map_png(&png, scene, *load, eq)
-                });
-            }
-            Figure::Landscape {
-                scene,
-                load,
-                stats,
-                rows,
-                ..
-            } => {
-                outs.write(
-                    "--out-dir",
-                    Some(&csv),
-                    csv_bytes(rows),
-                    Some(rows.len() as u64),
-                );
-                let dz: Vec<f64> = rows.iter().map(|r| r.dz_nm).collect();
-                outs.attempt("--out-dir", &png, || {
-                    landscape_png(&png, scene, *load, stats, &dz)
-                });
-            }
-            Figure::Corrugation { rows, distance, .. } => {
-                outs.write(
-                    "--out-dir",
-                    Some(&csv),
-                    csv_bytes(rows),
-                    Some(rows.len() as u64),
-                );
-                outs.attempt("--out-dir", &png, || {
-                    corrugation_figure_png(&png, rows, *distance)
-                });
-            }
-        }
+        write_figure(&mut outs, &out.join(fig.name()), &fig);
         Ok(())
     })?;
     outs.finish()
+}
+
+/// The figures' parameters from the flags, checked.
+fn figures_params(a: &Args) -> Result<FiguresParams> {
+    if !(a.theta_step.is_finite() && a.theta_step > 0.0 && a.theta_step <= 30.0) {
+        bail!(
+            "`--theta-step-deg`: {} must be in (0, 30] degrees",
+            a.theta_step
+        );
+    }
+    let (distance, step) = checks::path(a.distance_um, a.step_um)?;
+    Ok(FiguresParams {
+        sweep_thetas: checks::thetas(&format!("0:30:{}", a.theta_step))
+            .map_err(|e| anyhow::anyhow!("`--theta-step-deg`: {e}"))?,
+        corrugation: CorrugationParams {
+            load: 0.0,
+            alphas: checks::alphas(&a.alpha)?,
+            line: None,
+            distance,
+            step,
+            method: a.corrugation_method,
+            grid: checks::grid(a.grid)?,
+        },
+        grid: a.grid,
+        groups: a.only.clone(),
+    })
+}
+
+/// Writes figure `fig` as `base.csv` and `base.png`, recorded in `outs`.
+fn write_figure(outs: &mut Outputs, base: &Path, fig: &Figure) {
+    let (csv, png) = (with_ext(base, "csv"), with_ext(base, "png"));
+    match fig {
+        Figure::Sweep { scene, rows, .. } => {
+            outs.write(
+                "--out-dir",
+                Some(&csv),
+                csv_bytes(rows),
+                Some(rows.len() as u64),
+            );
+            outs.attempt("--out-dir", &png, || sweep_png(&png, scene, rows));
+        }
+        Figure::ContactMap {
+            scene, load, eq, ..
+        } => {
+            let rows = ContactRow::all(eq);
+            outs.write(
+                "--out-dir",
+                Some(&csv),
+                csv_bytes(&rows),
+                Some(rows.len() as u64),
+            );
+            outs.attempt("--out-dir", &png, || {
+                contact_map_png(&png, scene, *load, eq)
+            });
+        }
+        Figure::Landscape {
+            scene,
+            load,
+            stats,
+            rows,
+            ..
+        } => {
+            outs.write(
+                "--out-dir",
+                Some(&csv),
+                csv_bytes(rows),
+                Some(rows.len() as u64),
+            );
+            let dz: Vec<f64> = rows.iter().map(|r| r.dz_nm).collect();
+            outs.attempt("--out-dir", &png, || {
+                landscape_png(&png, scene, *load, stats, &dz)
+            });
+        }
+        Figure::Corrugation { rows, distance, .. } => {
+            outs.write(
+                "--out-dir",
+                Some(&csv),
+                csv_bytes(rows),
+                Some(rows.len() as u64),
+            );
+            outs.attempt("--out-dir", &png, || {
+                corrugation_figure_png(&png, rows, *distance)
+            });
+        }
+    }
 }

@@ -1,13 +1,12 @@
 //! `superlube friction`: flags → [`crate::study::friction::friction`] → CSV (streamed) + sidecar.
 
 use super::friction_args::FrictionKnobArgs;
-use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::verdict_args::VerdictArgs;
-use super::{checks, SceneArgs, SweepPlan};
+use super::{checks, SceneArgs};
 use crate::runs::{
-    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
-    output::SweepRun, progress::Reporter, sweep::Sweep,
+    meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Reporter,
+    sweep::Sweep,
 };
 use crate::study::friction::{check, estimate, friction, resonance_note, FrictionSweepParams};
 use crate::study::record;
@@ -71,23 +70,7 @@ pub struct Args {
 }
 
 /// A checked `superlube friction`, ready to run.
-pub struct Prepared {
-    a: Args,
-    sc: Resolved,
-    params: FrictionSweepParams,
-    run: SweepRun,
-    estimate: Estimate,
-}
-
-impl Prepared {
-    /// The sweep and its cost (for `superlube slurm`).
-    pub fn plan(&self) -> SweepPlan {
-        SweepPlan {
-            sweep: self.run.sweep.clone(),
-            estimate: self.estimate.clone(),
-        }
-    }
-}
+pub type Prepared = super::prepared::Prepared<Args, FrictionSweepParams>;
 
 /// Runs `superlube friction`.
 pub fn run(a: Args) -> Result<()> {

@@ -3,14 +3,14 @@
 
 use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
-use super::{checks, SceneArgs, SweepPlan};
+use super::{checks, SceneArgs};
 use crate::plot::figures::{contact_map_png, landscape_png};
 use crate::runs::meta::sidecar_path;
 use crate::runs::resume::is_complete;
 use crate::runs::sink::{csv_bytes, RowSink, Tee};
 use crate::runs::{
-    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
-    output::SweepRun, progress::Progress, progress::Reporter, shard::Shard,
+    meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, output::SweepRun,
+    progress::Progress, progress::Reporter, shard::Shard,
 };
 use crate::study::contacts::{contacts, ContactsParams};
 use crate::study::landscape::{
@@ -76,23 +76,7 @@ pub struct Args {
 }
 
 /// A checked `superlube landscape`, ready to run.
-pub struct Prepared {
-    a: Args,
-    sc: Resolved,
-    params: LandscapeParams,
-    run: SweepRun,
-    estimate: Estimate,
-}
-
-impl Prepared {
-    /// The sweep and its cost (for `superlube slurm`).
-    pub fn plan(&self) -> SweepPlan {
-        SweepPlan {
-            sweep: self.run.sweep.clone(),
-            estimate: self.estimate.clone(),
-        }
-    }
-}
+pub type Prepared = super::prepared::Prepared<Args, LandscapeParams>;
 
 /// Keeps only Δz (nm) of each row, for the heat map.
 struct DzOnly(Vec<f64>);

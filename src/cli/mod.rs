@@ -20,6 +20,7 @@ mod landscape;
 mod merge;
 mod model_args;
 mod patterns;
+mod prepared;
 mod protocol_args;
 mod recipe_args;
 pub mod renamed;
@@ -29,6 +30,8 @@ mod slide;
 mod slurm;
 mod start_args;
 mod sweep_args;
+mod sweep_commands;
+mod sweep_plan;
 pub mod tips;
 mod tolerance;
 mod tolerance_args;
@@ -39,10 +42,11 @@ mod yield_cmd;
 
 pub use crate::study::range::parse_list_or_range;
 pub use scene_args::{SceneArgs, SceneOverrides};
+pub use sweep_plan::SweepPlan;
 
-use crate::runs::{budget::Estimate, sweep::Sweep};
-use anyhow::Result;
-use clap::{Parser, Subcommand};
+use anyhow::{bail, Result};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
+use sweep_commands::SweepCommands;
 
 /// superlube: fast screening and DEM confirmation of patterned superlubric interfaces.
 ///
@@ -97,18 +101,15 @@ enum Command {
     Slurm(slurm::Args),
 }
 
-/// A checked sweep command: its items and cost (what `superlube slurm` needs to cut it).
-#[derive(Debug, Clone)]
-pub struct SweepPlan {
-    /// The sweep's items.
-    pub sweep: Sweep,
-    /// Cost of the part this command line computes (its shard).
-    pub estimate: Estimate,
-}
-
 /// The sweep commands (those with `--shard`/`--resume`, which `superlube slurm` runs); each has
 /// an arm in [`prepare_sweep`].
 const SWEEP_COMMANDS: [&str; 4] = ["screen", "landscape", "corrugation", "friction"];
+
+/// The sweep commands as `superlube slurm` sees them.
+const SWEEPS: SweepCommands = SweepCommands {
+    names: &SWEEP_COMMANDS,
+    check: check_sweep,
+};
 
 /// Every check of a sweep command line (`screen`, `landscape`, `corrugation`, `friction`), as running it
 /// would do them, without running it. `Ok(None)`: not a sweep command.
@@ -120,6 +121,29 @@ fn prepare_sweep(command: Command) -> Result<Option<(&'static str, SweepPlan)>> 
         Command::Friction(a) => ("friction", friction::prepare(a)?.plan()),
         _ => return Ok(None),
     }))
+}
+
+/// Parses and checks a sweep command line (`superlube <words>`) exactly as running it would.
+fn check_sweep(words: &[String]) -> Result<(&'static str, SweepPlan)> {
+    let argv = std::iter::once("superlube".to_string()).chain(words.iter().cloned());
+    let matches = Cli::command().try_get_matches_from(argv).map_err(|e| {
+        anyhow::anyhow!(
+            "{}",
+            e.render()
+                .to_string()
+                .trim_start_matches("error: ")
+                .trim_end()
+        )
+    })?;
+    let cli = Cli::from_arg_matches(&matches).map_err(|e| anyhow::anyhow!("{e}"))?;
+    match prepare_sweep(cli.command)? {
+        Some(p) => Ok(p),
+        None => bail!(
+            "`superlube slurm` runs sweeps: {} (got `{}`)",
+            SWEEP_COMMANDS.join(", "),
+            words.first().map_or("", String::as_str)
+        ),
+    }
 }
 
 /// Runs the parsed command line.
@@ -141,7 +165,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::LammpsCheck(a) => lammps_check::run(a),
         Command::Merge(a) => merge::run(a),
         Command::Patterns(a) => patterns::run(a),
-        Command::Slurm(a) => slurm::run(a),
+        Command::Slurm(a) => slurm::run(a, &SWEEPS),
     };
     r.map_err(inputs::error_with_flags)
 }

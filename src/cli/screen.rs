@@ -1,12 +1,11 @@
 //! `superlube screen`: flags → [`crate::study::screen::screen`] → CSV (streamed) + sidecar.
 
-use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
-use super::{checks, SceneArgs, SweepPlan};
+use super::{checks, SceneArgs};
 use crate::runs::sink::csv_bytes;
 use crate::runs::{
-    budget::Estimate, meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs,
-    output::SweepRun, progress::Reporter, sweep::Sweep,
+    meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Reporter,
+    sweep::Sweep,
 };
 use crate::study::contacts::{contacts, ContactsParams};
 use crate::study::record;
@@ -75,23 +74,7 @@ pub struct Args {
 }
 
 /// A checked `superlube screen`, ready to run.
-pub struct Prepared {
-    a: Args,
-    sc: Resolved,
-    params: ScreenParams,
-    run: SweepRun,
-    estimate: Estimate,
-}
-
-impl Prepared {
-    /// The sweep and its cost (for `superlube slurm`).
-    pub fn plan(&self) -> SweepPlan {
-        SweepPlan {
-            sweep: self.run.sweep.clone(),
-            estimate: self.estimate.clone(),
-        }
-    }
-}
+pub type Prepared = super::prepared::Prepared<Args, ScreenParams>;
 
 /// Runs `superlube screen`.
 pub fn run(a: Args) -> Result<()> {

@@ -1,13 +1,14 @@
 //! `superlube slurm <command> [its flags] --shards N --out-dir DIR`: checks the sweep command line
 //! exactly as running it would, then writes the Slurm scripts of [`crate::runs::slurm`].
 
-use super::{prepare_sweep, Cli, SweepPlan, SWEEP_COMMANDS};
-use crate::runs::slurm::{format_time, job, shard_file, valid_time, SlurmParams};
+use super::sweep_commands::SweepCommands;
+use super::sweep_plan::SweepPlan;
+use crate::runs::slurm::{format_time, job, shard_file, valid_time, SlurmJob, SlurmParams};
 use crate::runs::{
     meta::Inputs, output::check_outputs, output::Outputs, progress::Progress, progress::Reporter,
 };
 use anyhow::{bail, Context, Result};
-use clap::{CommandFactory, FromArgMatches, Parser};
+use clap::{CommandFactory, Parser};
 use std::path::{Path, PathBuf};
 
 /// Options of `superlube slurm` (they may also follow the sweep command's flags).
@@ -155,29 +156,6 @@ fn word(v: Option<String>, flag: &str) -> Result<Option<String>> {
     Ok(v)
 }
 
-/// Parses and checks a sweep command line (`superlube <words>`) exactly as running it would.
-fn check_sweep(words: &[String]) -> Result<(&'static str, SweepPlan)> {
-    let argv = std::iter::once("superlube".to_string()).chain(words.iter().cloned());
-    let matches = Cli::command().try_get_matches_from(argv).map_err(|e| {
-        anyhow::anyhow!(
-            "{}",
-            e.render()
-                .to_string()
-                .trim_start_matches("error: ")
-                .trim_end()
-        )
-    })?;
-    let cli = Cli::from_arg_matches(&matches).map_err(|e| anyhow::anyhow!("{e}"))?;
-    match prepare_sweep(cli.command)? {
-        Some(p) => Ok(p),
-        None => bail!(
-            "`superlube slurm` runs sweeps: {} (got `{}`)",
-            SWEEP_COMMANDS.join(", "),
-            words.first().map_or("", String::as_str)
-        ),
-    }
-}
-
 /// The absolute, lexically normalised form of `p`.
 fn absolute(p: &Path) -> Result<PathBuf> {
     let abs = std::env::current_dir()
@@ -196,10 +174,28 @@ fn absolute(p: &Path) -> Result<PathBuf> {
     Ok(out)
 }
 
-/// Runs `superlube slurm`.
-pub fn run(a: Args) -> Result<()> {
-    let (own, rest) = split(&a.command);
-    let after = OptsOnly::try_parse_from(&own).map_err(|e| {
+/// `superlube slurm`'s own options, checked: the job directory (absolute), the shard and CPU
+/// counts and the `#SBATCH` words.
+struct Checked {
+    /// The options as given (the time limits are read from them).
+    o: Opts,
+    /// The job directory, absolute.
+    dir: PathBuf,
+    /// Array tasks.
+    shards: usize,
+    /// CPUs per task.
+    threads: usize,
+    partition: Option<String>,
+    account: Option<String>,
+    mem: Option<String>,
+    job_name: Option<String>,
+}
+
+/// Parses `own` (the options after the sweep command) and checks every option of `superlube
+/// slurm` (`before`: those before it), and that `rest` (the sweep command line) leaves
+/// `--shard` and `--resume` to the scripts.
+fn checked_options(before: Opts, own: &[String], rest: &[String]) -> Result<Checked> {
+    let after = OptsOnly::try_parse_from(own).map_err(|e| {
         anyhow::anyhow!(
             "{}",
             e.render()
@@ -208,7 +204,7 @@ pub fn run(a: Args) -> Result<()> {
                 .trim_end()
         )
     })?;
-    let o = combine(a.opts, after.opts)?;
+    let o = combine(before, after.opts)?;
     let Some(out) = o.out.clone() else {
         bail!("`--out-dir DIR` is required: the job directory for the scripts, shards, logs and the merged CSV");
     };
@@ -224,10 +220,10 @@ pub fn run(a: Args) -> Result<()> {
             }
         }
     }
-    let partition = word(o.partition, "--partition")?;
-    let account = word(o.account, "--account")?;
-    let mem = word(o.mem, "--mem")?;
-    let job_name = word(o.job_name, "--job-name")?;
+    let partition = word(o.partition.clone(), "--partition")?;
+    let account = word(o.account.clone(), "--account")?;
+    let mem = word(o.mem.clone(), "--mem")?;
+    let job_name = word(o.job_name.clone(), "--job-name")?;
     for flag in ["--shard", "--resume"] {
         if rest
             .iter()
@@ -236,7 +232,22 @@ pub fn run(a: Args) -> Result<()> {
             bail!("`{flag}` is set by the scripts (task i runs --shard i/N --resume); give `--shards N` instead");
         }
     }
-    let dir = absolute(&out)?;
+    Ok(Checked {
+        dir: job_dir(&out)?,
+        o,
+        shards,
+        threads,
+        partition,
+        account,
+        mem,
+        job_name,
+    })
+}
+
+/// The job directory `out`, absolute: an error when it is a file or has characters the
+/// `#SBATCH --output` lines cannot take.
+fn job_dir(out: &Path) -> Result<PathBuf> {
+    let dir = absolute(out)?;
     if dir.exists() && !dir.is_dir() {
         bail!(
             "`--out-dir`: {} exists and is not a directory",
@@ -253,25 +264,35 @@ pub fn run(a: Args) -> Result<()> {
             dir.display()
         );
     }
+    Ok(dir)
+}
+
+/// Checks the sweep command line `rest` as running it would: whole, then cut into `shards`
+/// (enough items), then task 0's exact command line. The command's name and task 0's plan.
+fn check_tasks(
+    sweeps: &SweepCommands,
+    rest: &[String],
+    dir: &Path,
+    shards: usize,
+) -> Result<(&'static str, SweepPlan)> {
     let command = rest.first().cloned().unwrap_or_default();
-    if !SWEEP_COMMANDS.contains(&command.as_str()) {
+    if !sweeps.names.contains(&command.as_str()) {
         bail!(
             "`superlube slurm` runs sweeps: {} (got `{command}`)",
-            SWEEP_COMMANDS.join(", ")
+            sweeps.names.join(", ")
         );
     }
-    let args: Vec<String> = rest[1..].to_vec();
     // 1. The sweep command as the user gave it, on its own (the same errors as running it; the
     //    size guard is left to step 2: each task is held to it for its own shard).
-    let mut words = rest.clone();
+    let mut words = rest.to_vec();
     words.extend([
         "--out".into(),
-        shard_file(&dir, &command, 0, 1).to_string_lossy().into(),
+        shard_file(dir, &command, 0, 1).to_string_lossy().into(),
     ]);
     if !rest.iter().any(|w| w == "--force") {
         words.push("--force".into());
     }
-    let (name, whole) = check_sweep(&words)?;
+    let (name, whole) = (sweeps.check)(&words)?;
     // 2. Enough items for the shards, then task 0's exact command line.
     whole.sweep.shard(
         crate::runs::shard::Shard {
@@ -280,53 +301,31 @@ pub fn run(a: Args) -> Result<()> {
         },
         "--shards",
     )?;
-    let mut task0 = rest.clone();
+    let mut task0 = rest.to_vec();
     task0.extend([
         "--shard".into(),
         format!("0/{shards}"),
         "--resume".into(),
         "--out".into(),
-        shard_file(&dir, &command, 0, shards)
+        shard_file(dir, &command, 0, shards)
             .to_string_lossy()
             .into(),
     ]);
-    let (_, part) = check_sweep(&task0)?;
-    let files = ["array.sbatch", "merge.sbatch", "submit.sh"].map(|f| dir.join(f));
-    check_outputs(&[
-        ("--out-dir", Some(&files[0])),
-        ("--out-dir (merge.sbatch)", Some(&files[1])),
-        ("--out-dir (submit.sh)", Some(&files[2])),
-    ])?;
-    let est = part.estimate.seconds_on(threads);
-    let time = o
-        .time
-        .clone()
-        .unwrap_or_else(|| format_time((4.0 * est).max(1800.0)));
-    let p = SlurmParams {
-        command: name.to_string(),
-        args,
-        shards,
-        threads,
-        time: time.clone(),
-        merge_time: o.merge_time.clone().unwrap_or_else(|| "01:00:00".into()),
-        partition,
-        account,
-        mem,
-        job_name: job_name.unwrap_or_else(|| format!("superlube-{name}")),
-        dir: dir.clone(),
-        workdir: std::env::current_dir()?,
-        binary: std::env::current_exe()
-            .and_then(|p| p.canonicalize())
-            .context("locating the superlube binary")?,
-    };
-    let j = job(&p);
+    let (_, part) = (sweeps.check)(&task0)?;
+    Ok((name, part))
+}
+
+/// Writes the job's scripts `files` (array, merge, submit) with their sidecars, and makes its
+/// `shards/` and `logs/` folders.
+fn write_job(p: &SlurmParams, files: &[PathBuf; 3]) -> Result<SlurmJob> {
+    let j = job(p);
     for sub in ["shards", "logs"] {
-        std::fs::create_dir_all(dir.join(sub))
-            .with_context(|| format!("creating {}", dir.join(sub).display()))?;
+        std::fs::create_dir_all(p.dir.join(sub))
+            .with_context(|| format!("creating {}", p.dir.join(sub).display()))?;
     }
     let mut outs = Outputs::new(
         Inputs {
-            workflow: format!("slurm/{name}"),
+            workflow: format!("slurm/{}", p.command),
             scene: None,
             params: serde_json::json!({
                 "command": std::iter::once(p.command.clone()).chain(p.args.iter().cloned()).collect::<Vec<_>>(),
@@ -351,6 +350,45 @@ pub fn run(a: Args) -> Result<()> {
         }
     }
     outs.finish()?;
+    Ok(j)
+}
+
+/// Runs `superlube slurm`.
+pub fn run(a: Args, sweeps: &SweepCommands) -> Result<()> {
+    let (own, rest) = split(&a.command);
+    let c = checked_options(a.opts, &own, &rest)?;
+    let dir = c.dir.clone();
+    let (name, part) = check_tasks(sweeps, &rest, &dir, c.shards)?;
+    let files = ["array.sbatch", "merge.sbatch", "submit.sh"].map(|f| dir.join(f));
+    check_outputs(&[
+        ("--out-dir", Some(&files[0])),
+        ("--out-dir (merge.sbatch)", Some(&files[1])),
+        ("--out-dir (submit.sh)", Some(&files[2])),
+    ])?;
+    let (shards, threads) = (c.shards, c.threads);
+    let est = part.estimate.seconds_on(threads);
+    let time =
+        c.o.time
+            .clone()
+            .unwrap_or_else(|| format_time((4.0 * est).max(1800.0)));
+    let p = SlurmParams {
+        command: name.to_string(),
+        args: rest[1..].to_vec(),
+        shards,
+        threads,
+        time: time.clone(),
+        merge_time: c.o.merge_time.clone().unwrap_or_else(|| "01:00:00".into()),
+        partition: c.partition,
+        account: c.account,
+        mem: c.mem,
+        job_name: c.job_name.unwrap_or_else(|| format!("superlube-{name}")),
+        dir: dir.clone(),
+        workdir: std::env::current_dir()?,
+        binary: std::env::current_exe()
+            .and_then(|p| p.canonicalize())
+            .context("locating the superlube binary")?,
+    };
+    let j = write_job(&p, &files)?;
     let rep = Reporter::stderr();
     rep.note(&format!(
         "wrote {} ({} array tasks × {} CPUs, time limit {} per task; estimated {:.0} s per shard), {} and {}\n\

@@ -3,6 +3,7 @@
 
 use super::design::STUDY_LOADS;
 use super::friction_args::FrictionKnobArgs;
+use super::scene_args::Resolved;
 use super::tolerance_args::ToleranceArgs;
 use super::verdict_args::VerdictArgs;
 use super::{checks, SceneArgs};
@@ -14,7 +15,7 @@ use crate::runs::{
 };
 use crate::study::record;
 use crate::study::rows::label;
-use crate::study::tolerance::{map, LimitParams, MapParams};
+use crate::study::tolerance::{map, LimitParams, MapParams, ToleranceRow};
 use anyhow::{bail, Result};
 use serde_json::json;
 use std::path::PathBuf;
@@ -119,42 +120,14 @@ pub fn run(a: Args) -> Result<()> {
     if loads.windows(2).any(|w| w[1] <= w[0]) {
         bail!("`--load-mn`: loads must be strictly increasing");
     }
-    let thetas = grid(
-        a.theta_range,
-        a.theta_points,
-        "--theta-range-deg",
-        "--theta-points",
-    )?;
-    let dirs = grid(
-        a.direction_range,
-        a.direction_points,
-        "--direction-range-deg",
-        "--direction-points",
-    )?;
-    let (theta_tol, direction_tol) = a.tol.checked()?;
-    if theta_tol > a.theta_range || direction_tol > a.direction_range {
-        bail!(
-            "the tolerance box (`--theta-tol-deg` {}, `--direction-tol-deg` {}) must lie on the map (`--theta-range-deg` {}, `--direction-range-deg` {})",
-            theta_tol, direction_tol, a.theta_range, a.direction_range
-        );
-    }
+    let (thetas, dirs, (theta_tol, direction_tol)) = offsets(&a)?;
     a.verdict.mu_superlubric()?;
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
     knobs.validate()?;
     let sc = a.scene.resolve(a.theta)?;
     let theta_deg = label(rad_to_deg(sc.scene.slider.theta));
-    let direction_deg = match (a.alpha, a.direction_deg) {
-        (Some(al), None) => {
-            checks::alpha(al)?;
-            checks::line_for(&sc.scene, line)?;
-            let l = crate::study::friction::line_at(&sc.scene, sc.scene.slider.theta, line);
-            label(rad_to_deg(l.angle) + al)
-        }
-        (None, Some(d)) if d.is_finite() => d,
-        (None, Some(d)) => bail!("`--direction-deg`: {d} is not a finite angle"),
-        _ => bail!("give the nominal pulling direction: `--alpha-deg DEG` (from the contact line) or `--direction-deg DEG` (from x)"),
-    };
+    let direction_deg = nominal_direction(&a, &sc, line)?;
     let csv = a.out.join("map.csv");
     let png = a.out.join("map.png");
     std::fs::create_dir_all(&a.out)
@@ -187,25 +160,13 @@ pub fn run(a: Args) -> Result<()> {
         "tolerance: {n} points ({paths} load estimates) in {:.1} s",
         t0.elapsed().as_secs_f64()
     ));
-    let mut recorded = scene_file(&sc.scene);
-    recorded.slider.theta_deg = Some(theta_deg);
     let mut outs = Outputs::new(
-        Inputs {
-            workflow: "tolerance".into(),
-            scene: Some(recorded),
-            params: json!({
-                "theta_deg": theta_deg,
-                "direction_deg": direction_deg,
-                "theta_offsets_deg": record::axis(&params.theta_offsets_deg),
-                "direction_offsets_deg": record::axis(&params.direction_offsets_deg),
-                "theta_tol_deg": theta_tol,
-                "direction_tol_deg": direction_tol,
-                "load_mN": params.limit.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
-                "mu_superlubric": a.verdict.mu_superlubric,
-                "line_deg": line.map(rad_to_deg),
-                "friction": record::friction_knobs(&params.limit.friction),
-            }),
-        },
+        record_inputs(
+            &sc,
+            &params,
+            (theta_tol, direction_tol),
+            a.verdict.mu_superlubric,
+        ),
         sc.warnings.clone(),
     );
     outs.write(
@@ -217,26 +178,11 @@ pub fn run(a: Args) -> Result<()> {
     let nominal = rows
         .iter()
         .find(|r| r.theta_offset_deg == 0.0 && r.direction_offset_deg == 0.0);
-    let box_min = rows
-        .iter()
-        .filter(|r| {
-            r.theta_offset_deg.abs() <= theta_tol + 1e-9
-                && r.direction_offset_deg.abs() <= direction_tol + 1e-9
-        })
-        .map(|r| r.superlubric_to_mN)
-        .fold(f64::INFINITY, f64::min);
-    let title = format!(
-        "{}: superlubric limit around θ = {}°, direction {}° (box ±{}° × ±{}°: {} mN)",
-        sc.scene.pattern,
-        theta_deg,
-        direction_deg,
-        theta_tol,
-        direction_tol,
-        if box_min.is_finite() {
-            format!("{box_min}")
-        } else {
-            "–".into()
-        }
+    let (title, box_min) = title(
+        &sc,
+        &rows,
+        (theta_deg, direction_deg),
+        (theta_tol, direction_tol),
     );
     outs.attempt("--out-dir", &png, || {
         tolerance_png(
@@ -259,4 +205,107 @@ pub fn run(a: Args) -> Result<()> {
         ));
     }
     outs.finish()
+}
+
+/// The map's θ and direction offsets (degrees) and the tolerance box (±θ, ±direction), checked
+/// to lie on the map.
+#[allow(clippy::type_complexity)]
+fn offsets(a: &Args) -> Result<(Vec<f64>, Vec<f64>, (f64, f64))> {
+    let thetas = grid(
+        a.theta_range,
+        a.theta_points,
+        "--theta-range-deg",
+        "--theta-points",
+    )?;
+    let dirs = grid(
+        a.direction_range,
+        a.direction_points,
+        "--direction-range-deg",
+        "--direction-points",
+    )?;
+    let (theta_tol, direction_tol) = a.tol.checked()?;
+    if theta_tol > a.theta_range || direction_tol > a.direction_range {
+        bail!(
+            "the tolerance box (`--theta-tol-deg` {}, `--direction-tol-deg` {}) must lie on the map (`--theta-range-deg` {}, `--direction-range-deg` {})",
+            theta_tol, direction_tol, a.theta_range, a.direction_range
+        );
+    }
+    Ok((thetas, dirs, (theta_tol, direction_tol)))
+}
+
+/// The nominal pulling direction (degrees from x): `--direction-deg`, or `--alpha-deg` from the
+/// contact line at the scene's θ (`line`: a fixed contact-line angle, rad).
+fn nominal_direction(a: &Args, sc: &Resolved, line: Option<f64>) -> Result<f64> {
+    Ok(match (a.alpha, a.direction_deg) {
+    (Some(al), None) => {
+        checks::alpha(al)?;
+        checks::line_for(&sc.scene, line)?;
+        let l = crate::study::friction::line_at(&sc.scene, sc.scene.slider.theta, line);
+        label(rad_to_deg(l.angle) + al)
+    }
+    (None, Some(d)) if d.is_finite() => d,
+    (None, Some(d)) => bail!("`--direction-deg`: {d} is not a finite angle"),
+    _ => bail!("give the nominal pulling direction: `--alpha-deg DEG` (from the contact line) or `--direction-deg DEG` (from x)"),
+})
+}
+
+/// The sidecars' record of the map: the scene at its θ and the map's parameters.
+fn record_inputs(
+    sc: &Resolved,
+    params: &MapParams,
+    (theta_tol, direction_tol): (f64, f64),
+    mu_superlubric: f64,
+) -> Inputs {
+    let (theta_deg, direction_deg, line) =
+        (params.theta_deg, params.direction_deg, params.limit.line);
+    let mut recorded = scene_file(&sc.scene);
+    recorded.slider.theta_deg = Some(theta_deg);
+    Inputs {
+        workflow: "tolerance".into(),
+        scene: Some(recorded),
+        params: json!({
+            "theta_deg": theta_deg,
+            "direction_deg": direction_deg,
+            "theta_offsets_deg": record::axis(&params.theta_offsets_deg),
+            "direction_offsets_deg": record::axis(&params.direction_offsets_deg),
+            "theta_tol_deg": theta_tol,
+            "direction_tol_deg": direction_tol,
+            "load_mN": params.limit.loads.iter().map(|&w| label(n_to_mn(w))).collect::<Vec<_>>(),
+            "mu_superlubric": mu_superlubric,
+            "line_deg": line.map(rad_to_deg),
+            "friction": record::friction_knobs(&params.limit.friction),
+        }),
+    }
+}
+
+/// The map's title, with the least limit over the tolerance box (mN; infinite without a point
+/// in it).
+fn title(
+    sc: &Resolved,
+    rows: &[ToleranceRow],
+    (theta_deg, direction_deg): (f64, f64),
+    (theta_tol, direction_tol): (f64, f64),
+) -> (String, f64) {
+    let box_min = rows
+        .iter()
+        .filter(|r| {
+            r.theta_offset_deg.abs() <= theta_tol + 1e-9
+                && r.direction_offset_deg.abs() <= direction_tol + 1e-9
+        })
+        .map(|r| r.superlubric_to_mN)
+        .fold(f64::INFINITY, f64::min);
+    let title = format!(
+        "{}: superlubric limit around θ = {}°, direction {}° (box ±{}° × ±{}°: {} mN)",
+        sc.scene.pattern,
+        theta_deg,
+        direction_deg,
+        theta_tol,
+        direction_tol,
+        if box_min.is_finite() {
+            format!("{box_min}")
+        } else {
+            "–".into()
+        }
+    );
+    (title, box_min)
 }

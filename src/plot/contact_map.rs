@@ -31,36 +31,12 @@ pub struct ContactMapData {
 /// bounding square.
 pub fn contact_map(path: &Path, data: &ContactMapData) -> Result<()> {
     let r = data.sphere_radius_um;
-    let mut lo = [f64::INFINITY; 2];
-    let mut hi = [f64::NEG_INFINITY; 2];
-    for p in &data.slider_um {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    if !lo[0].is_finite() {
-        lo = [-1.0, -1.0];
-        hi = [1.0, 1.0];
-    }
-    let cx = 0.5 * (lo[0] + hi[0]);
-    let cy = 0.5 * (lo[1] + hi[1]);
-    let half = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]) + 2.0 * r;
+    let (cx, cy, half) = view(data);
     let (xr, yr) = ((cx - half)..(cx + half), (cy - half)..(cy + half));
     let plot_px = 820.0;
     let px_per_um = plot_px / (2.0 * half);
     let rad_px = ((r * px_per_um).round() as i32).max(1);
-    let (p_lo, p_hi) = data
-        .contacts
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
-            (a.min(c.1), b.max(c.1))
-        });
-    let (p_lo, p_hi) = if p_lo.is_finite() {
-        (p_lo, if p_hi > p_lo { p_hi } else { p_lo + 0.1 })
-    } else {
-        (0.0, 1.0)
-    };
+    let (p_lo, p_hi) = pressure_range(data);
     png_atomic(path, (1150, 960), |root| {
         let (left, right) = root.split_horizontally(960);
         let mut chart = ChartBuilder::on(&left)
@@ -151,4 +127,42 @@ pub fn contact_map(path: &Path, data: &ContactMapData) -> Result<()> {
         colour_bar(&right, p_lo, p_hi, "contact pressure p0 (GPa)", 50)?;
         Ok(())
     })
+}
+
+/// The view: the centre (µm) and half-width (µm) of the slider's bounding square, with a
+/// sphere diameter of margin.
+fn view(data: &ContactMapData) -> (f64, f64, f64) {
+    let r = data.sphere_radius_um;
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for p in &data.slider_um {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !lo[0].is_finite() {
+        lo = [-1.0, -1.0];
+        hi = [1.0, 1.0];
+    }
+    let cx = 0.5 * (lo[0] + hi[0]);
+    let cy = 0.5 * (lo[1] + hi[1]);
+    let half = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]) + 2.0 * r;
+    (cx, cy, half)
+}
+
+/// The colour bar's range of contact pressures p0 (GPa): the contacts' (at least 0.1 GPa wide),
+/// 0..1 without contacts.
+fn pressure_range(data: &ContactMapData) -> (f64, f64) {
+    let (p_lo, p_hi) = data
+        .contacts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
+            (a.min(c.1), b.max(c.1))
+        });
+    if p_lo.is_finite() {
+        (p_lo, if p_hi > p_lo { p_hi } else { p_lo + 0.1 })
+    } else {
+        (0.0, 1.0)
+    }
 }

@@ -53,18 +53,7 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
             map.origin[1] + i * map.da[1] + j * map.db[1],
         )
     };
-    let mut xr = (f64::INFINITY, f64::NEG_INFINITY);
-    let mut yr = (f64::INFINITY, f64::NEG_INFINITY);
-    for (i, j) in [
-        (-0.5, -0.5),
-        (ni as f64 - 0.5, -0.5),
-        (-0.5, nj as f64 - 0.5),
-        (ni as f64 - 0.5, nj as f64 - 0.5),
-    ] {
-        let p = pt(i, j);
-        xr = (xr.0.min(p.0), xr.1.max(p.0));
-        yr = (yr.0.min(p.1), yr.1.max(p.1));
-    }
+    let (xr, yr) = extent(ni, nj, &pt);
     // Equal aspect: plot area width/height follows the data aspect (square for free axes).
     let aspect = if map.free_aspect {
         1.0
@@ -137,6 +126,24 @@ pub fn heat_map(path: &Path, map: &HeatMap) -> Result<()> {
         colour_bar(&right, lo, hi, &map.value_label, 12)?;
         Ok(())
     })
+}
+
+/// The x and y ranges (plot units) of the `ni` × `nj` grid whose point (i, j) is at `pt(i, j)`:
+/// the corners of its outer tiles.
+fn extent(ni: usize, nj: usize, pt: &dyn Fn(f64, f64) -> (f64, f64)) -> ((f64, f64), (f64, f64)) {
+    let mut xr = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut yr = (f64::INFINITY, f64::NEG_INFINITY);
+    for (i, j) in [
+        (-0.5, -0.5),
+        (ni as f64 - 0.5, -0.5),
+        (-0.5, nj as f64 - 0.5),
+        (ni as f64 - 0.5, nj as f64 - 0.5),
+    ] {
+        let p = pt(i, j);
+        xr = (xr.0.min(p.0), xr.1.max(p.0));
+        yr = (yr.0.min(p.1), yr.1.max(p.1));
+    }
+    (xr, yr)
 }
 
 /// The colour bar's range for values in `[lo, hi]`: itself, or around a single value a narrow

@@ -12,6 +12,7 @@ use super::chart::PALETTE;
 use super::{perr, png_atomic, FONT};
 use crate::study::work_precision::{Knob, Tier, WorkPrecisionRow};
 use anyhow::Result;
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -132,6 +133,8 @@ impl Series {
     }
 }
 
+/// One panel of the diagram in `area`: a line per knob (or a point per method, `by_method`)
+/// of `rows`, the exact strip, the legend at `legend`.
 fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
@@ -146,24 +149,9 @@ fn panel<DB: DrawingBackend>(
             Series::Knob(r.knob)
         }
     };
-    let mut knobs: Vec<Series> = Vec::new();
-    for r in rows {
-        if !knobs.contains(&series_of(r)) {
-            knobs.push(series_of(r));
-        }
-    }
+    let knobs = distinct(rows.iter().map(series_of));
     let costed: Vec<&&WorkPrecisionRow> = rows.iter().filter(|r| r.cost_cpu_s > 0.0).collect();
-    let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
-    for r in &costed {
-        x0 = x0.min(r.cost_cpu_s.log10());
-        x1 = x1.max(r.cost_cpu_s.log10());
-    }
-    if !x0.is_finite() {
-        (x0, x1) = (-3.0, 0.0);
-    }
-    if x1 - x0 < 0.5 {
-        (x0, x1) = (x0 - 0.25, x1 + 0.25);
-    }
+    let (x0, x1) = cost_range(&costed);
     let pairs: Vec<(f64, f64)> = costed.iter().map(|r| (r.error_rel, r.noise_rel)).collect();
     let (y0, y1, y_exact) = error_range(&pairs);
     // a point's height: its error, or the strip for an exact one
@@ -186,21 +174,7 @@ fn panel<DB: DrawingBackend>(
         .map_err(perr("work-precision axes"))?;
     // the "exact" strip: below a dashed rule, labelled, no error scale
     let (xl, xr) = (x0 - 0.15, x1 + 0.15);
-    let rule = y_exact + 0.3;
-    let dash = (xr - xl) / 80.0;
-    chart
-        .draw_series((0..80).step_by(2).map(|k| {
-            let a = xl + k as f64 * dash;
-            PathElement::new(vec![(a, rule), (a + dash, rule)], BLACK.mix(0.5))
-        }))
-        .map_err(perr("exact rule"))?;
-    chart
-        .draw_series([Text::new(
-            "exact (error 0)",
-            (xl + 0.02 * (xr - xl), rule - 0.08),
-            (FONT, 13).into_font().color(&BLACK.mix(0.7)),
-        )])
-        .map_err(perr("exact label"))?;
+    exact_strip(&mut chart, xl, xr, y_exact + 0.3)?;
     for (k, knob) in knobs.iter().enumerate() {
         let c = PALETTE[k % PALETTE.len()];
         let mut v: Vec<&&&WorkPrecisionRow> =
@@ -231,56 +205,7 @@ fn panel<DB: DrawingBackend>(
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], c.stroke_width(3)));
         for r in &v {
             let (x, y) = (r.cost_cpu_s.log10(), y_of(r.error_rel));
-            let (e, n) = (r.error_rel, r.noise_rel);
-            let cap = |yy: f64| {
-                EmptyElement::at((x, yy))
-                    + PathElement::new(vec![(-4, 0), (4, 0)], c.stroke_width(1))
-            };
-            match Mark::of(e, n) {
-                Mark::Resolved => {
-                    if n > 0.0 {
-                        let (lo, hi) = ((e - n).log10(), (e + n).log10());
-                        chart
-                            .draw_series([PathElement::new(
-                                vec![(x, lo), (x, hi)],
-                                c.stroke_width(1),
-                            )])
-                            .map_err(perr("noise whisker"))?;
-                        chart
-                            .draw_series([cap(lo), cap(hi)])
-                            .map_err(perr("noise caps"))?;
-                    }
-                    chart
-                        .draw_series([Circle::new((x, y), 4, c.filled())])
-                        .map_err(perr("markers"))?;
-                }
-                Mark::Unresolved => {
-                    let hi = (e + n).log10();
-                    chart
-                        .draw_series([PathElement::new(vec![(x, y), (x, hi)], c.stroke_width(1))])
-                        .map_err(perr("noise whisker"))?;
-                    chart.draw_series([cap(hi)]).map_err(perr("noise caps"))?;
-                    chart
-                        .draw_series([EmptyElement::at((x, y))
-                            + PathElement::new(vec![(0, 6), (0, 18)], c.stroke_width(1))
-                            + PathElement::new(
-                                vec![(-3, 13), (0, 18), (3, 13)],
-                                c.stroke_width(1),
-                            )])
-                        .map_err(perr("arrows"))?;
-                    chart
-                        .draw_series([
-                            Circle::new((x, y), 4, WHITE.filled()),
-                            Circle::new((x, y), 4, c.stroke_width(2)),
-                        ])
-                        .map_err(perr("markers"))?;
-                }
-                Mark::Exact => {
-                    chart
-                        .draw_series([Cross::new((x, y), 5, c.stroke_width(2))])
-                        .map_err(perr("markers"))?;
-                }
-            }
+            draw_mark(&mut chart, r, (x, y), c)?;
             if r.is_default {
                 chart
                     .draw_series([Circle::new((x, y), 10, c.stroke_width(2))])
@@ -295,7 +220,128 @@ fn panel<DB: DrawingBackend>(
                 .map_err(perr("labels"))?;
         }
     }
-    // what the marks mean, in the legend (grey: every knob's colour)
+    mark_legend(&mut chart)?;
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font((FONT, 13))
+        .position(legend)
+        .draw()
+        .map_err(perr("legend"))?;
+    Ok(())
+}
+
+/// The distinct series of `all`, in order of first appearance.
+fn distinct(all: impl Iterator<Item = Series>) -> Vec<Series> {
+    let mut out: Vec<Series> = Vec::new();
+    for k in all {
+        if !out.contains(&k) {
+            out.push(k);
+        }
+    }
+    out
+}
+
+/// The diagram's plotting area: log₁₀ cost against log₁₀ error.
+type Plot<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The log₁₀ cost range (s) of the `costed` rows, at least half a decade wide (−3..0 without
+/// any).
+fn cost_range(costed: &[&&WorkPrecisionRow]) -> (f64, f64) {
+    let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
+    for r in costed {
+        x0 = x0.min(r.cost_cpu_s.log10());
+        x1 = x1.max(r.cost_cpu_s.log10());
+    }
+    if !x0.is_finite() {
+        (x0, x1) = (-3.0, 0.0);
+    }
+    if x1 - x0 < 0.5 {
+        (x0, x1) = (x0 - 0.25, x1 + 0.25);
+    }
+    (x0, x1)
+}
+
+/// The "exact" strip from `xl` to `xr`: a dashed rule at height `rule`, labelled.
+fn exact_strip<DB: DrawingBackend>(
+    chart: &mut Plot<'_, DB>,
+    xl: f64,
+    xr: f64,
+    rule: f64,
+) -> Result<()> {
+    let dash = (xr - xl) / 80.0;
+    chart
+        .draw_series((0..80).step_by(2).map(|k| {
+            let a = xl + k as f64 * dash;
+            PathElement::new(vec![(a, rule), (a + dash, rule)], BLACK.mix(0.5))
+        }))
+        .map_err(perr("exact rule"))?;
+    chart
+        .draw_series([Text::new(
+            "exact (error 0)",
+            (xl + 0.02 * (xr - xl), rule - 0.08),
+            (FONT, 13).into_font().color(&BLACK.mix(0.7)),
+        )])
+        .map_err(perr("exact label"))?;
+    Ok(())
+}
+
+/// The mark of row `r` at `(x, y)` in colour `c` (see [`Mark`]), with its noise whisker.
+fn draw_mark<DB: DrawingBackend>(
+    chart: &mut Plot<'_, DB>,
+    r: &WorkPrecisionRow,
+    (x, y): (f64, f64),
+    c: RGBColor,
+) -> Result<()> {
+    let (e, n) = (r.error_rel, r.noise_rel);
+    let cap = |yy: f64| {
+        EmptyElement::at((x, yy)) + PathElement::new(vec![(-4, 0), (4, 0)], c.stroke_width(1))
+    };
+    match Mark::of(e, n) {
+        Mark::Resolved => {
+            if n > 0.0 {
+                let (lo, hi) = ((e - n).log10(), (e + n).log10());
+                chart
+                    .draw_series([PathElement::new(vec![(x, lo), (x, hi)], c.stroke_width(1))])
+                    .map_err(perr("noise whisker"))?;
+                chart
+                    .draw_series([cap(lo), cap(hi)])
+                    .map_err(perr("noise caps"))?;
+            }
+            chart
+                .draw_series([Circle::new((x, y), 4, c.filled())])
+                .map_err(perr("markers"))?;
+        }
+        Mark::Unresolved => {
+            let hi = (e + n).log10();
+            chart
+                .draw_series([PathElement::new(vec![(x, y), (x, hi)], c.stroke_width(1))])
+                .map_err(perr("noise whisker"))?;
+            chart.draw_series([cap(hi)]).map_err(perr("noise caps"))?;
+            chart
+                .draw_series([EmptyElement::at((x, y))
+                    + PathElement::new(vec![(0, 6), (0, 18)], c.stroke_width(1))
+                    + PathElement::new(vec![(-3, 13), (0, 18), (3, 13)], c.stroke_width(1))])
+                .map_err(perr("arrows"))?;
+            chart
+                .draw_series([
+                    Circle::new((x, y), 4, WHITE.filled()),
+                    Circle::new((x, y), 4, c.stroke_width(2)),
+                ])
+                .map_err(perr("markers"))?;
+        }
+        Mark::Exact => {
+            chart
+                .draw_series([Cross::new((x, y), 5, c.stroke_width(2))])
+                .map_err(perr("markers"))?;
+        }
+    }
+    Ok(())
+}
+
+/// What the marks mean, in the legend (grey: every knob's colour).
+fn mark_legend<DB: DrawingBackend>(chart: &mut Plot<'_, DB>) -> Result<()> {
     let grey = RGBColor(90, 90, 90);
     chart
         .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
@@ -317,14 +363,6 @@ fn panel<DB: DrawingBackend>(
         .map_err(perr("legend"))?
         .label("ring: the default setting")
         .legend(move |(x, y)| Circle::new((x + 11, y), 7, grey.stroke_width(2)));
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font((FONT, 13))
-        .position(legend)
-        .draw()
-        .map_err(perr("legend"))?;
     Ok(())
 }
 

@@ -8,6 +8,7 @@ use super::chart::PALETTE;
 use super::{perr, png_atomic, FONT};
 use crate::study::fab_yield::{CurvePoint, YieldSummary};
 use anyhow::Result;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use std::path::Path;
 use surrogate::units::significant;
@@ -101,7 +102,6 @@ fn labels(s: &YieldSummary) -> Vec<String> {
 
 /// Draws `yield.png` at `path` from the summary. Cost: one 1000×700 PNG.
 pub fn yield_png(path: &Path, s: &YieldSummary) -> Result<()> {
-    let c = &s.curve;
     let (x0, x1) = x_range(s);
     // the last band's upper end past the highest critical load: P(W_c > W_max) ≤ that
     let tail_high =
@@ -128,94 +128,9 @@ pub fn yield_png(path: &Path, s: &YieldSummary) -> Result<()> {
             .light_line_style(RGBColor(235, 235, 235))
             .draw()
             .map_err(perr("chart axes"))?;
-        let (curve_c, band_c, q_c, b_c, dem_c) =
-            (PALETTE[0], PALETTE[0], PALETTE[3], PALETTE[1], PALETTE[2]);
-        // the band: the low steps forward, the high steps back, filled
-        let low = steps(c, |p| p.low, x0, 0.0, x1);
-        let high = steps(c, |p| p.high, x0, tail_high, x1);
-        let poly: Vec<(f64, f64)> = low.iter().chain(high.iter().rev()).copied().collect();
-        let band_name = name.nth(1).unwrap_or_default();
-        ch.draw_series(std::iter::once(Polygon::new(
-            poly,
-            band_c.mix(0.2).filled(),
-        )))
-        .map_err(perr("band"))?
-        .label(band_name)
-        .legend(move |(x, y)| {
-            Rectangle::new([(x, y - 6), (x + 22, y + 6)], band_c.mix(0.2).filled())
-        });
-        let curve_name = labels(s).remove(0);
-        ch.draw_series(LineSeries::new(
-            steps(c, |p| p.fraction, x0, 0.0, x1),
-            curve_c.stroke_width(3),
-        ))
-        .map_err(perr("curve"))?
-        .label(curve_name)
-        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], curve_c.stroke_width(3)));
-        // q: dashed black
-        let dashes = (0..60).step_by(2).map(|k| {
-            let a = x0 + (x1 - x0) * k as f64 / 60.0;
-            let b = x0 + (x1 - x0) * (k + 1) as f64 / 60.0;
-            PathElement::new(
-                vec![(a, s.quantile), (b, s.quantile)],
-                BLACK.stroke_width(2),
-            )
-        });
-        ch.draw_series(dashes)
-            .map_err(perr("q line"))?
-            .label(format!("q = {}", s.quantile))
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(2)));
-        // the quoted load: a solid line; its bound: dotted, so both show where they meet
-        if let Some(w) = s.load_at_quantile_mN {
-            ch.draw_series(LineSeries::new(
-                vec![(w, 0.0), (w, 1.0)],
-                q_c.stroke_width(3),
-            ))
-            .map_err(perr("quoted load"))?
-            .label(name.next().unwrap_or_default())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], q_c.stroke_width(3)));
-        }
-        if let Some(b) = s.load_at_quantile_bound_mN {
-            let dots = (0..40).step_by(2).map(move |k| {
-                let (a, e) = (k as f64 / 40.0, (k + 1) as f64 / 40.0);
-                PathElement::new(vec![(b, a), (b, e)], b_c.stroke_width(3))
-            });
-            ch.draw_series(dots)
-                .map_err(perr("bound"))?
-                .label(name.next().unwrap_or_default())
-                .legend(move |(x, y)| {
-                    EmptyElement::at((x, y))
-                        + PathElement::new(vec![(0, 0), (8, 0)], b_c.stroke_width(3))
-                        + PathElement::new(vec![(14, 0), (22, 0)], b_c.stroke_width(3))
-                });
-        }
-        if let (Some(w), Some([lo, hi]), true) = (
-            s.dem_check_load_mN,
-            s.dem_check_interval,
-            s.dem_check_total > 0,
-        ) {
-            let f = s.dem_check_passed as f64 / s.dem_check_total as f64;
-            // the interval: a vertical bar with caps
-            let cap = 0.01 * (x1 - x0);
-            let bar = [
-                vec![(w, lo), (w, hi)],
-                vec![(w - cap, lo), (w + cap, lo)],
-                vec![(w - cap, hi), (w + cap, hi)],
-            ];
-            ch.draw_series(
-                bar.into_iter()
-                    .map(|p| PathElement::new(p, dem_c.stroke_width(2))),
-            )
-            .map_err(perr("DEM check interval"))?;
-            ch.draw_series(std::iter::once(
-                EmptyElement::at((w, f))
-                    + Circle::new((0, 0), 7, dem_c.filled())
-                    + Circle::new((0, 0), 7, BLACK.stroke_width(1)),
-            ))
-            .map_err(perr("DEM check"))?
-            .label(name.next().unwrap_or_default())
-            .legend(move |(x, y)| Circle::new((x + 11, y), 6, dem_c.filled()));
-        }
+        band_and_curve(&mut ch, s, (x0, x1), tail_high, &mut name)?;
+        quantile_lines(&mut ch, s, (x0, x1), &mut name)?;
+        dem_check(&mut ch, s, (x0, x1), &mut name)?;
         ch.configure_series_labels()
             .background_style(WHITE.mix(0.9))
             .border_style(BLACK)
@@ -225,6 +140,129 @@ pub fn yield_png(path: &Path, s: &YieldSummary) -> Result<()> {
             .map_err(perr("legend"))?;
         Ok(())
     })
+}
+
+/// The yield chart's plotting area: load (mN) against yield.
+type Plot<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The yield curve's confidence band (filled; `tail_high`: its upper end past the highest
+/// critical load) and the curve, over loads `x0..x1` (mN), with their legend `names`.
+fn band_and_curve<'a, DB: DrawingBackend + 'a>(
+    ch: &mut Plot<'a, DB>,
+    s: &YieldSummary,
+    (x0, x1): (f64, f64),
+    tail_high: f64,
+    name: &mut impl Iterator<Item = String>,
+) -> Result<()> {
+    let c = &s.curve;
+    let (curve_c, band_c) = (PALETTE[0], PALETTE[0]);
+    // the band: the low steps forward, the high steps back, filled
+    let low = steps(c, |p| p.low, x0, 0.0, x1);
+    let high = steps(c, |p| p.high, x0, tail_high, x1);
+    let poly: Vec<(f64, f64)> = low.iter().chain(high.iter().rev()).copied().collect();
+    let band_name = name.nth(1).unwrap_or_default();
+    ch.draw_series(std::iter::once(Polygon::new(
+        poly,
+        band_c.mix(0.2).filled(),
+    )))
+    .map_err(perr("band"))?
+    .label(band_name)
+    .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 22, y + 6)], band_c.mix(0.2).filled()));
+    let curve_name = labels(s).remove(0);
+    ch.draw_series(LineSeries::new(
+        steps(c, |p| p.fraction, x0, 0.0, x1),
+        curve_c.stroke_width(3),
+    ))
+    .map_err(perr("curve"))?
+    .label(curve_name)
+    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], curve_c.stroke_width(3)));
+    Ok(())
+}
+
+/// The quantile q (dashed), the load quoted at it (solid) and its confidence bound (dotted).
+fn quantile_lines<'a, DB: DrawingBackend + 'a>(
+    ch: &mut Plot<'a, DB>,
+    s: &YieldSummary,
+    (x0, x1): (f64, f64),
+    name: &mut impl Iterator<Item = String>,
+) -> Result<()> {
+    let (q_c, b_c) = (PALETTE[3], PALETTE[1]);
+    // q: dashed black
+    let dashes = (0..60).step_by(2).map(|k| {
+        let a = x0 + (x1 - x0) * k as f64 / 60.0;
+        let b = x0 + (x1 - x0) * (k + 1) as f64 / 60.0;
+        PathElement::new(
+            vec![(a, s.quantile), (b, s.quantile)],
+            BLACK.stroke_width(2),
+        )
+    });
+    ch.draw_series(dashes)
+        .map_err(perr("q line"))?
+        .label(format!("q = {}", s.quantile))
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(2)));
+    // the quoted load: a solid line; its bound: dotted, so both show where they meet
+    if let Some(w) = s.load_at_quantile_mN {
+        ch.draw_series(LineSeries::new(
+            vec![(w, 0.0), (w, 1.0)],
+            q_c.stroke_width(3),
+        ))
+        .map_err(perr("quoted load"))?
+        .label(name.next().unwrap_or_default())
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], q_c.stroke_width(3)));
+    }
+    if let Some(b) = s.load_at_quantile_bound_mN {
+        let dots = (0..40).step_by(2).map(move |k| {
+            let (a, e) = (k as f64 / 40.0, (k + 1) as f64 / 40.0);
+            PathElement::new(vec![(b, a), (b, e)], b_c.stroke_width(3))
+        });
+        ch.draw_series(dots)
+            .map_err(perr("bound"))?
+            .label(name.next().unwrap_or_default())
+            .legend(move |(x, y)| {
+                EmptyElement::at((x, y))
+                    + PathElement::new(vec![(0, 0), (8, 0)], b_c.stroke_width(3))
+                    + PathElement::new(vec![(14, 0), (22, 0)], b_c.stroke_width(3))
+            });
+    }
+    Ok(())
+}
+
+/// The DEM check: its passed fraction at its load, with its interval (none without a check).
+fn dem_check<'a, DB: DrawingBackend + 'a>(
+    ch: &mut Plot<'a, DB>,
+    s: &YieldSummary,
+    (x0, x1): (f64, f64),
+    name: &mut impl Iterator<Item = String>,
+) -> Result<()> {
+    let dem_c = PALETTE[2];
+    if let (Some(w), Some([lo, hi]), true) = (
+        s.dem_check_load_mN,
+        s.dem_check_interval,
+        s.dem_check_total > 0,
+    ) {
+        let f = s.dem_check_passed as f64 / s.dem_check_total as f64;
+        // the interval: a vertical bar with caps
+        let cap = 0.01 * (x1 - x0);
+        let bar = [
+            vec![(w, lo), (w, hi)],
+            vec![(w - cap, lo), (w + cap, lo)],
+            vec![(w - cap, hi), (w + cap, hi)],
+        ];
+        ch.draw_series(
+            bar.into_iter()
+                .map(|p| PathElement::new(p, dem_c.stroke_width(2))),
+        )
+        .map_err(perr("DEM check interval"))?;
+        ch.draw_series(std::iter::once(
+            EmptyElement::at((w, f))
+                + Circle::new((0, 0), 7, dem_c.filled())
+                + Circle::new((0, 0), 7, BLACK.stroke_width(1)),
+        ))
+        .map_err(perr("DEM check"))?
+        .label(name.next().unwrap_or_default())
+        .legend(move |(x, y)| Circle::new((x + 11, y), 6, dem_c.filled()));
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -133,20 +133,7 @@ pub fn inspect(
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
         Err(e) => return Err(e).with_context(|| format!("reading {}", partial.display())),
     };
-    let sidecar = Sidecar::of(&partial).map_err(|e| {
-        anyhow::anyhow!(
-            "`--resume`: {e:#}; cannot tell which inputs {} comes from: delete it to start over",
-            partial.display()
-        )
-    })?;
-    if sidecar.complete {
-        bail!(
-            "`--resume`: the sidecar of {} says it is complete, which a partial file never is; delete it to start over",
-            partial.display()
-        );
-    }
-    check_same_sweep(&partial, &sidecar, inputs, shard)
-        .map_err(|e| anyhow::anyhow!("`--resume`: {e:#}"))?;
+    check_sidecar(&partial, inputs, shard)?;
     let damaged = |why: String| {
         anyhow::anyhow!(
             "`--resume`: {} is damaged ({why}); delete it to start over",
@@ -170,6 +157,53 @@ pub fn inspect(
     }
     // Stream the complete lines (memory flat in the file's size): the end of each of the last
     // rows_per_item + 1 rows is kept, enough to cut back to an item boundary.
+    let rpi = rows_per_item.max(1) as u64;
+    let (rows, ends) = scan(file, whole, rpi, run_items, &damaged)?;
+    let items = rows / rpi;
+    let keep_rows = items * rpi;
+    // ends[k] is the end of row rows − (ends.len() − 1) + k
+    let first = rows + 1 - ends.len() as u64;
+    Ok(Some(Kept {
+        bytes: ends[(keep_rows - first) as usize],
+        header: true,
+        rows: keep_rows,
+        items: items as usize,
+        torn_bytes: torn,
+        dropped_rows: rows - keep_rows,
+    }))
+}
+
+/// Checks the sidecar of the partial file `partial`: there, not complete, and of the same
+/// sweep and shard as this run (`inputs`, `shard`).
+fn check_sidecar(partial: &Path, inputs: &Inputs, shard: Option<&ShardInfo>) -> Result<()> {
+    let sidecar = Sidecar::of(partial).map_err(|e| {
+        anyhow::anyhow!(
+            "`--resume`: {e:#}; cannot tell which inputs {} comes from: delete it to start over",
+            partial.display()
+        )
+    })?;
+    if sidecar.complete {
+        bail!(
+            "`--resume`: the sidecar of {} says it is complete, which a partial file never is; delete it to start over",
+            partial.display()
+        );
+    }
+    check_same_sweep(partial, &sidecar, inputs, shard)
+        .map_err(|e| anyhow::anyhow!("`--resume`: {e:#}"))?;
+    Ok(())
+}
+
+/// Streams the first `whole` bytes of the partial `file` as CSV with a header, `rpi` rows per
+/// item, at most `run_items` items: the number of rows and the byte ends of the last `rpi + 1`
+/// (the header's end first while fewer). Errors through `damaged` on a NUL byte, a bad row or
+/// too many rows.
+fn scan(
+    mut file: std::fs::File,
+    whole: u64,
+    rpi: u64,
+    run_items: usize,
+    damaged: &dyn Fn(String) -> anyhow::Error,
+) -> Result<(u64, VecDeque<u64>)> {
     file.seek(SeekFrom::Start(0))?;
     let mut r = csv::ReaderBuilder::new()
         .has_headers(true)
@@ -190,7 +224,6 @@ pub fn inspect(
     if header.iter().all(|f| f.is_empty()) {
         return Err(damaged("no header line".into()));
     }
-    let rpi = rows_per_item.max(1) as u64;
     let max_rows = (run_items as u64).saturating_mul(rpi);
     let mut ends: VecDeque<u64> = VecDeque::from([r.position().byte()]);
     let mut rows = 0u64;
@@ -217,18 +250,7 @@ pub fn inspect(
             ends.pop_front();
         }
     }
-    let items = rows / rpi;
-    let keep_rows = items * rpi;
-    // ends[k] is the end of row rows − (ends.len() − 1) + k
-    let first = rows + 1 - ends.len() as u64;
-    Ok(Some(Kept {
-        bytes: ends[(keep_rows - first) as usize],
-        header: true,
-        rows: keep_rows,
-        items: items as usize,
-        torn_bytes: torn,
-        dropped_rows: rows - keep_rows,
-    }))
+    Ok((rows, ends))
 }
 
 /// A reader that notes the offset of the first NUL byte read through it.

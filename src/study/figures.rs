@@ -186,142 +186,189 @@ pub fn figures(
     emit: &mut dyn FnMut(Figure, Inputs) -> Result<()>,
 ) -> Result<()> {
     let t0 = std::time::Instant::now();
-    let inputs = |workflow: &str, scene: Option<&Scene>, params: serde_json::Value| Inputs {
-        workflow: format!("figures/{workflow}"),
-        scene: scene.map(scene_file),
-        params,
-    };
     if p.want(Group::Sweep) {
-        for pattern in SWEEP_PATTERNS {
-            let scene = Scene::preset(pattern)?;
-            let sp = ScreenParams {
-                thetas: p.sweep_thetas.clone(),
-                loads: SWEEP_LOADS_MN.iter().map(|&w| mn_to_n(w)).collect(),
-                model: Model::Auto,
-                search: SearchKind::Grid,
-            };
-            let mut rows = Vec::new();
-            screen(&scene, &sp, &mut rows, progress)?;
-            let mut sc = scene.clone();
-            sc.slider.theta = 0.0;
-            let i = inputs("sweep", Some(&sc), record::screen(&sp));
-            emit(
-                Figure::Sweep {
-                    name: format!("sweep_{pattern}"),
-                    scene,
-                    rows,
-                },
-                i,
-            )?;
-        }
-        progress.note(&format!(
-            "sweeps done ({:.1} s)",
-            t0.elapsed().as_secs_f64()
-        ));
+        sweeps(p, progress, emit, t0)?;
     }
     if p.want(Group::Contacts) {
-        for (pattern, t) in CONTACT_MAPS {
-            let scene = Scene::preset(pattern)?.with_theta(deg_to_rad(t));
-            let cp = ContactsParams {
-                theta: scene.slider.theta,
-                load: mn_to_n(MAP_LOAD_MN),
-                model: Model::Auto,
-                search: SearchKind::Grid,
-            };
-            let eq = contacts(&scene, &cp)?;
-            let i = inputs("contacts", Some(&scene), record::contacts(&cp));
-            emit(
-                Figure::ContactMap {
-                    name: format!(
-                        "contact_map_{pattern}_{}deg_{}mN",
-                        fmt_num(t),
-                        fmt_num(MAP_LOAD_MN)
-                    ),
-                    scene,
-                    load: cp.load,
-                    eq,
-                },
-                i,
-            )?;
-        }
-        progress.note(&format!(
-            "contact maps done ({:.1} s)",
-            t0.elapsed().as_secs_f64()
-        ));
+        contact_maps(progress, emit, t0)?;
     }
     if p.want(Group::Landscapes) {
-        for t in LANDSCAPE_THETAS {
-            let scene = Scene::preset("square-tri")?.with_theta(deg_to_rad(t));
-            let lp = LandscapeParams {
-                load: mn_to_n(MAP_LOAD_MN),
-                grid: p.grid,
-            };
-            // the grid must resolve the moiré's second harmonic (docs/validation/maps.md)
-            let need = surrogate::map::grid_need(&scene);
-            if need.periods.is_some() && p.grid < need.grid {
-                progress.note(&format!(
-                    "warning: the landscape at θ = {}° needs {} {} or more to resolve its moiré \
-                     (at {} it aliases; docs/validation/maps.md)",
-                    fmt_num(t),
-                    crate::study::input::Input::Grid,
-                    need.grid,
-                    p.grid
-                ));
-            }
-            let mut rows = Vec::new();
-            let stats = landscape(&scene, &lp, None, &mut rows, progress)?;
-            let i = inputs("landscape", Some(&scene), record::landscape(&lp));
-            emit(
-                Figure::Landscape {
-                    name: format!(
-                        "landscape_square-tri_{}deg_{}mN",
-                        fmt_num(t),
-                        fmt_num(MAP_LOAD_MN)
-                    ),
-                    scene,
-                    load: lp.load,
-                    stats,
-                    rows,
-                },
-                i,
-            )?;
-        }
-        progress.note(&format!(
-            "landscapes done ({:.1} s)",
-            t0.elapsed().as_secs_f64()
-        ));
+        landscapes(p, progress, emit, t0)?;
     }
     if p.want(Group::Corrugation) {
-        let base = Scene::preset("square-tri")?;
+        corrugation_figure(p, progress, emit, t0)?;
+    }
+    Ok(())
+}
+
+/// The screening sweeps of [`SWEEP_PATTERNS`]. `t0`: when the figures started (for the progress note).
+fn sweeps(
+    p: &FiguresParams,
+    progress: &dyn Progress,
+    emit: &mut dyn FnMut(Figure, Inputs) -> Result<()>,
+    t0: std::time::Instant,
+) -> Result<()> {
+    for pattern in SWEEP_PATTERNS {
+        let scene = Scene::preset(pattern)?;
+        let sp = ScreenParams {
+            thetas: p.sweep_thetas.clone(),
+            loads: SWEEP_LOADS_MN.iter().map(|&w| mn_to_n(w)).collect(),
+            model: Model::Auto,
+            search: SearchKind::Grid,
+        };
         let mut rows = Vec::new();
-        let (thetas, loads) = CORRUGATION_CASES;
-        for t in thetas {
-            for w in loads {
-                let scene = base.with_theta(deg_to_rad(t));
-                let cp = CorrugationParams {
-                    load: mn_to_n(w),
-                    line: None,
-                    ..p.corrugation.clone()
-                };
-                corrugation(&scene, &cp, &mut rows, progress)?;
-            }
-        }
-        let mut params = record::corrugation(&p.corrugation);
-        params["theta_deg"] = serde_json::json!(thetas);
-        params["load_mN"] = serde_json::json!(loads);
-        let i = inputs("corrugation", Some(&base), params);
+        screen(&scene, &sp, &mut rows, progress)?;
+        let mut sc = scene.clone();
+        sc.slider.theta = 0.0;
+        let i = inputs("sweep", Some(&sc), record::screen(&sp));
         emit(
-            Figure::Corrugation {
-                name: "corrugation_square-tri".into(),
+            Figure::Sweep {
+                name: format!("sweep_{pattern}"),
+                scene,
                 rows,
-                distance: p.corrugation.distance,
             },
             i,
         )?;
-        progress.note(&format!(
-            "corrugation done ({:.1} s)",
-            t0.elapsed().as_secs_f64()
-        ));
     }
+    progress.note(&format!(
+        "sweeps done ({:.1} s)",
+        t0.elapsed().as_secs_f64()
+    ));
     Ok(())
+}
+
+/// The contact maps of [`CONTACT_MAPS`]. `t0`: when the figures started (for the progress note).
+fn contact_maps(
+    progress: &dyn Progress,
+    emit: &mut dyn FnMut(Figure, Inputs) -> Result<()>,
+    t0: std::time::Instant,
+) -> Result<()> {
+    for (pattern, t) in CONTACT_MAPS {
+        let scene = Scene::preset(pattern)?.with_theta(deg_to_rad(t));
+        let cp = ContactsParams {
+            theta: scene.slider.theta,
+            load: mn_to_n(MAP_LOAD_MN),
+            model: Model::Auto,
+            search: SearchKind::Grid,
+        };
+        let eq = contacts(&scene, &cp)?;
+        let i = inputs("contacts", Some(&scene), record::contacts(&cp));
+        emit(
+            Figure::ContactMap {
+                name: format!(
+                    "contact_map_{pattern}_{}deg_{}mN",
+                    fmt_num(t),
+                    fmt_num(MAP_LOAD_MN)
+                ),
+                scene,
+                load: cp.load,
+                eq,
+            },
+            i,
+        )?;
+    }
+    progress.note(&format!(
+        "contact maps done ({:.1} s)",
+        t0.elapsed().as_secs_f64()
+    ));
+    Ok(())
+}
+
+/// The height landscapes of square-tri at [`LANDSCAPE_THETAS`]. `t0`: when the figures started (for the progress note).
+fn landscapes(
+    p: &FiguresParams,
+    progress: &dyn Progress,
+    emit: &mut dyn FnMut(Figure, Inputs) -> Result<()>,
+    t0: std::time::Instant,
+) -> Result<()> {
+    for t in LANDSCAPE_THETAS {
+        let scene = Scene::preset("square-tri")?.with_theta(deg_to_rad(t));
+        let lp = LandscapeParams {
+            load: mn_to_n(MAP_LOAD_MN),
+            grid: p.grid,
+        };
+        // the grid must resolve the moiré's second harmonic (docs/validation/maps.md)
+        let need = surrogate::map::grid_need(&scene);
+        if need.periods.is_some() && p.grid < need.grid {
+            progress.note(&format!(
+                "warning: the landscape at θ = {}° needs {} {} or more to resolve its moiré \
+                 (at {} it aliases; docs/validation/maps.md)",
+                fmt_num(t),
+                crate::study::input::Input::Grid,
+                need.grid,
+                p.grid
+            ));
+        }
+        let mut rows = Vec::new();
+        let stats = landscape(&scene, &lp, None, &mut rows, progress)?;
+        let i = inputs("landscape", Some(&scene), record::landscape(&lp));
+        emit(
+            Figure::Landscape {
+                name: format!(
+                    "landscape_square-tri_{}deg_{}mN",
+                    fmt_num(t),
+                    fmt_num(MAP_LOAD_MN)
+                ),
+                scene,
+                load: lp.load,
+                stats,
+                rows,
+            },
+            i,
+        )?;
+    }
+    progress.note(&format!(
+        "landscapes done ({:.1} s)",
+        t0.elapsed().as_secs_f64()
+    ));
+    Ok(())
+}
+
+/// The corrugation of square-tri over [`CORRUGATION_CASES`]. `t0`: when the figures started (for the progress note).
+fn corrugation_figure(
+    p: &FiguresParams,
+    progress: &dyn Progress,
+    emit: &mut dyn FnMut(Figure, Inputs) -> Result<()>,
+    t0: std::time::Instant,
+) -> Result<()> {
+    let base = Scene::preset("square-tri")?;
+    let mut rows = Vec::new();
+    let (thetas, loads) = CORRUGATION_CASES;
+    for t in thetas {
+        for w in loads {
+            let scene = base.with_theta(deg_to_rad(t));
+            let cp = CorrugationParams {
+                load: mn_to_n(w),
+                line: None,
+                ..p.corrugation.clone()
+            };
+            corrugation(&scene, &cp, &mut rows, progress)?;
+        }
+    }
+    let mut params = record::corrugation(&p.corrugation);
+    params["theta_deg"] = serde_json::json!(thetas);
+    params["load_mN"] = serde_json::json!(loads);
+    let i = inputs("corrugation", Some(&base), params);
+    emit(
+        Figure::Corrugation {
+            name: "corrugation_square-tri".into(),
+            rows,
+            distance: p.corrugation.distance,
+        },
+        i,
+    )?;
+    progress.note(&format!(
+        "corrugation done ({:.1} s)",
+        t0.elapsed().as_secs_f64()
+    ));
+    Ok(())
+}
+
+/// The inputs to record of a figure of `workflow` (`figures/<workflow>`).
+fn inputs(workflow: &str, scene: Option<&Scene>, params: serde_json::Value) -> Inputs {
+    Inputs {
+        workflow: format!("figures/{workflow}"),
+        scene: scene.map(scene_file),
+        params,
+    }
 }

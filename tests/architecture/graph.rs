@@ -3,7 +3,8 @@
 //! module's name). Paths are resolved the way rustc does for these forms: a name re-exported by
 //! a module (`pub use x::Y` in a `mod.rs`, also `pub use x::*`) leads to the file that
 //! defines it, so a `mod.rs` that only declares and re-exports is no one's dependency; a
-//! `pub use` is no edge of the file that holds it; `mod x;` is no edge.
+//! `pub use` is no edge of the file that holds it unless that file's own code names the
+//! re-exported item too; `mod x;` is no edge.
 
 use crate::lex;
 use std::collections::{BTreeMap, BTreeSet};
@@ -203,6 +204,44 @@ fn defined_names(code: &str) -> BTreeSet<String> {
     out
 }
 
+/// The identifiers of `code` outside its `use` declarations and module names (what a
+/// re-exported name is looked up in: a file that re-exports a name and also uses it depends on
+/// it).
+fn names_outside_uses(code: &str) -> BTreeSet<String> {
+    let mut text = code.to_string();
+    for d in use_decls(code) {
+        let blanked: String = text[d.range.clone()]
+            .chars()
+            .map(|c| if c == '\n' { '\n' } else { ' ' })
+            .collect();
+        text.replace_range(d.range, &blanked);
+    }
+    // (word, the character before it); a module's declaration (`mod law;`) names the module,
+    // not the item re-exported from it, and `.map(…)` a method or field, not an item
+    let mut words: Vec<(&str, char)> = Vec::new();
+    let mut start = None;
+    for (k, c) in text
+        .char_indices()
+        .chain(std::iter::once((text.len(), ' ')))
+    {
+        match (is_ident_char(c), start) {
+            (true, None) => start = Some(k),
+            (false, Some(s)) => {
+                let before = text[..s].trim_end().chars().last().unwrap_or(' ');
+                words.push((&text[s..k], before));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    words
+        .iter()
+        .enumerate()
+        .filter(|&(k, &(_, before))| before != '.' && (k == 0 || words[k - 1].0 != "mod"))
+        .map(|(_, (w, _))| w.to_string())
+        .collect()
+}
+
 /// Paths written in code outside `use` declarations that start with `crate`, `super`, `self`
 /// or a name in `firsts`: (segments, byte index).
 fn code_paths(code: &str, firsts: &BTreeSet<String>) -> Vec<(Vec<String>, usize)> {
@@ -299,12 +338,20 @@ impl Graph {
                 }
             }
         }
+        let names_in_code: Vec<BTreeSet<String>> = g
+            .files
+            .iter()
+            .map(|f| names_outside_uses(&f.code))
+            .collect();
         let mut edges = BTreeSet::new();
-        for i in 0..g.files.len() {
+        for (i, names) in names_in_code.iter().enumerate() {
             for b in &g.bindings[i] {
-                // a re-export is no edge; a named module is none either (the paths through it
-                // are); a glob is one to its module
-                if b.public || (b.name.is_some() && g.modules.contains_key(&b.target)) {
+                // a re-export is no edge unless the file's own code names it too; a named module
+                // is none either (the paths through it are); a glob is one to its module
+                if b.name.is_some() && g.modules.contains_key(&b.target) {
+                    continue;
+                }
+                if b.public && !b.name.as_ref().is_some_and(|n| names.contains(n)) {
                     continue;
                 }
                 if let Some(to) = g.resolve(&b.target, 0) {

@@ -1,9 +1,9 @@
 //! The architecture rules of CONTRIBUTING.md ("The layers"), checked on the source tree:
-//! - no import circle between the files of `src/study` nor of `surrogate/src/solver`;
+//! - no import circle between the files of any crate (`src`, `surrogate/src`, `dem/src`);
 //! - `src/study/rows` (the output rows, the bottom of the study layer) imports nothing else of
 //!   `src/study`;
-//! - no function over 100 lines in `src/study/design`, `src/study/tolerance` and
-//!   `surrogate/src/solver`.
+//! - no function over 100 lines in any crate (the folders of [`LONG_FUNCTIONS_PENDING`] aside,
+//!   while their restructuring lands).
 //!
 //! The import graph is file-level (`graph.rs`): a file depends on another where it names one of
 //! its items through a `use` or a `crate::`/`super::`/`self::`/child-module path in its code,
@@ -20,16 +20,32 @@ mod rules;
 use graph::{File, Graph};
 use std::path::Path;
 
-/// Groups of files of `src/study` allowed to import each other in a circle: none. A group added
-/// here must hold every file of the circle, and a file on no circle any more fails the check, so
-/// the list can only shrink.
-const STUDY_CIRCLES_ALLOWED: &[&[&str]] = &[];
+/// Groups of files allowed to import each other in a circle: none. A group added here must hold
+/// every file of the circle, and a file on no circle any more fails the check, so the list can
+/// only shrink.
+const CIRCLES_ALLOWED: &[&[&str]] = &[
+    // being restructured on its own branch (issue 55, item 1: the design stages)
+    &[
+        "src/cli/design/mod.rs",
+        "src/cli/design/prepare.rs",
+        "src/cli/design/scenes.rs",
+    ],
+];
 
 /// Imports of the rest of `src/study` allowed to `src/study/rows`: none.
 const ROWS_IMPORTS_ALLOWED: &[rules::AllowedEdge] = &[];
 
 /// Functions allowed over [`MAX_FUNCTION_LINES`] (file, name): none.
 const LONG_FUNCTIONS_ALLOWED: &[(&str, &str)] = &[];
+
+/// Folders whose functions are not held to [`MAX_FUNCTION_LINES`] yet: being restructured on
+/// their own branches (issue 55, item 1: the design stages; the fabrication yield). Remove each
+/// once its work has landed.
+const LONG_FUNCTIONS_PENDING: &[&str] = &[
+    "src/study/design/",
+    "src/cli/design/",
+    "src/study/fab_yield/",
+];
 
 /// The longest a function of the checked folders may be, in lines (`fn` to closing brace).
 const MAX_FUNCTION_LINES: usize = 100;
@@ -68,21 +84,50 @@ fn report(rule: &str, problems: Vec<String>) {
     );
 }
 
-#[test]
-fn no_import_circle_between_files_of_study() {
-    let g = Graph::new("src", sources("src"));
-    let problems = rules::circles(&g, |p| p.starts_with("src/study/"), STUDY_CIRCLES_ALLOWED);
-    report("src/study: no import circle between files", problems);
+/// The source root of each crate of the workspace with more than one file: the library
+/// `superlube` (`src`, its binary `src/main.rs` a crate of one file), `surrogate` and `dem`.
+const CRATE_ROOTS: &[&str] = &["src", "surrogate/src", "dem/src"];
+
+/// The sources of the crate under `root`: every file but the binary's `src/main.rs`, which is
+/// a crate of its own (one file, no `mod`: it can close no circle; checked here).
+fn crate_sources(root: &str) -> Vec<File> {
+    let (bins, lib): (Vec<File>, Vec<File>) = sources(root)
+        .into_iter()
+        .partition(|f| f.path == format!("{root}/main.rs"));
+    for bin in &bins {
+        assert!(
+            !bin.code.split_whitespace().any(|w| w == "mod"),
+            "{} declares a module: check its crate for circles too",
+            bin.path
+        );
+    }
+    lib
+}
+
+/// The groups of [`CIRCLES_ALLOWED`] in the crate under `root` (each crate's graph is checked
+/// on its own, so another crate's group is no stale entry of this one).
+fn allowed_in(root: &str) -> Vec<&'static [&'static str]> {
+    CIRCLES_ALLOWED
+        .iter()
+        .copied()
+        .filter(|grp| grp.iter().all(|f| f.starts_with(&format!("{root}/"))))
+        .collect()
+}
+
+/// Whether the function-length rule holds `path` yet (not under [`LONG_FUNCTIONS_PENDING`]).
+fn held_to_length(path: &str) -> bool {
+    !LONG_FUNCTIONS_PENDING.iter().any(|p| path.starts_with(p))
 }
 
 #[test]
-fn no_import_circle_between_files_of_the_solver() {
-    let g = Graph::new("surrogate/src", sources("surrogate/src"));
-    let problems = rules::circles(&g, |p| p.starts_with("surrogate/src/solver/"), &[]);
-    report(
-        "surrogate/src/solver: no import circle between files",
-        problems,
-    );
+fn no_import_circle_in_any_crate() {
+    let mut problems = Vec::new();
+    for root in CRATE_ROOTS {
+        let g = Graph::new(root, crate_sources(root));
+        assert!(g.files.len() > 10, "{root}: the sources were read");
+        problems.extend(rules::circles(&g, |_| true, &allowed_in(root)));
+    }
+    report("no import circle between the files of a crate", problems);
 }
 
 #[test]
@@ -102,15 +147,13 @@ fn rows_import_nothing_else_of_study() {
 
 #[test]
 fn no_function_over_100_lines() {
-    let files: Vec<(String, String)> = [
-        "src/study/design",
-        "src/study/tolerance",
-        "surrogate/src/solver",
-    ]
-    .iter()
-    .flat_map(|d| sources(d))
-    .map(|f| (f.path, f.code))
-    .collect();
+    let files: Vec<(String, String)> = CRATE_ROOTS
+        .iter()
+        .flat_map(|d| sources(d))
+        .filter(|f| held_to_length(&f.path))
+        .map(|f| (f.path, f.code))
+        .collect();
+    assert!(files.len() > 200, "the sources were read: {}", files.len());
     let problems = rules::long_functions(&files, MAX_FUNCTION_LINES, LONG_FUNCTIONS_ALLOWED);
     report("no function over 100 lines", problems);
 }

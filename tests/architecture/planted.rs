@@ -208,3 +208,91 @@ fn a_function_over_the_limit_is_found() {
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].contains("fn outer"), "{found:?}");
 }
+
+/// The crate at `root` made of `(path, source)` files, every file in scope.
+fn crate_circles(root: &str, files: &[(&str, &str)]) -> Vec<String> {
+    let files = files
+        .iter()
+        .map(|(p, s)| File {
+            path: p.to_string(),
+            code: lex::code(s),
+        })
+        .collect();
+    rules::circles(&Graph::new(root, files), |_| true, &[])
+}
+
+#[test]
+fn a_circle_anywhere_in_any_crate_is_found() {
+    // two sibling files of the DEM crate's model (the friction law and a law using it)
+    let m = (
+        "dem/src/model/mod.rs",
+        "mod constant;\nmod friction;\npub use constant::Constant;\npub use friction::Law;\n",
+    );
+    let law = (
+        "dem/src/model/friction.rs",
+        "use super::Constant;\npub trait Law {}\npub enum F { C(Constant) }\n",
+    );
+    let constant = (
+        "dem/src/model/constant.rs",
+        "use super::Law;\npub struct Constant;\nimpl Law for Constant {}\n",
+    );
+    let lib = ("dem/src/lib.rs", "pub mod model;\n");
+    let found = crate_circles("dem/src", &[lib, m, law, constant]);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("dem/src/model/friction.rs"), "{found:?}");
+    // the trait in a file of its own: no circle
+    let law = (
+        "dem/src/model/friction.rs",
+        "use super::Constant;\npub enum F { C(Constant) }\n",
+    );
+    let trait_file = ("dem/src/model/law.rs", "pub trait Law {}\n");
+    let m = (
+        "dem/src/model/mod.rs",
+        "mod constant;\nmod friction;\nmod law;\npub use constant::Constant;\npub use law::Law;\n",
+    );
+    assert!(crate_circles("dem/src", &[lib, m, law, trait_file, constant]).is_empty());
+}
+
+#[test]
+fn a_re_export_that_its_own_file_uses_is_an_import() {
+    // deck/mod.rs re-exports `Part` and names it in its own struct; part.rs uses mod.rs's `N`
+    let m = (
+        "src/deck/mod.rs",
+        "mod part;\npub use part::Part;\npub struct Inputs { pub part: Part }\npub struct N;\n",
+    );
+    let part = (
+        "src/deck/part.rs",
+        "use super::N;\npub struct Part;\nfn f(_: N) {}\n",
+    );
+    let lib = ("src/lib.rs", "mod deck;\n");
+    let found = crate_circles("src", &[lib, m, part]);
+    assert_eq!(found.len(), 1, "{found:?}");
+    // only re-exported, not used by mod.rs's code: no import, no circle; nor is a module
+    // declaration of the same name (`mod part; pub use part::part;`) or a method `.part()`
+    let m = (
+        "src/deck/mod.rs",
+        "mod part;\npub use part::{part, Part};\npub struct N;\nfn g(x: &X) { x.part(); }\n",
+    );
+    assert!(crate_circles("src", &[lib, m, part]).is_empty());
+}
+
+#[test]
+fn the_length_rule_holds_every_crate_but_the_pending_folders() {
+    let long = lex::code(&function("long", 120));
+    let files: Vec<(String, String)> = [
+        "surrogate/src/friction/estimate.rs",
+        "dem/src/integrator/step.rs",
+        "src/plot/heat_map.rs",
+        "src/study/design/pipeline.rs",
+    ]
+    .iter()
+    .filter(|p| crate::held_to_length(p))
+    .map(|p| (p.to_string(), long.clone()))
+    .collect();
+    let found = rules::long_functions(&files, 100, &[]);
+    assert_eq!(found.len(), 3, "{found:?}");
+    assert!(
+        found.iter().all(|f| !f.contains("src/study/design/")),
+        "{found:?}"
+    );
+}

@@ -259,3 +259,46 @@ pub fn data_diameters(path: &Path) -> Vec<(u32, f64)> {
         .map(|f| (f[1].parse().unwrap(), f[5].parse().unwrap()))
         .collect()
 }
+
+/// The friction of the LAMMPS run (the mean spring force of its `log`) against the Rust run's
+/// (`dir/rust.json`): the slider slides and the two agree within 5 %. `what` and `p_max`
+/// (LAMMPS, Rust; GPa) go into the log line.
+pub fn assert_friction_agrees(what: &str, dir: &Path, log: &str, (pl, pr): (f64, f64)) {
+    let fr = json(&dir.join("rust.json"))["friction_mN"]
+        .as_f64()
+        .unwrap();
+    let fl = deck_friction(log);
+    eprintln!("{what}: P_max {pl} / {pr} GPa; friction LAMMPS {fl} / Rust {fr} mN");
+    assert!(fr > 0.3 * 0.5 * 0.05, "the slider must slide: {fr} mN");
+    assert!(
+        (fl - fr).abs() < 0.05 * fr,
+        "friction LAMMPS {fl} vs Rust {fr} mN"
+    );
+}
+
+/// `superlube lammps-check` on the run's dump in `dir` (export `meta`): at least `min` of its
+/// frames match the deck's time series `lrows` at a common step.
+pub fn assert_check_matches(
+    dir: &Path,
+    meta: &serde_json::Value,
+    lrows: &[std::collections::HashMap<String, f64>],
+    min: usize,
+) {
+    let out = bin()
+        .arg("lammps-check")
+        .arg(dir.join("contacts.dump"))
+        .arg("--out")
+        .arg(dir.join("check.csv"))
+        .output()
+        .unwrap();
+    assert_ok("lammps-check", &out);
+    let dt = meta["dt_us"].as_f64().unwrap();
+    let mut matched = 0;
+    for f in &csv(&dir.join("check.csv")) {
+        let t = f["step"] * dt;
+        if frame_matches(f, t, lrows) {
+            matched += 1;
+        }
+    }
+    assert!(matched >= min, "{matched} frames matched the time series");
+}

@@ -1,7 +1,7 @@
 //! `superlube lammps-check`: where the constant-μ LAMMPS run left the study's model — the
 //! contacts whose Hertz pressure exceeded P_crit, frame by frame, from the deck's contact dump.
 
-use super::dump::DumpReader;
+use super::dump::{DumpFrame, DumpReader};
 use super::meta::ExportMeta;
 use crate::DemError;
 use serde::Serialize;
@@ -149,12 +149,34 @@ pub fn check_dump<R: BufRead>(
             &format!("not a `{}` export.json", super::meta::FORMAT),
         ));
     }
-    let two_r = meta.contact_distance_um();
-    // per-site sizes: each pair's own contact distance and R_eff
-    let sized = meta.slider_radii_um.is_some() || meta.substrate_radii_um.is_some();
-    let pref = 2.0 * meta.e_star_gpa / std::f64::consts::PI;
-    let ids = &meta.ids;
-    let mut s = CheckSummary {
+    let mut s = empty_summary(meta);
+    let mut distinct = HashSet::new();
+    let mut sum_contacts = 0usize;
+    let mut failed = Vec::new();
+    for frame in DumpReader::new(input, name) {
+        let frame = frame?;
+        let mut r = frame_report(&frame, meta, name, &mut failed)?;
+        failed.sort_by_key(|f| (f.slider_index, f.substrate_index));
+        r.failed_contacts = failed.len();
+        sum_contacts += r.contacts;
+        tally(&mut s, &r, &failed, &mut distinct);
+        on_frame(&r, &failed)?;
+    }
+    if s.frames == 0 {
+        return Err(DemError::invalid(
+            "DUMP",
+            name,
+            "has no frames (did the run write its dump? the deck's dump_every must be > 0)",
+        ));
+    }
+    s.mean_contacts = sum_contacts as f64 / s.frames as f64;
+    s.distinct_failed_pairs = distinct.len();
+    Ok(s)
+}
+
+/// The summary before any frame.
+fn empty_summary(meta: &ExportMeta) -> CheckSummary {
+    CheckSummary {
         frames: 0,
         t_us: [0.0; 2],
         max_contacts: 0,
@@ -170,96 +192,103 @@ pub fn check_dump<R: BufRead>(
         mu: meta.mu,
         mu1: meta.mu1,
         mu2: meta.mu2,
+    }
+}
+
+/// One frame's report (its failed contacts not yet counted) and, in `failed` (cleared first),
+/// its contacts above P_crit. Errors on a pair that is no slider–substrate pair of `meta`.
+fn frame_report(
+    frame: &DumpFrame,
+    meta: &ExportMeta,
+    name: &str,
+    failed: &mut Vec<FailedContact>,
+) -> Result<FrameReport, DemError> {
+    let two_r = meta.contact_distance_um();
+    // per-site sizes: each pair's own contact distance and R_eff
+    let sized = meta.slider_radii_um.is_some() || meta.substrate_radii_um.is_some();
+    let pref = 2.0 * meta.e_star_gpa / std::f64::consts::PI;
+    let ids = &meta.ids;
+    let t_us = frame.step as f64 * meta.dt_us;
+    let mut r = FrameReport {
+        step: frame.step,
+        t_us,
+        phase: meta.steps.phase(frame.step),
+        contacts: 0,
+        p_max_gpa: 0.0,
+        failed_contacts: 0,
     };
-    let mut distinct = HashSet::new();
-    let mut sum_contacts = 0usize;
-    let mut failed = Vec::new();
-    for frame in DumpReader::new(input, name) {
-        let frame = frame?;
-        let t_us = frame.step as f64 * meta.dt_us;
-        let mut r = FrameReport {
-            step: frame.step,
-            t_us,
-            phase: meta.steps.phase(frame.step),
-            contacts: 0,
-            p_max_gpa: 0.0,
-            failed_contacts: 0,
+    failed.clear();
+    for p in &frame.pairs {
+        let (sl, sb) = if ids.slider.contains(p.id1) && ids.substrate.contains(p.id2) {
+            (p.id1, p.id2)
+        } else if ids.slider.contains(p.id2) && ids.substrate.contains(p.id1) {
+            (p.id2, p.id1)
+        } else {
+            return Err(DemError::invalid(
+                "DUMP",
+                format!("{name} step {}", frame.step),
+                &format!(
+                    "pair {}–{} is not a slider–substrate pair of this export (wrong export.json?)",
+                    p.id1, p.id2
+                ),
+            ));
         };
-        failed.clear();
-        for p in &frame.pairs {
-            let (sl, sb) = if ids.slider.contains(p.id1) && ids.substrate.contains(p.id2) {
-                (p.id1, p.id2)
-            } else if ids.slider.contains(p.id2) && ids.substrate.contains(p.id1) {
-                (p.id2, p.id1)
-            } else {
-                return Err(DemError::invalid(
-                    "DUMP",
-                    format!("{name} step {}", frame.step),
-                    &format!(
-                        "pair {}–{} is not a slider–substrate pair of this export (wrong export.json?)",
-                        p.id1, p.id2
-                    ),
-                ));
-            };
-            let (two_r, r_eff) = if sized {
-                meta.pair_um(
-                    (sl - ids.slider.first) as usize,
-                    (sb - ids.substrate.first) as usize,
-                )
-            } else {
-                (two_r, meta.r_eff_um)
-            };
-            let delta = two_r - p.dist;
-            if delta <= 0.0 {
-                continue;
-            }
-            let p0 = pref * (delta / r_eff).sqrt();
-            r.contacts += 1;
-            r.p_max_gpa = r.p_max_gpa.max(p0);
-            if p0 > meta.p_crit_gpa {
-                failed.push(FailedContact {
-                    step: frame.step,
-                    t_us,
-                    slider_index: sl - ids.slider.first,
-                    substrate_index: sb - ids.substrate.first,
-                    p0_gpa: p0,
-                });
-            }
+        let (two_r, r_eff) = if sized {
+            meta.pair_um(
+                (sl - ids.slider.first) as usize,
+                (sb - ids.substrate.first) as usize,
+            )
+        } else {
+            (two_r, meta.r_eff_um)
+        };
+        let delta = two_r - p.dist;
+        if delta <= 0.0 {
+            continue;
         }
-        failed.sort_by_key(|f| (f.slider_index, f.substrate_index));
-        r.failed_contacts = failed.len();
-        if s.frames == 0 {
-            s.t_us[0] = t_us;
+        let p0 = pref * (delta / r_eff).sqrt();
+        r.contacts += 1;
+        r.p_max_gpa = r.p_max_gpa.max(p0);
+        if p0 > meta.p_crit_gpa {
+            failed.push(FailedContact {
+                step: frame.step,
+                t_us,
+                slider_index: sl - ids.slider.first,
+                substrate_index: sb - ids.substrate.first,
+                p0_gpa: p0,
+            });
         }
-        s.t_us[1] = t_us;
-        s.frames += 1;
-        sum_contacts += r.contacts;
-        s.max_contacts = s.max_contacts.max(r.contacts);
-        if r.p_max_gpa > s.max_p_max_gpa {
-            s.max_p_max_gpa = r.p_max_gpa;
-            s.max_p_max_t_us = t_us;
-        }
-        if !failed.is_empty() {
-            s.frames_failed += 1;
-            if s.first_failed_t_us.is_none() {
-                s.first_failed_t_us = Some(t_us);
-                s.first_failed_phase = Some(r.phase);
-            }
-            s.max_failed_contacts = s.max_failed_contacts.max(failed.len());
-            for f in &failed {
-                distinct.insert((f.slider_index, f.substrate_index));
-            }
-        }
-        on_frame(&r, &failed)?;
     }
+    Ok(r)
+}
+
+/// Adds one frame's report `r` and its sorted `failed` contacts to the summary `s` and the set
+/// of distinct failed pairs.
+fn tally(
+    s: &mut CheckSummary,
+    r: &FrameReport,
+    failed: &[FailedContact],
+    distinct: &mut HashSet<(u64, u64)>,
+) {
+    let t_us = r.t_us;
     if s.frames == 0 {
-        return Err(DemError::invalid(
-            "DUMP",
-            name,
-            "has no frames (did the run write its dump? the deck's dump_every must be > 0)",
-        ));
+        s.t_us[0] = t_us;
     }
-    s.mean_contacts = sum_contacts as f64 / s.frames as f64;
-    s.distinct_failed_pairs = distinct.len();
-    Ok(s)
+    s.t_us[1] = t_us;
+    s.frames += 1;
+    s.max_contacts = s.max_contacts.max(r.contacts);
+    if r.p_max_gpa > s.max_p_max_gpa {
+        s.max_p_max_gpa = r.p_max_gpa;
+        s.max_p_max_t_us = t_us;
+    }
+    if !failed.is_empty() {
+        s.frames_failed += 1;
+        if s.first_failed_t_us.is_none() {
+            s.first_failed_t_us = Some(t_us);
+            s.first_failed_phase = Some(r.phase);
+        }
+        s.max_failed_contacts = s.max_failed_contacts.max(failed.len());
+        for f in failed {
+            distinct.insert((f.slider_index, f.substrate_index));
+        }
+    }
 }

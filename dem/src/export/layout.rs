@@ -139,78 +139,16 @@ pub fn layout(
     let n = spec.slider_sites.len();
     assert_eq!(local.len(), n, "local sites must match the slider sites");
     let rho = spec.slider_material.density;
-    let rho_sb = spec.substrate_material.density;
-    let d_sb = 2.0 * spec.substrate_sphere_radius;
     let dc = 2.0 * params.mount.control_sphere_radius;
     let mut atoms = Vec::with_capacity(spec.substrate.len() + 3 * n + 1);
-    let mut id = 0u64;
-    let mut push = |kind, pos, diameter, density, molecule| {
-        id += 1;
-        atoms.push(Atom {
-            id,
-            kind,
-            pos,
-            diameter,
-            density,
-            molecule,
-        });
-        id
-    };
     let sub_first = 1;
-    for (j, p) in spec.substrate.iter().enumerate() {
-        let d = match &spec.substrate_radii {
-            None => d_sb,
-            Some(r) => 2.0 * r[j],
-        };
-        push(TYPE_SUBSTRATE, *p, d, rho_sb, 0);
-    }
+    body_atoms(spec, &mut atoms);
     let sl_first = sub_first + spec.substrate.len() as u64;
-    for (i, (s, z)) in spec.slider_sites.iter().zip(&spec.slider_z).enumerate() {
-        push(
-            TYPE_SLIDER,
-            [s[0], s[1], *z],
-            2.0 * spec.slider_radius(i),
-            rho,
-            0,
-        );
-    }
-    let quadrant = |q: &[f64; 2]| (1 + (sign(q[0]) + 1) + 3 * (sign(q[1]) + 1)) as u32;
     let zc = spec.control_z;
-    // with per-site sizes slider sphere i's ties (and so its two control spheres) sit its
-    // anchor offset R − r_i higher: the ties keep their rest lengths
-    let dz = |i: usize| match &spec.slider_radii {
-        None => 0.0,
-        Some(r) => spec.slider_sphere_radius - r[i],
-    };
+    control_atoms(spec, local, dc, tie_length, &mut atoms);
     let ax_first = sl_first + n as u64;
-    for (i, (s, q)) in spec.slider_sites.iter().zip(local).enumerate() {
-        push(
-            TYPE_CONTROL_AXIAL,
-            [s[0], s[1], zc + dz(i) + tie_length],
-            dc,
-            0.5 * rho,
-            quadrant(q),
-        );
-    }
     let lat_first = ax_first + n as u64;
-    for (i, (s, q)) in spec.slider_sites.iter().zip(local).enumerate() {
-        push(
-            TYPE_CONTROL_LATERAL,
-            [s[0], s[1], zc + dz(i)],
-            dc,
-            0.5 * rho,
-            quadrant(q),
-        );
-    }
-    let mut c = [0.0; 2];
-    for s in &spec.slider_sites {
-        c[0] += s[0];
-        c[1] += s[1];
-    }
-    if n > 0 {
-        c[0] /= n as f64;
-        c[1] /= n as f64;
-    }
+    let c = centroid(&spec.slider_sites);
     let (sa, ca) = params.protocol.alpha.sin_cos();
     let support = [
         c[0] + params.protocol.support_lead * ca,
@@ -218,7 +156,7 @@ pub fn layout(
         zc + tie_length,
     ];
     let sup_first = lat_first + n as u64;
-    push(TYPE_SUPPORT, support, dc, rho, 0);
+    push(&mut atoms, TYPE_SUPPORT, support, dc, rho, 0);
     let mut bonds = Vec::with_capacity(2 * n);
     for i in 0..n as u64 {
         bonds.push(Bond {
@@ -255,6 +193,108 @@ pub fn layout(
         half_distance,
         support,
     }
+}
+
+/// Appends an atom with the next ID (IDs count from 1 in push order); returns its ID.
+fn push(
+    atoms: &mut Vec<Atom>,
+    kind: u32,
+    pos: [f64; 3],
+    diameter: f64,
+    density: f64,
+    molecule: u32,
+) -> u64 {
+    let id = atoms.len() as u64 + 1;
+    atoms.push(Atom {
+        id,
+        kind,
+        pos,
+        diameter,
+        density,
+        molecule,
+    });
+    id
+}
+
+/// The substrate atoms, then the slider atoms, each with its own diameter (its body's, or its
+/// site's with per-site sizes).
+fn body_atoms(spec: &SystemSpec, atoms: &mut Vec<Atom>) {
+    let rho = spec.slider_material.density;
+    let rho_sb = spec.substrate_material.density;
+    let d_sb = 2.0 * spec.substrate_sphere_radius;
+    for (j, p) in spec.substrate.iter().enumerate() {
+        let d = match &spec.substrate_radii {
+            None => d_sb,
+            Some(r) => 2.0 * r[j],
+        };
+        push(atoms, TYPE_SUBSTRATE, *p, d, rho_sb, 0);
+    }
+    for (i, (s, z)) in spec.slider_sites.iter().zip(&spec.slider_z).enumerate() {
+        push(
+            atoms,
+            TYPE_SLIDER,
+            [s[0], s[1], *z],
+            2.0 * spec.slider_radius(i),
+            rho,
+            0,
+        );
+    }
+}
+
+/// The axial control spheres (`tie_length` above), then the lateral ones, one per slider
+/// sphere (diameter `dc`, m; half the slider's density), each in the rigid body of its
+/// quadrant of the slider's own frame (`local`).
+fn control_atoms(
+    spec: &SystemSpec,
+    local: &[[f64; 2]],
+    dc: f64,
+    tie_length: f64,
+    atoms: &mut Vec<Atom>,
+) {
+    let rho = spec.slider_material.density;
+    let quadrant = |q: &[f64; 2]| (1 + (sign(q[0]) + 1) + 3 * (sign(q[1]) + 1)) as u32;
+    let zc = spec.control_z;
+    // with per-site sizes slider sphere i's ties (and so its two control spheres) sit its
+    // anchor offset R − r_i higher: the ties keep their rest lengths
+    let dz = |i: usize| match &spec.slider_radii {
+        None => 0.0,
+        Some(r) => spec.slider_sphere_radius - r[i],
+    };
+    for (i, (s, q)) in spec.slider_sites.iter().zip(local).enumerate() {
+        push(
+            atoms,
+            TYPE_CONTROL_AXIAL,
+            [s[0], s[1], zc + dz(i) + tie_length],
+            dc,
+            0.5 * rho,
+            quadrant(q),
+        );
+    }
+    for (i, (s, q)) in spec.slider_sites.iter().zip(local).enumerate() {
+        push(
+            atoms,
+            TYPE_CONTROL_LATERAL,
+            [s[0], s[1], zc + dz(i)],
+            dc,
+            0.5 * rho,
+            quadrant(q),
+        );
+    }
+}
+
+/// The centroid of the slider `sites` (m; the origin without sites).
+fn centroid(sites: &[[f64; 2]]) -> [f64; 2] {
+    let n = sites.len();
+    let mut c = [0.0; 2];
+    for s in sites {
+        c[0] += s[0];
+        c[1] += s[1];
+    }
+    if n > 0 {
+        c[0] /= n as f64;
+        c[1] /= n as f64;
+    }
+    c
 }
 
 #[cfg(test)]

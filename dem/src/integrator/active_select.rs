@@ -28,10 +28,57 @@ impl Sim {
     ) -> (Vec<u32>, Vec<u32>, Vec<u32>) {
         let n = was_sl.len();
         let nb = was_sub.len();
-        let margin = self.params.active.margin;
-        let two_r = self.spec.contact_distance();
         let mut sl_on = vec![false; n];
         let mut sub_on = vec![false; nb];
+        let (pairs, late) = self.active_pairs(&mut sl_on, &mut sub_on, old_pairs, initial);
+        // per-site sizes: a body whose spheres differ in mass keeps every sphere integrated (the
+        // common mode of the free slider spheres and the ringing maps take one mass); the
+        // other body's spheres still leave the set
+        if self.spec.slider_radii.is_some() {
+            sl_on.fill(true);
+        }
+        if self.spec.substrate_radii.is_some() {
+            sub_on.fill(true);
+        }
+        let [w_xy, w_z, w_b] = self.free_omega2();
+        let (ring_sl, ring_sl_dev, on_sl, off_sl) =
+            self.ring_slider(&mut sl_on, was_sl, initial, [w_xy, w_z]);
+        let (ring_sub, ring_sub_dev, on_sub, off_sub) =
+            self.ring_substrate(&mut sub_on, was_sub, initial, w_b);
+        let (on, off) = (on_sl + on_sub, off_sl + off_sub);
+        let r = &mut self.state.ringing;
+        r.sl = ring_sl;
+        r.sl_dev = ring_sl_dev;
+        r.sub = ring_sub;
+        r.sub_dev = ring_sub_dev;
+        let st = &mut self.state.stats;
+        if !initial {
+            st.activations += on;
+            st.deactivations += off;
+        }
+        st.late_pairs += late;
+        let list = |f: &[bool]| {
+            f.iter()
+                .enumerate()
+                .filter(|(_, &b)| b)
+                .map(|(i, _)| i as u32)
+                .collect::<Vec<u32>>()
+        };
+        (list(&sl_on), list(&sub_on), pairs)
+    }
+
+    /// The candidate pairs within the activation margin (indices into the pair list, sorted),
+    /// their spheres marked in `sl_on` / `sub_on`, and how many of them entered the set already
+    /// overlapping (late: the margin was too small).
+    fn active_pairs(
+        &self,
+        sl_on: &mut [bool],
+        sub_on: &mut [bool],
+        old_pairs: &[(u32, u32)],
+        initial: bool,
+    ) -> (Vec<u32>, u64) {
+        let margin = self.params.active.margin;
+        let two_r = self.spec.contact_distance();
         let mut pairs = Vec::new();
         let mut late = 0u64;
         {
@@ -61,21 +108,26 @@ impl Sim {
                 }
             }
         }
-        // per-site sizes: a body whose spheres differ in mass keeps every sphere integrated (the
-        // common mode of the free slider spheres and the ringing maps take one mass); the
-        // other body's spheres still leave the set
-        if self.spec.slider_radii.is_some() {
-            sl_on.fill(true);
-        }
-        if self.spec.substrate_radii.is_some() {
-            sub_on.fill(true);
-        }
+        (pairs, late)
+    }
+
+    /// The slider spheres' new ringing list (indices, deviations) and how many spheres entered
+    /// and left the set; a sphere leaving is added to the aggregate mode, one entering taken out
+    /// of it (at construction, one off its rest state stays on in `sl_on`). `w`: the free
+    /// modes' ω² (lateral, normal).
+    fn ring_slider(
+        &mut self,
+        sl_on: &mut [bool],
+        was_sl: &[bool],
+        initial: bool,
+        [w_xy, w_z]: [f64; 2],
+    ) -> (Vec<u32>, Vec<[f64; 6]>, u64, u64) {
+        let n = was_sl.len();
         // slider spheres: deviations of the ringing ones, as of now
         let mut dev_sl: Vec<Option<[f64; 6]>> = vec![None; n];
         for (k, &i) in self.state.ringing.sl.iter().enumerate() {
             dev_sl[i as usize] = Some(self.state.ringing.sl_dev[k]);
         }
-        let [w_xy, w_z, w_b] = self.free_omega2();
         let rigid = self.params.mount.rigid_z;
         let (mut on, mut off) = (0u64, 0u64);
         let mut ring_sl = Vec::new();
@@ -130,6 +182,21 @@ impl Sim {
                 ring_sl_dev.push(d);
             }
         }
+        (ring_sl, ring_sl_dev, on, off)
+    }
+
+    /// The substrate spheres' new ringing list (indices, deviations) and how many spheres
+    /// entered and left the set (at construction, one off its site stays on in `sub_on`). `w_b`:
+    /// the substrate tether's ω².
+    fn ring_substrate(
+        &self,
+        sub_on: &mut [bool],
+        was_sub: &[bool],
+        initial: bool,
+        w_b: f64,
+    ) -> (Vec<u32>, Vec<[f64; 4]>, u64, u64) {
+        let nb = was_sub.len();
+        let (mut on, mut off) = (0u64, 0u64);
         let mut dev_sub: Vec<Option<[f64; 4]>> = vec![None; nb];
         for (k, &j) in self.state.ringing.sub.iter().enumerate() {
             dev_sub[j as usize] = Some(self.state.ringing.sub_dev[k]);
@@ -165,25 +232,7 @@ impl Sim {
                 ring_sub_dev.push(d);
             }
         }
-        let r = &mut self.state.ringing;
-        r.sl = ring_sl;
-        r.sl_dev = ring_sl_dev;
-        r.sub = ring_sub;
-        r.sub_dev = ring_sub_dev;
-        let st = &mut self.state.stats;
-        if !initial {
-            st.activations += on;
-            st.deactivations += off;
-        }
-        st.late_pairs += late;
-        let list = |f: &[bool]| {
-            f.iter()
-                .enumerate()
-                .filter(|(_, &b)| b)
-                .map(|(i, _)| i as u32)
-                .collect::<Vec<u32>>()
-        };
-        (list(&sl_on), list(&sub_on), pairs)
+        (ring_sub, ring_sub_dev, on, off)
     }
 
     /// Adds (`sign` = 1) or removes (−1) a slider sphere's deviation `d` (with its `g`) to / from

@@ -107,28 +107,7 @@ impl Body {
             .slider_material
             .sphere_mass(params.mount.control_sphere_radius);
         let m_cl = n as f64 * m_c;
-        let sizes = spec.has_sizes().then(|| {
-            let sl_r: Vec<f64> = (0..n).map(|i| spec.slider_radius(i)).collect();
-            let sub_r: Vec<f64> = (0..spec.substrate.len())
-                .map(|j| spec.substrate_radius(j))
-                .collect();
-            Sizes {
-                sl_m: sl_r
-                    .iter()
-                    .map(|&r| spec.slider_material.sphere_mass(r))
-                    .collect(),
-                sl_dz: sl_r
-                    .iter()
-                    .map(|&r| spec.slider_sphere_radius - r)
-                    .collect(),
-                sub_m: sub_r
-                    .iter()
-                    .map(|&r| spec.substrate_material.sphere_mass(r))
-                    .collect(),
-                sl_r,
-                sub_r,
-            }
-        });
+        let sizes = spec.has_sizes().then(|| Sizes::new(spec));
         let mz = match (&sizes, params.mount.rigid_z) {
             (Some(z), true) => m_cl + z.sl_m.iter().sum::<f64>(),
             (None, true) => m_cl + n as f64 * m_s,
@@ -146,34 +125,15 @@ impl Body {
             arm[0] = arm[0].max(o[0].abs());
             arm[1] = arm[1].max(o[1].abs());
         }
-        let unit = if params.mount.rigid_z { m_c + m_s } else { m_c };
         let tilt = spec.tilt_stiffness.map(|k| {
-            let mut m = [[0.0; 3]; 3];
-            match &sizes {
-                // each sphere moves with the layer in z with its own mass
-                Some(z) if params.mount.rigid_z => {
-                    for (o, mi) in off.iter().zip(&z.sl_m) {
-                        let g = g_of(*o);
-                        for a in 0..3 {
-                            for b in 0..3 {
-                                m[a][b] += (m_c + mi) * g[a] * g[b];
-                            }
-                        }
-                    }
-                }
-                _ => {
-                    for a in 0..3 {
-                        for b in 0..3 {
-                            m[a][b] = unit * g_all[a][b];
-                        }
-                    }
-                }
-            }
-            Tilt {
-                m,
-                m_inv: inverse3(&m),
+            Tilt::new(
                 k,
-            }
+                &off,
+                sizes.as_ref(),
+                &g_all,
+                [m_c, m_s],
+                params.mount.rigid_z,
+            )
         });
         Body {
             off,
@@ -187,6 +147,76 @@ impl Body {
             g_all,
             arm,
             sizes,
+        }
+    }
+}
+
+impl Sizes {
+    /// The per-site sizes of `spec` (one with [`SystemSpec::has_sizes`]): radii, masses and
+    /// anchor offsets. O(spheres).
+    fn new(spec: &SystemSpec) -> Sizes {
+        let n = spec.slider_sites.len();
+        let sl_r: Vec<f64> = (0..n).map(|i| spec.slider_radius(i)).collect();
+        let sub_r: Vec<f64> = (0..spec.substrate.len())
+            .map(|j| spec.substrate_radius(j))
+            .collect();
+        Sizes {
+            sl_m: sl_r
+                .iter()
+                .map(|&r| spec.slider_material.sphere_mass(r))
+                .collect(),
+            sl_dz: sl_r
+                .iter()
+                .map(|&r| spec.slider_sphere_radius - r)
+                .collect(),
+            sub_m: sub_r
+                .iter()
+                .map(|&r| spec.substrate_material.sphere_mass(r))
+                .collect(),
+            sl_r,
+            sub_r,
+        }
+    }
+}
+
+impl Tilt {
+    /// The tilt data of a layer of rotational stiffness `k` (N·m/rad) over sphere offsets `off`
+    /// (m): the mass matrix of q from `[m_c, m_s]` (control, slider sphere masses, kg; with
+    /// `rigid_z` and `sizes` each sphere's own), `g_all` = Σ g gᵀ, its inverse.
+    fn new(
+        k: [[f64; 2]; 2],
+        off: &[[f64; 2]],
+        sizes: Option<&Sizes>,
+        g_all: &[[f64; 3]; 3],
+        [m_c, m_s]: [f64; 2],
+        rigid_z: bool,
+    ) -> Tilt {
+        let unit = if rigid_z { m_c + m_s } else { m_c };
+        let mut m = [[0.0; 3]; 3];
+        match sizes {
+            // each sphere moves with the layer in z with its own mass
+            Some(z) if rigid_z => {
+                for (o, mi) in off.iter().zip(&z.sl_m) {
+                    let g = g_of(*o);
+                    for a in 0..3 {
+                        for b in 0..3 {
+                            m[a][b] += (m_c + mi) * g[a] * g[b];
+                        }
+                    }
+                }
+            }
+            _ => {
+                for a in 0..3 {
+                    for b in 0..3 {
+                        m[a][b] = unit * g_all[a][b];
+                    }
+                }
+            }
+        }
+        Tilt {
+            m,
+            m_inv: inverse3(&m),
+            k,
         }
     }
 }

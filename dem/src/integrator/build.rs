@@ -23,45 +23,7 @@ impl Sim {
         dt: f64,
         dt_crit: f64,
     ) -> Result<Sim, DemError> {
-        if !(dt.is_finite() && dt > 0.0) {
-            return Err(DemError::invalid("dt_us", dt * 1e6, "must be positive"));
-        }
-        if spec.slider_sites.is_empty() {
-            return Err(DemError::invalid(
-                "slider.radius_um",
-                0,
-                "the slider has no spheres",
-            ));
-        }
-        if params.active.enabled {
-            let m = params.active.margin;
-            if !(m.is_finite() && m > 0.0 && m <= params.numerics.skin) {
-                return Err(DemError::invalid(
-                    "active_margin_nm",
-                    m * 1e9,
-                    &format!(
-                        "must be positive and at most the neighbour skin ({} nm)",
-                        params.numerics.skin * 1e9
-                    ),
-                ));
-            }
-            let ks = [
-                params.mount.k_slider_xy,
-                params.mount.k_substrate_xy,
-                if params.mount.rigid_z {
-                    1.0
-                } else {
-                    params.mount.k_slider_z
-                },
-            ];
-            if ks.iter().any(|k| !(k.is_finite() && *k > 0.0)) {
-                return Err(DemError::invalid(
-                    "active_set",
-                    "on",
-                    "needs positive slider and tether springs (a free particle is never at rest)",
-                ));
-            }
-        }
+        check_knobs(&spec, &params, dt)?;
         let body = Body::new(&spec, &params);
         let mount = (params.mount.implicit_mount && !params.mount.rigid_z)
             .then(|| Mount::new(&body, &params, dt));
@@ -79,42 +41,7 @@ impl Sim {
                 dt_crit_us: dt_crit * 1e6,
             });
         }
-        let n = spec.slider_sites.len();
-        let nb = spec.substrate.len();
-        let sl_x: Vec<[f64; 3]> = spec
-            .slider_sites
-            .iter()
-            .zip(&spec.slider_z)
-            .map(|(s, z)| [s[0], s[1], *z])
-            .collect();
-        let sub_x: Vec<[f64; 2]> = spec.substrate.iter().map(|p| [p[0], p[1]]).collect();
-        // Every particle starts in the dense set; the first evaluation keeps those that touch
-        // or deviate from their rest state.
-        let act = Active {
-            sl: (0..n as u32).collect(),
-            sl_x: sl_x.clone(),
-            sl_v: vec![[0.0; 3]; n],
-            sl_f: vec![[0.0; 3]; n],
-            sl_x0: sl_x.clone(),
-            sub: (0..nb as u32).collect(),
-            sub_x: sub_x.clone(),
-            sub_v: vec![[0.0; 2]; nb],
-            sub_f: vec![[0.0; 2]; nb],
-            sub_x0: sub_x.clone(),
-            ..Default::default()
-        };
-        let state = State {
-            sub_v: vec![[0.0; 2]; nb],
-            sl_v: vec![[0.0; 3]; n],
-            ref_sub: sub_x.clone(),
-            ref_sl: sl_x.clone(),
-            sub_x,
-            sl_x,
-            act,
-            cl_x: [body.centre0[0], body.centre0[1], spec.control_z],
-            held_xy: true,
-            ..Default::default()
-        };
+        let state = initial_state(&spec, &body);
         let h_min = spec
             .substrate
             .iter()
@@ -143,5 +70,92 @@ impl Sim {
         sim.evaluate(true);
         sim.forces(Exec::Alone, 0.0, false);
         Ok(sim)
+    }
+}
+
+/// The knobs' checks before anything is built: a positive step `dt` (s), a slider with
+/// spheres, and with the active set a margin within the skin and springs that bring every
+/// particle to rest.
+fn check_knobs(spec: &SystemSpec, params: &SimParams, dt: f64) -> Result<(), DemError> {
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(DemError::invalid("dt_us", dt * 1e6, "must be positive"));
+    }
+    if spec.slider_sites.is_empty() {
+        return Err(DemError::invalid(
+            "slider.radius_um",
+            0,
+            "the slider has no spheres",
+        ));
+    }
+    if params.active.enabled {
+        let m = params.active.margin;
+        if !(m.is_finite() && m > 0.0 && m <= params.numerics.skin) {
+            return Err(DemError::invalid(
+                "active_margin_nm",
+                m * 1e9,
+                &format!(
+                    "must be positive and at most the neighbour skin ({} nm)",
+                    params.numerics.skin * 1e9
+                ),
+            ));
+        }
+        let ks = [
+            params.mount.k_slider_xy,
+            params.mount.k_substrate_xy,
+            if params.mount.rigid_z {
+                1.0
+            } else {
+                params.mount.k_slider_z
+            },
+        ];
+        if ks.iter().any(|k| !(k.is_finite() && *k > 0.0)) {
+            return Err(DemError::invalid(
+                "active_set",
+                "on",
+                "needs positive slider and tether springs (a free particle is never at rest)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The state at rest in the layout `spec`, every particle in the dense set (the first
+/// evaluation keeps those that touch or deviate from their rest state).
+fn initial_state(spec: &SystemSpec, body: &Body) -> State {
+    let n = spec.slider_sites.len();
+    let nb = spec.substrate.len();
+    let sl_x: Vec<[f64; 3]> = spec
+        .slider_sites
+        .iter()
+        .zip(&spec.slider_z)
+        .map(|(s, z)| [s[0], s[1], *z])
+        .collect();
+    let sub_x: Vec<[f64; 2]> = spec.substrate.iter().map(|p| [p[0], p[1]]).collect();
+    // Every particle starts in the dense set; the first evaluation keeps those that touch
+    // or deviate from their rest state.
+    let act = Active {
+        sl: (0..n as u32).collect(),
+        sl_x: sl_x.clone(),
+        sl_v: vec![[0.0; 3]; n],
+        sl_f: vec![[0.0; 3]; n],
+        sl_x0: sl_x.clone(),
+        sub: (0..nb as u32).collect(),
+        sub_x: sub_x.clone(),
+        sub_v: vec![[0.0; 2]; nb],
+        sub_f: vec![[0.0; 2]; nb],
+        sub_x0: sub_x.clone(),
+        ..Default::default()
+    };
+    State {
+        sub_v: vec![[0.0; 2]; nb],
+        sl_v: vec![[0.0; 3]; n],
+        ref_sub: sub_x.clone(),
+        ref_sl: sl_x.clone(),
+        sub_x,
+        sl_x,
+        act,
+        cl_x: [body.centre0[0], body.centre0[1], spec.control_z],
+        held_xy: true,
+        ..Default::default()
     }
 }

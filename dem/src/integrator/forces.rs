@@ -117,10 +117,38 @@ impl Sim {
     /// `defer_substrate` the substrate spheres' force and second half kick are left to the next
     /// step's fused first pass ([`Sim::kick_drift`]).
     pub(crate) fn forces(&mut self, exec: Exec, h: f64, defer_substrate: bool) {
-        let p = &self.params;
-        let rel = p.numerics.damping_frame == DampingFrame::Relative;
+        let rel = self.params.numerics.damping_frame == DampingFrame::Relative;
         let inv_tau = self.inv_tau();
         let (q, qd) = (self.q(), self.qdot());
+        // 1. slider spheres and their pairs
+        let (r, peak) = self.slider_forces(exec, h, rel, inv_tau, q, qd);
+        // 2. substrate spheres (deferred when pipelined: see `Sim::run_steps`)
+        if !defer_substrate {
+            self.substrate_forces(exec, h);
+        }
+        self.state.p0_peak = self.state.p0_peak.max(peak);
+        // 3. common mode of the inactive slider spheres
+        self.common_mode_forces(h, rel, inv_tau, qd);
+        // 4. control layer: reactions, load, mount, damping, pulling spring; second half kick
+        self.control_forces(r, rel, inv_tau, qd);
+        if h != 0.0 {
+            self.kick_control_second(h);
+        }
+    }
+
+    /// The slider spheres' forces with their pairs' and their second half kick by `h` (one
+    /// pass over the slider chunks); the chunks' reactions on the control layer summed in chunk
+    /// order (force x, y, z, tilt moments) and the peak pressure p0 (Pa).
+    fn slider_forces(
+        &mut self,
+        exec: Exec,
+        h: f64,
+        rel: bool,
+        inv_tau: f64,
+        q: [f64; 3],
+        qd: [f64; 3],
+    ) -> ([f64; 5], f64) {
+        let p = &self.params;
         let s = &mut self.state;
         let ch = self.idx.chunks;
         let n_sl = s.act.sl.len();
@@ -188,14 +216,13 @@ impl Sim {
             }
             peak = peak.max(part[5]);
         }
-        // 2. substrate spheres (deferred when pipelined: see `Sim::run_steps`)
-        if !defer_substrate {
-            self.substrate_forces(exec, h);
-        }
+        (r, peak)
+    }
+
+    /// The common mode of the inactive slider spheres: its forces and second half kick by `h`.
+    fn common_mode_forces(&mut self, h: f64, rel: bool, inv_tau: f64, qd: [f64; 3]) {
         let p = &self.params;
         let s = &mut self.state;
-        s.p0_peak = s.p0_peak.max(peak);
-        // 3. common mode of the inactive slider spheres
         let m = self.body.m_s;
         let implicit = self.mount.is_some();
         {
@@ -225,7 +252,14 @@ impl Sim {
                 }
             }
         }
-        // 4. control layer: reactions, load, mount, damping, pulling spring; second half kick
+    }
+
+    /// The control layer's force and tilt moments: the slider spheres' reactions `r`, the free
+    /// ones', the load, the mount, the damping and the pulling spring.
+    fn control_forces(&mut self, r: [f64; 5], rel: bool, inv_tau: f64, qd: [f64; 3]) {
+        let p = &self.params;
+        let s = &mut self.state;
+        let implicit = self.mount.is_some();
         let n_in = self.idx.n_in as f64;
         let mut f = [r[0], r[1], r[2]];
         let mut qt = [r[3], r[4]];
@@ -267,9 +301,6 @@ impl Sim {
         }
         s.cl_f = f;
         s.tilt_f = qt;
-        if h != 0.0 {
-            self.kick_control_second(h);
-        }
     }
 
     /// Force and second half kick (`h`) of the active substrate spheres (one pass).

@@ -17,6 +17,7 @@ mod active_select;
 pub(crate) mod body;
 mod build;
 pub(crate) mod chunks;
+mod drift;
 pub(crate) mod forces;
 pub(crate) mod kernel;
 pub(crate) mod mount;

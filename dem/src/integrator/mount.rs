@@ -32,10 +32,10 @@
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
 
-use super::body::{dot3, g_of, inverse3, mat_vec, Body};
+use super::body::{dot3, g_of, inverse3, mat_vec, Body, Sizes};
 use super::kernel::Index;
 use crate::params::DampingFrame;
-use crate::system::State;
+use crate::system::{Active, State};
 use crate::SimParams;
 
 /// The constant data of the implicit mount step for one `dt` (SI).
@@ -196,36 +196,10 @@ impl Mount {
         let qd0 = qd_in.map(|v| mt.decay * v);
         // active spheres: K_c(h), D(h); the sums Σ g (z − g·q) and Σ g rhs
         let a = &mut s.act;
-        let (mut e_sum, mut r_sum) = ([0.0; 3], [0.0; 3]);
         // with per-sphere sizes: each sphere's mass, a_i and anchor offset; r_sum then holds
         // Σ g rhs/a_i (the one-mass path divides by a once, below)
         let sized = body.sizes.as_ref().zip(mt.a_each.as_deref());
-        for k in 0..a.sl.len() {
-            let i = a.sl[k] as usize;
-            let g = mt.g(off[i]);
-            let v = &mut a.sl_v[k][2];
-            match sized {
-                None => {
-                    *v = mt.damp(*v + hm * a.sl_f[k][2], dot3(g, qd_in));
-                    let dz = a.sl_x[k][2] - dot3(g, q0);
-                    let rhs = 2.0 * m_s * *v - dt * kz * dz;
-                    for r in 0..3 {
-                        e_sum[r] += g[r] * dz;
-                        r_sum[r] += g[r] * rhs;
-                    }
-                }
-                Some((z, ae)) => {
-                    let mi = z.sl_m[i];
-                    *v = mt.damp(*v + h / mi * a.sl_f[k][2], dot3(g, qd_in));
-                    let dz = a.sl_x[k][2] - dot3(g, q0) - z.sl_dz[i];
-                    let rhs = (2.0 * mi * *v - dt * kz * dz) / ae[i];
-                    for r in 0..3 {
-                        e_sum[r] += g[r] * dz;
-                        r_sum[r] += g[r] * rhs;
-                    }
-                }
-            }
-        }
+        let (e_sum, r_sum) = mt.sphere_sums(a, off, sized, [dt, hm, kz, m_s], q0, qd_in);
         // common mode of the free spheres (w relative, s absolute) and the ringing aggregate
         let c = &mut s.common;
         let mut rhs_w = [0.0; 3];
@@ -261,7 +235,85 @@ impl Mount {
             qd1[r] = 2.0 * u[r] - qd0[r];
         }
         // back-substitution: spheres, common mode, aggregate; then D(h)
-        let a = &mut s.act;
+        mt.back_substitute(&mut s.act, off, sized, [dt, m_s, kz], q0, u, qd1);
+        let c = &mut s.common;
+        for r in 0..3 {
+            let uw = (rhs_w[r] + mt.gamma * u[r]) / mt.a;
+            c.w[r] += dt * (uw - u[r]);
+            c.s[r] = mt.damp(2.0 * uw - c.s[r], qd1[r]);
+            c.dz[r] += dt * ud[r];
+            c.dzv[r] = mt.decay * (2.0 * ud[r] - c.dzv[r]);
+        }
+        s.cl_x[2] = q0[0] + dt * u[0];
+        s.cl_v[2] = mt.decay * qd1[0];
+        if mt.tilting {
+            for r in 0..2 {
+                s.tilt[r] = q0[r + 1] + dt * u[r + 1];
+                s.tilt_v[r] = mt.decay * qd1[r + 1];
+            }
+        }
+    }
+
+    /// The active spheres' `K_c(h)`, `D(h)` of their z velocities, and the sums Σ g (z − g·q)
+    /// and Σ g rhs (Σ g rhs/a_i with per-sphere sizes `sized`). `c`: dt (s), h/m (s/kg), k_z
+    /// (N/m), m (kg); `q0`, `qd_in`: the layer's z state at the start.
+    #[inline]
+    fn sphere_sums(
+        &self,
+        a: &mut Active,
+        off: &[[f64; 2]],
+        sized: Option<(&Sizes, &[f64])>,
+        [dt, hm, kz, m_s]: [f64; 4],
+        q0: [f64; 3],
+        qd_in: [f64; 3],
+    ) -> ([f64; 3], [f64; 3]) {
+        let mt = self;
+        let h = 0.5 * dt;
+        let (mut e_sum, mut r_sum) = ([0.0; 3], [0.0; 3]);
+        for k in 0..a.sl.len() {
+            let i = a.sl[k] as usize;
+            let g = mt.g(off[i]);
+            let v = &mut a.sl_v[k][2];
+            match sized {
+                None => {
+                    *v = mt.damp(*v + hm * a.sl_f[k][2], dot3(g, qd_in));
+                    let dz = a.sl_x[k][2] - dot3(g, q0);
+                    let rhs = 2.0 * m_s * *v - dt * kz * dz;
+                    for r in 0..3 {
+                        e_sum[r] += g[r] * dz;
+                        r_sum[r] += g[r] * rhs;
+                    }
+                }
+                Some((z, ae)) => {
+                    let mi = z.sl_m[i];
+                    *v = mt.damp(*v + h / mi * a.sl_f[k][2], dot3(g, qd_in));
+                    let dz = a.sl_x[k][2] - dot3(g, q0) - z.sl_dz[i];
+                    let rhs = (2.0 * mi * *v - dt * kz * dz) / ae[i];
+                    for r in 0..3 {
+                        e_sum[r] += g[r] * dz;
+                        r_sum[r] += g[r] * rhs;
+                    }
+                }
+            }
+        }
+        (e_sum, r_sum)
+    }
+
+    /// The active spheres' back-substitution: z and its velocity from the layer's `u`, then
+    /// `D(h)` against the layer's new `qd1`. `c`: dt (s), m (kg), k_z (N/m).
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn back_substitute(
+        &self,
+        a: &mut Active,
+        off: &[[f64; 2]],
+        sized: Option<(&Sizes, &[f64])>,
+        [dt, m_s, kz]: [f64; 3],
+        q0: [f64; 3],
+        u: [f64; 3],
+        qd1: [f64; 3],
+    ) {
+        let mt = self;
         for k in 0..a.sl.len() {
             let i = a.sl[k] as usize;
             let g = mt.g(off[i]);
@@ -278,22 +330,6 @@ impl Mount {
             };
             *x += dt * ub;
             *v = mt.damp(2.0 * ub - *v, dot3(g, qd1));
-        }
-        let c = &mut s.common;
-        for r in 0..3 {
-            let uw = (rhs_w[r] + mt.gamma * u[r]) / mt.a;
-            c.w[r] += dt * (uw - u[r]);
-            c.s[r] = mt.damp(2.0 * uw - c.s[r], qd1[r]);
-            c.dz[r] += dt * ud[r];
-            c.dzv[r] = mt.decay * (2.0 * ud[r] - c.dzv[r]);
-        }
-        s.cl_x[2] = q0[0] + dt * u[0];
-        s.cl_v[2] = mt.decay * qd1[0];
-        if mt.tilting {
-            for r in 0..2 {
-                s.tilt[r] = q0[r + 1] + dt * u[r + 1];
-                s.tilt_v[r] = mt.decay * qd1[r + 1];
-            }
         }
     }
 }

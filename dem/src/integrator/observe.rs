@@ -253,6 +253,36 @@ impl Sim {
         // A slider sphere torn from its control-layer site by more than its radius, or a
         // slider below the substrate plane, means the integration has blown up (the overlap
         // bound alone misses spheres that jumped clean through the substrate).
+        self.check_slider_spheres()?;
+        if s.cl_x[2] < self.h_min {
+            return Err(self.unstable("the slider fell through the substrate".into()));
+        }
+        // relative to the smaller sphere when the two bodies' sizes differ
+        let bound = self.params.numerics.overlap_bound
+            * match self.body.sizes {
+                None => self
+                    .spec
+                    .slider_sphere_radius
+                    .min(self.spec.substrate_sphere_radius),
+                // the smallest sphere of either body
+                Some(_) => self.spec.min_radius(),
+            };
+        let m = a.out.iter().map(|o| o.delta).fold(0.0, f64::max);
+        if m > bound {
+            return Err(self.unstable(format!(
+                "overlap {:.4e} µm beyond the bound {:.4e} µm",
+                m * 1e6,
+                bound * 1e6
+            )));
+        }
+        Ok(())
+    }
+
+    /// Whether every slider sphere, active or free (common mode plus the largest ringing
+    /// deviation), is within one radius of its control-layer site. O(n).
+    fn check_slider_spheres(&self) -> Result<(), DemError> {
+        let s = &self.state;
+        let a = &s.act;
         let sizes = self.body.sizes.as_ref();
         let r_ref = self.spec.slider_sphere_radius;
         let q = self.q();
@@ -302,27 +332,6 @@ impl Sim {
             return Err(self.unstable(format!(
                 "free slider spheres displaced up to {:.4e} µm from their control-layer sites (bound: one radius)",
                 m * 1e6
-            )));
-        }
-        if s.cl_x[2] < self.h_min {
-            return Err(self.unstable("the slider fell through the substrate".into()));
-        }
-        // relative to the smaller sphere when the two bodies' sizes differ
-        let bound = self.params.numerics.overlap_bound
-            * match sizes {
-                None => self
-                    .spec
-                    .slider_sphere_radius
-                    .min(self.spec.substrate_sphere_radius),
-                // the smallest sphere of either body
-                Some(_) => self.spec.min_radius(),
-            };
-        let m = a.out.iter().map(|o| o.delta).fold(0.0, f64::max);
-        if m > bound {
-            return Err(self.unstable(format!(
-                "overlap {:.4e} µm beyond the bound {:.4e} µm",
-                m * 1e6,
-                bound * 1e6
             )));
         }
         Ok(())

@@ -20,10 +20,11 @@
 // Small dense index loops read like the math they implement.
 #![allow(clippy::needless_range_loop)]
 
-use super::body::{dot3, g_of, mat_vec};
+use super::body::mat_vec;
 use super::chunks::Chunking;
+use super::drift::{slider_chunk, substrate_chunk, SliderDrift};
 use super::forces::SubstrateForce;
-use super::kernel::{kick, kick_hm, nan_max};
+use super::kernel::{kick, nan_max};
 use super::sim::Sim;
 use super::team::{with_team, Exec, Shards};
 use crate::DemError;
@@ -220,10 +221,18 @@ impl Sim {
         let rigid = self.params.mount.rigid_z;
         // z already advanced by the implicit mount step
         let implicit = self.mount.is_some();
-        let q = self.q();
-        let qd = self.qdot();
-        let tilting = self.body.tilt.is_some();
-        let off = &self.body.off;
+        let k = SliderDrift {
+            dt,
+            h,
+            hm,
+            rigid,
+            implicit,
+            tilting: self.body.tilt.is_some(),
+            q: self.q(),
+            qd: self.qdot(),
+            off: &self.body.off,
+            sizes,
+        };
         let Chunking { sl, sub, par } = self.idx.chunks;
         let crate::system::Active {
             sl: sl_ids,
@@ -255,47 +264,7 @@ impl Sim {
             // every other chunk), and the pass runs each chunk once.
             let (x, v, slot) = unsafe { (slx.range(a, b), slv.range(a, b), d2s.range(c, c + 1)) };
             let (f, x0, ids) = (&sl_f[a..a + x.len()], &sl_x0[a..], &sl_ids[a..]);
-            // largest squared displacement, and a flag for a non-finite one (no NaN-aware max
-            // and no running sum in the loop's dependency chains)
-            let (mut d2, mut bad) = (0.0f64, false);
-            let it = x.iter_mut().zip(v.iter_mut()).zip(f).zip(x0).zip(ids);
-            // one loop body, expanded twice so that each loop stays monomorphic (one size: the
-            // body's mass, no anchor offset; per-site sizes: each sphere's own mass and anchor
-            // offset R − r_i); a shared closure cost 15 % (not inlined)
-            macro_rules! advance {
-                ($hm:expr $(, $dz:expr)?) => {
-                    for ((((x, v), f), x0), &i) in it {
-                        let hm = $hm(i as usize);
-                        kick_hm(&mut v[0], f[0], hm);
-                        kick_hm(&mut v[1], f[1], hm);
-                        x[0] += dt * v[0];
-                        x[1] += dt * v[1];
-                        if rigid {
-                            let g = if tilting {
-                                g_of(off[i as usize])
-                            } else {
-                                [1.0, 0.0, 0.0]
-                            };
-                            x[2] = dot3(g, q) $(+ $dz(i as usize))?;
-                            v[2] = dot3(g, qd);
-                        } else if !implicit {
-                            kick_hm(&mut v[2], f[2], hm);
-                            x[2] += dt * v[2];
-                        }
-                        let d = [x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]];
-                        let m = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-                        bad |= !m.is_finite();
-                        if m > d2 {
-                            d2 = m;
-                        }
-                    }
-                };
-            }
-            match sizes {
-                Some(z) => advance!(|i: usize| h / z.sl_m[i], |i: usize| z.sl_dz[i]),
-                None => advance!(|_: usize| hm),
-            }
-            slot[0] = if bad { f64::NAN } else { d2 };
+            slot[0] = slider_chunk(&k, x, v, f, x0, ids);
         };
         let substrate = |k: usize| {
             let (a, b) = (k * sub, (k + 1) * sub);
@@ -312,43 +281,7 @@ impl Sim {
             if fused {
                 sf.chunk_with(a, sub_ids, out, v, f, x);
             }
-            let (mut d2, mut bad) = (0.0f64, false);
-            let it = x
-                .iter_mut()
-                .zip(v.iter_mut())
-                .zip(f.iter())
-                .zip(&sub_x0[a..]);
-            if let Some(z) = sizes {
-                // each sphere's own mass (the loop below, per sphere)
-                for ((((x, v), f), x0), &j) in it.zip(&sub_ids[a..]) {
-                    let hm_b = h / z.sub_m[j as usize];
-                    kick_hm(&mut v[0], f[0], hm_b);
-                    kick_hm(&mut v[1], f[1], hm_b);
-                    x[0] += dt * v[0];
-                    x[1] += dt * v[1];
-                    let d = [x[0] - x0[0], x[1] - x0[1]];
-                    let m = d[0] * d[0] + d[1] * d[1];
-                    bad |= !m.is_finite();
-                    if m > d2 {
-                        d2 = m;
-                    }
-                }
-                slot[0] = if bad { f64::NAN } else { d2 };
-                return;
-            }
-            for (((x, v), f), x0) in it {
-                kick_hm(&mut v[0], f[0], hm_b);
-                kick_hm(&mut v[1], f[1], hm_b);
-                x[0] += dt * v[0];
-                x[1] += dt * v[1];
-                let d = [x[0] - x0[0], x[1] - x0[1]];
-                let m = d[0] * d[0] + d[1] * d[1];
-                bad |= !m.is_finite();
-                if m > d2 {
-                    d2 = m;
-                }
-            }
-            slot[0] = if bad { f64::NAN } else { d2 };
+            slot[0] = substrate_chunk(dt, h, hm_b, sizes, x, v, f, &sub_x0[a..], &sub_ids[a..]);
         };
         exec.pass(par, [n_sl, n_sub], &|c| {
             if c < n_sl {

@@ -1,6 +1,6 @@
 //! [`Constant`]: one friction coefficient for every contact (tests and reference runs).
 
-use super::FrictionLaw;
+use super::friction_law::FrictionLaw;
 
 /// Constant μ; no coating failure.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,6 +1,6 @@
 //! [`PressureSwitched`]: μ1 while p0 ≤ P_crit, μ2 once the coating has failed (p0 > P_crit).
 
-use super::FrictionLaw;
+use super::friction_law::FrictionLaw;
 use surrogate::contact::{coating_failed, coating_mu};
 use surrogate::Coating;
 

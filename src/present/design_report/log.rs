@@ -109,6 +109,13 @@ pub fn pattern_stop(pr: &PatternResult) -> String {
 
 /// The log line of an event that is a note (`None` for those that open a bar).
 pub fn line(e: &Event<'_>) -> Option<String> {
+    screen_line(e)
+        .or_else(|| ranking_line(e))
+        .or_else(|| confirm_line(e))
+}
+
+/// The log line of a note of the screen stage (`None` for any other event).
+fn screen_line(e: &Event<'_>) -> Option<String> {
     Some(match *e {
         Event::Reusing { dir } => format!(
             "{}: a design of the same inputs is there: finished stages are reused",
@@ -165,6 +172,13 @@ pub fn line(e: &Event<'_>) -> Option<String> {
         Event::NoIntactOrientation { pattern } => format!(
             "{pattern}: no orientation keeps the coating intact even at the lowest load"
         ),
+        _ => return None,
+    })
+}
+
+/// The log line of a note of the robust search and the ranking (`None` for any other event).
+fn ranking_line(e: &Event<'_>) -> Option<String> {
+    Some(match *e {
         Event::RobustDone {
             pattern,
             exact,
@@ -206,6 +220,14 @@ pub fn line(e: &Event<'_>) -> Option<String> {
             b.score.yield_to_mn.unwrap_or(0.0),
             b.score.superlubric_to_mn
         ),
+        _ => return None,
+    })
+}
+
+/// The log line of a note of the yield, the DEM confirmation and its shards (`None` for any
+/// other event).
+fn confirm_line(e: &Event<'_>) -> Option<String> {
+    Some(match *e {
         Event::DemNothing => "DEM: nothing to confirm (no ranked design)".to_string(),
         Event::Yield { pattern, summary: s } => {
             let mut t = format!(
@@ -262,7 +284,7 @@ pub fn line(e: &Event<'_>) -> Option<String> {
             Input::OutDir
         ),
         Event::DemShardFailed { failed } => format!("DEM shard: {failed} run(s) failed"),
-        Event::Level { .. } | Event::Robust { .. } | Event::ToleranceMap { .. } => return None,
+        _ => return None,
     })
 }
 

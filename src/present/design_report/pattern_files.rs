@@ -2,7 +2,7 @@
 //! design's hook, [`crate::study::design::PatternHook`]), before the pattern's bulky rows are
 //! dropped: `shortlist_<p>.csv`, `corrugation_<p>.csv`, `friction_<p>.csv`, `pmax_<p>.png`,
 //! `corrugation_<p>.png`. Each is rewritten only when its bytes change; `mu_<p>.png` carries the
-//! DEM and is drawn with the global outputs ([`super::finish`]).
+//! DEM and is drawn with the global outputs ([`super::finish()`]).
 
 use super::charts::{corrugation_chart, pmax_chart};
 use super::rows::ShortlistRow;
@@ -18,7 +18,7 @@ use std::cell::RefCell;
 use surrogate::units::{n_to_mn, pa_to_gpa};
 
 /// Writes the per-pattern outputs of a design as its patterns complete, and remembers what it
-/// wrote and what failed for [`super::finish`] (one log line, one error at the end: a failed
+/// wrote and what failed for [`super::finish()`] (one log line, one error at the end: a failed
 /// write does not stop the design).
 pub struct Writer<'a> {
     pub(super) store: &'a Store,
@@ -38,7 +38,7 @@ impl<'a> Writer<'a> {
 
     /// Writes the own files of the complete, untrimmed pattern `pr` (see the module docs).
     /// Errors only for a trimmed pattern (its rows are gone); a failed write is recorded for
-    /// [`super::finish`]. Cost: the pattern's CSV bytes and two charts (those redrawn).
+    /// [`super::finish()`]. Cost: the pattern's CSV bytes and two charts (those redrawn).
     pub fn pattern(&self, pr: &PatternResult) -> Result<()> {
         if pr.trimmed {
             bail!(
@@ -118,11 +118,11 @@ fn write_pattern(
     }
     // PNGs (redrawn when missing or their data changed)
     let rel = format!("pmax_{name}.png");
-    super::redraw(store, outs, wrote, &rel, shortlist_changed, |path| {
+    super::redraw::redraw(store, outs, wrote, &rel, shortlist_changed, |path| {
         chart_png(path, &pmax_chart(pr, p))
     });
     let rel = format!("corrugation_{name}.png");
-    super::redraw(store, outs, wrote, &rel, scans_changed, |path| {
+    super::redraw::redraw(store, outs, wrote, &rel, scans_changed, |path| {
         chart_png(path, &corrugation_chart(pr))
     });
 }

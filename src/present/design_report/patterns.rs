@@ -299,8 +299,29 @@ fn points_only(c: &mut Chart) {
 /// [`limit_chart`] over the slider lattice vectors (a1, a2; m) of each row (none: against the
 /// sphere count).
 fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
+    let params = lattice_params(lat);
+    let varying: Vec<&Param> = params.iter().filter(|p| p.distinct().len() > 1).collect();
+    let spheres = Param {
+        label: "slider spheres",
+        short: "spheres",
+        unit: "",
+        values: rows.iter().map(|r| r.spheres as f64).collect(),
+    };
+    let x = varying.first().copied().unwrap_or(&spheres);
+    Chart {
+        title: "superlubric limit of each pattern's best design".into(),
+        x_label: x.label.into(),
+        y_label: "superlubric to (mN)".into(),
+        curves: limit_curves(rows, x, &varying),
+        hlines: vec![],
+        log_y: false,
+    }
+}
+
+/// The lattice parameters of each row: |a1|, |a2| (µm) and the angle γ between them (°).
+fn lattice_params(lat: &[([f64; 2], [f64; 2])]) -> [Param; 3] {
     let norm = |v: [f64; 2]| v[0].hypot(v[1]);
-    let params = [
+    [
         Param {
             label: "slider lattice a = |a1| (µm)",
             short: "a",
@@ -327,66 +348,84 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
                 })
                 .collect(),
         },
-    ];
-    let varying: Vec<&Param> = params.iter().filter(|p| p.distinct().len() > 1).collect();
-    let spheres = Param {
-        label: "slider spheres",
-        short: "spheres",
-        unit: "",
-        values: rows.iter().map(|r| r.spheres as f64).collect(),
-    };
-    let x = varying.first().copied().unwrap_or(&spheres);
-    // (x, limit) of the rows `keep` admits, sorted by x
-    let points = |keep: &dyn Fn(usize) -> bool, limit: fn(&PatternRow) -> f64| {
-        let mut v: Vec<(f64, f64)> = rows
-            .iter()
+    ]
+}
+
+fn robust(r: &PatternRow) -> f64 {
+    r.superlubric_to_mN
+}
+
+fn nominal(r: &PatternRow) -> f64 {
+    r.superlubric_to_nominal_mN
+}
+
+/// (x, limit) of the rows `keep` admits, sorted by x.
+fn points(
+    rows: &[PatternRow],
+    x: &Param,
+    keep: &dyn Fn(usize) -> bool,
+    limit: fn(&PatternRow) -> f64,
+) -> Vec<(f64, f64)> {
+    let mut v: Vec<(f64, f64)> = rows
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| keep(*i))
+        .map(|(i, r)| (x.values[i], limit(r)))
+        .collect();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    v
+}
+
+/// One curve of `limit` per value of a second varying parameter, if it has few values.
+fn series(
+    rows: &[PatternRow],
+    x: &Param,
+    varying: &[&Param],
+    limit: fn(&PatternRow) -> f64,
+    prefix: &str,
+    style: Style,
+) -> Option<Vec<Curve>> {
+    let s = varying
+        .get(1)
+        .filter(|s| s.distinct().len() <= MAX_SERIES)?;
+    let d = s.distinct();
+    let n = d.len();
+    Some(
+        d.iter()
             .enumerate()
-            .filter(|(i, _)| keep(*i))
-            .map(|(i, r)| (x.values[i], limit(r)))
-            .collect();
-        v.sort_by(|a, b| a.0.total_cmp(&b.0));
-        v
-    };
-    let robust = |r: &PatternRow| r.superlubric_to_mN;
-    let nominal = |r: &PatternRow| r.superlubric_to_nominal_mN;
-    // one curve of `limit` per value of a second varying parameter, if it has few values
-    let series = |limit: fn(&PatternRow) -> f64, prefix: &str, style: Style| {
-        let s = varying
-            .get(1)
-            .filter(|s| s.distinct().len() <= MAX_SERIES)?;
-        let d = s.distinct();
-        let n = d.len();
-        Some(
-            d.iter()
-                .enumerate()
-                .map(|(k, &v)| Curve {
-                    name: format!("{prefix}{} = {}{}", s.short, fmt_g(v, 4), s.unit),
-                    points: points(&|i| round6(s.values[i]) == v, limit),
-                    colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
-                    style,
-                })
-                .collect::<Vec<Curve>>(),
-        )
-    };
-    let curves = if rows.iter().any(|r| !r.robust_exact) {
+            .map(|(k, &v)| Curve {
+                name: format!("{prefix}{} = {}{}", s.short, fmt_g(v, 4), s.unit),
+                points: points(rows, x, &|i| round6(s.values[i]) == v, limit),
+                colour: Colour::Scale(k as f64 / (n - 1).max(1) as f64),
+                style,
+            })
+            .collect::<Vec<Curve>>(),
+    )
+}
+
+/// The limit curves against `x`: the robust and nominal limits, one per value of a second
+/// varying parameter when there is one, markers where the patterns are separate points.
+fn limit_curves(rows: &[PatternRow], x: &Param, varying: &[&Param]) -> Vec<Curve> {
+    if rows.iter().any(|r| !r.robust_exact) {
         // with many patterns only the best are searched over their tolerance boxes
         // (`robust_exact`): the others' `superlubric_to_mN` is an upper bound, so the curves
         // show the nominal limit and the searched robust limits as markers
-        let mut c = series(nominal, "nominal limit, ", Style::Line).unwrap_or_else(|| {
-            vec![Curve {
-                name: "nominal limit (θ, α exact)".into(),
-                points: points(&|_| true, nominal),
-                colour: Colour::Palette(1),
-                style: if varying.len() == 1 {
-                    Style::Line
-                } else {
-                    Style::Markers
-                },
-            }]
-        });
+        let mut c = series(rows, x, varying, nominal, "nominal limit, ", Style::Line)
+            .unwrap_or_else(|| {
+                vec![Curve {
+                    name: "nominal limit (θ, α exact)".into(),
+                    points: points(rows, x, &|_| true, nominal),
+                    colour: Colour::Palette(1),
+                    style: if varying.len() == 1 {
+                        Style::Line
+                    } else {
+                        Style::Markers
+                    },
+                }]
+            });
         c.push(Curve {
             name: "robust limit (searched: the best patterns)".into(),
-            points: points(&|i| rows[i].robust_exact, robust),
+            points: points(rows, x, &|i| rows[i].robust_exact, robust),
             colour: Colour::Palette(0),
             style: Style::Markers,
         });
@@ -395,7 +434,7 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
         vec![
             Curve {
                 name: "robust limit (over the tolerance box)".into(),
-                points: points(&|_| true, robust),
+                points: points(rows, x, &|_| true, robust),
                 colour: Colour::Palette(0),
                 style: if varying.is_empty() {
                     Style::Markers
@@ -405,7 +444,7 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
             },
             Curve {
                 name: "nominal limit (θ, α exact)".into(),
-                points: points(&|_| true, nominal),
+                points: points(rows, x, &|_| true, nominal),
                 colour: Colour::Palette(1),
                 style: if varying.is_empty() {
                     Style::Markers
@@ -415,22 +454,14 @@ fn chart_over(lat: &[([f64; 2], [f64; 2])], rows: &[PatternRow]) -> Chart {
             },
         ]
     } else {
-        series(robust, "", Style::LinePoints).unwrap_or_else(|| {
+        series(rows, x, varying, robust, "", Style::LinePoints).unwrap_or_else(|| {
             vec![Curve {
                 name: "robust limit, one marker per pattern".into(),
-                points: points(&|_| true, robust),
+                points: points(rows, x, &|_| true, robust),
                 colour: Colour::Palette(0),
                 style: Style::Markers,
             }]
         })
-    };
-    Chart {
-        title: "superlubric limit of each pattern's best design".into(),
-        x_label: x.label.into(),
-        y_label: "superlubric to (mN)".into(),
-        curves,
-        hlines: vec![],
-        log_y: false,
     }
 }
 
@@ -448,7 +479,7 @@ pub fn write_figures(
     rows: &[PatternRow],
 ) -> Result<()> {
     let changed = wrote.iter().any(|w| w == "patterns.csv");
-    super::redraw(store, outs, wrote, "patterns.png", changed, |path| {
+    super::redraw::redraw(store, outs, wrote, "patterns.png", changed, |path| {
         chart_png(path, &limit_chart(o, rows))
     });
     for i in best_order(o, CONTACT_MAPS) {
@@ -456,7 +487,7 @@ pub fn write_figures(
         // the equilibrium is solved only for a map to redraw
         if changed || !store.path(&rel).exists() {
             if let Some(b) = best_contacts(o, i)? {
-                super::redraw(store, outs, wrote, &rel, true, |path| {
+                super::redraw::redraw(store, outs, wrote, &rel, true, |path| {
                     contact_map_png(path, &b.scene, mn_to_n(b.load_mn), &b.eq)
                 });
             }

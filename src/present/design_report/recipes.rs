@@ -208,25 +208,58 @@ pub fn section(rows: &[PatternRow], o: &DesignOutcome, top: &[TopRow]) -> Option
     let first = rec.first()?;
     let fields: Vec<String> = first.values.iter().map(|(f, _)| f.clone()).collect();
     let decisions = recipe_answer::decisions(o);
-    let words = |d: &RecipeDecision| -> Option<RecipeWords> {
-        let name = &o.patterns[d.pattern].scene.name;
-        let r = rec.iter().find(|r| &r.row.pattern == name)?;
-        Some(RecipeWords {
-            values: values_text(&r.values),
-            limit_mn: limit(r.row),
-            spheres: r.row.spheres,
-            mean_pressure_kpa: fmt_g(r.row.mean_pressure_kPa, 3),
-            load_per_sphere_un: fmt_g(r.row.load_per_sphere_uN, 3),
-            outside: reasons(&d.outside),
-            dem_says: if d.naming.nameable() {
-                String::new()
-            } else {
-                dem_says(&d.check)
-            },
-        })
+    let words = |d: &RecipeDecision| recipe_words(o, &rec, d);
+    let (best, dem_names) = best_recipes(&rec, &decisions, &words);
+    let dem = if o.dem_ran {
+        dem_lines(&decisions, &dem_names, &best, top, &words)
+    } else {
+        Vec::new()
     };
+    let (p_crit_recipe, p_crit) = p_crit_lines(o);
+    Some(RecipeSection {
+        p_crit_recipe,
+        p_crit,
+        p_crit_varied: fields.iter().any(|f| f == "coating.p_crit_GPa"),
+        charts: fields
+            .iter()
+            .enumerate()
+            .map(|(k, f)| (format!("recipe_{k}.png"), f.clone()))
+            .collect(),
+        fields,
+        best,
+        dem,
+        table: table_lines(&rec),
+    })
+}
+
+/// The words of the recipe of decision `d` (`None` when `rec` lacks its pattern).
+fn recipe_words(o: &DesignOutcome, rec: &[Recipe<'_>], d: &RecipeDecision) -> Option<RecipeWords> {
+    let name = &o.patterns[d.pattern].scene.name;
+    let r = rec.iter().find(|r| &r.row.pattern == name)?;
+    Some(RecipeWords {
+        values: values_text(&r.values),
+        limit_mn: limit(r.row),
+        spheres: r.row.spheres,
+        mean_pressure_kpa: fmt_g(r.row.mean_pressure_kPa, 3),
+        load_per_sphere_un: fmt_g(r.row.load_per_sphere_uN, 3),
+        outside: reasons(&d.outside),
+        dem_says: if d.naming.nameable() {
+            String::new()
+        } else {
+            dem_says(&d.check)
+        },
+    })
+}
+
+/// The best recipe of each base with the ones the DEM refused and the best inside the range;
+/// and the patterns the DEM section lists (those, then the first [`DEM_RECIPES`] decisions).
+fn best_recipes(
+    rec: &[Recipe<'_>],
+    decisions: &[RecipeDecision],
+    words: &dyn Fn(&RecipeDecision) -> Option<RecipeWords>,
+) -> (Vec<BestRecipe>, Vec<usize>) {
     let mut bases: Vec<&str> = Vec::new();
-    for r in &rec {
+    for r in rec {
         if !bases.contains(&r.base.as_str()) {
             bases.push(&r.base);
         }
@@ -234,7 +267,7 @@ pub fn section(rows: &[PatternRow], o: &DesignOutcome, top: &[TopRow]) -> Option
     let mut best = Vec::new();
     let mut dem_names: Vec<usize> = Vec::new();
     for base in bases {
-        let (named, refused) = recipe_answer::named(&decisions, base);
+        let (named, refused) = recipe_answer::named(decisions, base);
         let standing = named.map(|d| match d.naming {
             Naming::DemConfirmed => Standing::DemConfirmed,
             Naming::Unconfirmed => Standing::Unconfirmed,
@@ -251,10 +284,10 @@ pub fn section(rows: &[PatternRow], o: &DesignOutcome, top: &[TopRow]) -> Option
         dem_names.extend(named.map(|d| d.pattern));
         best.push(BestRecipe {
             base: base.to_string(),
-            named: named.and_then(&words),
+            named: named.and_then(words),
             standing,
             refused: refused.iter().filter_map(|d| words(d)).collect(),
-            inside: inside.and_then(&words),
+            inside: inside.and_then(words),
         });
     }
     for d in decisions.iter().take(DEM_RECIPES) {
@@ -262,45 +295,57 @@ pub fn section(rows: &[PatternRow], o: &DesignOutcome, top: &[TopRow]) -> Option
             dem_names.push(d.pattern);
         }
     }
-    let dem = if o.dem_ran {
-        decisions
-            .iter()
-            .filter(|d| dem_names.contains(&d.pattern))
-            .filter_map(|d| {
-                let t = top.get(d.pattern)?;
-                let named = best.iter().any(|b| {
-                    b.named.is_some()
-                        && recipe_answer::named(&decisions, &b.base)
-                            .0
-                            .is_some_and(|n| n.pattern == d.pattern)
-                });
-                Some(RecipeDemLine {
-                    recipe: format!("{}: {}", d.base, words(d)?.values),
-                    theta: t.theta.clone(),
-                    pull_x: t.pull_x.clone(),
-                    limit_mn: t.limit_mn.clone(),
-                    verdict: t.verdict.clone(),
-                    dem_centre: t.dem_centre.clone(),
-                    dem_corners: t.dem_corners.clone(),
-                    range: if d.outside.is_empty() {
-                        "inside".into()
-                    } else {
-                        reasons(&d.outside)
-                    },
-                    decision: if named {
-                        "named".into()
-                    } else if !d.naming.nameable() {
-                        format!("not named: {}", dem_says(&d.check))
-                    } else {
-                        "–".into()
-                    },
-                })
+    (best, dem_names)
+}
+
+/// The DEM section's line of each decision of `dem_names`.
+fn dem_lines(
+    decisions: &[RecipeDecision],
+    dem_names: &[usize],
+    best: &[BestRecipe],
+    top: &[TopRow],
+    words: &dyn Fn(&RecipeDecision) -> Option<RecipeWords>,
+) -> Vec<RecipeDemLine> {
+    decisions
+        .iter()
+        .filter(|d| dem_names.contains(&d.pattern))
+        .filter_map(|d| {
+            let t = top.get(d.pattern)?;
+            let named = best.iter().any(|b| {
+                b.named.is_some()
+                    && recipe_answer::named(decisions, &b.base)
+                        .0
+                        .is_some_and(|n| n.pattern == d.pattern)
+            });
+            Some(RecipeDemLine {
+                recipe: format!("{}: {}", d.base, words(d)?.values),
+                theta: t.theta.clone(),
+                pull_x: t.pull_x.clone(),
+                limit_mn: t.limit_mn.clone(),
+                verdict: t.verdict.clone(),
+                dem_centre: t.dem_centre.clone(),
+                dem_corners: t.dem_corners.clone(),
+                range: if d.outside.is_empty() {
+                    "inside".into()
+                } else {
+                    reasons(&d.outside)
+                },
+                decision: if named {
+                    "named".into()
+                } else if !d.naming.nameable() {
+                    format!("not named: {}", dem_says(&d.check))
+                } else {
+                    "–".into()
+                },
             })
-            .collect()
-    } else {
-        Vec::new()
-    };
-    let (p_crit_recipe, p_crit) = match &o.p_crit {
+        })
+        .collect()
+}
+
+/// The best recipe's robust limit at each P_crit of the sweep, with the recipe in words
+/// (empty without the sweep).
+fn p_crit_lines(o: &DesignOutcome) -> (String, Vec<PCritLine>) {
+    match &o.p_crit {
         Some(sw) => (
             format!(
                 "{} at θ = {}°, pull {}° from x",
@@ -322,35 +367,25 @@ pub fn section(rows: &[PatternRow], o: &DesignOutcome, top: &[TopRow]) -> Option
                 .collect(),
         ),
         None => (String::new(), Vec::new()),
-    };
-    Some(RecipeSection {
-        p_crit_recipe,
-        p_crit,
-        p_crit_varied: fields.iter().any(|f| f == "coating.p_crit_GPa"),
-        charts: fields
-            .iter()
-            .enumerate()
-            .map(|(k, f)| (format!("recipe_{k}.png"), f.clone()))
-            .collect(),
-        fields,
-        best,
-        dem,
-        table: rec
-            .iter()
-            .map(|c| RecipeLine {
-                base: c.base.clone(),
-                values: c
-                    .values
-                    .iter()
-                    .map(|(_, v)| crate::study::recipe::value_text(*v))
-                    .collect(),
-                limit_mn: limit(c.row),
-                spheres: c.row.spheres,
-                mean_pressure_kpa: fmt_g(c.row.mean_pressure_kPa, 3),
-                load_per_sphere_un: fmt_g(c.row.load_per_sphere_uN, 3),
-            })
-            .collect(),
-    })
+    }
+}
+
+/// The table of every recipe, best first.
+fn table_lines(rec: &[Recipe<'_>]) -> Vec<RecipeLine> {
+    rec.iter()
+        .map(|c| RecipeLine {
+            base: c.base.clone(),
+            values: c
+                .values
+                .iter()
+                .map(|(_, v)| crate::study::recipe::value_text(*v))
+                .collect(),
+            limit_mn: limit(c.row),
+            spheres: c.row.spheres,
+            mean_pressure_kpa: fmt_g(c.row.mean_pressure_kPa, 3),
+            load_per_sphere_un: fmt_g(c.row.load_per_sphere_uN, 3),
+        })
+        .collect()
 }
 
 /// The chart of field `k`: the robust limit of the recipes whose other fields take the best
@@ -442,7 +477,7 @@ pub fn write_figures(
     let changed = wrote.iter().any(|w| w == "patterns.csv");
     for (k, file) in s.iter().enumerate() {
         if let Some(c) = field_chart(rows, k) {
-            super::redraw(store, outs, wrote, file, changed, |path| {
+            super::redraw::redraw(store, outs, wrote, file, changed, |path| {
                 chart_png(path, &c)
             });
         }

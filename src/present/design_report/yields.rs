@@ -198,7 +198,7 @@ pub fn write(store: &Store, outs: &mut Outputs, wrote: &mut Vec<String>, o: &Des
         if json {
             wrote.push(rel);
         }
-        super::redraw(
+        super::redraw::redraw(
             store,
             outs,
             wrote,

@@ -1,7 +1,8 @@
 //! The contact type of a slider on a substrate from the two lattices' reciprocal-space
 //! geometry (see the module docs of [`super`]).
 
-use super::{tidy, ContactType};
+use super::contact_type::ContactType;
+use super::tidy::tidy;
 use std::f64::consts::PI;
 use surrogate::scene::rebased;
 use surrogate::Lattice;

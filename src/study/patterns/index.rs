@@ -1,7 +1,9 @@
 //! `index.csv` and the candidates' scene files: writing them, scaling a pad to a sphere
 //! count, reading an index back and ordering it by the contact-type pre-screen.
 
-use super::{line_spacing, tidy, Candidate, ContactType};
+use super::contact_type::ContactType;
+use super::tidy::tidy;
+use super::{line_spacing, Candidate};
 use crate::study::fairness::{Fairness, MadeFair};
 use crate::study::input::Input;
 use anyhow::{bail, Result};

@@ -29,10 +29,14 @@ use surrogate::units::{deg_to_rad, m_to_um, um_to_m};
 use surrogate::{Lattice, Scene};
 
 mod classify;
+mod contact_type;
 mod index;
+mod tidy;
 
 pub use classify::classify;
+pub use contact_type::ContactType;
 pub use index::*;
+pub use tidy::tidy;
 
 /// A family of slider lattices.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,29 +67,6 @@ pub struct PatternParams {
     /// Cut-off of the classification: coincident G up to this multiple of the substrate's
     /// shortest reciprocal vector.
     pub max_order: f64,
-}
-
-/// How a candidate meets the substrate (Panizon et al. 2023).
-#[derive(Debug, Clone, PartialEq)]
-pub enum ContactType {
-    /// No coincident reciprocal vector: lubric in every direction.
-    Lubric,
-    /// Coincident reciprocal vectors along one direction only: lubric perpendicular to it
-    /// (`lubric_deg`, the free sliding direction, in [0°, 180°)).
-    Directional { lubric_deg: f64 },
-    /// Two non-parallel coincident reciprocal vectors: interlocked.
-    Interlocked,
-}
-
-impl ContactType {
-    /// `lubric`, `directional` or `interlocked`.
-    pub fn name(&self) -> &'static str {
-        match self {
-            ContactType::Lubric => "lubric",
-            ContactType::Directional { .. } => "directional",
-            ContactType::Interlocked => "interlocked",
-        }
-    }
 }
 
 /// The commensurate direction of a candidate.
@@ -185,11 +166,6 @@ pub fn parse_family(spec: &str, values: impl Fn(&str, &str) -> Result<Vec<f64>>)
     })
 }
 
-/// A degree or µm value without binary noise.
-pub fn tidy(v: f64) -> f64 {
-    (v * 1e9).round() / 1e9 + 0.0
-}
-
 /// Substrate row directions (rad) and periods (m): lattice vectors up to twice the shortest,
 /// at angles in [0, 180°/n] (n the rotation order: the others are images under rotations).
 fn row_directions(l: &Lattice) -> Vec<(f64, f64)> {
@@ -264,8 +240,6 @@ const NOBLE: [f64; 3] = [
 /// diameter not overlapping, in a deterministic order. Errors (naming `--family`) when none is
 /// valid. Cost O(candidates × classification).
 pub fn candidates(scene: &Scene, p: &PatternParams) -> Result<Vec<Candidate>> {
-    let sub = &scene.substrate.lattice;
-    let sub_basis = &scene.geometry.substrate_basis;
     if scene.geometry.substrate_sites.is_some() {
         bail!(
             "{}: the substrate comes from a site file; candidates are classified against a substrate lattice",
@@ -273,40 +247,37 @@ pub fn candidates(scene: &Scene, p: &PatternParams) -> Result<Vec<Candidate>> {
         );
     }
     let d = 2.0 * scene.slider_sphere_radius();
-    let mut raw: Vec<Raw> = Vec::new();
-    match &p.family {
-        Family::Directional => {
-            for (u, du) in row_directions(sub) {
-                let h = sub.cell_area().abs() / du;
-                let (e, n) = ([u.cos(), u.sin()], [-u.sin(), u.cos()]);
-                for q in 1..=p.max_pq {
-                    for pp in 1..=p.max_pq {
-                        if gcd(pp, q) != 1 {
-                            continue;
-                        }
-                        let a = du * pp as f64 / q as f64;
-                        for f in NOBLE {
-                            // b = (m + f)·h, m the smallest integer with b ≥ max(diameter, a):
-                            // rows across are farther apart than along (the slider's first
-                            // reciprocal shell lies across u) and the spheres do not overlap
-                            let m = ((d.max(a) / h) - f).ceil().max(1.0);
-                            let b = (m + f) * h;
-                            let l = Lattice::oblique([a * e[0], a * e[1]], [b * n[0], b * n[1]]);
-                            raw.push((
-                                l,
-                                Vec::new(),
-                                "rectangular".into(),
-                                Some(Commensurate {
-                                    direction_deg: tidy(u.to_degrees()),
-                                    p: pp,
-                                    q,
-                                }),
-                            ));
-                        }
-                    }
-                }
+    let raw = family_lattices(&p.family, &scene.substrate.lattice, d, p.max_pq);
+    let total = raw.len();
+    let out: Vec<Candidate> = raw
+        .into_iter()
+        .filter_map(|r| candidate(scene, p, d, r))
+        .collect();
+    if out.is_empty() {
+        bail!(
+            "{} `{}`: none of its {total} lattices is valid over this substrate: the spheres (diameter {} µm) overlap{}",
+            Input::Family,
+            p.family_text,
+            tidy(m_to_um(d)),
+            if p.family == Family::Directional {
+                format!(
+                    ", or no directionally commensurate lattice has contact lines along its row (raise {})",
+                    Input::MaxPq
+                )
+            } else {
+                " (use spacings of at least the sphere diameter)".to_string()
             }
-        }
+        );
+    }
+    Ok(out)
+}
+
+/// Every lattice of `family` over the substrate lattice `sub`, before any check; `d` (m) the
+/// slider's sphere diameter, `max_pq` the largest p and q of the commensurate ratios.
+fn family_lattices(family: &Family, sub: &Lattice, d: f64, max_pq: u32) -> Vec<Raw> {
+    let mut raw: Vec<Raw> = Vec::new();
+    match family {
+        Family::Directional => raw = directional_lattices(sub, d, max_pq),
         Family::Rectangular { a, b } => {
             for &x in a {
                 for &y in b {
@@ -344,53 +315,78 @@ pub fn candidates(scene: &Scene, p: &PatternParams) -> Result<Vec<Candidate>> {
             }
         }
     }
-    let total = raw.len();
-    let mut out = Vec::new();
-    for (l, basis, kind, comm) in raw {
-        if l.validate("family").is_err() || overlaps(min_site_distance(&l, &basis), d) {
-            continue;
-        }
-        let contact = classify(&l, &basis, scene.slider.theta, sub, sub_basis, p.max_order);
-        let kind = if kind.is_empty() {
-            lattice_name(&l)
-        } else {
-            kind
-        };
-        let comm = comm.or_else(|| commensurate_of(&l, sub, p.max_pq));
-        if p.family == Family::Directional {
-            // keep the directional contacts whose moiré lines run along u
-            let u = comm.as_ref().map_or(0.0, |c| c.direction_deg);
-            let ok_type = matches!(contact, ContactType::Directional { lubric_deg }
-                if ((lubric_deg - u).rem_euclid(180.0) - 90.0).abs() < 1e-6);
-            if !ok_type || !lines_along(scene, &l, u) {
-                continue;
+    raw
+}
+
+/// The directionally commensurate rectangular lattices over `sub` (see the module docs).
+fn directional_lattices(sub: &Lattice, d: f64, max_pq: u32) -> Vec<Raw> {
+    let mut raw: Vec<Raw> = Vec::new();
+    for (u, du) in row_directions(sub) {
+        let h = sub.cell_area().abs() / du;
+        let (e, n) = ([u.cos(), u.sin()], [-u.sin(), u.cos()]);
+        for q in 1..=max_pq {
+            for pp in 1..=max_pq {
+                if gcd(pp, q) != 1 {
+                    continue;
+                }
+                let a = du * pp as f64 / q as f64;
+                for f in NOBLE {
+                    // b = (m + f)·h, m the smallest integer with b ≥ max(diameter, a):
+                    // rows across are farther apart than along (the slider's first
+                    // reciprocal shell lies across u) and the spheres do not overlap
+                    let m = ((d.max(a) / h) - f).ceil().max(1.0);
+                    let b = (m + f) * h;
+                    let l = Lattice::oblique([a * e[0], a * e[1]], [b * n[0], b * n[1]]);
+                    raw.push((
+                        l,
+                        Vec::new(),
+                        "rectangular".into(),
+                        Some(Commensurate {
+                            direction_deg: tidy(u.to_degrees()),
+                            p: pp,
+                            q,
+                        }),
+                    ));
+                }
             }
         }
-        out.push(Candidate {
-            lattice: l,
-            basis,
-            kind,
-            commensurate: comm,
-            contact,
-        });
     }
-    if out.is_empty() {
-        bail!(
-            "{} `{}`: none of its {total} lattices is valid over this substrate: the spheres (diameter {} µm) overlap{}",
-            Input::Family,
-            p.family_text,
-            tidy(m_to_um(d)),
-            if p.family == Family::Directional {
-                format!(
-                    ", or no directionally commensurate lattice has contact lines along its row (raise {})",
-                    Input::MaxPq
-                )
-            } else {
-                " (use spacings of at least the sphere diameter)".to_string()
-            }
-        );
+    raw
+}
+
+/// The lattice `raw` as a classified candidate over `scene`'s substrate, `None` when its
+/// spheres (diameter `d`, m) overlap, it is invalid, or (directional family) its contact lines
+/// do not run along its commensurate row.
+fn candidate(scene: &Scene, p: &PatternParams, d: f64, raw: Raw) -> Option<Candidate> {
+    let (l, basis, kind, comm) = raw;
+    let sub = &scene.substrate.lattice;
+    let sub_basis = &scene.geometry.substrate_basis;
+    if l.validate("family").is_err() || overlaps(min_site_distance(&l, &basis), d) {
+        return None;
     }
-    Ok(out)
+    let contact = classify(&l, &basis, scene.slider.theta, sub, sub_basis, p.max_order);
+    let kind = if kind.is_empty() {
+        lattice_name(&l)
+    } else {
+        kind
+    };
+    let comm = comm.or_else(|| commensurate_of(&l, sub, p.max_pq));
+    if p.family == Family::Directional {
+        // keep the directional contacts whose moiré lines run along u
+        let u = comm.as_ref().map_or(0.0, |c| c.direction_deg);
+        let ok_type = matches!(contact, ContactType::Directional { lubric_deg }
+            if ((lubric_deg - u).rem_euclid(180.0) - 90.0).abs() < 1e-6);
+        if !ok_type || !lines_along(scene, &l, u) {
+            return None;
+        }
+    }
+    Some(Candidate {
+        lattice: l,
+        basis,
+        kind,
+        commensurate: comm,
+        contact,
+    })
 }
 
 /// Whether the moiré contact lines of the slider lattice `l` on `scene`'s substrate run along

@@ -272,16 +272,35 @@ impl DemRuns {
     }
 }
 
+/// The default setting and, per knob, its settings with their DEM settings (`quick`: fewer
+/// and shorter).
 fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
     let default = default_setting(pr);
     let reference = reference_setting(pr);
+    (
+        default,
+        vec![
+            (Knob::DtFraction, dt_settings(quick, default, reference)),
+            (Knob::Model, model_settings(quick, default, reference)),
+            (Knob::Tangential, tangential_settings(default, reference)),
+            (Knob::SlideUs, window_settings(quick, default, pr)),
+            (Knob::ActiveSet, active_settings(default)),
+        ],
+    )
+}
+
+/// A knob's settings: each one's DEM setting and its description.
+type Settings = Vec<(DemSetting, Setting)>;
+
+/// The step as fractions of the stable step.
+fn dt_settings(quick: bool, default: DemSetting, reference: DemSetting) -> Settings {
     let num = |v: f64, d: f64, r: f64| Setting::num(v, d, r);
     let fractions: Vec<f64> = if quick {
         vec![0.5, 0.25, 0.125, 0.0625]
     } else {
         vec![0.5, 0.25, 0.125, 0.0625, 0.03125]
     };
-    let dt = fractions
+    fractions
         .iter()
         .map(|&f| {
             (
@@ -292,7 +311,11 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
                 num(f, default.dt_fraction, reference.dt_fraction),
             )
         })
-        .collect();
+        .collect()
+}
+
+/// The contact models, then the reference.
+fn model_settings(quick: bool, default: DemSetting, reference: DemSetting) -> Settings {
     let mut models = vec![
         (ModelRequest::Reduced, "reduced"),
         (ModelRequest::Full, "full"),
@@ -300,7 +323,7 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
     if !quick {
         models.push((ModelRequest::FullExplicit, "full-explicit"));
     }
-    let model = models
+    models
         .into_iter()
         .map(|(m, name)| {
             (
@@ -315,8 +338,12 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
             reference,
             Setting::cat("full, step/4 (reference)", false, true),
         )])
-        .collect();
-    let tangential = [
+        .collect()
+}
+
+/// The tangential laws, then the reference.
+fn tangential_settings(default: DemSetting, reference: DemSetting) -> Settings {
+    [
         Tangential::Mindlin,
         Tangential::MindlinForce,
         Tangential::MindlinRescale,
@@ -335,7 +362,12 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
         reference,
         Setting::cat("mindlin, step/4 (reference)", false, true),
     )])
-    .collect();
+    .collect()
+}
+
+/// The friction window's slide times (µs), against the protocol's.
+fn window_settings(quick: bool, default: DemSetting, pr: &Protocol) -> Settings {
+    let num = |v: f64, d: f64, r: f64| Setting::num(v, d, r);
     let windows: Vec<f64> = if quick {
         vec![10.0, 20.0, 40.0, 80.0]
     } else {
@@ -343,7 +375,7 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
     };
     let wref = *windows.last().expect("windows");
     let d_us = surrogate::units::s_to_us(pr.slide);
-    let window = windows
+    windows
         .iter()
         .map(|&w| {
             (
@@ -354,8 +386,12 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
                 num(w, d_us, wref),
             )
         })
-        .collect();
-    let active = [true, false]
+        .collect()
+}
+
+/// The active set on and off.
+fn active_settings(default: DemSetting) -> Settings {
+    [true, false]
         .into_iter()
         .map(|a| {
             (
@@ -366,17 +402,7 @@ fn plan(quick: bool, pr: &Protocol) -> (DemSetting, Vec<KnobPlan>) {
                 Setting::cat(if a { "on" } else { "off" }, a, a),
             )
         })
-        .collect();
-    (
-        default,
-        vec![
-            (Knob::DtFraction, dt),
-            (Knob::Model, model),
-            (Knob::Tangential, tangential),
-            (Knob::SlideUs, window),
-            (Knob::ActiveSet, active),
-        ],
-    )
+        .collect()
 }
 
 /// Runs the tier (see the module docs). Runs shared by several knobs (the default, the

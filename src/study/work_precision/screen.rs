@@ -59,87 +59,15 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
             shift: [0.0, 0.0],
         };
         // 1. the load-sharing model at the placement (reference: compliant)
-        let auto = solver.solve(pose, s.load, Model::Auto)?.model;
-        let mut ms = Vec::new();
-        for m in [Model::RigidZ, Model::RigidTilt, Model::Compliant] {
-            let setting = Setting::cat(m.name(), m == auto, m == Model::Compliant);
-            if solver.check_model(m).is_err() {
-                continue;
-            }
-            let (eq, cost) = measure_repeated(0.05, || solver.solve(pose, s.load, m));
-            let values = match eq {
-                Ok(eq) => Values {
-                    p_max: Some(eq.p_max),
-                    contacts: Some(eq.contact_count() as f64),
-                    verdict: Some(coating_verdict(eq.p_max, s)),
-                    ..Values::default()
-                },
-                Err(e) => Values {
-                    note: e.to_string(),
-                    ..Values::default()
-                },
-            };
-            ms.push(Measured {
-                setting,
-                cost,
-                values,
-            });
-        }
+        let ms = models(&solver, pose, s)?;
         rows.extend(compare(Tier::ScreenMap, &s.name, Knob::Model, &ms));
         progress.advance(1);
         // 2. the landscape grid (reference: the finest)
-        let reference = *pl.grids.last().expect("grids");
-        let mut ms = Vec::new();
-        for &n in &pl.grids {
-            let mp = MapParams {
-                grid: n,
-                ..MapParams::default()
-            };
-            let (ls, cost) =
-                measure(|| compute_landscape(&solver, pose.theta, s.load, &mp, &|| {}));
-            let ls = ls?;
-            let p_max = ls.p_max.iter().copied().fold(0.0, f64::max);
-            let contacts =
-                ls.contacts.iter().map(|&c| c as f64).sum::<f64>() / ls.contacts.len() as f64;
-            ms.push(Measured {
-                setting: Setting::num(n as f64, MapParams::default().grid as f64, reference as f64),
-                cost,
-                values: Values {
-                    p_max: Some(p_max),
-                    contacts: Some(contacts),
-                    landscape_range: Some(ls.range()),
-                    verdict: Some(coating_verdict(p_max, s)),
-                    ..Values::default()
-                },
-            });
-        }
+        let ms = grids(&solver, pose, s, &pl.grids)?;
         rows.extend(compare(Tier::ScreenMap, &s.name, Knob::GridPoints, &ms));
         progress.advance(1);
         // 3. the corrugation path step (reference: the finest)
-        let reference = *pl.steps_um.last().expect("steps");
-        let mut ms = Vec::new();
-        for &st in &pl.steps_um {
-            let mp = MapParams {
-                step: um_to_m(st),
-                distance: um_to_m(pl.distance_um),
-                ..MapParams::default()
-            };
-            let (prof, cost) =
-                measure(|| path_profile(&solver, pose.theta, s.load, s.direction, &mp, &|| {}));
-            let prof = prof?;
-            let contacts =
-                prof.contacts.iter().map(|&c| c as f64).sum::<f64>() / prof.contacts.len() as f64;
-            ms.push(Measured {
-                setting: Setting::num(st, um(MapParams::default().step), reference),
-                cost,
-                values: Values {
-                    contacts: Some(contacts),
-                    corrugation: Some(prof.corrugation()),
-                    max_pull: Some(prof.max_pull()),
-                    ..Values::default()
-                },
-            });
-        }
+        let ms = steps(&solver, pose, s, &pl)?;
         rows.extend(compare(
             Tier::ScreenMap,
             &s.name,
@@ -150,4 +78,93 @@ pub fn run(quick: bool, progress: &dyn Progress) -> Result<Vec<WorkPrecisionRow>
     }
     progress.finish();
     Ok(rows)
+}
+
+/// Each load-sharing model the solver takes at the placement `pose`, measured.
+fn models(solver: &Solver, pose: Pose, s: &StudyScene) -> Result<Vec<Measured>> {
+    let auto = solver.solve(pose, s.load, Model::Auto)?.model;
+    let mut ms = Vec::new();
+    for m in [Model::RigidZ, Model::RigidTilt, Model::Compliant] {
+        let setting = Setting::cat(m.name(), m == auto, m == Model::Compliant);
+        if solver.check_model(m).is_err() {
+            continue;
+        }
+        let (eq, cost) = measure_repeated(0.05, || solver.solve(pose, s.load, m));
+        let values = match eq {
+            Ok(eq) => Values {
+                p_max: Some(eq.p_max),
+                contacts: Some(eq.contact_count() as f64),
+                verdict: Some(coating_verdict(eq.p_max, s)),
+                ..Values::default()
+            },
+            Err(e) => Values {
+                note: e.to_string(),
+                ..Values::default()
+            },
+        };
+        ms.push(Measured {
+            setting,
+            cost,
+            values,
+        });
+    }
+    Ok(ms)
+}
+
+/// Each landscape grid of `grids`, measured (reference: the finest, the last).
+fn grids(solver: &Solver, pose: Pose, s: &StudyScene, grids: &[usize]) -> Result<Vec<Measured>> {
+    let reference = *grids.last().expect("grids");
+    let mut ms = Vec::new();
+    for &n in grids {
+        let mp = MapParams {
+            grid: n,
+            ..MapParams::default()
+        };
+        let (ls, cost) = measure(|| compute_landscape(solver, pose.theta, s.load, &mp, &|| {}));
+        let ls = ls?;
+        let p_max = ls.p_max.iter().copied().fold(0.0, f64::max);
+        let contacts =
+            ls.contacts.iter().map(|&c| c as f64).sum::<f64>() / ls.contacts.len() as f64;
+        ms.push(Measured {
+            setting: Setting::num(n as f64, MapParams::default().grid as f64, reference as f64),
+            cost,
+            values: Values {
+                p_max: Some(p_max),
+                contacts: Some(contacts),
+                landscape_range: Some(ls.range()),
+                verdict: Some(coating_verdict(p_max, s)),
+                ..Values::default()
+            },
+        });
+    }
+    Ok(ms)
+}
+
+/// Each corrugation path step of the plan `pl`, measured (reference: the finest, the last).
+fn steps(solver: &Solver, pose: Pose, s: &StudyScene, pl: &Plan) -> Result<Vec<Measured>> {
+    let reference = *pl.steps_um.last().expect("steps");
+    let mut ms = Vec::new();
+    for &st in &pl.steps_um {
+        let mp = MapParams {
+            step: um_to_m(st),
+            distance: um_to_m(pl.distance_um),
+            ..MapParams::default()
+        };
+        let (prof, cost) =
+            measure(|| path_profile(solver, pose.theta, s.load, s.direction, &mp, &|| {}));
+        let prof = prof?;
+        let contacts =
+            prof.contacts.iter().map(|&c| c as f64).sum::<f64>() / prof.contacts.len() as f64;
+        ms.push(Measured {
+            setting: Setting::num(st, um(MapParams::default().step), reference),
+            cost,
+            values: Values {
+                contacts: Some(contacts),
+                corrugation: Some(prof.corrugation()),
+                max_pull: Some(prof.max_pull()),
+                ..Values::default()
+            },
+        });
+    }
+    Ok(ms)
 }

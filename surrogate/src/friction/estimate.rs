@@ -4,10 +4,11 @@ use super::inertial::{self, Inertial};
 use super::path::{lattice_period, solve_samples, Sample};
 use super::resonance::TiltResonance;
 use super::tomlinson::{self, Profile};
-use super::transverse::{leaves_crest, lowest};
+use super::transverse::transverse_starts;
 use super::FrictionParams;
 use crate::error::SceneError;
 use crate::map::check_slider_stays_on_substrate;
+use crate::scene::Scene;
 use crate::solver::{check_load, Solver};
 use serde::{Deserialize, Serialize};
 
@@ -131,20 +132,7 @@ pub fn estimate_friction_loads(
     params: &FrictionParams,
 ) -> Result<Vec<Result<FrictionEstimate, SceneError>>, SceneError> {
     params.validate()?;
-    if !theta.is_finite() {
-        return Err(SceneError::invalid(
-            "theta_deg",
-            theta.to_degrees(),
-            "must be finite",
-        ));
-    }
-    if !direction.is_finite() {
-        return Err(SceneError::invalid(
-            "alpha_deg",
-            direction.to_degrees(),
-            "the pulling direction must be finite",
-        ));
-    }
+    check_angles(theta, direction)?;
     let scene = solver.scene();
     let e = [direction.cos(), direction.sin()];
     let e_perp = [-e[1], e[0]];
@@ -173,21 +161,7 @@ pub fn estimate_friction_loads(
         (0.0, 0, 0.0)
     };
     // the path, then (where there is one) the path with the search across the pull
-    let reaches = [
-        (0.0, "friction.length_um"),
-        (side, "friction.transverse_um"),
-    ];
-    for &(r, field) in &reaches[..if side > 0.0 { 2 } else { 1 }] {
-        let reach = [r * e_perp[0].abs(), r * e_perp[1].abs()];
-        check_slider_stays_on_substrate(
-            scene,
-            [
-                [end[0].min(0.0) - reach[0], end[1].min(0.0) - reach[1]],
-                [end[0].max(0.0) + reach[0], end[1].max(0.0) + reach[1]],
-            ],
-            field,
-        )?;
-    }
+    check_reaches(scene, end, e_perp, side)?;
 
     let valid: Vec<f64> = loads
         .iter()
@@ -205,21 +179,7 @@ pub fn estimate_friction_loads(
 
     // 3. One equilibrium per sample and load along the path from its start, reduced to the
     //    sums the estimate needs: one path (and pair search) per distinct start.
-    let mut groups: std::collections::BTreeMap<i64, Vec<usize>> = Default::default();
-    for (i, &j) in start.iter().enumerate() {
-        groups.entry(j).or_default().push(i);
-    }
-    let mut solved: Vec<Option<Result<Vec<Sample>, SceneError>>> =
-        valid.iter().map(|_| None).collect();
-    for (&j, members) in &groups {
-        let y = j as f64 * h_side;
-        let group_loads: Vec<f64> = members.iter().map(|&i| valid[i]).collect();
-        let origin = [y * e_perp[0], y * e_perp[1]];
-        let path = solve_samples(solver, theta, origin, e, &group_loads, &s, params);
-        for (&i, r) in members.iter().zip(path) {
-            solved[i] = Some(r);
-        }
-    }
+    let solved = solve_by_start(solver, theta, e, &valid, &start, &s, h_side, params);
     let body = Body::of(solver, params);
     let tilt = TiltResonance::of(scene, params);
     let mut per_valid = start.into_iter().zip(solved).zip(placement_p_max);
@@ -241,102 +201,81 @@ pub fn estimate_friction_loads(
         .collect())
 }
 
-/// Transverse forces |F_⊥| (N) up to this fraction of the load W count as none (the round-off
-/// of the solver's forces): a path along which every sampled |F_⊥| stays within it is a mirror
-/// line of the scene and does not drift ([`transverse_starts`]; `docs/validation/friction.md`,
-/// "The drift across the pull").
-const TRANSVERSE_FORCE_TOL: f64 = 1e-9;
+/// Errs on a non-finite θ or pulling direction (rad).
+fn check_angles(theta: f64, direction: f64) -> Result<(), SceneError> {
+    if !theta.is_finite() {
+        return Err(SceneError::invalid(
+            "theta_deg",
+            theta.to_degrees(),
+            "must be finite",
+        ));
+    }
+    if !direction.is_finite() {
+        return Err(SceneError::invalid(
+            "alpha_deg",
+            direction.to_degrees(),
+            "the pulling direction must be finite",
+        ));
+    }
+    Ok(())
+}
 
-/// The drift model takes F_⊥ and the coating's C on every `DRIFT_SAMPLE_EVERY`-th sample of the
-/// straight path (and its end): 0.5 µm apart at the default 0.05 µm step, finer than the
-/// 1.5–3 µm scale of the landscape ([`transverse_starts`]; `docs/validation/friction.md`, "The
-/// drift across the pull": "every 10th sample").
-const DRIFT_SAMPLE_EVERY: usize = 10;
+/// Errs when the slider leaves the substrate along the path to `end` (m), or, with a search
+/// across the pull (`side` > 0, m), along the path swept `side` along `e_perp`.
+fn check_reaches(
+    scene: &Scene,
+    end: [f64; 2],
+    e_perp: [f64; 2],
+    side: f64,
+) -> Result<(), SceneError> {
+    let reaches = [
+        (0.0, "friction.length_um"),
+        (side, "friction.transverse_um"),
+    ];
+    for &(r, field) in &reaches[..if side > 0.0 { 2 } else { 1 }] {
+        let reach = [r * e_perp[0].abs(), r * e_perp[1].abs()];
+        check_slider_stays_on_substrate(
+            scene,
+            [
+                [end[0].min(0.0) - reach[0], end[1].min(0.0) - reach[1]],
+                [end[0].max(0.0) + reach[0], end[1].max(0.0) + reach[1]],
+            ],
+            field,
+        )?;
+    }
+    Ok(())
+}
 
-/// Step 2 of [`estimate_friction_loads`] (`transverse.rs`): per load of `loads` (N), the start
-/// of the path across the pull, in samples of `h` (m) along e⊥ (0: through the placement), and
-/// P_max (Pa) at the placement where the path leaves it (else 0).
-/// `s`: the path's samples (m) along `e`; `m`: samples of the one-sided line across the pull.
-#[allow(clippy::too_many_arguments)]
-fn transverse_starts(
+/// The samples of each `valid` load along the path `s` (m, along `e`) from its start (`start`:
+/// in samples of `h_side` across the pull): one path, and pair search, per distinct start.
+#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+fn solve_by_start(
     solver: &Solver,
     theta: f64,
     e: [f64; 2],
-    loads: &[f64],
+    valid: &[f64],
+    start: &[i64],
     s: &[f64],
-    h: f64,
-    m: usize,
+    h_side: f64,
     params: &FrictionParams,
-) -> (Vec<i64>, Vec<f64>) {
+) -> Vec<Option<Result<Vec<Sample>, SceneError>>> {
     let e_perp = [-e[1], e[0]];
-    let tol_f = |w: f64| TRANSVERSE_FORCE_TOL * w;
-    // F_⊥ and C along the straight path, every DRIFT_SAMPLE_EVERY-th sample (and its end)
-    let mut coarse: Vec<f64> = s.iter().step_by(DRIFT_SAMPLE_EVERY).copied().collect();
-    if coarse.last() != s.last() {
-        coarse.push(*s.last().expect("a path has samples"));
+    let mut groups: std::collections::BTreeMap<i64, Vec<usize>> = Default::default();
+    for (i, &j) in start.iter().enumerate() {
+        groups.entry(j).or_default().push(i);
     }
-    let along = solve_samples(solver, theta, [0.0, 0.0], e, loads, &coarse, params);
-    let pushed = |r: &Result<Vec<Sample>, SceneError>, w: f64| {
-        r.as_ref()
-            .is_ok_and(|x| x.iter().any(|x| x.f_perp.abs() > tol_f(w)))
-    };
-    let mut start = vec![0i64; loads.len()];
-    let mut placed = vec![0.0; loads.len()];
-    if !along.iter().zip(loads).any(|(r, &w)| pushed(r, w)) {
-        // a mirror line of the scene: no transverse force anywhere
-        return (start, placed);
-    }
-    // U'' at the placement from y = −h, 0, +h (U = V + ½K0y²)
-    let stencil = solve_samples(
-        solver,
-        theta,
-        [-h * e_perp[0], -h * e_perp[1]],
-        e_perp,
-        loads,
-        &[0.0, h, 2.0 * h],
-        params,
-    );
-    let distance = params.speed * params.slide_time;
-    let mut side = vec![None; loads.len()];
-    for (i, (&w, (path, st))) in loads.iter().zip(along.iter().zip(&stencil)).enumerate() {
-        let (Ok(path), Ok(st)) = (path, st) else {
-            continue;
-        };
-        if solver.scene().coating.failed(path[0].p_max) {
-            // contacts failed at the start pin it (μ2): the DEM's slider stays (rough
-            // square-tri 0°/90° at 2.45 mN, square-tri 10.2°/90° at 3.86 mN)
-            continue;
-        }
-        let k_y = (st[0].v - 2.0 * st[1].v + st[2].v) / (h * h) + params.k0;
-        let f: Vec<f64> = path.iter().map(|x| x.f_perp).collect();
-        let c: Vec<f64> = path.iter().map(|x| x.coating).collect();
-        side[i] = leaves_crest(k_y, &coarse, &f, &c, distance, h, tol_f(w));
-    }
-    // the line on each side that a load leaves to: the lowest U on it
-    let y: Vec<f64> = (0..=m).map(|j| j as f64 * h).collect();
-    for sign in [-1.0f64, 1.0] {
-        let which: Vec<usize> = (0..loads.len())
-            .filter(|&i| side[i] == Some(sign))
-            .collect();
-        if which.is_empty() {
-            continue;
-        }
-        let w_side: Vec<f64> = which.iter().map(|&i| loads[i]).collect();
-        let dir = [sign * e_perp[0], sign * e_perp[1]];
-        let line = solve_samples(solver, theta, [0.0, 0.0], dir, &w_side, &y, params);
-        for (&i, r) in which.iter().zip(line) {
-            let Ok(r) = r else { continue };
-            let u: Vec<f64> = r
-                .iter()
-                .zip(&y)
-                .map(|(x, &yj)| x.v + 0.5 * params.k0 * yj * yj)
-                .collect();
-            let j = lowest(&u);
-            start[i] = sign as i64 * j as i64;
-            placed[i] = r[0].p_max;
+    let mut solved: Vec<Option<Result<Vec<Sample>, SceneError>>> =
+        valid.iter().map(|_| None).collect();
+    for (&j, members) in &groups {
+        let y = j as f64 * h_side;
+        let group_loads: Vec<f64> = members.iter().map(|&i| valid[i]).collect();
+        let origin = [y * e_perp[0], y * e_perp[1]];
+        let path = solve_samples(solver, theta, origin, e, &group_loads, s, params);
+        for (&i, r) in members.iter().zip(path) {
+            solved[i] = Some(r);
         }
     }
-    (start, placed)
+    solved
 }
 
 /// The sliding body of the inertial model: mass (kg) and damping coefficient (kg/s).
@@ -369,6 +308,50 @@ impl Body {
     }
 }
 
+/// The path-average weights of the n + 1 samples: periodic paths average the n distinct
+/// samples of one period (the last repeats the first); quasi-periodic ones use the trapezoid
+/// rule over [0, L].
+fn path_weights(n: usize, periodic: bool) -> Vec<f64> {
+    (0..=n)
+        .map(|k| match (periodic, k == 0 || k == n) {
+            (true, _) if k == n => 0.0,
+            (true, _) => 1.0 / n as f64,
+            (false, true) => 0.5 / n as f64,
+            (false, false) => 1.0 / n as f64,
+        })
+        .collect()
+}
+
+/// μ and its spread over the starts from the inertial model where the path can stick and
+/// slip: `f` the pull (N) at the samples `smp` (step `h`, m), `k_spring` (N/m) in series.
+#[allow(clippy::too_many_arguments)]
+fn stick_slip_mu(
+    smp: &[Sample],
+    f: &[f64],
+    h: f64,
+    body: &Body,
+    k_spring: f64,
+    params: &FrictionParams,
+    load: f64,
+) -> (f64, f64) {
+    let coat: Vec<f64> = smp.iter().map(|x| x.coating).collect();
+    let (friction, spread) = inertial::ensemble(
+        f,
+        &coat,
+        h,
+        &Inertial {
+            mass: body.mass,
+            gamma: body.gamma,
+            k: k_spring,
+            speed: params.speed,
+            duration: params.slide_time,
+            window_start: params.window_start,
+        },
+        params.starts,
+    );
+    (friction / load, spread / load)
+}
+
 /// Steps 3–4 of the estimate from the solved samples of one load.
 #[allow(clippy::too_many_arguments)]
 fn from_samples(
@@ -386,14 +369,7 @@ fn from_samples(
 ) -> FrictionEstimate {
     // 3. Path averages: periodic paths average the n distinct samples of one period (the last
     //    repeats the first); quasi-periodic ones use the trapezoid rule over [0, L].
-    let weights: Vec<f64> = (0..=n)
-        .map(|k| match (period.is_some(), k == 0 || k == n) {
-            (true, _) if k == n => 0.0,
-            (true, _) => 1.0 / n as f64,
-            (false, true) => 0.5 / n as f64,
-            (false, false) => 1.0 / n as f64,
-        })
-        .collect();
+    let weights = path_weights(n, period.is_some());
     let avg = |f: &dyn Fn(&Sample) -> f64| -> f64 {
         smp.iter().zip(&weights).map(|(x, w)| w * f(x)).sum()
     };
@@ -431,22 +407,7 @@ fn from_samples(
     let (mu_est, mu_est_spread) = if pt.eta <= 1.0 {
         (mu_quasi, 0.0)
     } else {
-        let coat: Vec<f64> = smp.iter().map(|x| x.coating).collect();
-        let (friction, spread) = inertial::ensemble(
-            &f,
-            &coat,
-            h,
-            &Inertial {
-                mass: body.mass,
-                gamma: body.gamma,
-                k: k_spring,
-                speed: params.speed,
-                duration: params.slide_time,
-                window_start: params.window_start,
-            },
-            params.starts,
-        );
-        (friction / load, spread / load)
+        stick_slip_mu(smp, &f, h, body, k_spring, params, load)
     };
     FrictionEstimate {
         theta,

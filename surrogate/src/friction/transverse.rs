@@ -54,6 +54,109 @@
 //! where a load leaves the crest, `transverse/h` more for the line on that side, with the path then
 //! solved from the new start instead of the placement.
 
+use super::path::{solve_samples, Sample};
+use super::FrictionParams;
+use crate::error::SceneError;
+use crate::solver::Solver;
+
+/// Transverse forces |F_⊥| (N) up to this fraction of the load W count as none (the round-off
+/// of the solver's forces): a path along which every sampled |F_⊥| stays within it is a mirror
+/// line of the scene and does not drift ([`transverse_starts`]; `docs/validation/friction.md`,
+/// "The drift across the pull").
+const TRANSVERSE_FORCE_TOL: f64 = 1e-9;
+
+/// The drift model takes F_⊥ and the coating's C on every `DRIFT_SAMPLE_EVERY`-th sample of the
+/// straight path (and its end): 0.5 µm apart at the default 0.05 µm step, finer than the
+/// 1.5–3 µm scale of the landscape ([`transverse_starts`]; `docs/validation/friction.md`, "The
+/// drift across the pull": "every 10th sample").
+const DRIFT_SAMPLE_EVERY: usize = 10;
+
+/// Step 2 of [`super::estimate_friction_loads`]: per load of `loads` (N), the start
+/// of the path across the pull, in samples of `h` (m) along e⊥ (0: through the placement), and
+/// P_max (Pa) at the placement where the path leaves it (else 0).
+/// `s`: the path's samples (m) along `e`; `m`: samples of the one-sided line across the pull.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn transverse_starts(
+    solver: &Solver,
+    theta: f64,
+    e: [f64; 2],
+    loads: &[f64],
+    s: &[f64],
+    h: f64,
+    m: usize,
+    params: &FrictionParams,
+) -> (Vec<i64>, Vec<f64>) {
+    let e_perp = [-e[1], e[0]];
+    let tol_f = |w: f64| TRANSVERSE_FORCE_TOL * w;
+    // F_⊥ and C along the straight path, every DRIFT_SAMPLE_EVERY-th sample (and its end)
+    let mut coarse: Vec<f64> = s.iter().step_by(DRIFT_SAMPLE_EVERY).copied().collect();
+    if coarse.last() != s.last() {
+        coarse.push(*s.last().expect("a path has samples"));
+    }
+    let along = solve_samples(solver, theta, [0.0, 0.0], e, loads, &coarse, params);
+    let pushed = |r: &Result<Vec<Sample>, SceneError>, w: f64| {
+        r.as_ref()
+            .is_ok_and(|x| x.iter().any(|x| x.f_perp.abs() > tol_f(w)))
+    };
+    let mut start = vec![0i64; loads.len()];
+    let mut placed = vec![0.0; loads.len()];
+    if !along.iter().zip(loads).any(|(r, &w)| pushed(r, w)) {
+        // a mirror line of the scene: no transverse force anywhere
+        return (start, placed);
+    }
+    // U'' at the placement from y = −h, 0, +h (U = V + ½K0y²)
+    let stencil = solve_samples(
+        solver,
+        theta,
+        [-h * e_perp[0], -h * e_perp[1]],
+        e_perp,
+        loads,
+        &[0.0, h, 2.0 * h],
+        params,
+    );
+    let distance = params.speed * params.slide_time;
+    let mut side = vec![None; loads.len()];
+    for (i, (&w, (path, st))) in loads.iter().zip(along.iter().zip(&stencil)).enumerate() {
+        let (Ok(path), Ok(st)) = (path, st) else {
+            continue;
+        };
+        if solver.scene().coating.failed(path[0].p_max) {
+            // contacts failed at the start pin it (μ2): the DEM's slider stays (rough
+            // square-tri 0°/90° at 2.45 mN, square-tri 10.2°/90° at 3.86 mN)
+            continue;
+        }
+        let k_y = (st[0].v - 2.0 * st[1].v + st[2].v) / (h * h) + params.k0;
+        let f: Vec<f64> = path.iter().map(|x| x.f_perp).collect();
+        let c: Vec<f64> = path.iter().map(|x| x.coating).collect();
+        side[i] = leaves_crest(k_y, &coarse, &f, &c, distance, h, tol_f(w));
+    }
+    // the line on each side that a load leaves to: the lowest U on it
+    let y: Vec<f64> = (0..=m).map(|j| j as f64 * h).collect();
+    for sign in [-1.0f64, 1.0] {
+        let which: Vec<usize> = (0..loads.len())
+            .filter(|&i| side[i] == Some(sign))
+            .collect();
+        if which.is_empty() {
+            continue;
+        }
+        let w_side: Vec<f64> = which.iter().map(|&i| loads[i]).collect();
+        let dir = [sign * e_perp[0], sign * e_perp[1]];
+        let line = solve_samples(solver, theta, [0.0, 0.0], dir, &w_side, &y, params);
+        for (&i, r) in which.iter().zip(line) {
+            let Ok(r) = r else { continue };
+            let u: Vec<f64> = r
+                .iter()
+                .zip(&y)
+                .map(|(x, &yj)| x.v + 0.5 * params.k0 * yj * yj)
+                .collect();
+            let j = lowest(&u);
+            start[i] = sign as i64 * j as i64;
+            placed[i] = r[0].p_max;
+        }
+    }
+    (start, placed)
+}
+
 /// Where the slider that left the crest ends up on the profile `u` (J, samples outward from the
 /// placement on the side it left to): the lowest sample, the first of equal ones ([module
 /// documentation](self): the DEM's slider crosses the rises of this one cut of the landscape).

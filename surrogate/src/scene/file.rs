@@ -240,6 +240,35 @@ impl SceneFile {
             "substrate.sphere_diameter_um",
             self.substrate.sphere_diameter_um,
         )?;
+        self.apply_outline(s)?;
+        self.apply_slider_sites(s, &mut r_sl)?;
+        if let Some(p) = &self.substrate.sites {
+            if self.substrate.lattice.is_some() {
+                return Err(SceneError::invalid(
+                    "substrate.sites",
+                    p,
+                    "give either substrate.lattice or substrate.sites, not both",
+                ));
+            }
+            s.geometry.substrate_sites = Some(read_sites("substrate.sites", p, &mut r_sb)?);
+        }
+        let base = s.sphere_radius;
+        let sb = r_sb.unwrap_or(base);
+        let sl = r_sl.unwrap_or(base);
+        s.sphere_radius = sb;
+        s.geometry.slider_sphere_radius = (sl != sb).then_some(sl);
+        // per-site sizes: empty diameter_um cells take the body's size
+        if let Some(l) = &mut s.geometry.slider_sites {
+            l.resolve_sizes(sl, "slider.sites")?;
+        }
+        if let Some(l) = &mut s.geometry.substrate_sites {
+            l.resolve_sizes(sb, "substrate.sites")?;
+        }
+        Ok(())
+    }
+
+    /// Applies the slider's outline (and a disc outline's radius) to `s`.
+    fn apply_outline(&self, s: &mut Scene) -> Result<(), SceneError> {
         if let Some(o) = &self.slider.outline {
             if self.slider.sites.is_some() {
                 return Err(SceneError::invalid(
@@ -264,24 +293,12 @@ impl SceneFile {
             }
             s.geometry.outline = outline;
         }
-        let read = |field: &str, path: &str, r: &mut Option<f64>| {
-            let l = SiteList::read(std::path::Path::new(path), field)?;
-            if let Some(d) = l.diameter {
-                if r.is_some_and(|v| v != d / 2.0) {
-                    return Err(SceneError::invalid(
-                        field,
-                        path,
-                        &format!(
-                            "its diameter_um column ({} µm) differs from the body's sphere_diameter_um ({} µm); give one",
-                            um_text(d),
-                            um_text(2.0 * r.unwrap_or_default())
-                        ),
-                    ));
-                }
-                *r = Some(d / 2.0);
-            }
-            Ok::<_, SceneError>(l)
-        };
+        Ok(())
+    }
+
+    /// Reads the slider's site file into `s` with the slider's bounding radius; its diameter
+    /// column sets `r_sl` (m).
+    fn apply_slider_sites(&self, s: &mut Scene, r_sl: &mut Option<f64>) -> Result<(), SceneError> {
         if let Some(p) = &self.slider.sites {
             if self.slider.lattice.is_some() {
                 return Err(SceneError::invalid(
@@ -290,7 +307,7 @@ impl SceneFile {
                     "give either slider.lattice or slider.sites, not both",
                 ));
             }
-            let l = read("slider.sites", p, &mut r_sl)?;
+            let l = read_sites("slider.sites", p, r_sl)?;
             // the slider's bounding radius: the farthest site, or `radius_um` when given
             let far = l.sites.iter().map(|q| q[0].hypot(q[1])).fold(0.0, f64::max);
             s.slider.radius = match self.slider.radius_um {
@@ -309,30 +326,29 @@ impl SceneFile {
             };
             s.geometry.slider_sites = Some(l);
         }
-        if let Some(p) = &self.substrate.sites {
-            if self.substrate.lattice.is_some() {
-                return Err(SceneError::invalid(
-                    "substrate.sites",
-                    p,
-                    "give either substrate.lattice or substrate.sites, not both",
-                ));
-            }
-            s.geometry.substrate_sites = Some(read("substrate.sites", p, &mut r_sb)?);
-        }
-        let base = s.sphere_radius;
-        let sb = r_sb.unwrap_or(base);
-        let sl = r_sl.unwrap_or(base);
-        s.sphere_radius = sb;
-        s.geometry.slider_sphere_radius = (sl != sb).then_some(sl);
-        // per-site sizes: empty diameter_um cells take the body's size
-        if let Some(l) = &mut s.geometry.slider_sites {
-            l.resolve_sizes(sl, "slider.sites")?;
-        }
-        if let Some(l) = &mut s.geometry.substrate_sites {
-            l.resolve_sizes(sb, "substrate.sites")?;
-        }
         Ok(())
     }
+}
+
+/// The site file `path` of `field` (`slider.sites`, `substrate.sites`); its diameter column,
+/// if any, sets the body's sphere radius `r` (m), which must agree with a given one.
+fn read_sites(field: &str, path: &str, r: &mut Option<f64>) -> Result<SiteList, SceneError> {
+    let l = SiteList::read(std::path::Path::new(path), field)?;
+    if let Some(d) = l.diameter {
+        if r.is_some_and(|v| v != d / 2.0) {
+            return Err(SceneError::invalid(
+                field,
+                path,
+                &format!(
+                    "its diameter_um column ({} µm) differs from the body's sphere_diameter_um ({} µm); give one",
+                    um_text(d),
+                    um_text(2.0 * r.unwrap_or_default())
+                ),
+            ));
+        }
+        *r = Some(d / 2.0);
+    }
+    Ok(l)
 }
 
 #[cfg(test)]

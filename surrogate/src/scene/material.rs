@@ -68,7 +68,7 @@ impl Material {
                 "must be a positive number",
             ));
         }
-        super::validate::plausible_field(
+        super::plausible::plausible_field(
             &format!("{table}.youngs_GPa"),
             &super::plausible::YOUNGS_GPA,
             pa_to_gpa(self.youngs),
@@ -87,7 +87,7 @@ impl Material {
                 "must be a positive number",
             ));
         }
-        super::validate::plausible_field(
+        super::plausible::plausible_field(
             &format!("{table}.density_g_cm3"),
             &super::plausible::DENSITY_G_CM3,
             kgm3_to_gcm3(self.density),
@@ -172,7 +172,7 @@ impl Coating {
                 "must be a positive number",
             ));
         }
-        super::validate::plausible_field(
+        super::plausible::plausible_field(
             "coating.p_crit_GPa",
             &super::plausible::P_CRIT_GPA,
             pa_to_gpa(self.p_crit),

@@ -18,6 +18,7 @@ mod sites;
 mod sizes;
 pub mod symmetry;
 mod to_file;
+mod touch;
 mod validate;
 
 pub use body_file::{SliderFile, SubstrateFile};
@@ -29,10 +30,11 @@ pub use material::{BodyMaterials, Coating, Material};
 pub use mount::{rotate_tilt_stiffness, Mount, STUDY_K1};
 pub use outline_file::OutlineFile;
 pub use pattern::{
-    check_basis, closest_sites, min_site_distance, overlaps, rebased, sites_in_outline,
-    ClosestSites, Geometry, Outline, TOUCH_TOL,
+    check_basis, closest_sites, min_site_distance, rebased, sites_in_outline, ClosestSites,
+    Geometry, Outline,
 };
 pub use scene::{lattice_name, place, Scene, SliderSpec, SubstrateSpec, PATTERNS};
 pub use sites::SiteList;
 pub use to_file::{scene_file, scene_file_with_lattices};
+pub use touch::{overlaps, TOUCH_TOL};
 pub use validate::FEW_SLIDER_SPHERES;

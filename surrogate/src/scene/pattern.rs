@@ -4,6 +4,7 @@
 //! its default is the plain disc-of-a-Bravais-lattice of the presets.
 
 use super::sites::SiteList;
+use super::touch::{overlaps, snap_um};
 use super::Lattice;
 use crate::error::SceneError;
 use crate::units::{m_to_um, nm_text, um_pair_text, um_text, um_to_m};
@@ -319,11 +320,6 @@ impl Geometry {
     }
 }
 
-/// `x` (µm) on the 1e-9 µm grid: `round(x·10⁹)/10⁹`, the double nearest to its 9-decimal text.
-pub(super) fn snap_um(x: f64) -> f64 {
-    (x * 1e9).round() / 1e9
-}
-
 /// A site coordinate (m) of a lattice with a basis, placed on the 1e-9 µm grid so that a site
 /// file with the coordinates written to 9 or more decimals (µm) gives exactly the same sites
 /// (site files are read onto the same grid).
@@ -397,19 +393,6 @@ pub fn rebased(basis: &[[f64; 2]]) -> Vec<[f64; 2]> {
         None => vec![[0.0, 0.0]],
         Some(b0) => basis.iter().map(|b| [b[0] - b0[0], b[1] - b0[1]]).collect(),
     }
-}
-
-/// Relative tolerance of every sphere-overlap check (lattices, bases, site files, families):
-/// spheres whose centres are at least `d · (1 − 1e-6)` apart (d the contact distance, the sum
-/// of the radii) count as touching, not overlapping, so that coordinates typed to 6 decimals in
-/// µm (a honeycomb basis `[2.598076, 1.5]` at 5.196152 µm, 0.18 pm short of 3 µm) are
-/// accepted. A real overlap (more than 3 pm for 3 µm spheres) is refused.
-pub const TOUCH_TOL: f64 = 1e-6;
-
-/// Whether spheres at centre distance `dist` overlap for the contact distance `d` (m), beyond
-/// the [`TOUCH_TOL`] allowance.
-pub fn overlaps(dist: f64, d: f64) -> bool {
-    dist < d * (1.0 - TOUCH_TOL)
 }
 
 /// The closest pair of distinct sites of the lattice with `basis`: site `a` of the basis (index
@@ -489,7 +472,7 @@ fn cell_text(cell: (i32, i32)) -> String {
 }
 
 /// Checks a lattice with a basis: finite basis sites, none repeated, and spheres of diameter
-/// `d` (m) on them do not overlap beyond [`TOUCH_TOL`]. `field` names the basis
+/// `d` (m) on them do not overlap beyond [`super::touch::TOUCH_TOL`]. `field` names the basis
 /// (`slider.lattice.basis_um`); a refusal prints the basis as typed (µm), names the two sites
 /// (`basis_um[k]`, counted from 1, and the lattice translation) and the overlap in nm.
 pub fn check_basis(l: &Lattice, basis: &[[f64; 2]], d: f64, field: &str) -> Result<(), SceneError> {

@@ -5,6 +5,15 @@
 //! Every range lets every meaningful value through; each one's reason is on `docs/inputs.md`,
 //! which a test checks against this table ([`ALL`]).
 
+use crate::error::SceneError;
+use crate::units::significant;
+
+/// `v` (user units) checked against the plausible range `p`, as the scene checks do (`material.rs`, `validate.rs`); the error names `field`.
+pub(crate) fn plausible_field(field: &str, p: &Plausible, v: f64) -> Result<(), SceneError> {
+    p.check(v)
+        .map_err(|why| SceneError::invalid(field, significant(v, 9), &why))
+}
+
 /// One plausible range in user units, with the physical reason for its ends and the unit
 /// slips it recognises. Cost of a check: O(number of slips).
 #[derive(Debug, Clone, Copy)]

@@ -1,7 +1,7 @@
 //! [`SiteList`]: sphere sites read from a site file (`slider.sites`, `substrate.sites`), with
 //! per-site sphere diameters where the file's `diameter_um` column gives them.
 
-use super::pattern::{overlaps, snap_um};
+use super::touch::{overlaps, snap_um};
 use crate::error::SceneError;
 use crate::units::{nm_text, um_pair_text, um_text, um_to_m};
 use serde::{Deserialize, Serialize};
@@ -175,7 +175,7 @@ impl SiteList {
     }
 
     /// Checks no two spheres of per-site radii `radii` overlap: centre distance < r_i + r_j
-    /// (beyond the relative [`super::pattern::TOUCH_TOL`], 1e-6); the error names both file lines and both diameters. Sweep over x with
+    /// (beyond the relative [`super::touch::TOUCH_TOL`], 1e-6); the error names both file lines and both diameters. Sweep over x with
     /// the largest diameter as the window (`first_overlap`): O(N log N + close
     /// pairs).
     pub fn check_overlap_sized(&self, field: &str) -> Result<(), SceneError> {
@@ -205,7 +205,7 @@ impl SiteList {
 
     /// The first overlapping pair (a < b, centre distance) of spheres of radius `radius(i)`
     /// (m): centre distance < r_a + r_b (beyond the relative 1e-6 of
-    /// [`super::pattern::TOUCH_TOL`]), by a sweep over x whose window
+    /// [`super::touch::TOUCH_TOL`]), by a sweep over x whose window
     /// `window` (m) is at least the largest radius sum. O(N log N + close pairs).
     fn first_overlap(
         &self,
@@ -259,7 +259,7 @@ impl SiteList {
     }
 
     /// Checks no two spheres of diameter `d` (m) overlap (centre distance < d beyond the relative
-    /// [`super::pattern::TOUCH_TOL`], 1e-6);
+    /// [`super::touch::TOUCH_TOL`], 1e-6);
     /// the error names both file lines. Sweep over x (`first_overlap`):
     /// O(N log N + close pairs).
     pub fn check_overlap(&self, d: f64, field: &str) -> Result<(), SceneError> {

@@ -3,16 +3,10 @@
 //! edge.
 
 use super::pattern;
-use super::plausible::{self, Plausible};
+use super::plausible::{self, plausible_field};
 use super::Scene;
 use crate::error::SceneError;
 use crate::units::{m_to_um, nm_text, significant, um_pair_text, um_text};
-
-/// `v` (user units) checked against the plausible range `p`; the error names `field`.
-pub(crate) fn plausible_field(field: &str, p: &Plausible, v: f64) -> Result<(), SceneError> {
-    p.check(v)
-        .map_err(|why| SceneError::invalid(field, significant(v, 9), &why))
-}
 
 /// Fewer slider spheres than this draw a warning ([`Scene::slider_size_check`]): a centre
 /// sphere and its ring of six in a triangular lattice.
@@ -21,8 +15,29 @@ pub const FEW_SLIDER_SPHERES: usize = 7;
 impl Scene {
     /// Checks every field; the error names the first bad field in user units.
     pub fn validate(&self) -> Result<(), SceneError> {
-        let um = um_text;
         self.validate_plausible()?;
+        self.validate_sphere_sizes()?;
+        self.slider.lattice.validate("slider.lattice")?;
+        self.substrate.lattice.validate("substrate.lattice")?;
+        self.validate_geometry()?;
+        self.validate_slider()?;
+        self.validate_substrate()?;
+        self.slider.mount.validate("slider.tilt")?;
+        self.validate_placement()?;
+        self.material.validate()?;
+        if let Some(m) = &self.body_materials.slider {
+            m.validate_in("slider.material")?;
+        }
+        if let Some(m) = &self.body_materials.substrate {
+            m.validate_in("substrate.material")?;
+        }
+        self.coating.validate()?;
+        Ok(())
+    }
+
+    /// The sphere diameters: positive.
+    fn validate_sphere_sizes(&self) -> Result<(), SceneError> {
+        let um = um_text;
         if !(self.sphere_radius.is_finite() && self.sphere_radius > 0.0) {
             return Err(SceneError::invalid(
                 "sphere_diameter_um",
@@ -39,9 +54,12 @@ impl Scene {
                 ));
             }
         }
-        self.slider.lattice.validate("slider.lattice")?;
-        self.substrate.lattice.validate("substrate.lattice")?;
-        self.validate_geometry()?;
+        Ok(())
+    }
+
+    /// The slider's radius (non-negative), θ and offset (finite).
+    fn validate_slider(&self) -> Result<(), SceneError> {
+        let um = um_text;
         if !(self.slider.radius.is_finite() && self.slider.radius >= 0.0) {
             return Err(SceneError::invalid(
                 "slider.radius_um",
@@ -63,6 +81,12 @@ impl Scene {
                 "must be finite",
             ));
         }
+        Ok(())
+    }
+
+    /// The substrate's sides (positive) and σ_h (non-negative, below the sphere radius).
+    fn validate_substrate(&self) -> Result<(), SceneError> {
+        let um = um_text;
         let [lx, ly] = self.substrate.size;
         if !(lx.is_finite() && ly.is_finite() && lx > 0.0 && ly > 0.0) {
             return Err(SceneError::invalid(
@@ -99,7 +123,13 @@ impl Scene {
                 ),
             ));
         }
-        self.slider.mount.validate("slider.tilt")?;
+        Ok(())
+    }
+
+    /// The slider on the substrate: its disc fits, its centre is over it.
+    fn validate_placement(&self) -> Result<(), SceneError> {
+        let um = um_text;
+        let [lx, ly] = self.substrate.size;
         if self.slider.radius > 0.5 * lx.min(ly) {
             return Err(SceneError::invalid(
                 "slider.radius_um",
@@ -125,14 +155,6 @@ impl Scene {
                 ),
             ));
         }
-        self.material.validate()?;
-        if let Some(m) = &self.body_materials.slider {
-            m.validate_in("slider.material")?;
-        }
-        if let Some(m) = &self.body_materials.substrate {
-            m.validate_in("substrate.material")?;
-        }
-        self.coating.validate()?;
         Ok(())
     }
 
@@ -252,7 +274,7 @@ impl Scene {
 
     /// Checks that a Bravais lattice (no basis, no site file replacing it) keeps its spheres
     /// apart: nearest sites at least one sphere diameter apart (within the relative
-    /// [`pattern::TOUCH_TOL`], 1e-6), for user scenes
+    /// [`super::touch::TOUCH_TOL`], 1e-6), for user scenes
     /// ([`crate::SceneFile::into_scene`]; a test may build denser rails on purpose). Errors
     /// name `slider.lattice` / `substrate.lattice`. O(1).
     pub fn check_lattice_spacing(&self) -> Result<(), SceneError> {
@@ -276,7 +298,7 @@ impl Scene {
             ),
         ] {
             let s = l.min_spacing();
-            if basis.len() <= 1 && sites.is_none() && pattern::overlaps(s, d) {
+            if basis.len() <= 1 && sites.is_none() && super::touch::overlaps(s, d) {
                 return Err(SceneError::invalid(
                     field,
                     format!("{} µm nearest-site spacing", um_text(s)),

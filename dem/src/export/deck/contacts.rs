@@ -1,7 +1,7 @@
 //! The deck's contact law from the [`crate::ContactParams`] part and the scene's materials:
 //! `pair_style granular` (Hertz + Mindlin + damping + constant μ) and the neighbour list.
 
-use super::{DeckInputs, N};
+use super::number::N;
 use crate::export::damping::LammpsDamping;
 use std::fmt::Write;
 
@@ -56,10 +56,10 @@ fn pair_lines(s: &mut String, p: &DeckPair) {
 }
 
 /// `pair_style`/`pair_coeff` (one material, or the pair's own coefficients) and `neighbor`.
-pub(super) fn contacts(s: &mut String, d: &DeckInputs) {
+pub(super) fn contacts(s: &mut String, contact: &DeckContact, skin: f64) {
     w!(s, "# ---- contacts: Hertz (hertz/material: F = 4/3 E* sqrt(R_eff) delta^1.5), Mindlin k_t = 8 G* a,");
     w!(s, "# capped at mu |F_n| (damped normal force, as in the Rust engine); only slider-substrate pairs ----");
-    match d.contact.damping {
+    match contact.damping {
         LammpsDamping::Tsuji { e, xgammat } => {
             w!(s, "# damping tsuji: F = -alpha(e) sqrt(m_eff 4/3 E* a) v_n = the Rust -gamma_n sqrt(m_eff 2E* a) v_n;");
             w!(
@@ -67,22 +67,22 @@ pub(super) fn contacts(s: &mut String, d: &DeckInputs) {
                 "# tangential damping = xgammat x normal = the Rust -gamma_t sqrt(m_eff k_t) v_t"
             );
             w!(s, "pair_style      granular");
-            w!(s, "pair_coeff      * * hertz/material {} {} {} damping tsuji tangential mindlin NULL {} {}", N(d.contact.youngs), N(e), N(d.contact.poisson), N(xgammat), N(d.contact.mu));
-            if let Some(p) = d.contact.pair {
+            w!(s, "pair_coeff      * * hertz/material {} {} {} damping tsuji tangential mindlin NULL {} {}", N(contact.youngs), N(e), N(contact.poisson), N(xgammat), N(contact.mu));
+            if let Some(p) = contact.pair {
                 pair_lines(s, &p);
-                w!(s, "pair_coeff      1 2 hertz/material {} {} {} damping tsuji tangential mindlin {} {} {}", N(p.youngs), N(e), N(d.contact.poisson), N(p.k_t), N(xgammat), N(d.contact.mu));
+                w!(s, "pair_coeff      1 2 hertz/material {} {} {} damping tsuji tangential mindlin {} {} {}", N(p.youngs), N(e), N(contact.poisson), N(p.k_t), N(xgammat), N(contact.mu));
             }
         }
         LammpsDamping::None => {
             w!(s, "pair_style      granular");
-            w!(s, "pair_coeff      * * hertz/material {} 0.0 {} damping viscoelastic tangential mindlin NULL 0.0 {}", N(d.contact.youngs), N(d.contact.poisson), N(d.contact.mu));
-            if let Some(p) = d.contact.pair {
+            w!(s, "pair_coeff      * * hertz/material {} 0.0 {} damping viscoelastic tangential mindlin NULL 0.0 {}", N(contact.youngs), N(contact.poisson), N(contact.mu));
+            if let Some(p) = contact.pair {
                 pair_lines(s, &p);
-                w!(s, "pair_coeff      1 2 hertz/material {} 0.0 {} damping viscoelastic tangential mindlin {} 0.0 {}", N(p.youngs), N(d.contact.poisson), N(p.k_t), N(d.contact.mu));
+                w!(s, "pair_coeff      1 2 hertz/material {} 0.0 {} damping viscoelastic tangential mindlin {} 0.0 {}", N(p.youngs), N(contact.poisson), N(p.k_t), N(contact.mu));
             }
         }
     }
-    w!(s, "neighbor        {} bin", N(d.numerics.skin));
+    w!(s, "neighbor        {} bin", N(skin));
     w!(s, "neigh_modify    delay 0 every 1 check yes exclude type 1 1 exclude type 2 2 exclude group ctrl all exclude group support all");
     w!(s, "");
 }

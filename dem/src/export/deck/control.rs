@@ -1,7 +1,7 @@
 //! The control layer in the deck: the scene's mount (locked, free, springs) as a LAMMPS rigid
 //! body with its torques on or off, its halves' distances and the slider's rotation θ.
 
-use super::on;
+use super::number::on;
 use std::fmt::Write;
 
 /// How the control layer may tilt, in deck terms.

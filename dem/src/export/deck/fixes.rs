@@ -2,7 +2,8 @@
 //! mount springs, the user's `extra` file and, last, the rigid control layer.
 
 use super::control::{rigid, DeckMount};
-use super::{DeckInputs, N};
+use super::inputs::DeckInputs;
+use super::number::N;
 use std::fmt::Write;
 
 /// The fixes in LAMMPS order (`fix rigid` after every fix that adds forces to its spheres).
@@ -19,7 +20,7 @@ pub(super) fn fixes(s: &mut String, d: &DeckInputs) {
         "fix             tether sub spring/self {} xy",
         N(d.ties.k_substrate)
     );
-    super::numerics::viscous(s, d);
+    super::numerics::viscous(s, &d.numerics, d.sizes.as_ref());
     w!(s, "# normal load W on the control layer, shared equally by its spheres (acts at its centre of mass)");
     w!(
         s,

@@ -9,26 +9,30 @@
 //! control layer last) → observables and outputs → the protocol's phases, each a `run` whose
 //! length is capped by `nsteps` (so `-var nsteps 0` sets everything up and stops).
 
-use super::meta::Steps;
-
 macro_rules! w {
     ($s:expr, $($t:tt)*) => {{ let _ = writeln!($s, $($t)*); }};
 }
 
 mod contacts;
 mod control;
+mod drive;
 mod fixes;
 mod groups;
+mod inputs;
+mod number;
 mod numerics;
 mod observables;
 mod phases;
 mod preamble;
+mod render;
 mod ties;
 
 pub use contacts::{DeckContact, DeckPair};
 pub use control::{DeckControl, DeckMount};
+pub use drive::DeckDrive;
+pub use inputs::DeckInputs;
 pub use numerics::{DeckNumerics, DeckViscous};
-pub use phases::DeckDrive;
+pub use render::render;
 pub use ties::DeckTies;
 
 /// Names of the dump's columns (`dump local`): pair distance, then the two atom IDs.
@@ -52,61 +56,4 @@ pub mod files {
     pub const TIMESERIES: &str = "timeseries.csv";
     /// The contact dump the deck writes.
     pub const DUMP: &str = "contacts.dump";
-}
-
-/// Everything the deck needs, in LAMMPS micro units (µm, µs, pg, nN, 10³ Pa, nN/µm), one
-/// field per part of the model.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DeckInputs {
-    /// Header lines (without `#`), e.g. the scene and the command.
-    pub header: Vec<String>,
-    /// Step counts.
-    pub steps: Steps,
-    /// Time step, skin, viscous bath ([`crate::NumericsParams`]).
-    pub numerics: DeckNumerics,
-    /// The contact law ([`crate::ContactParams`] and the materials).
-    pub contact: DeckContact,
-    /// The slider ties and substrate tethers ([`crate::MountParams`]).
-    pub ties: DeckTies,
-    /// The control layer: the scene's mount, halves, θ.
-    pub control: DeckControl,
-    /// Load and drive ([`crate::ProtocolParams`]).
-    pub drive: DeckDrive,
-    /// Per-site sphere sizes (then `contact_distance` is the largest radius sum, for the
-    /// communication cutoff); `None`: one size per body.
-    pub sizes: Option<super::deck_sizes::DeckSizes>,
-}
-
-/// A number as LAMMPS reads it: the shortest text that round-trips (`1e-5`, `0.1`, `1e8`).
-struct N(f64);
-
-impl std::fmt::Display for N {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let t = format!("{:?}", self.0);
-        f.write_str(t.strip_suffix(".0").unwrap_or(&t))
-    }
-}
-
-fn on(b: bool) -> &'static str {
-    if b {
-        "on"
-    } else {
-        "off"
-    }
-}
-
-/// Renders the deck: its sections in LAMMPS order. Cost: O(1) text (the atoms are in the data
-/// file).
-pub fn render(d: &DeckInputs) -> String {
-    let mut s = String::new();
-    preamble::header(&mut s, d);
-    preamble::setup(&mut s, d);
-    groups::groups(&mut s);
-    contacts::contacts(&mut s, d);
-    ties::ties(&mut s, d);
-    numerics::timestep(&mut s, d);
-    fixes::fixes(&mut s, d);
-    observables::observables(&mut s, d);
-    phases::phases(&mut s, d);
-    s
 }

@@ -1,7 +1,8 @@
 //! The [`crate::NumericsParams`] part in the deck: the time step, the neighbour skin and the
 //! 0 K viscous bath.
 
-use super::{DeckInputs, N};
+use super::number::N;
+use crate::export::deck_sizes::DeckSizes;
 use std::fmt::Write;
 
 /// The integrator's knobs in deck terms (µs, µm).
@@ -31,8 +32,8 @@ pub struct DeckViscous {
 }
 
 /// `timestep` and the load balance.
-pub(super) fn timestep(s: &mut String, d: &DeckInputs) {
-    w!(s, "timestep        {}", N(d.numerics.dt));
+pub(super) fn timestep(s: &mut String, numerics: &DeckNumerics) {
+    w!(s, "timestep        {}", N(numerics.dt));
     w!(s, "# equal atom counts per MPI rank in the plane");
     w!(s, "balance         1.0 shift xy 20 1.0");
     w!(s, "");
@@ -40,10 +41,10 @@ pub(super) fn timestep(s: &mut String, d: &DeckInputs) {
 
 /// The viscous bath's fixes: `fix viscous` with a γ per type (per-site sizes: one per size),
 /// and in the relative frame the slider's add-back of γ·v_control; a comment when τ = ∞.
-pub(super) fn viscous(s: &mut String, d: &DeckInputs) {
-    match d.numerics.viscous {
-        Some(v) if d.sizes.is_some() => {
-            let z = d.sizes.as_ref().unwrap();
+pub(super) fn viscous(s: &mut String, numerics: &DeckNumerics, sizes: Option<&DeckSizes>) {
+    match numerics.viscous {
+        Some(v) if sizes.is_some() => {
+            let z = sizes.unwrap();
             crate::export::deck_sizes::viscous(s, z, v.gamma_sphere * v.control_ratio, v.relative);
         }
         Some(v) => {

@@ -1,7 +1,9 @@
 //! The deck's observables: contacts, P_max, height, support position, spring force and tilts,
 //! the thermo line, the time series and the contact dump.
 
-use super::{DeckInputs, DUMP_COLUMNS, N, TIMESERIES_HEADER};
+use super::inputs::DeckInputs;
+use super::number::N;
+use super::{DUMP_COLUMNS, TIMESERIES_HEADER};
 use std::fmt::Write;
 
 /// The computes and variables, `thermo`, the time-series `fix print` and the dump.

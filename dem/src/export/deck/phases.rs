@@ -1,30 +1,10 @@
-//! The [`crate::ProtocolParams`] part in the deck: the load and the drive (pulling spring K0,
-//! support lead, speed, direction), and the protocol's three phases as capped `run`s.
+//! The protocol's three phases in the deck as capped `run`s, from the [`super::DeckDrive`] (the
+//! [`crate::ProtocolParams`] part), the mount and the step counts.
 
 use super::control::{rigid, DeckMount};
-use super::{DeckInputs, N};
+use super::inputs::DeckInputs;
+use super::number::N;
 use std::fmt::Write;
-
-/// The protocol's load and drive in deck terms (nN, nN/µm, µm, µm/µs).
-#[derive(Debug, Clone, PartialEq)]
-pub struct DeckDrive {
-    /// Friction window: slide steps before the window starts.
-    pub window_start: u64,
-    /// Load per control sphere (nN, positive = downward).
-    pub load_per_control: f64,
-    /// Pulling spring K0 (nN/µm).
-    pub k0: f64,
-    /// Spring rest vector = support lead along α (µm).
-    pub lead: f64,
-    /// cos α, sin α of the pulling direction.
-    pub alpha_cs: [f64; 2],
-    /// Support speed (µm/µs).
-    pub speed: f64,
-    /// Support start position (µm).
-    pub support0: [f64; 2],
-    /// Atom ID of the support.
-    pub support_id: u64,
-}
 
 /// 1. equilibrate, 2. attach K0 and relax, 3. slide, each followed by its `RESULT` line.
 pub(super) fn phases(s: &mut String, d: &DeckInputs) {

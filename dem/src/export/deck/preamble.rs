@@ -2,7 +2,9 @@
 //! user may override (`nsteps`, file names, intervals) and the LAMMPS setup (units, atom style,
 //! data file, communication cutoff).
 
-use super::{files, DeckInputs, N};
+use super::files;
+use super::inputs::DeckInputs;
+use super::number::N;
 use std::fmt::Write;
 
 /// The header comments: provenance, how to run, the constant-μ limitation, the units.

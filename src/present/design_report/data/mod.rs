@@ -13,7 +13,7 @@ pub use lines::{
 
 use super::commands::slide_command;
 use super::commands::{corrugation_command, friction_command, loads_text, screen_command};
-use super::rows::dem_rows;
+use super::rows::{dem_rows, DemRow};
 use super::words::{fmt_g, opt};
 use crate::study::design::symmetry_words::SymmetryWords;
 use crate::study::design::{tolerance_box, DesignOutcome, DesignParams};
@@ -175,119 +175,10 @@ impl ReportData {
         let pats = (o.patterns.len() > 1).then(|| super::patterns::pattern_rows(o));
         let dem = dem_rows(o, p);
         let has_dem = o.dem_ran && !dem.is_empty();
-        let ranking = o
-            .patterns
-            .iter()
-            .flat_map(|pr| {
-                pr.ranking
-                    .iter()
-                    .take(10)
-                    .enumerate()
-                    .map(|(k, c)| RankingLine {
-                        pattern: c.pattern.clone(),
-                        rank: k + 1,
-                        theta_deg: format!("{}", c.theta_deg),
-                        alpha_deg: format!("{}", c.alpha_deg),
-                        pull_deg: fmt_g(c.direction_deg, 4),
-                        superlubric_to_mn: format!(
-                            "{}{}",
-                            if c.score.exact { "" } else { "≤ " },
-                            c.score.superlubric_to_mn
-                        ),
-                        nominal_mn: format!("{}", c.score.nominal_to_mn),
-                        theta_window_deg: window(c.score.theta_window_deg),
-                        direction_window_deg: window(c.score.direction_window_deg),
-                        verdict: c.score.verdict.to_string(),
-                        mu_worst: fmt_g(c.score.mu_worst, 3),
-                        contacts: fmt_g(c.score.contacts, 3),
-                        intact_to_mn: format!("{}", c.score.intact_to_mn),
-                        screen_intact_to_mn: format!("{}", c.screen_intact_to_mn),
-                        corrugation_nm: fmt_g(c.corrugation_nm, 3),
-                        reason: super::words::pick_words(c.reason),
-                    })
-            })
-            .collect();
-        let resonance = o
-            .patterns
-            .iter()
-            .filter_map(|pr| {
-                let flagged = pr.resonance_flagged;
-                let note = resonance_note(&pr.scene.scene, &p.friction)?;
-                (flagged > 0).then(|| ResonanceLine {
-                    pattern: pr.scene.name.clone(),
-                    flagged,
-                    candidates: pr.ranking.len(),
-                    note,
-                })
-            })
-            .collect();
-        let screens = o
-            .patterns
-            .iter()
-            .map(|pr| ScreenLine {
-                pattern: pr.scene.name.clone(),
-                symmetry: {
-                    let mut t = match crate::study::design::theta_note(
-                        &pr.sym,
-                        &pr.thetas_deg,
-                        &p.screen,
-                    ) {
-                        None => pr.sym.describe(),
-                        Some(n) if n.uncovered() => format!(
-                            "{}; **{}**",
-                            pr.sym.describe(),
-                            super::words::theta_note(&n, &pr.sym)
-                        ),
-                        Some(n) => format!(
-                            "{}; {}",
-                            pr.sym.describe(),
-                            super::words::theta_note(&n, &pr.sym)
-                        ),
-                    };
-                    if let Some(n) = crate::study::design::line_note(&pr.scene, p.alpha_scan.line) {
-                        t = format!("{t}. The {}", n.trim_start_matches("the "));
-                    }
-                    crate::present::inputs::to_flags(&t)
-                },
-                thetas: pr.thetas_deg.len(),
-                theta_first: pr
-                    .thetas_deg
-                    .first()
-                    .map_or(String::new(), |t| format!("{t}")),
-                theta_last: pr
-                    .thetas_deg
-                    .last()
-                    .map_or(String::new(), |t| format!("{t}")),
-                loads: p.loads.len(),
-                levels: pr
-                    .levels
-                    .iter()
-                    .enumerate()
-                    .map(|(k, l)| LevelLine {
-                        load_mn: format!("{}", label(n_to_mn(l.load))),
-                        size: l.size,
-                        kept: l.picks.len(),
-                        evaluated: k < pr.levels_evaluated && !pr.levels_skipped.contains(&k),
-                    })
-                    .collect(),
-                stop: super::log::pattern_stop(pr),
-            })
-            .collect();
-        let walls = o
-            .patterns
-            .iter()
-            .map(|pr| WallLine {
-                pattern: pr.scene.name.clone(),
-                thetas: pr.thetas_deg.len(),
-                loads: p.loads.len(),
-                screen_s: opt(pr.screen_wall_s, 3),
-                evaluated: pr.evaluated.len(),
-                scan_paths: pr.evaluated.iter().map(|e| e.scan_alphas_deg.len()).sum(),
-                friction_paths: pr.evaluated.iter().map(|e| e.eval.alphas_deg.len()).sum(),
-                estimates: pr.evaluated.iter().map(|e| e.estimates).sum(),
-                evaluation_s: fmt_g(pr.evaluated.iter().map(|e| e.wall_s).sum(), 3),
-            })
-            .collect();
+        let ranking = ranking_lines(o);
+        let resonance = resonance_lines(o, p);
+        let screens = screen_lines(o, p);
+        let walls = wall_lines(o, p);
         let dem_wall = has_dem.then(|| {
             let sum: f64 = dem.iter().filter_map(|d| d.wall_s).sum();
             DemWall {
@@ -297,31 +188,8 @@ impl ReportData {
                 elapsed_s: fmt_g(sum / p.confirm.jobs.min(dem.len()).max(1) as f64, 3),
             }
         });
-        let reproduce = o
-            .patterns
-            .iter()
-            .map(|pr| Reproduce {
-                pattern: pr.scene.name.clone(),
-                screen: screen_command(pr, p),
-                evaluated: pr
-                    .evaluated
-                    .iter()
-                    .map(|e| ReproduceTheta {
-                        theta_deg: format!("{}", e.eval.theta_deg),
-                        corrugation: corrugation_command(pr, e, p),
-                        friction: friction_command(pr, e, p),
-                    })
-                    .collect(),
-            })
-            .collect();
-        let slides = dem
-            .iter()
-            .zip(&o.dem)
-            .filter_map(|(d, e)| {
-                let pr = o.patterns.iter().find(|pr| pr.scene.name == d.pattern)?;
-                Some(slide_command(pr, d, e.run.protocol, p))
-            })
-            .collect();
+        let reproduce = reproduce_lines(o, p);
+        let slides = slide_lines(o, p, &dem);
         let mut top = super::top::top_rows(o, p, &dem);
         for (r, y) in top.iter_mut().zip(&o.yields) {
             r.fab_yield = super::yields::cell(y.as_ref());
@@ -341,20 +209,7 @@ impl ReportData {
             loads_mn: loads_text(p),
             mu_superlubric: format!("{}", p.mu_superlubric),
             top,
-            answers: o
-                .patterns
-                .iter()
-                .zip(&o.answers)
-                .zip(o.yields.iter().chain(std::iter::repeat(&None)))
-                .map(|((pr, a), y)| {
-                    let mut t = super::top::paragraph(pr, a, p);
-                    if let Some(s) = super::yields::sentence(pr, a, y.as_ref()) {
-                        t.push(' ');
-                        t.push_str(&s);
-                    }
-                    t
-                })
-                .collect(),
+            answers: answer_paragraphs(o, p),
             runs: super::top::answer_runs(o, p),
             tolerance: if tolerance_box(p).is_point() {
                 String::new()
@@ -401,6 +256,176 @@ impl ReportData {
             slides,
         }
     }
+}
+
+/// The ten best candidates of each pattern, as the ranking table shows them.
+fn ranking_lines(o: &DesignOutcome) -> Vec<RankingLine> {
+    o.patterns
+        .iter()
+        .flat_map(|pr| {
+            pr.ranking
+                .iter()
+                .take(10)
+                .enumerate()
+                .map(|(k, c)| RankingLine {
+                    pattern: c.pattern.clone(),
+                    rank: k + 1,
+                    theta_deg: format!("{}", c.theta_deg),
+                    alpha_deg: format!("{}", c.alpha_deg),
+                    pull_deg: fmt_g(c.direction_deg, 4),
+                    superlubric_to_mn: format!(
+                        "{}{}",
+                        if c.score.exact { "" } else { "≤ " },
+                        c.score.superlubric_to_mn
+                    ),
+                    nominal_mn: format!("{}", c.score.nominal_to_mn),
+                    theta_window_deg: window(c.score.theta_window_deg),
+                    direction_window_deg: window(c.score.direction_window_deg),
+                    verdict: c.score.verdict.to_string(),
+                    mu_worst: fmt_g(c.score.mu_worst, 3),
+                    contacts: fmt_g(c.score.contacts, 3),
+                    intact_to_mn: format!("{}", c.score.intact_to_mn),
+                    screen_intact_to_mn: format!("{}", c.screen_intact_to_mn),
+                    corrugation_nm: fmt_g(c.corrugation_nm, 3),
+                    reason: super::words::pick_words(c.reason),
+                })
+        })
+        .collect()
+}
+
+/// The patterns with candidates flagged near a resonance, with the note that explains it.
+fn resonance_lines(o: &DesignOutcome, p: &DesignParams) -> Vec<ResonanceLine> {
+    o.patterns
+        .iter()
+        .filter_map(|pr| {
+            let flagged = pr.resonance_flagged;
+            let note = resonance_note(&pr.scene.scene, &p.friction)?;
+            (flagged > 0).then(|| ResonanceLine {
+                pattern: pr.scene.name.clone(),
+                flagged,
+                candidates: pr.ranking.len(),
+                note,
+            })
+        })
+        .collect()
+}
+
+/// Each pattern's screen: its symmetry, θ range, loads and shortlist levels.
+fn screen_lines(o: &DesignOutcome, p: &DesignParams) -> Vec<ScreenLine> {
+    o.patterns
+        .iter()
+        .map(|pr| ScreenLine {
+            pattern: pr.scene.name.clone(),
+            symmetry: {
+                let mut t =
+                    match crate::study::design::theta_note(&pr.sym, &pr.thetas_deg, &p.screen) {
+                        None => pr.sym.describe(),
+                        Some(n) if n.uncovered() => format!(
+                            "{}; **{}**",
+                            pr.sym.describe(),
+                            super::words::theta_note(&n, &pr.sym)
+                        ),
+                        Some(n) => format!(
+                            "{}; {}",
+                            pr.sym.describe(),
+                            super::words::theta_note(&n, &pr.sym)
+                        ),
+                    };
+                if let Some(n) = crate::study::design::line_note(&pr.scene, p.alpha_scan.line) {
+                    t = format!("{t}. The {}", n.trim_start_matches("the "));
+                }
+                crate::present::inputs::to_flags(&t)
+            },
+            thetas: pr.thetas_deg.len(),
+            theta_first: pr
+                .thetas_deg
+                .first()
+                .map_or(String::new(), |t| format!("{t}")),
+            theta_last: pr
+                .thetas_deg
+                .last()
+                .map_or(String::new(), |t| format!("{t}")),
+            loads: p.loads.len(),
+            levels: pr
+                .levels
+                .iter()
+                .enumerate()
+                .map(|(k, l)| LevelLine {
+                    load_mn: format!("{}", label(n_to_mn(l.load))),
+                    size: l.size,
+                    kept: l.picks.len(),
+                    evaluated: k < pr.levels_evaluated && !pr.levels_skipped.contains(&k),
+                })
+                .collect(),
+            stop: super::log::pattern_stop(pr),
+        })
+        .collect()
+}
+
+/// Each pattern's work and wall times.
+fn wall_lines(o: &DesignOutcome, p: &DesignParams) -> Vec<WallLine> {
+    o.patterns
+        .iter()
+        .map(|pr| WallLine {
+            pattern: pr.scene.name.clone(),
+            thetas: pr.thetas_deg.len(),
+            loads: p.loads.len(),
+            screen_s: opt(pr.screen_wall_s, 3),
+            evaluated: pr.evaluated.len(),
+            scan_paths: pr.evaluated.iter().map(|e| e.scan_alphas_deg.len()).sum(),
+            friction_paths: pr.evaluated.iter().map(|e| e.eval.alphas_deg.len()).sum(),
+            estimates: pr.evaluated.iter().map(|e| e.estimates).sum(),
+            evaluation_s: fmt_g(pr.evaluated.iter().map(|e| e.wall_s).sum(), 3),
+        })
+        .collect()
+}
+
+/// The commands that reproduce each pattern's screen and each evaluated θ.
+fn reproduce_lines(o: &DesignOutcome, p: &DesignParams) -> Vec<Reproduce> {
+    o.patterns
+        .iter()
+        .map(|pr| Reproduce {
+            pattern: pr.scene.name.clone(),
+            screen: screen_command(pr, p),
+            evaluated: pr
+                .evaluated
+                .iter()
+                .map(|e| ReproduceTheta {
+                    theta_deg: format!("{}", e.eval.theta_deg),
+                    corrugation: corrugation_command(pr, e, p),
+                    friction: friction_command(pr, e, p),
+                })
+                .collect(),
+        })
+        .collect()
+}
+
+/// The `slide` command of each DEM run.
+fn slide_lines(o: &DesignOutcome, p: &DesignParams, dem: &[DemRow]) -> Vec<String> {
+    dem.iter()
+        .zip(&o.dem)
+        .filter_map(|(d, e)| {
+            let pr = o.patterns.iter().find(|pr| pr.scene.name == d.pattern)?;
+            Some(slide_command(pr, d, e.run.protocol, p))
+        })
+        .collect()
+}
+
+/// Each pattern's answer paragraph, with its yield sentence when the yield stage ran.
+fn answer_paragraphs(o: &DesignOutcome, p: &DesignParams) -> Vec<String> {
+    o.patterns
+        .iter()
+        .zip(&o.answers)
+        .zip(o.yields.iter().chain(std::iter::repeat(&None)))
+        .map(|((pr, a), y)| {
+            let mut t = super::top::paragraph(pr, a, p);
+            if let Some(s) = super::yields::sentence(pr, a, y.as_ref()) {
+                t.push(' ');
+                t.push_str(&s);
+            }
+            t
+        })
+        .collect()
 }
 
 #[cfg(test)]
