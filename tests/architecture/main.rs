@@ -2,8 +2,7 @@
 //! - no import circle between the files of any crate (`src`, `surrogate/src`, `dem/src`);
 //! - `src/study/rows` (the output rows, the bottom of the study layer) imports nothing else of
 //!   `src/study`;
-//! - no function over 100 lines in any crate (the folders of [`LONG_FUNCTIONS_PENDING`] aside,
-//!   while their restructuring lands).
+//! - no function over 100 lines in any crate.
 //!
 //! The import graph is file-level (`graph.rs`): a file depends on another where it names one of
 //! its items through a `use` or a `crate::`/`super::`/`self::`/child-module path in its code,
@@ -23,29 +22,13 @@ use std::path::Path;
 /// Groups of files allowed to import each other in a circle: none. A group added here must hold
 /// every file of the circle, and a file on no circle any more fails the check, so the list can
 /// only shrink.
-const CIRCLES_ALLOWED: &[&[&str]] = &[
-    // being restructured on its own branch (issue 55, item 1: the design stages)
-    &[
-        "src/cli/design/mod.rs",
-        "src/cli/design/prepare.rs",
-        "src/cli/design/scenes.rs",
-    ],
-];
+const CIRCLES_ALLOWED: &[&[&str]] = &[];
 
 /// Imports of the rest of `src/study` allowed to `src/study/rows`: none.
 const ROWS_IMPORTS_ALLOWED: &[rules::AllowedEdge] = &[];
 
 /// Functions allowed over [`MAX_FUNCTION_LINES`] (file, name): none.
 const LONG_FUNCTIONS_ALLOWED: &[(&str, &str)] = &[];
-
-/// Folders whose functions are not held to [`MAX_FUNCTION_LINES`] yet: being restructured on
-/// their own branches (issue 55, item 1: the design stages; the fabrication yield). Remove each
-/// once its work has landed.
-const LONG_FUNCTIONS_PENDING: &[&str] = &[
-    "src/study/design/",
-    "src/cli/design/",
-    "src/study/fab_yield/",
-];
 
 /// The longest a function of the checked folders may be, in lines (`fn` to closing brace).
 const MAX_FUNCTION_LINES: usize = 100;
@@ -114,11 +97,6 @@ fn allowed_in(root: &str) -> Vec<&'static [&'static str]> {
         .collect()
 }
 
-/// Whether the function-length rule holds `path` yet (not under [`LONG_FUNCTIONS_PENDING`]).
-fn held_to_length(path: &str) -> bool {
-    !LONG_FUNCTIONS_PENDING.iter().any(|p| path.starts_with(p))
-}
-
 #[test]
 fn no_import_circle_in_any_crate() {
     let mut problems = Vec::new();
@@ -150,7 +128,6 @@ fn no_function_over_100_lines() {
     let files: Vec<(String, String)> = CRATE_ROOTS
         .iter()
         .flat_map(|d| sources(d))
-        .filter(|f| held_to_length(&f.path))
         .map(|f| (f.path, f.code))
         .collect();
     assert!(files.len() > 200, "the sources were read: {}", files.len());

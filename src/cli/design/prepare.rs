@@ -3,9 +3,9 @@
 
 use super::super::design_dem_args::design_run_params;
 use super::super::{checks, parse_list_or_range};
+use super::args::Args;
+use super::args::DEFAULT_THETA;
 use super::scenes::scenes;
-use super::Args;
-use super::DEFAULT_THETA;
 use crate::runs::output::check_outputs;
 use crate::study::dem_run::DemParams;
 use crate::study::design::{
