@@ -317,7 +317,7 @@ fn prepare(a: &Args) -> Result<(Resolved, YieldParams)> {
         .dem_check_load_mn
         .map(|w| checks::positive(w, "--dem-check-load-mn").map(surrogate::units::mn_to_n))
         .transpose()?;
-    if !a.no_dem && a.dem_max_runs < a.dem_check.max(1) {
+    if !a.no_dem && !YieldDem::runs_hold_check(a.dem_max_runs, a.dem_check) {
         bail!(
             "`--dem-max-runs`: {} runs cannot hold the check's {} (--dem-check); give at least {}, or --no-dem",
             a.dem_max_runs,
@@ -342,9 +342,8 @@ fn prepare(a: &Args) -> Result<(Resolved, YieldParams)> {
         resolution: a.resolution,
         limit,
         dem: dem.map(|(params, jobs)| {
-            let mut d = YieldDem::new(params, (a.dem_check, check_load), jobs, a.out.join("dem"));
-            d.max_runs = a.dem_max_runs;
-            d
+            let check = (a.dem_check, check_load);
+            YieldDem::new(params, check, a.dem_max_runs, jobs, a.out.join("dem"))
         }),
     };
     Ok((sc, params))

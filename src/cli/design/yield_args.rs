@@ -3,7 +3,7 @@
 use crate::study::design::yield_stage::RankBy;
 use crate::study::design::yield_stage::YieldStageParams;
 use crate::study::fab_yield::{
-    bound_samples, BadKnob, YieldParams, DEFAULT_MAX_RUNS, DEFAULT_RESOLUTION,
+    bound_samples, BadKnob, YieldDem, YieldParams, DEFAULT_MAX_RUNS, DEFAULT_RESOLUTION,
 };
 use anyhow::{bail, Result};
 
@@ -91,7 +91,7 @@ impl YieldArgs {
             Some(BadKnob::Confidence) => bail!("`--yield-confidence`: {g} must lie strictly between 0 and 1"),
             Some(BadKnob::Resolution) | None => {}
         }
-        if self.yield_dem_max_runs < self.yield_dem_check.max(1) {
+        if !YieldDem::runs_hold_check(self.yield_dem_max_runs, self.yield_dem_check) {
             bail!(
                 "`--yield-dem-max-runs`: {} runs cannot hold the check's {} (--yield-dem-check); give at least {}, or --no-yield",
                 self.yield_dem_max_runs,

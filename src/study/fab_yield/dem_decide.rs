@@ -45,12 +45,13 @@ pub const DEFAULT_MAX_RUNS: usize = 40;
 
 impl YieldDem {
     /// The DEM of a yield: runs with `params` (load, α and line set per run), `check` fresh
-    /// devices at `check_load` (N; `None`: the quoted load), `jobs` side by side in `dir`, at
-    /// most [`DEFAULT_MAX_RUNS`] runs. The one constructor of `superlube yield` and the
-    /// design's yield stage.
+    /// devices at `check_load` (N; `None`: the quoted load), at most `max_runs` runs (the
+    /// check's included; see [`YieldDem::runs_hold_check`]), `jobs` side by side in `dir`.
+    /// The one constructor of `superlube yield` and the design's yield stage.
     pub fn new(
         params: DemParams,
         (check, check_load): (usize, Option<f64>),
+        max_runs: usize,
         jobs: usize,
         dir: PathBuf,
     ) -> YieldDem {
@@ -60,8 +61,14 @@ impl YieldDem {
             check_load,
             jobs,
             dir,
-            max_runs: DEFAULT_MAX_RUNS,
+            max_runs,
         }
+    }
+
+    /// Whether `max_runs` DEM runs can hold a check of `check` devices (and at least one run):
+    /// the one rule behind `yield --dem-max-runs` and `design --yield-dem-max-runs`.
+    pub fn runs_hold_check(max_runs: usize, check: usize) -> bool {
+        max_runs >= check.max(1)
     }
 }
 

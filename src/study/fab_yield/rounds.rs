@@ -60,17 +60,22 @@ pub fn setting_ranks(n: usize, q: f64, confidence: f64) -> usize {
 pub fn quote(values: &[(f64, DecidedBy)], q: f64) -> Option<f64> {
     let mut w: Vec<f64> = values.iter().map(|v| v.0).collect();
     w.sort_by(f64::total_cmp);
-    interval::quantile_load(&w, q).filter(|&w| w > 0.0)
+    quote_sorted(&w, q)
 }
 
-/// The quote at `q` and its bound at confidence `g` (N) of the critical loads `w`, each `None`
-/// where it does not exist (no load held; too few devices for the bound).
+/// [`quote`] of loads already sorted ascending.
+fn quote_sorted(sorted: &[f64], q: f64) -> Option<f64> {
+    interval::quantile_load(sorted, q).filter(|&w| w > 0.0)
+}
+
+/// The quote at `q` ([`quote`]) and its bound at confidence `g` (the Wilks rank's order
+/// statistic) of the critical loads `w` (N), each `None` where it does not exist (no load
+/// held; too few devices for the bound). Cost: one sort.
 pub fn answer(w: &[f64], q: f64, g: f64) -> (Option<f64>, Option<f64>) {
     let mut w = w.to_vec();
     w.sort_by(f64::total_cmp);
-    let quote = interval::quantile_load(&w, q).filter(|&x| x > 0.0);
     let bound = interval::wilks_rank(w.len(), q, g).map(|r| w[r - 1]);
-    (quote, bound)
+    (quote_sorted(&w, q), bound)
 }
 
 /// How far more DEM runs could still move an answer: its quote and bound as counted now
@@ -90,8 +95,7 @@ impl Sharpness {
     pub fn gain(&self) -> f64 {
         let rise = |a: Option<f64>, b: Option<f64>| match (a, b) {
             (Some(a), Some(b)) if a > 0.0 => (b / a - 1.0).max(0.0),
-            (None, None) => 0.0,
-            (Some(_), None) => 0.0,
+            (_, None) => 0.0,
             _ => f64::INFINITY,
         };
         rise(self.now.0, self.ceiling.0).max(rise(self.now.1, self.ceiling.1))
@@ -178,15 +182,10 @@ impl Knowledge {
             .collect()
     }
 
-    /// [`Knowledge::values`] and the same with every undecided device at the upper end of its
-    /// bounds, as the quote at `q` and its bound at confidence `g` ([`Sharpness`]).
-    pub fn sharpness(
-        &self,
-        devices: &[Device],
-        (mu_sl, resolution): (f64, f64),
-        (q, g): (f64, f64),
-    ) -> Sharpness {
-        let values = self.values(devices, mu_sl, resolution);
+    /// The quote at `q` and its bound at confidence `g` of `values` (as [`Knowledge::values`]
+    /// gives them), and the same with every undecided device at the upper end of its bounds
+    /// ([`Sharpness`]).
+    pub fn sharpness(&self, values: &[(f64, DecidedBy)], q: f64, g: f64) -> Sharpness {
         let now: Vec<f64> = values.iter().map(|v| v.0).collect();
         let ceiling: Vec<f64> = values
             .iter()
@@ -229,6 +228,18 @@ fn bracket(d: &Device, b: &Bounds, r: f64) -> (f64, f64) {
     }
 }
 
+/// When the rounds of a yield may stop before every device is decided
+/// ([`Rounds::stopping_when_sharp`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SharpStop {
+    /// q of the quote.
+    pub quantile: f64,
+    /// γ of its bound.
+    pub confidence: f64,
+    /// The largest rise of either (a fraction) that more runs may still bring.
+    pub within: f64,
+}
+
 /// What runs the DEM for the rounds: [`DemDecider`], or a known function in the tests.
 pub trait DemOracle {
     /// One decision per ask, in order, run under the progress stage `stage`.
@@ -253,11 +264,10 @@ pub struct Rounds<'a> {
     pub runs: usize,
     /// Rounds made so far.
     pub rounds: usize,
-    /// Stop once the undecided devices could lift neither the quote at q nor its bound at
-    /// confidence γ by more than this fraction and none of them has failed a DEM run (a
-    /// failed device is always located): `(q, γ, fraction)`; `None`: run until every device
-    /// is decided or the runs are spent.
-    pub sharp: Option<(f64, f64, f64)>,
+    /// Stop once the undecided devices could lift neither the quote nor its bound by more
+    /// than [`SharpStop::within`] and none of them has failed a DEM run (a failed device is
+    /// always located); `None`: run until every device is decided or the runs are spent.
+    pub sharp: Option<SharpStop>,
 }
 
 impl<'a> Rounds<'a> {
@@ -276,7 +286,11 @@ impl<'a> Rounds<'a> {
     /// These rounds, stopping once the quote at `q` and its bound at confidence `g` are sharp
     /// to [`SHARP`] resolutions (the undecided devices could lift neither by more).
     pub fn stopping_when_sharp(mut self, q: f64, g: f64) -> Self {
-        self.sharp = Some((q, g, SHARP * self.resolution));
+        self.sharp = Some(SharpStop {
+            quantile: q,
+            confidence: g,
+            within: SHARP * self.resolution,
+        });
         self
     }
 
@@ -334,9 +348,10 @@ impl<'a> Rounds<'a> {
                 break;
             }
             let failed = todo.iter().any(|&i| devices[i].failed().is_some());
-            if let Some((q, g, within)) = self.sharp.filter(|_| !failed) {
-                let sharp = kn.sharpness(devices, (self.mu_sl, self.resolution), (q, g));
-                if sharp.gain() <= within {
+            if let Some(stop) = self.sharp.filter(|_| !failed) {
+                let values = kn.values(devices, self.mu_sl, self.resolution);
+                let sharp = kn.sharpness(&values, stop.quantile, stop.confidence);
+                if sharp.gain() <= stop.within {
                     progress.note(&format!(
                         "yield: DEM rounds stop: the {} undecided device(s) could lift the quote and its bound by at most {:.1} %",
                         todo.len(),

@@ -13,7 +13,7 @@ use super::dem_part::DemPart;
 use super::device::Device;
 use super::interval;
 use super::params::{YieldOutcome, YieldParams};
-use super::rounds::{quote, Knowledge};
+use super::rounds::{answer, Knowledge};
 use super::row::{CurvePoint, DecidedBy, DemCheckRun, DemFailure, YieldSummary};
 use crate::study::rows::label;
 use surrogate::units::n_to_mn;
@@ -47,8 +47,7 @@ fn quote_checked(
     let (q, g) = (p.quantile, p.confidence);
     let mut sorted: Vec<f64> = values.iter().map(|v| v.0).collect();
     sorted.sort_by(f64::total_cmp);
-    let mut load = quote(values, q);
-    let mut bound = interval::wilks_rank(sorted.len(), q, g).map(|r| sorted[r - 1]);
+    let (mut load, mut bound) = answer(&sorted, q, g);
     let checked: Vec<f64> = devices
         .iter()
         .zip(values)
@@ -193,9 +192,7 @@ pub fn outcome(
         load_at_quantile_mN: qc.load.map(mn),
         load_at_quantile_bound_mN: qc.bound.map(mn),
         ceiling_mN: kn.as_ref().map(|k| {
-            let c = k
-                .sharpness(devices, (mu, p.resolution), (p.quantile, p.confidence))
-                .ceiling;
+            let c = k.sharpness(&values, p.quantile, p.confidence).ceiling;
             [c.0.map(mn), c.1.map(mn)]
         }),
         bound_rank: interval::wilks_rank(n, p.quantile, p.confidence),

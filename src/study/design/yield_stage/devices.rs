@@ -87,9 +87,8 @@ pub fn yield_params(
         resolution: y.resolution,
         limit: limit.limit(),
         dem: dem.map(|d| {
-            let mut dem = YieldDem::new(d.dem.clone(), (y.dem_check, None), d.jobs, dem_dir);
-            dem.max_runs = y.dem_max_runs;
-            dem
+            let check = (y.dem_check, None);
+            YieldDem::new(d.dem.clone(), check, y.dem_max_runs, d.jobs, dem_dir)
         }),
     }
 }
