@@ -2,55 +2,13 @@
 //! surrogate, energy conservation, time-step blow-up detection, thread-count independence,
 //! checkpoint/resume, steady sliding friction and lock-in detection.
 
+mod common;
+
+use common::{params, run_slide, slide_params, small};
 use dem::model::{Constant, Friction};
 use dem::protocol::{lock_in, run, RunIo, RunKind, Sample};
 use dem::{prepare, Prepared, SimParams, Start};
 use surrogate::Scene;
-
-/// A small disc of the study's slider over a small substrate.
-fn small(pattern: &str, radius_um: f64, theta_deg: f64) -> Scene {
-    let mut s = Scene::preset(pattern).unwrap();
-    s.slider.radius = radius_um * 1e-6;
-    s.slider.theta = theta_deg.to_radians();
-    s.substrate.size = [60e-6, 60e-6];
-    s
-}
-
-/// Study's mean load per slider sphere at 1.4 mN (N), times the slider's sphere count.
-fn load_for(scene: &Scene) -> f64 {
-    1.4e-3 / 3505.0 * scene.slider_sites().len() as f64
-}
-
-fn params(scene: &Scene) -> SimParams {
-    SimParams {
-        protocol: dem::ProtocolParams {
-            load: load_for(scene),
-            slide_time: 0.0,
-            equilibrate_time: 3e-6,
-            sample_interval: 0.05e-6,
-            ..Default::default()
-        },
-        active: dem::ActiveSetParams {
-            prune_substrate: true,
-            ..Default::default()
-        },
-        ..SimParams::default()
-    }
-}
-
-/// Runs the slide protocol of `sim` to the end and returns its samples.
-fn run_slide(sim: &mut dem::Sim) -> Vec<Sample> {
-    let mut samples = Vec::new();
-    run(
-        sim,
-        RunKind::Slide,
-        &RunIo::default(),
-        &mut samples,
-        &mut |_| {},
-    )
-    .unwrap();
-    samples
-}
 
 fn quiet() -> impl FnMut(&dem::protocol::Progress) {
     |_| {}
@@ -215,25 +173,6 @@ fn too_large_a_step_is_reported_not_nan() {
         assert!(samples
             .iter()
             .all(|s| s.z_um.is_finite() && s.z_um.abs() < 10.0 && s.p_max_gpa.is_finite()));
-    }
-}
-
-fn slide_params(scene: &Scene) -> SimParams {
-    SimParams {
-        protocol: dem::ProtocolParams {
-            load: load_for(scene),
-            equilibrate_time: 0.2e-6,
-            relax_time: 0.2e-6,
-            slide_time: 0.4e-6,
-            support_speed: 1.0,
-            sample_interval: 0.02e-6,
-            ..Default::default()
-        },
-        active: dem::ActiveSetParams {
-            prune_substrate: true,
-            ..Default::default()
-        },
-        ..SimParams::default()
     }
 }
 

@@ -5,6 +5,18 @@ use anyhow::{bail, Result};
 use surrogate::scene::plausible::{self, Plausible};
 use surrogate::units::{deg_to_rad, mn_to_n, um_to_m, us_to_s};
 
+/// A clap parse error as this tool's error: clap's own message, without its `error: ` prefix
+/// (the caller's error chain adds one) and trailing blank lines.
+pub fn clap_error(e: clap::Error) -> anyhow::Error {
+    anyhow::anyhow!(
+        "{}",
+        e.render()
+            .to_string()
+            .trim_start_matches("error: ")
+            .trim_end()
+    )
+}
+
 /// The plausible range ([`surrogate::scene::plausible`]) of a flag, from the unit in its
 /// name: `…dt-us` the time step, other `…-us` a duration, `…speed-m-s` a speed, `…load-mn` a
 /// load, `…-n-m` a spring, other `…-um` a length; `None` for the rest.

@@ -126,15 +126,9 @@ fn prepare_sweep(command: Command) -> Result<Option<(&'static str, SweepPlan)>> 
 /// Parses and checks a sweep command line (`superlube <words>`) exactly as running it would.
 fn check_sweep(words: &[String]) -> Result<(&'static str, SweepPlan)> {
     let argv = std::iter::once("superlube".to_string()).chain(words.iter().cloned());
-    let matches = Cli::command().try_get_matches_from(argv).map_err(|e| {
-        anyhow::anyhow!(
-            "{}",
-            e.render()
-                .to_string()
-                .trim_start_matches("error: ")
-                .trim_end()
-        )
-    })?;
+    let matches = Cli::command()
+        .try_get_matches_from(argv)
+        .map_err(checks::clap_error)?;
     let cli = Cli::from_arg_matches(&matches).map_err(|e| anyhow::anyhow!("{e}"))?;
     match prepare_sweep(cli.command)? {
         Some(p) => Ok(p),

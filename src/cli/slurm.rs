@@ -195,15 +195,7 @@ struct Checked {
 /// slurm` (`before`: those before it), and that `rest` (the sweep command line) leaves
 /// `--shard` and `--resume` to the scripts.
 fn checked_options(before: Opts, own: &[String], rest: &[String]) -> Result<Checked> {
-    let after = OptsOnly::try_parse_from(own).map_err(|e| {
-        anyhow::anyhow!(
-            "{}",
-            e.render()
-                .to_string()
-                .trim_start_matches("error: ")
-                .trim_end()
-        )
-    })?;
+    let after = OptsOnly::try_parse_from(own).map_err(super::checks::clap_error)?;
     let o = combine(before, after.opts)?;
     let Some(out) = o.out.clone() else {
         bail!("`--out-dir DIR` is required: the job directory for the scripts, shards, logs and the merged CSV");
