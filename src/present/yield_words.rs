@@ -59,6 +59,19 @@ pub fn check(s: &YieldSummary) -> Option<String> {
     ))
 }
 
+/// How far more DEM runs could lift the quote and its bound ("more DEM runs could lift the
+/// quote to at most 1.92 mN and its bound to 1.88 mN"); `None` without a ceiling.
+pub fn ceiling(s: &YieldSummary) -> Option<String> {
+    match s.ceiling_mN {
+        Some([Some(q), Some(b)]) => Some(format!(
+            "more DEM runs could lift the quote to at most {} mN and its bound to {} mN",
+            load(q),
+            load(b)
+        )),
+        _ => None,
+    }
+}
+
 /// What the DEM did for the yield in one line: runs, located devices and the band.
 pub fn dem_work(s: &YieldSummary) -> String {
     let band = match s.band.coverage {
@@ -72,14 +85,7 @@ pub fn dem_work(s: &YieldSummary) -> String {
         None => "the global band (too few DEM/estimate pairs for the design's own)".into(),
     };
     let undecided = if s.undecided > 0 {
-        let ceiling = match s.ceiling_mN {
-            Some([Some(q), Some(b)]) => format!(
-                "; more DEM runs could lift the quote to at most {} mN and its bound to {} mN",
-                load(q),
-                load(b)
-            ),
-            _ => String::new(),
-        };
+        let ceiling = ceiling(s).map_or(String::new(), |c| format!("; {c}"));
         format!(
             "; {} device(s) that could still set them kept at the lower end of what is known (the quote is conservative){ceiling}",
             s.undecided

@@ -54,7 +54,8 @@ pub fn head(o: &DesignOutcome, p: &DesignParams) -> Option<YieldHead> {
 
 /// The answer's fabrication sentence: what its yield means for a fabricator
 /// ([`yield_words::fabricator`]), its DEM check, and, where the bound lies below the answer's
-/// robust limit, the device the DEM failed lowest (`None` without a yield).
+/// robust limit, why: the device the DEM failed lowest, or the devices the runs allowed left
+/// undecided and how far more runs could lift the bound (`None` without a yield).
 pub fn sentence(pr: &PatternResult, a: &Answer, y: Option<&AnswerYield>) -> Option<String> {
     let s = &y?.outcome.summary;
     let mut t = format!("**Fabrication**: {}", yield_words::fabricator(s));
@@ -65,9 +66,10 @@ pub fn sentence(pr: &PatternResult, a: &Answer, y: Option<&AnswerYield>) -> Opti
         .index
         .and_then(|i| pr.ranking.get(i))
         .map_or(0.0, |c| c.score.superlubric_to_mn);
-    if let (Some(b), Some(f)) = (s.load_at_quantile_bound_mN, &s.lowest_dem_failure) {
-        if b < robust && f.load_mN < robust {
-            t.push_str(&format!(
+    let bound = s.load_at_quantile_bound_mN.filter(|&b| b < robust);
+    let failure = s.lowest_dem_failure.as_ref().filter(|f| f.load_mN < robust);
+    if let (Some(_), Some(f)) = (bound, failure) {
+        t.push_str(&format!(
                 "; below the robust limit {} mN because the DEM fails device {}{} (θ offset {}°, pull offset {}°, substrate seed {}) at {} mN",
                 yield_words::load(robust),
                 f.sample,
@@ -77,7 +79,15 @@ pub fn sentence(pr: &PatternResult, a: &Answer, y: Option<&AnswerYield>) -> Opti
                 f.seed,
                 yield_words::load(f.load_mN)
             ));
-        }
+    } else if bound.is_some() && s.undecided > 0 {
+        t.push_str(&format!(
+            "; below the robust limit {} mN because {} device(s) were still undecided when the {} DEM runs allowed were spent (no DEM run failed a device below it): {}",
+            yield_words::load(robust),
+            s.undecided,
+            s.dem_runs_allowed,
+            yield_words::ceiling(s)
+                .unwrap_or_else(|| "they count at the lower end of what is known".into())
+        ));
     }
     t.push('.');
     Some(t)

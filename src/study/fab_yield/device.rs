@@ -47,6 +47,9 @@ pub struct Bounds {
     pub high: f64,
     /// The DEM located it.
     pub located: bool,
+    /// The DEM failed it above its highest held load ([`Device::failed`]): only the DEM's
+    /// own location decides it.
+    pub failed: bool,
 }
 
 impl Device {
@@ -59,8 +62,21 @@ impl Device {
             .reduce(f64::max)
     }
 
-    /// The lowest load (N) the DEM failed at.
+    /// The lowest load (N) above the highest held one ([`Device::held`]) that the DEM failed
+    /// at: the failure that bounds the device's critical load from above. A failure below a
+    /// held load (μ_DEM above μ_sl at a low load, superlubric higher up) is a floor, not a
+    /// critical load: [`Device::lowest_failure`] still sees it.
     pub fn failed(&self) -> Option<f64> {
+        let held = self.held().unwrap_or(f64::NEG_INFINITY);
+        self.dem
+            .iter()
+            .filter(|r| !r.superlubric && r.load > held)
+            .map(|r| r.load)
+            .reduce(f64::min)
+    }
+
+    /// The lowest load (N) the DEM failed at, wherever it lies.
+    pub fn lowest_failure(&self) -> Option<f64> {
         self.dem
             .iter()
             .filter(|r| !r.superlubric)
@@ -131,6 +147,7 @@ impl Device {
                 low: v,
                 high: v,
                 located: true,
+                failed: true,
             };
         }
         let (mut low, mut high) = match band.source {
@@ -157,6 +174,7 @@ impl Device {
             low,
             high,
             located: false,
+            failed: self.failed().is_some(),
         }
     }
 
@@ -234,7 +252,8 @@ mod tests {
 
     /// The DEM narrows the bracket to its side of every run: a failure at 1.5 caps it there, a
     /// success at 1.7 raises its floor; a failure below W_low drops the band's floor; a held
-    /// and a failed run within the resolution locate it at the held load.
+    /// and a failed run within the resolution locate it at the held load; a failure below a
+    /// held load bounds nothing.
     #[test]
     fn the_dem_narrows_the_bracket() {
         let g = Band::global();
@@ -254,5 +273,12 @@ mod tests {
         assert_eq!(b(&located), (1.39, 1.39, true));
         let wide = device(1.2, 1.6, 1.9, &[(1.4, false), (1.3, true)]);
         assert_eq!(b(&wide), (1.3, 1.4, false));
+        // a failure below a held load is a floor: it bounds nothing, the summary still sees it
+        let floor = device(1.2, 1.6, 1.9, &[(1.0, false), (1.5, true), (1.7, false)]);
+        assert_eq!(
+            (floor.failed(), floor.lowest_failure()),
+            (Some(1.7), Some(1.0))
+        );
+        assert_eq!(b(&floor), (1.5, 1.7, false));
     }
 }

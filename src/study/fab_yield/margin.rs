@@ -8,9 +8,13 @@
 //! with the load, so the load at which the DEM's verdict turns is where the estimate, scaled by
 //! them, crosses a threshold:
 //!
-//!   W* = the first W with ρ·P_est(W) > P_crit or μ_est(W)/m ≥ μ_sl,
+//!   W* = the W above the highest superlubric probe where ρ·P_est(W) > P_crit or
+//!        μ_est(W)/m ≥ μ_sl,
 //!
-//! found by linear interpolation between the probes bracketing the crossing. The same function
+//! found by linear interpolation between the probes bracketing the crossing. A failure below a
+//! superlubric probe (scaled μ above μ_sl at a low load only) is a floor of the device's
+//! superlubric range, not its limit; the yield counts the limit, and its DEM check at the
+//! quoted load sees a floor that reaches it. The same function
 //! with the band's worst and best ratios gives the bounds of a device's DEM critical load.
 //! Cost: O(probes) per call.
 
@@ -64,20 +68,25 @@ fn excess(p: &Probe, r: Ratios, p_crit_gpa: f64, mu_sl: f64) -> f64 {
 }
 
 /// The load (N) up to which the device of `probes` (ascending) stays superlubric when the
-/// DEM is the estimate scaled by `r` (module docs): 0 when its lowest probe already fails,
-/// its highest probe's load when none fails. Cost: O(probes).
+/// DEM is the estimate scaled by `r` (module docs): the crossing above its highest superlubric
+/// probe below its first probe without an estimate (a failure below that probe, μ above μ_sl
+/// at a low load, is a floor, not its limit); 0 when no such probe is superlubric, its
+/// highest probe's load when that one is. Cost: O(probes).
 pub fn transferred_limit(probes: &[Probe], r: Ratios, p_crit_gpa: f64, mu_sl: f64) -> f64 {
     let g: Vec<f64> = probes
         .iter()
         .map(|p| excess(p, r, p_crit_gpa, mu_sl))
         .collect();
-    let Some(k) = g.iter().position(|&x| x >= 0.0) else {
-        return probes.last().map_or(0.0, |p| p.load);
-    };
-    if k == 0 {
+    // no estimate (locked in, or the solve failed) ends it: its limit lies below
+    let end = g.iter().position(|x| !x.is_finite()).unwrap_or(g.len());
+    let Some(h) = g[..end].iter().rposition(|&x| x < 0.0) else {
         return 0.0;
+    };
+    let k = h + 1;
+    if k == probes.len() {
+        return probes[h].load;
     }
-    let (a, b) = (&probes[k - 1], &probes[k]);
+    let (a, b) = (&probes[h], &probes[k]);
     if !g[k].is_finite() {
         return a.load;
     }
@@ -126,6 +135,11 @@ mod tests {
         e[2].p_max_GPa = None;
         let w = transferred_limit(&e, Ratios { p: 0.5, mu: 1.0 }, 4.0, 0.02);
         assert_eq!(w, 1.5);
+        // friction fails at the lowest probe only: a floor; the limit is P_max's crossing
+        let mut f = probes.clone();
+        f[0].mu_est = Some(0.03);
+        let w = transferred_limit(&f, Ratios::ONE, 4.0, 0.02);
+        assert!((w - 2.0).abs() < 1e-12, "{w}");
         let (p, mu) = estimate_at(&probes, 1.25);
         assert!((p.unwrap() - 3.25).abs() < 1e-12 && mu == Some(0.01));
     }

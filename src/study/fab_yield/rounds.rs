@@ -5,9 +5,10 @@
 //! the Wilks rank r ([`super::interval`]): only the lowest K = max(ρ_q, r) critical loads set
 //! them ([`setting_ranks`]). Each device's DEM critical load lies in [low, high]
 //! ([`super::Device::bounds`]: the band transferred through its estimate, narrowed by its DEM
-//! runs). With T the K-th lowest `high`, a device whose `low` ≥ T cannot be among the lowest K;
-//! every other one is **undecided**. Each round, the undecided devices with the lowest
-//! predictions ([`super::Device::predicted`]) get runs, side by side:
+//! runs). With T the K-th lowest `high`, a device whose `low` ≥ T·(1 − resolution) cannot be
+//! among the lowest K by more than the resolution; every other one is **undecided**. Each
+//! round, the K + 1 undecided devices with the lowest predictions
+//! ([`super::Device::predicted`]) get runs, side by side:
 //! - one predicted at or above T: a run at T (held: it is above; failed: it is located next);
 //! - else its location: a first run at its prediction (the band's bias-corrected centre
 //!   transferred through its estimate), then three runs a resolution apart around the
@@ -114,6 +115,9 @@ pub struct Knowledge {
     pub bounds: Vec<Bounds>,
     /// The K-th lowest upper end (N).
     pub threshold: f64,
+    /// The resolution (a fraction of the load): a device whose lower end lies within it below
+    /// the threshold counts as above it ([`Knowledge::above`]).
+    pub resolution: f64,
 }
 
 impl Knowledge {
@@ -136,13 +140,27 @@ impl Knowledge {
             pairs,
             bounds,
             threshold,
+            resolution,
         }
     }
 
-    /// The devices that could still be among the lowest K: not located, lower end below T.
+    /// Whether a device of bounds `b` lies above the lowest K: its lower end at or above T,
+    /// or, where the DEM has not failed it, within the resolution below T (held a resolution
+    /// below T, it sets the quote no lower than a located one would; one the DEM failed is
+    /// decided by the DEM's location alone).
+    pub fn above(&self, b: &Bounds) -> bool {
+        let t = if b.failed {
+            self.threshold
+        } else {
+            self.threshold * (1.0 - self.resolution)
+        };
+        b.low >= t
+    }
+
+    /// The devices that could still be among the lowest K: not located, not above them.
     pub fn undecided(&self) -> Vec<usize> {
         (0..self.bounds.len())
-            .filter(|&i| !self.bounds[i].located && self.bounds[i].low < self.threshold)
+            .filter(|&i| !self.bounds[i].located && !self.above(&self.bounds[i]))
             .collect()
     }
 
@@ -158,7 +176,7 @@ impl Knowledge {
             .map(|(d, b)| {
                 if b.located {
                     (b.low, DecidedBy::Located)
-                } else if b.low >= self.threshold {
+                } else if self.above(b) {
                     let w = match self.band.source {
                         BandSource::Global => d.estimate.load,
                         BandSource::Design => d.limit_with(self.band.centre(), mu_sl),
@@ -226,6 +244,13 @@ fn bracket(d: &Device, b: &Bounds, r: f64) -> (f64, f64) {
         (Some(a), None) => (a, hi(a)),
         (None, None) => (b.low, b.high),
     }
+}
+
+/// The `n` entries of `ids` with the lowest `key` (same order), ties by id.
+fn lowest_of(ids: &[usize], key: &[f64], n: usize) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..ids.len()).collect();
+    order.sort_by(|&x, &y| key[x].total_cmp(&key[y]).then(ids[x].cmp(&ids[y])));
+    order.into_iter().map(|x| ids[x]).take(n).collect()
 }
 
 /// When the rounds of a yield may stop before every device is decided
@@ -364,9 +389,7 @@ impl<'a> Rounds<'a> {
                 .iter()
                 .map(|&i| devices[i].predicted(&kn.band, self.mu_sl))
                 .collect();
-            let mut order: Vec<usize> = (0..todo.len()).collect();
-            order.sort_by(|&x, &y| pred[x].total_cmp(&pred[y]).then(todo[x].cmp(&todo[y])));
-            todo = order.into_iter().map(|x| todo[x]).take(k + 1).collect();
+            todo = lowest_of(&todo, &pred, k + 1);
             let mut plan: Vec<(usize, f64)> = Vec::new();
             for &i in &todo {
                 for w in self.loads_for(&devices[i], &kn.bounds[i], &kn) {

@@ -137,7 +137,7 @@ fn check_runs(devices: &[Device], dem: Option<&DemPart>) -> Vec<DemCheckRun> {
 fn lowest_failure(devices: &[Device]) -> Option<DemFailure> {
     devices
         .iter()
-        .filter_map(|d| d.failed().map(|w| (d, w)))
+        .filter_map(|d| d.lowest_failure().map(|w| (d, w)))
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(d, w)| DemFailure {
             sample: d.sample.index,
