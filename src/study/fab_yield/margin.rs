@@ -8,13 +8,14 @@
 //! with the load, so the load at which the DEM's verdict turns is where the estimate, scaled by
 //! them, crosses a threshold:
 //!
-//!   W* = the W above the highest superlubric probe where ρ·P_est(W) > P_crit or
-//!        μ_est(W)/m ≥ μ_sl,
+//!   W* = the first W above the highest superlubric probe (below the first coating failure)
+//!        where ρ·P_est(W) > P_crit or μ_est(W)/m ≥ μ_sl,
 //!
-//! found by linear interpolation between the probes bracketing the crossing. A failure below a
-//! superlubric probe (scaled μ above μ_sl at a low load only) is a floor of the device's
-//! superlubric range, not its limit; the yield counts the limit, and its DEM check at the
-//! quoted load sees a floor that reaches it. The same function
+//! found by linear interpolation between the probes bracketing the crossing. A friction failure
+//! below a superlubric probe (scaled μ above μ_sl at a low load only) is a floor of the
+//! device's superlubric range, not its limit; the yield counts the limit, and its DEM check at
+//! the quoted load sees a floor that reaches it. The coating's failure (P_max rises with the
+//! load) ends the range. The same function
 //! with the band's worst and best ratios gives the bounds of a device's DEM critical load.
 //! Cost: O(probes) per call.
 
@@ -69,16 +70,21 @@ fn excess(p: &Probe, r: Ratios, p_crit_gpa: f64, mu_sl: f64) -> f64 {
 
 /// The load (N) up to which the device of `probes` (ascending) stays superlubric when the
 /// DEM is the estimate scaled by `r` (module docs): the crossing above its highest superlubric
-/// probe below its first probe without an estimate (a failure below that probe, μ above μ_sl
-/// at a low load, is a floor, not its limit); 0 when no such probe is superlubric, its
-/// highest probe's load when that one is. Cost: O(probes).
+/// probe below its first probe where the coating fails or there is no estimate (a friction
+/// failure below a superlubric probe, μ above μ_sl at a low load only, is a floor, not its
+/// limit; the coating's P_max only rises with the load); 0 when no such probe is superlubric,
+/// its highest probe's load when that one is. Cost: O(probes).
 pub fn transferred_limit(probes: &[Probe], r: Ratios, p_crit_gpa: f64, mu_sl: f64) -> f64 {
     let g: Vec<f64> = probes
         .iter()
         .map(|p| excess(p, r, p_crit_gpa, mu_sl))
         .collect();
-    // no estimate (locked in, or the solve failed) ends it: its limit lies below
-    let end = g.iter().position(|x| !x.is_finite()).unwrap_or(g.len());
+    let coating_fails = |p: &Probe| p.p_max_GPa.is_none_or(|pm| r.p * pm > p_crit_gpa);
+    let end = probes
+        .iter()
+        .zip(&g)
+        .position(|(p, x)| !x.is_finite() || coating_fails(p))
+        .unwrap_or(g.len());
     let Some(h) = g[..end].iter().rposition(|&x| x < 0.0) else {
         return 0.0;
     };
@@ -90,7 +96,7 @@ pub fn transferred_limit(probes: &[Probe], r: Ratios, p_crit_gpa: f64, mu_sl: f6
     if !g[k].is_finite() {
         return a.load;
     }
-    a.load + (b.load - a.load) * (-g[k - 1]) / (g[k] - g[k - 1])
+    a.load + (b.load - a.load) * (-g[h]) / (g[k] - g[h])
 }
 
 #[cfg(test)]
@@ -139,6 +145,11 @@ mod tests {
         let mut f = probes.clone();
         f[0].mu_est = Some(0.03);
         let w = transferred_limit(&f, Ratios::ONE, 4.0, 0.02);
+        assert!((w - 2.0).abs() < 1e-12, "{w}");
+        // the coating fails at 2.5 N: a superlubric probe above it does not extend the range
+        let mut c = probes.clone();
+        c[4].p_max_GPa = Some(3.9);
+        let w = transferred_limit(&c, Ratios::ONE, 4.0, 0.02);
         assert!((w - 2.0).abs() < 1e-12, "{w}");
         let (p, mu) = estimate_at(&probes, 1.25);
         assert!((p.unwrap() - 3.25).abs() < 1e-12 && mu == Some(0.01));
