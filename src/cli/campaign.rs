@@ -4,6 +4,7 @@
 
 use super::checks;
 use super::dem_args::ModelArg;
+use super::point_args::{help, with, LoadsOr, LOAD};
 use super::slide::{jobs as jobs_flag, seeds as seeds_flag};
 use crate::plot::friction::friction_png;
 use crate::runs::sink::csv_bytes;
@@ -19,6 +20,13 @@ use surrogate::units::us_to_s;
 
 /// Options of the friction campaign (`figures --friction`).
 #[derive(clap::Args, Debug, Default)]
+#[command(
+    mut_args(help(
+        LOAD,
+        "Loads in mN, a list or range [default: the study's 11, 0.35:3.5:0.35 and 3.86]"
+    )),
+    mut_args(with(LOAD, |a| a.requires("friction")))
+)]
 pub struct CampaignArgs {
     /// Run the study's friction campaign (DEM slides: friction force and μ versus load for Figs
     /// 2b, 6, 7) instead of the screening figures; default `--out-dir figures/friction`. Resumable
@@ -37,14 +45,9 @@ pub struct CampaignArgs {
         allow_hyphen_values = true
     )]
     pub seeds: Option<String>,
-    /// Loads in mN, a list or range [default: the study's 11, 0.35:3.5:0.35 and 3.86].
-    #[arg(
-        long = "load-mn",
-        value_name = "MN",
-        requires = "friction",
-        allow_hyphen_values = true
-    )]
-    pub load_mn: Option<String>,
+    /// `--load-mn`: loads, a list or range (mN).
+    #[command(flatten)]
+    pub load: LoadsOr,
     /// DEM runs side by side, one thread each (≥ 1) [default: the available cores].
     #[arg(
         long,
@@ -140,16 +143,7 @@ impl CampaignArgs {
             f.dedup();
             f
         };
-        let loads_mn = match &self.load_mn {
-            None => STUDY_LOADS_MN.to_vec(),
-            Some(t) => {
-                let v = super::parse_list_or_range(t, "--load-mn")?;
-                for &w in &v {
-                    checks::load(w)?;
-                }
-                v
-            }
-        };
+        let loads_mn = self.load.mn_or(&STUDY_LOADS_MN)?;
         let seeds = seeds_flag(self.seeds.as_deref().unwrap_or("1,2,3"))?;
         let mut seen = seeds.clone();
         seen.sort();

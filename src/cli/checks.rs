@@ -1,9 +1,8 @@
 //! Flag checks shared by the commands: each error names the flag and the rule, before any work.
 
-use super::parse_list_or_range;
 use anyhow::{bail, Result};
 use surrogate::scene::plausible::{self, Plausible};
-use surrogate::units::{deg_to_rad, mn_to_n, um_to_m, us_to_s};
+use surrogate::units::{deg_to_rad, um_to_m, us_to_s};
 
 /// A clap parse error as this tool's error: clap's own message, without its `error: ` prefix
 /// (the caller's error chain adds one) and trailing blank lines.
@@ -74,64 +73,6 @@ pub fn every(v: u64, flag: &str, what: &str) -> Result<u64> {
         bail!("`{flag}`: 0 would never write a {what}; give a number of steps ≥ 1");
     }
     Ok(v)
-}
-
-/// One load in mN (> 0) → N.
-pub fn load(v: f64) -> Result<f64> {
-    if !(v.is_finite() && v > 0.0) {
-        bail!("`--load-mn`: {v} must be a positive load in mN");
-    }
-    Ok(mn_to_n(plausible(v, "--load-mn")?))
-}
-
-/// `--load-mn` list or range (each > 0) → N.
-pub fn loads(text: &str) -> Result<Vec<f64>> {
-    parse_list_or_range(text, "--load-mn")?
-        .into_iter()
-        .map(load)
-        .collect()
-}
-
-/// The largest |θ| in degrees a command takes: a full turn either way, so that a sweep
-/// `0:360:1` of a pattern without symmetry is one range.
-pub const THETA_MAX_DEG: f64 = 360.0;
-
-/// One slider orientation θ in degrees, finite with |θ| ≤ [`THETA_MAX_DEG`] (θ and θ ± 360°
-/// are the same orientation, so a larger value is a typing slip); returned unchanged.
-pub fn theta_deg(v: f64) -> Result<f64> {
-    if !(v.is_finite() && v.abs() <= THETA_MAX_DEG) {
-        bail!("`--theta-deg`: {v}° is outside [-{THETA_MAX_DEG}, {THETA_MAX_DEG}] degrees");
-    }
-    Ok(v)
-}
-
-/// `--theta-deg` list or range (degrees, each checked by [`theta_deg`]), in degrees.
-pub fn thetas_deg(text: &str) -> Result<Vec<f64>> {
-    parse_list_or_range(text, "--theta-deg")?
-        .into_iter()
-        .map(theta_deg)
-        .collect()
-}
-
-/// `--theta-deg` list or range (degrees, each checked by [`theta_deg`]) → rad.
-pub fn thetas(text: &str) -> Result<Vec<f64>> {
-    Ok(thetas_deg(text)?.into_iter().map(deg_to_rad).collect())
-}
-
-/// One pulling angle α (degrees from the contact line, |α| ≤ 180) → rad.
-pub fn alpha(v: f64) -> Result<f64> {
-    if !(v.is_finite() && v.abs() <= 180.0) {
-        bail!("`--alpha-deg`: {v}° is outside [-180, 180] degrees");
-    }
-    Ok(deg_to_rad(v))
-}
-
-/// `--alpha-deg` list or range → rad.
-pub fn alphas(text: &str) -> Result<Vec<f64>> {
-    parse_list_or_range(text, "--alpha-deg")?
-        .into_iter()
-        .map(alpha)
-        .collect()
 }
 
 /// Refuses a command whose α (from the contact line) the user gives on a scene with a site

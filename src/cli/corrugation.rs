@@ -1,6 +1,7 @@
 //! `superlube corrugation`: flags → [`crate::study::corrugation::corrugation`] → CSV (streamed)
 //! and line plot, each with its sidecar.
 
+use super::point_args::{default, help, Alphas, Load, Theta, ALPHA, THETA};
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs};
 use crate::plot::figures::corrugation_png;
@@ -19,35 +20,30 @@ use std::path::PathBuf;
 
 /// Options of `superlube corrugation`.
 #[derive(clap::Args, Debug)]
+#[command(
+    mut_args(help(
+        THETA,
+        "Slider rotation θ in degrees [default: the scene file's theta_deg, else 0]"
+    )),
+    mut_args(help(
+        ALPHA,
+        "Pulling angles α in degrees from the contact line, |α| ≤ 180: a list `0,45,90` or \
+         an inclusive range `start:stop:step`"
+    )),
+    mut_args(default(ALPHA, "0:90:5"))
+)]
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Slider rotation θ in degrees [default: the scene file's theta_deg, else 0].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    theta: Option<f64>,
-    /// Normal load W in mN (> 0).
-    #[arg(
-        long = "load-mn",
-        value_name = "MN",
-        default_value_t = 1.4,
-        allow_hyphen_values = true
-    )]
-    load_mn: f64,
-    /// Pulling angles α in degrees from the contact line, |α| ≤ 180: a list `0,45,90` or an
-    /// inclusive range `start:stop:step`.
-    #[arg(
-        long = "alpha-deg",
-        alias = "alpha",
-        value_name = "DEG",
-        default_value = "0:90:5",
-        allow_hyphen_values = true
-    )]
-    alpha: String,
+    /// `--theta-deg`: one θ (degrees).
+    #[command(flatten)]
+    theta: Theta,
+    /// `--load-mn`: one load (mN).
+    #[command(flatten)]
+    load: Load,
+    /// `--alpha-deg`: α, a list or range (degrees).
+    #[command(flatten)]
+    alpha: Alphas,
     /// Contact-line angle in degrees from the substrate x axis. Default: the moiré estimate, lines
     /// perpendicular to the shortest beat vector q = G_slider(θ) − G_substrate of the first
     /// reciprocal shells (square-tri at θ = 0: along x); the substrate row a1 when commensurate.
@@ -103,11 +99,11 @@ pub fn run(a: Args) -> Result<()> {
 /// Every check of `superlube corrugation`, before any work: flags, scene, every path, outputs,
 /// size.
 pub fn prepare(a: Args) -> Result<Prepared> {
-    let alphas = checks::alphas(&a.alpha)?;
-    let load = checks::load(a.load_mn)?;
+    let alphas = a.alpha.radians()?;
+    let load = a.load.newtons()?;
     let (distance, step) = checks::path(a.distance_um, a.step_um)?;
     let line = checks::line_deg(a.line_deg)?;
-    let mut sc = a.scene.resolve(a.theta)?;
+    let mut sc = a.scene.resolve(a.theta.deg)?;
     checks::line_for(&sc.scene, line)?;
     if a.method == Method::Landscape {
         checks::grid(a.grid)?;

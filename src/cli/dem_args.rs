@@ -3,7 +3,7 @@
 
 pub use super::contact_args::ContactArgs;
 pub use super::model_args::{ModelArg, ModelArgs};
-use super::parse_list_or_range;
+use super::point_args::{self, default, help, Alphas, Loads, Thetas, ALPHA, LOAD, THETA};
 use super::protocol_args::ProtocolArgs;
 pub use super::start_args::StartArgs;
 use super::{checks, SceneArgs};
@@ -24,39 +24,39 @@ pub type Lists = (Vec<Option<f64>>, Vec<f64>, Vec<f64>);
 
 /// DEM options shared by `equilibrate` and `slide`.
 #[derive(clap::Args, Debug)]
+#[command(
+    mut_args(help(
+        THETA,
+        "Slider orientation θ in degrees [default: the scene file's theta_deg, else 0]. \
+         `slide` also takes a list `0,21.8,30` or a range `0:30:10` (a batch, see `--out-dir`)"
+    )),
+    mut_args(help(
+        LOAD,
+        "Normal load W in mN (> 0). `slide` also takes a list `0.35,1.4` or a range \
+         `0.35:3.5:0.35` (a batch, see `--out-dir`)"
+    )),
+    mut_args(default(LOAD, "1.4")),
+    mut_args(help(
+        ALPHA,
+        "Pulling angle α in degrees from the slider's contact line (as in `superlube \
+         corrugation`), |α| ≤ 180: α = 90 pulls perpendicular to the contact lines. The \
+         pulling direction from the substrate x axis is line + α; both are printed and \
+         reported in the JSON summary. `slide` also takes a list `0,90` or a range (a batch, \
+         see `--out-dir`)"
+    ))
+)]
 pub struct DemArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0]. `slide`
-    /// also takes a list `0,21.8,30` or a range `0:30:10` (a batch, see `--out-dir`).
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    pub theta: Option<String>,
-    /// Normal load W in mN (> 0). `slide` also takes a list `0.35,1.4` or a range
-    /// `0.35:3.5:0.35` (a batch, see `--out-dir`).
-    #[arg(
-        long = "load-mn",
-        value_name = "MN",
-        default_value = "1.4",
-        allow_hyphen_values = true
-    )]
-    pub load_mn: String,
-    /// Pulling angle α in degrees from the slider's contact line (as in `superlube corrugation`),
-    /// |α| ≤ 180: α = 90 pulls perpendicular to the contact lines. The pulling direction from the
-    /// substrate x axis is line + α; both are printed and reported in the JSON summary. `slide`
-    /// also takes a list `0,90` or a range (a batch, see `--out-dir`).
-    #[arg(
-        long = "alpha-deg",
-        alias = "alpha",
-        value_name = "DEG",
-        default_value = "0",
-        allow_hyphen_values = true
-    )]
-    pub alpha: String,
+    /// `--theta-deg`: θ, a list or range (degrees).
+    #[command(flatten)]
+    pub theta: Thetas,
+    /// `--load-mn`: loads, a list or range (mN).
+    #[command(flatten)]
+    pub load: Loads,
+    /// `--alpha-deg`: α, a list or range (degrees).
+    #[command(flatten)]
+    pub alpha: Alphas,
     /// Contact-line angle in degrees from the substrate x axis. Default: the moiré estimate of
     /// `superlube corrugation` (square-tri at θ = 0: along x, 0°; the substrate row a1 when the
     /// lattices are commensurate).
@@ -130,18 +130,12 @@ impl DemArgs {
     /// The values of `--theta-deg` (`None`: the scene's), `--alpha-deg` (degrees) and `--load-mn`
     /// (mN) as lists (one value each for a single run); errors name the flag.
     pub fn lists(&self) -> Result<Lists> {
-        let thetas = match &self.theta {
+        let thetas = match self.theta.degrees()? {
             None => vec![None],
-            Some(t) => checks::thetas_deg(t)?.into_iter().map(Some).collect(),
+            Some(t) => t.into_iter().map(Some).collect(),
         };
-        let alphas = parse_list_or_range(&self.alpha, "--alpha-deg")?;
-        for &a in &alphas {
-            checks::alpha(a)?;
-        }
-        let loads = parse_list_or_range(&self.load_mn, "--load-mn")?;
-        for &w in &loads {
-            checks::load(w)?;
-        }
+        let alphas = self.alpha.degrees()?;
+        let loads = self.load.mn()?;
         Ok((thetas, alphas, loads))
     }
 
@@ -189,8 +183,8 @@ impl DemArgs {
         load_mn: f64,
         protocol: &ProtocolArgs,
     ) -> Result<DemParams> {
-        let load = checks::load(load_mn)?;
-        let alpha = checks::alpha(alpha_deg)?;
+        let load = point_args::load(load_mn)?;
+        let alpha = point_args::alpha(alpha_deg)?;
         let line = checks::line_deg(self.line_deg)?;
         let equilibrate = checks::time_us(self.equilibrate_us, "--equilibrate-us")?;
         let sample = checks::time_us(self.sample_us, "--sample-us")?;

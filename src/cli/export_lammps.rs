@@ -1,7 +1,8 @@
 //! `superlube export-lammps`: the Tier 3 (DEM) model of one (θ, α, W) as a LAMMPS data file and input
 //! deck (engine: `dem::export`), to run with MPI LAMMPS on a cluster.
 
-use super::checks::{alpha as check_alpha, line_deg as check_line_deg, non_negative, positive};
+use super::checks::{line_deg as check_line_deg, non_negative, positive};
+use super::point_args::{help, Alpha, Load, Theta, LOAD};
 use super::protocol_args::ProtocolArgs;
 use super::SceneArgs;
 use anyhow::{bail, Context, Result};
@@ -13,34 +14,19 @@ use surrogate::units::{deg_to_rad, mn_to_n, us_to_s};
 
 /// Options of `superlube export-lammps`.
 #[derive(clap::Args, Debug)]
+#[command(mut_args(help(LOAD, "Normal load W in mN, applied to the control layer")))]
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    theta: Option<f64>,
-    /// Normal load W in mN, applied to the control layer.
-    #[arg(
-        long = "load-mn",
-        value_name = "MN",
-        default_value_t = 1.4,
-        allow_hyphen_values = true
-    )]
-    load_mn: f64,
-    /// Pulling angle α in degrees from the slider's contact line (as in `superlube slide`).
-    #[arg(
-        long = "alpha-deg",
-        alias = "alpha",
-        value_name = "DEG",
-        default_value_t = 0.0,
-        allow_hyphen_values = true
-    )]
-    alpha: f64,
+    /// `--theta-deg`: one θ (degrees).
+    #[command(flatten)]
+    theta: Theta,
+    /// `--load-mn`: one load (mN).
+    #[command(flatten)]
+    load: Load,
+    /// `--alpha-deg`: one α (degrees).
+    #[command(flatten)]
+    alpha: Alpha,
     /// Contact-line angle in degrees from the substrate x axis [default: the moiré estimate].
     #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
     line_deg: Option<f64>,
@@ -93,7 +79,7 @@ pub fn run(a: Args) -> Result<()> {
             a.out.display()
         );
     }
-    positive(a.load_mn, "--load-mn")?;
+    positive(a.load.mn, "--load-mn")?;
     positive(a.equilibrate_us, "--equilibrate-us")?;
     a.protocol.check(false)?;
     positive(a.sample_us, "--sample-us")?;
@@ -104,12 +90,12 @@ pub fn run(a: Args) -> Result<()> {
     if let Some(mu) = a.mu {
         non_negative(mu, "--mu")?;
     }
-    let alpha = check_alpha(a.alpha)?;
+    let alpha = a.alpha.radians()?;
     let line_given = check_line_deg(a.line_deg)?;
     let file = a.scene.scene_file()?;
     let mut scene = file.into_scene()?;
-    let theta = match a.theta {
-        Some(t) => super::checks::theta_deg(t)?,
+    let theta = match a.theta.checked()? {
+        Some(t) => t,
         None => file.slider.theta_deg.unwrap_or(0.0),
     };
     scene.slider.theta = deg_to_rad(theta);
@@ -177,7 +163,7 @@ pub fn run(a: Args) -> Result<()> {
 fn sim_params(a: &Args, direction: f64) -> SimParams {
     let mut params = SimParams {
         protocol: dem::ProtocolParams {
-            load: mn_to_n(a.load_mn),
+            load: mn_to_n(a.load.mn),
             alpha: direction,
             equilibrate_time: us_to_s(a.equilibrate_us),
             sample_interval: us_to_s(a.sample_us),

@@ -3,6 +3,7 @@
 
 use super::campaign::CampaignArgs;
 use super::checks;
+use super::point_args::{self, default, help, Alphas, ALPHA};
 use crate::plot::figures::{contact_map_png, corrugation_figure_png, landscape_png, sweep_png};
 use crate::runs::sink::csv_bytes;
 use crate::runs::{meta::Inputs, output::check_outputs, output::Outputs, progress::Reporter};
@@ -14,6 +15,13 @@ use std::path::{Path, PathBuf};
 
 /// Options of `superlube figures`.
 #[derive(clap::Args, Debug)]
+#[command(
+    mut_args(help(
+        ALPHA,
+        "Pulling angles α in degrees of the corrugation figure (list or start:stop:step)"
+    )),
+    mut_args(default(ALPHA, "-90:90:2"))
+)]
 pub struct Args {
     /// Output directory for the PNGs, the CSVs behind them and their sidecars (created if
     /// missing) [default: figures; with --friction: figures/friction].
@@ -28,15 +36,9 @@ pub struct Args {
         allow_hyphen_values = true
     )]
     theta_step: f64,
-    /// Pulling angles α in degrees of the corrugation figure (list or start:stop:step).
-    #[arg(
-        long = "alpha-deg",
-        alias = "alpha",
-        value_name = "DEG",
-        default_value = "-90:90:2",
-        allow_hyphen_values = true
-    )]
-    alpha: String,
+    /// `--alpha-deg`: α, a list or range (degrees).
+    #[command(flatten)]
+    alpha: Alphas,
     /// Sliding distance of each corrugation path in µm.
     #[arg(
         long = "distance-um",
@@ -138,11 +140,11 @@ fn figures_params(a: &Args) -> Result<FiguresParams> {
     }
     let (distance, step) = checks::path(a.distance_um, a.step_um)?;
     Ok(FiguresParams {
-        sweep_thetas: checks::thetas(&format!("0:30:{}", a.theta_step))
+        sweep_thetas: point_args::thetas(&format!("0:30:{}", a.theta_step))
             .map_err(|e| anyhow::anyhow!("`--theta-step-deg`: {e}"))?,
         corrugation: CorrugationParams {
             load: 0.0,
-            alphas: checks::alphas(&a.alpha)?,
+            alphas: a.alpha.radians()?,
             line: None,
             distance,
             step,

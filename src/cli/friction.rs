@@ -1,6 +1,7 @@
 //! `superlube friction`: flags → [`crate::study::friction::friction`] → CSV (streamed) + sidecar.
 
 use super::friction_args::FrictionKnobArgs;
+use super::point_args::{help, Alphas, Loads, Thetas, ALPHA, LOAD, THETA};
 use super::sweep_args::SweepArgs;
 use super::verdict_args::VerdictArgs;
 use super::{checks, SceneArgs};
@@ -18,32 +19,35 @@ use std::path::PathBuf;
 /// slips, the slider's centre of mass run along it with the DEM's mass, damping and speed) for
 /// every θ × α × W.
 #[derive(clap::Args, Debug)]
+#[command(
+    mut_args(help(
+        THETA,
+        "Slider orientations θ in degrees: a list `0,10.2` or an inclusive range \
+         `start:stop:step` [default: the scene file's theta_deg, else 0]"
+    )),
+    mut_args(help(
+        ALPHA,
+        "Pulling angles α in degrees from the slider's contact line (as in `corrugation` and \
+         `slide`; 90 = perpendicular to the lines), |α| ≤ 180: a list `0,90` or a range"
+    )),
+    mut_args(help(
+        LOAD,
+        "Normal loads W in mN: a list `0.35,1.4` or a range `0.35:3.5:0.35` (each > 0). The \
+         loads of one (θ, α) share one path's pair searches"
+    ))
+)]
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Slider orientations θ in degrees: a list `0,10.2` or an inclusive range
-    /// `start:stop:step` [default: the scene file's theta_deg, else 0].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    theta: Option<String>,
-    /// Pulling angles α in degrees from the slider's contact line (as in `corrugation` and
-    /// `slide`; 90 = perpendicular to the lines), |α| ≤ 180: a list `0,90` or a range.
-    #[arg(
-        long = "alpha-deg",
-        alias = "alpha",
-        value_name = "DEG",
-        default_value = "0",
-        allow_hyphen_values = true
-    )]
-    alpha: String,
-    /// Normal loads W in mN: a list `0.35,1.4` or a range `0.35:3.5:0.35` (each > 0). The loads
-    /// of one (θ, α) share one path's pair searches.
-    #[arg(long = "load-mn", value_name = "MN", default_value = super::screen::DEFAULT_LOADS, allow_hyphen_values = true)]
-    load_mn: String,
+    /// `--theta-deg`: θ, a list or range (degrees).
+    #[command(flatten)]
+    theta: Thetas,
+    /// `--alpha-deg`: α, a list or range (degrees).
+    #[command(flatten)]
+    alpha: Alphas,
+    /// `--load-mn`: loads, a list or range (mN).
+    #[command(flatten)]
+    load: Loads,
     /// Contact-line angle in degrees from the substrate x axis, used for every θ. Default: the
     /// moiré estimate at each θ (as in `corrugation`); the substrate row a1 when commensurate.
     #[arg(long = "line-deg", value_name = "DEG", allow_hyphen_values = true)]
@@ -80,17 +84,14 @@ pub fn run(a: Args) -> Result<()> {
 /// Every check of `superlube friction`, before any work: flags, scene, every path, outputs,
 /// size.
 pub fn prepare(a: Args) -> Result<Prepared> {
-    let alphas = checks::alphas(&a.alpha)?;
-    let loads = checks::loads(&a.load_mn)?;
+    let alphas = a.alpha.radians()?;
+    let loads = a.load.newtons()?;
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
     let mu_superlubric = a.verdict.mu_superlubric()?;
     let sc = a.scene.resolve(None)?;
     checks::line_for(&sc.scene, line)?;
-    let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {
-        (Some(t), _) => checks::thetas(t)?,
-        (None, _) => vec![sc.scene.slider.theta],
-    };
+    let thetas = (a.theta.radians()?).unwrap_or_else(|| vec![sc.scene.slider.theta]);
     let params = FrictionSweepParams {
         thetas,
         alphas,

@@ -1,6 +1,7 @@
 //! `superlube landscape`: flags → [`crate::study::landscape::landscape`] → CSV (streamed),
 //! heat map, contact map, each with its sidecar.
 
+use super::point_args::{help, Load, Theta, THETA};
 use super::scene_args::Resolved;
 use super::sweep_args::SweepArgs;
 use super::{checks, SceneArgs};
@@ -26,26 +27,20 @@ use surrogate::units::{m_to_nm, m_to_um};
 
 /// Options of `superlube landscape`.
 #[derive(clap::Args, Debug)]
+#[command(mut_args(help(
+    THETA,
+    "Slider rotation θ in degrees relative to the substrate lattice [default: the scene \
+     file's theta_deg, else 0]"
+)))]
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Slider rotation θ in degrees relative to the substrate lattice [default: the scene
-    /// file's theta_deg, else 0].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    theta: Option<f64>,
-    /// Normal load W in mN (> 0).
-    #[arg(
-        long = "load-mn",
-        value_name = "MN",
-        default_value_t = 1.4,
-        allow_hyphen_values = true
-    )]
-    load_mn: f64,
+    /// `--theta-deg`: one θ (degrees).
+    #[command(flatten)]
+    theta: Theta,
+    /// `--load-mn`: one load (mN).
+    #[command(flatten)]
+    load: Load,
     /// Grid points N per side of the repeat cell: N×N solves, both cell edges included (≥ 2).
     #[arg(long, value_name = "N", default_value_t = 51)]
     grid: usize,
@@ -95,9 +90,9 @@ pub fn run(a: Args) -> Result<()> {
 
 /// Every check of `superlube landscape`, before any work: flags, scene, outputs, size.
 pub fn prepare(a: Args) -> Result<Prepared> {
-    let mut sc = a.scene.resolve(a.theta)?;
+    let mut sc = a.scene.resolve(a.theta.deg)?;
     let params = LandscapeParams {
-        load: checks::load(a.load_mn)?,
+        load: a.load.newtons()?,
         grid: checks::grid(a.grid)?,
     };
     sc.warnings

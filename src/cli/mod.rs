@@ -20,6 +20,7 @@ mod landscape;
 mod merge;
 mod model_args;
 mod patterns;
+mod point_args;
 mod prepared;
 mod protocol_args;
 mod recipe_args;
@@ -187,7 +188,7 @@ mod tests {
     /// definition) parses back to it exactly.
     #[test]
     fn the_default_loads_are_the_study_loads() {
-        let v: Vec<f64> = design::STUDY_LOADS
+        let v: Vec<f64> = point_args::STUDY_LOADS
             .split(',')
             .map(|x| x.parse().unwrap())
             .collect();

@@ -294,9 +294,9 @@ impl SceneArgs {
     pub fn resolve(&self, theta_deg: Option<f64>) -> Result<Resolved> {
         let mut file = self.scene_file()?;
         if let Some(t) = theta_deg {
-            file.slider.theta_deg = Some(super::checks::theta_deg(t)?);
+            file.slider.theta_deg = Some(super::point_args::theta_deg(t)?);
         } else if let Some(t) = file.slider.theta_deg {
-            let max = super::checks::THETA_MAX_DEG;
+            let max = super::point_args::THETA_MAX_DEG;
             if t.abs() > max {
                 bail!(
                     "invalid value for `slider.theta_deg`: {t} (outside [-{max}, {max}] degrees)"

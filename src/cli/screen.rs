@@ -1,7 +1,8 @@
 //! `superlube screen`: flags → [`crate::study::screen::screen`] → CSV (streamed) + sidecar.
 
+use super::point_args::{self, Loads, Thetas, STUDY_THETAS};
 use super::sweep_args::SweepArgs;
-use super::{checks, SceneArgs};
+use super::SceneArgs;
 use crate::runs::sink::csv_bytes;
 use crate::runs::{
     meta::scene_file, meta::Inputs, output::check_outputs, output::Outputs, progress::Reporter,
@@ -15,29 +16,18 @@ use anyhow::{bail, Result};
 use std::path::PathBuf;
 use surrogate::solver::{Model, SearchKind};
 
-/// The study's orientation sweep (degrees).
-pub const DEFAULT_THETA: &str = "0:30:0.1";
-/// The study's orientation-sweep loads (mN).
-pub const DEFAULT_LOADS: &str = "0.35,1.4,2.1,3.86";
-
 /// Options of `superlube screen`. Without `--pattern` or `--scene` it screens the study's
 /// square-on-triangle pair over θ = 0:30:0.1° at 0.35, 1.4, 2.1 and 3.86 mN.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Slider orientations θ in degrees: a list `0,21.8,30` or an inclusive range
-    /// `start:stop:step` [default: the scene file's theta_deg if set, else 0:30:0.1].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    theta: Option<String>,
-    /// Normal loads W in mN: a list `0.35,1.4` or a range `0.35:3.5:0.35` (each > 0).
-    #[arg(long = "load-mn", value_name = "MN", default_value = DEFAULT_LOADS, allow_hyphen_values = true)]
-    load_mn: String,
+    /// `--theta-deg`: θ, a list or range (degrees).
+    #[command(flatten)]
+    theta: Thetas,
+    /// `--load-mn`: loads, a list or range (mN).
+    #[command(flatten)]
+    load: Loads,
     /// Output CSV file, streamed row by row (θ outer, load inner) through FILE.csv.partial and
     /// renamed when complete; a sidecar FILE.csv.meta.json records the scene, the parameters
     /// and the command line. Stdout if absent.
@@ -84,14 +74,14 @@ pub fn run(a: Args) -> Result<()> {
 /// Every check of `superlube screen`, before any work: flags, scene, outputs, size.
 pub fn prepare(a: Args) -> Result<Prepared> {
     let sc = a.scene.resolve(None)?;
-    let thetas = match (&a.theta, a.scene.scene_file()?.slider.theta_deg) {
-        (Some(t), _) => checks::thetas(t)?,
+    let thetas = match (a.theta.radians()?, a.scene.scene_file()?.slider.theta_deg) {
+        (Some(t), _) => t,
         (None, Some(_)) => vec![sc.scene.slider.theta],
-        (None, None) => checks::thetas(DEFAULT_THETA)?,
+        (None, None) => point_args::thetas(STUDY_THETAS)?,
     };
     let params = ScreenParams {
         thetas,
-        loads: checks::loads(&a.load_mn)?,
+        loads: a.load.newtons()?,
         model: Model::parse(&a.model).map_err(|e| anyhow::anyhow!("`--model`: {e}"))?,
         search: match a.search.as_str() {
             "grid" => SearchKind::Grid,

@@ -1,12 +1,12 @@
 //! `superlube tolerance`: flags → [`crate::study::tolerance::map`] → `DIR/map.csv` and
 //! `DIR/map.png`, each with its sidecar.
 
-use super::design::STUDY_LOADS;
 use super::friction_args::FrictionKnobArgs;
+use super::point_args::{direction_deg, help, Pull, StudyLoads, Theta, NOMINAL_THETA_HELP, THETA};
 use super::scene_args::Resolved;
 use super::tolerance_args::ToleranceArgs;
 use super::verdict_args::VerdictArgs;
-use super::{checks, SceneArgs};
+use super::{checks, point_args, SceneArgs};
 use crate::plot::tolerance::tolerance_png;
 use crate::runs::sink::csv_bytes;
 use crate::runs::{
@@ -27,31 +27,16 @@ use surrogate::units::{n_to_mn, rad_to_deg};
 /// pulling direction in the substrate frame (the tribometer's axis does not turn with the
 /// slider), so the map's y axis is the direction from the substrate's x axis.
 #[derive(clap::Args, Debug)]
+#[command(mut_args(help(THETA, NOMINAL_THETA_HELP)))]
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Nominal slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    theta: Option<f64>,
-    /// Nominal pulling angle α in degrees from the slider's contact line at the nominal θ
-    /// (as in `design`'s ranking; 90 = across the lines). Give this or --direction-deg.
-    #[arg(
-        long = "alpha-deg",
-        alias = "alpha",
-        value_name = "DEG",
-        allow_hyphen_values = true,
-        conflicts_with = "direction_deg"
-    )]
-    alpha: Option<f64>,
-    /// Nominal pulling direction in degrees from the substrate's x axis (design's
-    /// `direction_deg`). Give this or --alpha-deg.
-    #[arg(long = "direction-deg", value_name = "DEG", allow_hyphen_values = true)]
-    direction_deg: Option<f64>,
+    /// `--theta-deg`: one θ (degrees).
+    #[command(flatten)]
+    theta: Theta,
+    /// `--alpha-deg` or `--direction-deg`: the nominal pulling direction (degrees).
+    #[command(flatten)]
+    pull: Pull,
     /// Half-width in degrees of the map in θ around the nominal (≥ 0).
     #[arg(
         long = "theta-range-deg",
@@ -78,9 +63,9 @@ pub struct Args {
     direction_points: usize,
     #[command(flatten)]
     tol: ToleranceArgs,
-    /// Normal loads W in mN, strictly increasing [default: the study's 0.35 … 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), hide_default_value = true, allow_hyphen_values = true)]
-    load_mn: String,
+    /// `--load-mn`: the load ladder, a list or range (mN).
+    #[command(flatten)]
+    load: StudyLoads,
     #[command(flatten)]
     verdict: VerdictArgs,
     /// Contact-line angle in degrees from the substrate x axis that α is measured from
@@ -116,7 +101,7 @@ fn grid(range: f64, n: usize, flag_range: &str, flag_points: &str) -> Result<Vec
 /// Runs `superlube tolerance`.
 pub fn run(a: Args) -> Result<()> {
     // every check before any work
-    let loads = checks::loads(&a.load_mn)?;
+    let loads = a.load.newtons()?;
     if loads.windows(2).any(|w| w[1] <= w[0]) {
         bail!("`--load-mn`: loads must be strictly increasing");
     }
@@ -125,7 +110,7 @@ pub fn run(a: Args) -> Result<()> {
     let line = checks::line_deg(a.line_deg)?;
     let knobs = a.knobs.params()?;
     knobs.validate()?;
-    let sc = a.scene.resolve(a.theta)?;
+    let sc = a.scene.resolve(a.theta.deg)?;
     let theta_deg = label(rad_to_deg(sc.scene.slider.theta));
     let direction_deg = nominal_direction(&a, &sc, line)?;
     let csv = a.out.join("map.csv");
@@ -236,15 +221,14 @@ fn offsets(a: &Args) -> Result<(Vec<f64>, Vec<f64>, (f64, f64))> {
 /// The nominal pulling direction (degrees from x): `--direction-deg`, or `--alpha-deg` from the
 /// contact line at the scene's θ (`line`: a fixed contact-line angle, rad).
 fn nominal_direction(a: &Args, sc: &Resolved, line: Option<f64>) -> Result<f64> {
-    Ok(match (a.alpha, a.direction_deg) {
+    Ok(match (a.pull.alpha_deg, a.pull.direction_deg) {
     (Some(al), None) => {
-        checks::alpha(al)?;
+        point_args::alpha(al)?;
         checks::line_for(&sc.scene, line)?;
         let l = crate::study::friction::line_at(&sc.scene, sc.scene.slider.theta, line);
         label(rad_to_deg(l.angle) + al)
     }
-    (None, Some(d)) if d.is_finite() => d,
-    (None, Some(d)) => bail!("`--direction-deg`: {d} is not a finite angle"),
+    (None, Some(d)) => direction_deg(d)?,
     _ => bail!("give the nominal pulling direction: `--alpha-deg DEG` (from the contact line) or `--direction-deg DEG` (from x)"),
 })
 }

@@ -1,9 +1,9 @@
 //! `superlube yield`: flags → [`crate::study::fab_yield::fab_yield`] → `DIR/yield.csv`,
 //! `DIR/summary.json` and `DIR/yield.png`, each with its sidecar (the DEM runs in `DIR/dem/`).
 
-use super::design::STUDY_LOADS;
 use super::design_dem_args::DesignDemArgs;
 use super::friction_args::FrictionKnobArgs;
+use super::point_args::{help, Direction, StudyLoads, Theta, LOAD, NOMINAL_THETA_HELP, THETA};
 use super::scene_args::Resolved;
 use super::tolerance_args::ToleranceArgs;
 use super::verdict_args::VerdictArgs;
@@ -33,21 +33,23 @@ use surrogate::units::{gpa_to_pa, n_to_mn, pa_to_gpa, rad_to_deg};
 /// its one-sided confidence bound; the DEM locates the critical loads of the devices that set
 /// them.
 #[derive(clap::Args, Debug)]
+#[command(
+    mut_args(help(THETA, NOMINAL_THETA_HELP)),
+    mut_args(help(
+        LOAD,
+        "The load ladder in mN, strictly increasing: each device's critical load is found \
+         between two of them [default: the study's 0.35 … 3.86]"
+    ))
+)]
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Nominal slider orientation θ in degrees [default: the scene file's theta_deg, else 0].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    theta: Option<f64>,
-    /// Nominal pulling direction in degrees from the substrate's x axis (design's
-    /// `direction_deg`); a misaligned device keeps it in the substrate frame.
-    #[arg(long = "direction-deg", value_name = "DEG", allow_hyphen_values = true)]
-    direction_deg: f64,
+    /// `--theta-deg`: one θ (degrees).
+    #[command(flatten)]
+    theta: Theta,
+    /// `--direction-deg`: the pulling direction (degrees from x).
+    #[command(flatten)]
+    direction: Direction,
     #[command(flatten)]
     tol: ToleranceArgs,
     /// σ in degrees of a normal θ offset (truncated at ±3σ) instead of the uniform one over
@@ -123,10 +125,9 @@ pub struct Args {
     /// the scene's own --seed (comma list of non-negative integers).
     #[arg(long = "searched-seeds", value_name = "S1,S2")]
     searched_seeds: Option<String>,
-    /// The load ladder in mN, strictly increasing: each device's critical load is found
-    /// between two of them [default: the study's 0.35 … 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), hide_default_value = true, allow_hyphen_values = true)]
-    load_mn: String,
+    /// `--load-mn`: the load ladder, a list or range (mN).
+    #[command(flatten)]
+    load: StudyLoads,
     #[command(flatten)]
     verdict: VerdictArgs,
     /// Contact-line angle in degrees from the substrate x axis (for α in the DEM runs' names)
@@ -280,7 +281,7 @@ fn fabrication(a: &Args, scene: &surrogate::Scene) -> Result<FabricationModel> {
 
 /// The ladder, μ_sl, contact line and estimate knobs of `a`, checked.
 fn limit(a: &Args) -> Result<LimitParams> {
-    let loads = checks::loads(&a.load_mn)?;
+    let loads = a.load.newtons()?;
     if loads.windows(2).any(|w| w[1] <= w[0]) {
         bail!("`--load-mn`: the loads must be strictly increasing");
     }
@@ -306,12 +307,7 @@ fn prepare(a: &Args) -> Result<(Resolved, YieldParams)> {
             )
         );
     }
-    if !a.direction_deg.is_finite() {
-        bail!(
-            "`--direction-deg`: {} is not a finite angle",
-            a.direction_deg
-        );
-    }
+    a.direction.checked()?;
     let limit = limit(a)?;
     let check_load = a
         .dem_check_load_mn
@@ -330,11 +326,11 @@ fn prepare(a: &Args) -> Result<(Resolved, YieldParams)> {
     } else {
         Some(a.dem.params(limit.line)?)
     };
-    let sc = a.scene.resolve(a.theta)?;
+    let sc = a.scene.resolve(a.theta.deg)?;
     let fabrication = fabrication(a, &sc.scene)?;
     let params = YieldParams {
         theta_deg: label(rad_to_deg(sc.scene.slider.theta)),
-        direction_deg: a.direction_deg,
+        direction_deg: a.direction.deg,
         fabrication,
         samples: a.samples,
         quantile: a.quantile,

@@ -3,25 +3,29 @@
 use super::yield_args;
 use crate::cli::dem_args::ModelArg;
 use crate::cli::friction_args::FrictionKnobArgs;
+use crate::cli::point_args::{help, StudyLoads, Thetas, LOAD, THETA};
 use crate::cli::tolerance_args::ToleranceArgs;
 use crate::cli::verdict_args::VerdictArgs;
 use crate::cli::SceneOverrides;
-use crate::study::campaign::STUDY_LOADS_MN;
 use std::path::PathBuf;
-use std::sync::LazyLock;
-
-/// The study's load list (mN) as clap's default string (`0.35,0.7,…,3.5,3.86`), formatted from
-/// its one definition [`STUDY_LOADS_MN`].
-pub static STUDY_LOADS: LazyLock<String> = LazyLock::new(|| {
-    let loads: Vec<String> = STUDY_LOADS_MN.iter().map(|w| w.to_string()).collect();
-    loads.join(",")
-});
-
-/// The default θ list (degrees) of `--theta-deg`, before the symmetry cut (the study's).
-pub const DEFAULT_THETA: &str = "0:30:0.1";
 
 /// Options of `superlube design`.
 #[derive(clap::Args, Debug)]
+#[command(
+    mut_args(help(
+        THETA,
+        "Orientations θ in degrees (list or range start:stop:step), cut to each pattern's \
+         fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md); a \
+         list that does not span a domain is named in the log and the report [default: \
+         0:30:0.1, and for a pattern whose domain it does not span (no derived symmetry, or a \
+         domain wider than 30°) the whole domain at 0.1°, or 0.25° when wider than 60°]"
+    )),
+    mut_args(help(
+        LOAD,
+        "Normal loads W in mN, strictly increasing (list or range) [default: the study's \
+         0.35, 0.70, …, 3.50, 3.86]"
+    ))
+)]
 pub struct Args {
     /// Pattern pairs to design, comma-separated: tri-tri, square-tri, square-square, tri-square
     /// (the study's geometry) [default: square-tri,tri-tri unless --scene is given].
@@ -50,26 +54,16 @@ pub struct Args {
     /// Recipe flags (`--vary`, `--fair`, `--skip-invalid`): scene fields as design variables.
     #[command(flatten)]
     pub(super) recipe: crate::cli::recipe_args::RecipeArgs,
-    /// Orientations θ in degrees (list or range start:stop:step), cut to each pattern's
-    /// fundamental domain (square-tri 0–15°, tri-tri 0–30°: docs/commands/design.md); a list
-    /// that does not span a domain is named in the log and the report [default: 0:30:0.1, and
-    /// for a pattern whose domain it does not span (no derived symmetry, or a domain wider
-    /// than 30°) the whole domain at 0.1°, or 0.25° when wider than 60°].
-    #[arg(
-        long = "theta-deg",
-        alias = "theta",
-        value_name = "DEG",
-        allow_hyphen_values = true
-    )]
-    pub(super) theta: Option<String>,
+    /// `--theta-deg`: θ, a list or range (degrees).
+    #[command(flatten)]
+    pub(super) theta: Thetas,
     /// Screen θ as given, without the symmetry cut (for scenes whose symmetry is broken, e.g.
     /// by --offset-um).
     #[arg(long = "no-symmetry-cut")]
     pub(super) no_symmetry_cut: bool,
-    /// Normal loads W in mN, strictly increasing (list or range) [default: the study's
-    /// 0.35, 0.70, …, 3.50, 3.86].
-    #[arg(long = "load-mn", value_name = "MN", default_value = STUDY_LOADS.as_str(), hide_default_value = true, allow_hyphen_values = true)]
-    pub(super) load_mn: String,
+    /// `--load-mn`: the load ladder, a list or range (mN).
+    #[command(flatten)]
+    pub(super) load: StudyLoads,
     #[command(flatten)]
     pub(super) verdict: VerdictArgs,
     /// Orientations kept per lower load level of the shortlist (those with the lowest P_max).

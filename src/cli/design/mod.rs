@@ -6,7 +6,7 @@ mod prepare;
 mod scenes;
 mod yield_args;
 
-pub use args::{Args, STUDY_LOADS};
+pub use args::Args;
 pub use prepare::prepare;
 
 use crate::runs::progress::Reporter;

@@ -2,9 +2,9 @@
 //! parameters (SI) and the tolerance against each pattern's θ domain.
 
 use super::super::design_dem_args::design_run_params;
+use super::super::point_args::{self, STUDY_THETAS};
 use super::super::{checks, parse_list_or_range};
 use super::args::Args;
-use super::args::DEFAULT_THETA;
 use super::scenes::scenes;
 use crate::runs::output::check_outputs;
 use crate::study::dem_run::DemParams;
@@ -18,8 +18,10 @@ use surrogate::units::{mn_to_n, um_to_m, us_to_s};
 
 /// Every check of `superlube design`, before any work.
 pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
-    let theta_text = a.theta.clone().unwrap_or_else(|| DEFAULT_THETA.to_string());
-    let thetas_deg = checks::thetas_deg(&theta_text)?;
+    let thetas_deg = match a.theta.degrees()? {
+        Some(t) => t,
+        None => point_args::thetas_deg(STUDY_THETAS)?,
+    };
     let loads = loads(a)?;
     let mu_superlubric = a.verdict.mu_superlubric()?;
     let shortlist = shortlist(a)?;
@@ -32,7 +34,7 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
         mu_superlubric,
         screen: ScreenStageParams {
             thetas_deg,
-            theta_default: a.theta.is_none(),
+            theta_default: a.theta.text.is_none(),
             symmetry_cut: !a.no_symmetry_cut,
         },
         shortlist,
@@ -50,12 +52,12 @@ pub fn prepare(a: &Args) -> Result<(Vec<DesignScene>, DesignParams)> {
 
 /// `--load-mn` (N), strictly increasing.
 fn loads(a: &Args) -> Result<Vec<f64>> {
-    let loads = checks::loads(&a.load_mn)?;
+    let loads = a.load.newtons()?;
     if let Some(k) = loads.windows(2).position(|w| w[1] <= w[0]) {
         bail!(
             "`--load-mn`: the loads must be strictly increasing ({} mN then {} mN): a design's superlubric load is the highest of an increasing list",
-            a.load_mn.split(',').nth(k).unwrap_or("?").trim(),
-            a.load_mn.split(',').nth(k + 1).unwrap_or("?").trim()
+            a.load.text.split(',').nth(k).unwrap_or("?").trim(),
+            a.load.text.split(',').nth(k + 1).unwrap_or("?").trim()
         );
     }
     Ok(loads)
@@ -124,7 +126,7 @@ fn confirm(a: &Args, loads: &[f64], line: Option<f64>) -> Result<ConfirmParams> 
     }
     let confirm_loads = match &a.confirm_loads {
         Some(t) => {
-            let v = checks::loads(t).map_err(|e| {
+            let v = point_args::loads(t).map_err(|e| {
                 anyhow::anyhow!(
                     "{}",
                     e.to_string().replace("`--load-mn`", "`--confirm-loads-mn`")

@@ -148,8 +148,8 @@ fn the_observer_is_told_every_stage_in_order() {
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = args(&dir, &["--per-level", "1"]);
     a.pattern = Some("tri-tri".into());
-    a.theta = Some("0:30:15".into());
-    a.load_mn = "0.01,0.03".into();
+    a.theta.text = Some("0:30:15".into());
+    a.load.text = "0.01,0.03".into();
     let (scenes, params) = prepare(&a).unwrap();
     let rec = Record(Mutex::new(Vec::new()));
     design(&scenes, &params, &Store::new(&a.out), &rec, &|_| Ok(())).unwrap();
