@@ -165,7 +165,8 @@ impl Knowledge {
     }
 
     /// Each device's critical load (N) as the yield counts it and who set it: located → its
-    /// DEM value; at or above T → the estimate's (its W_c under the global band, else the
+    /// DEM value; held within the resolution below T → the load it held; at or above T → the
+    /// estimate's (its W_c under the global band, else the
     /// band's centre transferred), kept inside its bounds; undecided (the runs were spent) →
     /// the lower end of its bounds (where the DEM failed it below its band, its own margin's
     /// prediction less twice the `resolution`).
@@ -176,6 +177,9 @@ impl Knowledge {
             .map(|(d, b)| {
                 if b.located {
                     (b.low, DecidedBy::Located)
+                } else if self.above(b) && b.low < self.threshold {
+                    // held within the resolution below T: counted at the load it held
+                    (b.low, DecidedBy::Dem)
                 } else if self.above(b) {
                     let w = match self.band.source {
                         BandSource::Global => d.estimate.load,
