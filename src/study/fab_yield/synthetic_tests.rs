@@ -7,14 +7,14 @@
 //! loads, the quote and its bound against the true order statistics, the runs spent, and a
 //! check that contradicts the quote.
 
-use super::calibration::BandSource;
+use super::calibration::{Band, BandSource};
 use super::critical::{CriticalLoad, Limit, Probe};
 use super::dem_decide::{Ask, Decision};
 use super::dem_part::{run_with, Plan};
-use super::device::{DemRun, Device};
+use super::device::{Bounds, DemRun, Device};
 use super::fabrication::{FabricationModel, OffsetLaw, Sample};
 use super::params::YieldParams;
-use super::rounds::{DemOracle, SHARP};
+use super::rounds::{DemOracle, Knowledge, SHARP};
 use super::row::DecidedBy;
 use super::{interval, summary};
 use crate::runs::progress::{Progress, Silent};
@@ -304,4 +304,32 @@ fn a_device_far_below_its_prediction_is_bisected_not_walked() {
         "{v} vs {truth}"
     );
     assert!(d.dem.len() <= 10, "{} runs: {:?}", d.dem.len(), d.dem);
+}
+
+/// A device held within the resolution below T (never failed) is decided, at the load it held,
+/// not at its estimate (which may lie above its truth); one the DEM failed stays undecided
+/// until the DEM locates it.
+#[test]
+fn a_device_held_just_below_the_threshold_counts_at_its_held_load() {
+    let t = truths(5, 2, None);
+    let devices: Vec<Device> = (0..2).map(|i| device(i, t[i], false)).collect();
+    let threshold = 1.9e-3;
+    let held = 0.995 * threshold;
+    let bounds = |failed: bool| Bounds {
+        low: held,
+        high: 2.2e-3,
+        located: false,
+        failed,
+    };
+    let kn = Knowledge {
+        band: Band::global(),
+        pairs: Vec::new(),
+        bounds: vec![bounds(false), bounds(true)],
+        threshold,
+        resolution: 0.01,
+    };
+    assert_eq!(kn.undecided(), vec![1]);
+    let v = kn.values(&devices, 0.02, 0.01);
+    assert_eq!(v[0], (held, DecidedBy::Dem));
+    assert_eq!(v[1].1, DecidedBy::Undecided);
 }
