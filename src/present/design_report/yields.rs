@@ -66,28 +66,27 @@ pub fn sentence(pr: &PatternResult, a: &Answer, y: Option<&AnswerYield>) -> Opti
         .index
         .and_then(|i| pr.ranking.get(i))
         .map_or(0.0, |c| c.score.superlubric_to_mn);
-    let bound = s.load_at_quantile_bound_mN.filter(|&b| b < robust);
-    let failure = s.lowest_dem_failure.as_ref().filter(|f| f.load_mN < robust);
-    if let (Some(_), Some(f)) = (bound, failure) {
-        t.push_str(&format!(
-                "; below the robust limit {} mN because the DEM fails device {}{} (θ offset {}°, pull offset {}°, substrate seed {}) at {} mN",
-                yield_words::load(robust),
-                f.sample,
-                if f.check { " of the check" } else { "" },
-                fmt_g(f.theta_offset_deg, 3),
-                fmt_g(f.direction_offset_deg, 3),
-                f.seed,
-                yield_words::load(f.load_mN)
-            ));
-    } else if bound.is_some() && s.undecided > 0 {
-        t.push_str(&format!(
+    let below = s.load_at_quantile_bound_mN.is_some_and(|b| b < robust);
+    match s.lowest_dem_failure.as_ref().filter(|f| f.load_mN < robust) {
+        Some(f) if below => t.push_str(&format!(
+            "; below the robust limit {} mN because the DEM fails device {}{} (θ offset {}°, pull offset {}°, substrate seed {}) at {} mN",
+            yield_words::load(robust),
+            f.sample,
+            if f.check { " of the check" } else { "" },
+            fmt_g(f.theta_offset_deg, 3),
+            fmt_g(f.direction_offset_deg, 3),
+            f.seed,
+            yield_words::load(f.load_mN)
+        )),
+        None if below && s.undecided > 0 => t.push_str(&format!(
             "; below the robust limit {} mN because {} device(s) were still undecided when the {} DEM runs allowed were spent (no DEM run failed a device below it): {}",
             yield_words::load(robust),
             s.undecided,
             s.dem_runs_allowed,
             yield_words::ceiling(s)
                 .unwrap_or_else(|| "they count at the lower end of what is known".into())
-        ));
+        )),
+        _ => {}
     }
     t.push('.');
     Some(t)

@@ -139,8 +139,8 @@ impl Device {
     /// Where the device's DEM critical load can lie (N): the band's bracket (the estimate's
     /// own [W_low, W_high] for the global band; the design's worst and best ratios transferred
     /// through its estimate otherwise), narrowed by its DEM runs (a held load is a lower
-    /// bound, a failed one an upper bound; a failure below the band drops the band's lower
-    /// edge).
+    /// bound, one failed above every held load an upper bound; a failure below the band drops
+    /// the band's lower edge).
     pub fn bounds(&self, band: &Band, mu_sl: f64, resolution: f64) -> Bounds {
         if let Some(v) = self.located(resolution) {
             return Bounds {
@@ -157,16 +157,17 @@ impl Device {
                 (lo, self.limit_with(band.best(), mu_sl).max(lo))
             }
         };
-        if let Some(b) = self.failed() {
+        let (held, failed) = (self.held(), self.failed());
+        if let Some(b) = failed {
             if low >= b {
                 low = 0.0;
             }
             high = high.min(b);
         }
-        if let Some(a) = self.held() {
+        if let Some(a) = held {
             low = low.max(a);
             high = high.max(a);
-            if let Some(b) = self.failed() {
+            if let Some(b) = failed {
                 high = high.min(b).max(a);
             }
         }
@@ -174,7 +175,7 @@ impl Device {
             low,
             high,
             located: false,
-            failed: self.failed().is_some(),
+            failed: failed.is_some(),
         }
     }
 

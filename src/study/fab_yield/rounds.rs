@@ -180,7 +180,7 @@ impl Knowledge {
                 } else if self.above(b) && b.low < self.threshold {
                     // held within the resolution below T: counted at the load it held
                     (b.low, DecidedBy::Dem)
-                } else if self.above(b) {
+                } else if b.low >= self.threshold {
                     let w = match self.band.source {
                         BandSource::Global => d.estimate.load,
                         BandSource::Design => d.limit_with(self.band.centre(), mu_sl),
@@ -248,13 +248,6 @@ fn bracket(d: &Device, b: &Bounds, r: f64) -> (f64, f64) {
         (Some(a), None) => (a, hi(a)),
         (None, None) => (b.low, b.high),
     }
-}
-
-/// The `n` entries of `ids` with the lowest `key` (same order), ties by id.
-fn lowest_of(ids: &[usize], key: &[f64], n: usize) -> Vec<usize> {
-    let mut order: Vec<usize> = (0..ids.len()).collect();
-    order.sort_by(|&x, &y| key[x].total_cmp(&key[y]).then(ids[x].cmp(&ids[y])));
-    order.into_iter().map(|x| ids[x]).take(n).collect()
 }
 
 /// When the rounds of a yield may stop before every device is decided
@@ -393,7 +386,9 @@ impl<'a> Rounds<'a> {
                 .iter()
                 .map(|&i| devices[i].predicted(&kn.band, self.mu_sl))
                 .collect();
-            todo = lowest_of(&todo, &pred, k + 1);
+            let mut order: Vec<usize> = (0..todo.len()).collect();
+            order.sort_by(|&x, &y| pred[x].total_cmp(&pred[y]).then(todo[x].cmp(&todo[y])));
+            todo = order.into_iter().map(|x| todo[x]).take(k + 1).collect();
             let mut plan: Vec<(usize, f64)> = Vec::new();
             for &i in &todo {
                 for w in self.loads_for(&devices[i], &kn.bounds[i], &kn) {
