@@ -6,9 +6,23 @@
 //! smallest and the largest ratio seen (split-conformal with the full range as the interval:
 //! for m exchangeable pairs, a fresh device's ratio lies inside [min, max] with probability
 //! ≥ (m − 1)/(m + 1), the band's stated coverage), and its bias correction, the median ratio.
-//! Below [`MIN_PAIRS`] pairs the global band of the verdict (`P_RATIO`, `MU_RATIO`, measured
-//! over the study's DEM comparisons) stands, with the pairs' median ratio as its centre (the
-//! identity without pairs). Cost: a sort of the pairs.
+//!
+//! The band maps the estimate onto the DEM where the DEM's verdict turns, so it is made from
+//! the pairs of that regime:
+//! - **the coating held** (P_DEM ≤ P_crit): once a contact passes P_crit the DEM switches its
+//!   μ, and the run's P_max and μ then measure the failure, not the estimate's error (on the
+//!   default tri-tri design ρ jumps from 1.005 to 1.018 and m from 0.97 to 0.84 at the
+//!   failing load). Such a run is censored: it shows ρ ≥ P_crit/P_est, which the band's upper
+//!   ρ covers;
+//! - **for ρ, the estimate within [`NEAR_P_CRIT`] of P_crit** (a class of the pairs by their
+//!   estimate, as in Mondrian conformal prediction): the crossing ρ·P_est = P_crit lies there,
+//!   and a device far below P_crit (high friction, a stiffer contact set) has a ρ of its own
+//!   (1.044 at P_est = 0.82 P_crit on the default tri-tri design). With fewer than
+//!   [`MIN_PAIRS`] such pairs, every pair whose coating held.
+//!
+//! Below [`MIN_PAIRS`] pairs whose coating held the global band of the verdict (`P_RATIO`,
+//! `MU_RATIO`, measured over the study's DEM comparisons) stands, with the pairs' median ratio
+//! as its centre (the identity without pairs). Cost: a sort of the pairs.
 
 use super::margin::Ratios;
 use crate::study::verdict::{MU_RATIO, P_RATIO};
@@ -16,6 +30,11 @@ use serde::{Deserialize, Serialize};
 
 /// Fewest pairs for a design's own band (coverage (m − 1)/(m + 1) = 82 % at 10).
 pub const MIN_PAIRS: usize = 10;
+
+/// The pairs of the band's ρ: those whose estimated P_max is at least this fraction of P_crit
+/// (the crossing ρ·P_est = P_crit lies there for ρ up to 1/0.95 = 1.053, above the global
+/// band's 1.048).
+pub const NEAR_P_CRIT: f64 = 0.95;
 
 /// One DEM run beside the estimate at the same device and load.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -33,6 +52,8 @@ pub struct Pair {
     pub mu_estimate: f64,
     /// μ_DEM.
     pub mu_dem: f64,
+    /// The device's P_crit (GPa).
+    pub p_crit_GPa: f64,
 }
 
 impl Pair {
@@ -53,6 +74,22 @@ impl Pair {
             mu: self.mu_ratio(),
         }
     }
+
+    /// Whether the DEM's coating held in this run (P_DEM ≤ P_crit): its ratios measure the
+    /// estimate's error (module docs).
+    pub fn coating_held(&self) -> bool {
+        self.p_max_dem_GPa <= self.p_crit_GPa
+    }
+
+    /// Whether its estimate lies where the coating's verdict turns (P_est ≥ [`NEAR_P_CRIT`]·P_crit).
+    pub fn near_p_crit(&self) -> bool {
+        self.p_max_estimate_GPa >= NEAR_P_CRIT * self.p_crit_GPa
+    }
+
+    /// The least ρ that explains a coating failure, P_crit/P_est (a censored ρ).
+    fn censored_p_ratio(&self) -> f64 {
+        self.p_crit_GPa / self.p_max_estimate_GPa
+    }
 }
 
 /// Where a band comes from.
@@ -70,8 +107,11 @@ pub enum BandSource {
 pub struct Band {
     /// Where it comes from.
     pub source: BandSource,
-    /// Pairs it was made from.
+    /// Pairs its ρ was made from (module docs).
     pub pairs: usize,
+    /// Pairs whose coating held: those of its m, and of its centre (0: the centre is not
+    /// calibrated).
+    pub held_pairs: usize,
     /// [lowest, highest] ρ = P_DEM/P_est.
     pub p_ratio: [f64; 2],
     /// [lowest, highest] m = μ_est/μ_DEM.
@@ -104,11 +144,12 @@ impl Band {
             mu_ratio: [MU_RATIO.0, MU_RATIO.1],
             centre: [1.0, 1.0],
             coverage: None,
+            held_pairs: 0,
         }
     }
 
-    /// The band of `pairs` (module docs): the design's own from [`MIN_PAIRS`] pairs with finite
-    /// ratios on, else the global one.
+    /// The band of `pairs` (module docs): the design's own from [`MIN_PAIRS`] pairs whose
+    /// coating held, else the global one.
     pub fn calibrated(pairs: &[Pair]) -> Band {
         let ok: Vec<&Pair> = pairs
             .iter()
@@ -117,34 +158,54 @@ impl Band {
                 a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0
             })
             .collect();
-        let m = ok.len();
-        if m == 0 {
-            return Band::global();
-        }
+        let held: Vec<&Pair> = ok.iter().copied().filter(|p| p.coating_held()).collect();
+        let near: Vec<&Pair> = held.iter().copied().filter(|p| p.near_p_crit()).collect();
+        let rho = if near.len() >= MIN_PAIRS {
+            near
+        } else {
+            held.clone()
+        };
+        let m = rho.len();
+        let ratios = |v: &[&Pair], f: fn(&Pair) -> f64| v.iter().map(|p| f(p)).collect::<Vec<_>>();
         if m < MIN_PAIRS {
-            // too few for a band, enough for a bias correction of the predictions
+            // too few for a band, enough for a bias correction of the predictions; where no
+            // coating held, the least ρ that explains the failures and no μ correction
+            let centre = if !held.is_empty() {
+                [
+                    median(ratios(&held, Pair::p_ratio)),
+                    median(ratios(&held, Pair::mu_ratio)),
+                ]
+            } else if !ok.is_empty() {
+                [median(ratios(&ok, Pair::censored_p_ratio)), 1.0]
+            } else {
+                return Band::global();
+            };
             return Band {
-                centre: [
-                    median(ok.iter().map(|p| p.p_ratio()).collect()),
-                    median(ok.iter().map(|p| p.mu_ratio()).collect()),
-                ],
+                centre,
+                held_pairs: held.len(),
                 ..Band::global()
             };
         }
-        let range = |f: fn(&Pair) -> f64| {
-            let v: Vec<f64> = ok.iter().map(|p| f(p)).collect();
+        let range = |v: &[f64]| {
             let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
             let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            ([lo, hi], median(v))
+            [lo, hi]
         };
-        let (p_ratio, pc) = range(Pair::p_ratio);
-        let (mu_ratio, mc) = range(Pair::mu_ratio);
+        let (p, mu) = (ratios(&rho, Pair::p_ratio), ratios(&held, Pair::mu_ratio));
+        let mut p_ratio = range(&p);
+        // a coating failure shows ρ ≥ P_crit/P_est: the upper end covers it
+        p_ratio[1] = ok
+            .iter()
+            .filter(|p| !p.coating_held())
+            .map(|p| p.censored_p_ratio())
+            .fold(p_ratio[1], f64::max);
         Band {
             source: BandSource::Design,
             pairs: m,
+            held_pairs: held.len(),
             p_ratio,
-            mu_ratio,
-            centre: [pc, mc],
+            mu_ratio: range(&mu),
+            centre: [median(p), median(mu)],
             coverage: Some((m as f64 - 1.0) / (m as f64 + 1.0)),
         }
     }
@@ -187,6 +248,7 @@ mod tests {
             p_max_dem_GPa: 4.0 * rho,
             mu_estimate: 0.01,
             mu_dem: 0.01 / m,
+            p_crit_GPa: 4.0 * rho.max(1.0),
         }
     }
 
@@ -209,6 +271,58 @@ mod tests {
         assert!((b.p_ratio[0] - 1.0).abs() < 1e-12 && (b.p_ratio[1] - 1.018).abs() < 1e-12);
         assert!((b.centre[0] - 1.009).abs() < 1e-12);
         assert!((b.coverage.unwrap() - 0.9).abs() < 1e-12);
+    }
+
+    /// The band is made from the regime where the verdict turns: a run whose coating failed
+    /// (its P_max and μ jumped with the switched μ) widens neither ratio, except that its
+    /// least explaining ρ, P_crit/P_est, bounds the upper ρ; a pair far below P_crit (a
+    /// friction-bound device with a ρ of its own) sets no ρ once enough pairs lie near P_crit,
+    /// but still sets m.
+    #[test]
+    fn the_band_leaves_out_failed_coatings_and_far_pairs() {
+        let near: Vec<Pair> = (0..MIN_PAIRS)
+            .map(|i| pair(1.004 + 0.0002 * i as f64, 0.98))
+            .collect();
+        let failed = Pair {
+            p_max_estimate_GPa: 3.99,
+            p_max_dem_GPa: 4.07,
+            mu_dem: 0.012,
+            ..pair(1.0, 1.0)
+        };
+        let far = Pair {
+            p_max_estimate_GPa: 3.28,
+            p_max_dem_GPa: 3.28 * 1.044,
+            mu_dem: 0.01 / 0.84,
+            ..pair(1.0, 1.0)
+        };
+        let mut all = near.clone();
+        all.extend([failed.clone(), far.clone()]);
+        let b = Band::calibrated(&all);
+        assert_eq!(
+            (b.source, b.pairs, b.held_pairs),
+            (BandSource::Design, MIN_PAIRS, MIN_PAIRS + 1)
+        );
+        assert!((b.p_ratio[0] - 1.004).abs() < 1e-12, "{b:?}");
+        // the failure's censored ρ, 4/3.99 = 1.0025, lies inside: the near pairs' 1.0058 stands
+        assert!((b.p_ratio[1] - 1.0058).abs() < 1e-12, "{b:?}");
+        // m: the far pair (0.84) counts, the failed run's (0.01/0.012 = 0.83) does not
+        assert!((b.mu_ratio[0] - 0.84).abs() < 1e-12, "{b:?}");
+        // a failure the near pairs do not explain lifts the upper ρ to its censored value
+        let deep = Pair {
+            p_max_estimate_GPa: 3.9,
+            p_max_dem_GPa: 4.1,
+            ..pair(1.0, 1.0)
+        };
+        let mut with = near.clone();
+        with.push(deep);
+        let b = Band::calibrated(&with);
+        assert!((b.p_ratio[1] - 4.0 / 3.9).abs() < 1e-12, "{b:?}");
+        // without pairs whose coating held, the centre is the failures' least ρ and no μ
+        // correction
+        let b = Band::calibrated(&[failed]);
+        assert_eq!(b.source, BandSource::Global);
+        assert!((b.centre[0] - 4.0 / 3.99).abs() < 1e-12 && b.centre[1] == 1.0);
+        assert_eq!(b.held_pairs, 0);
     }
 
     /// The stated coverage holds: over seeded repeats, a fresh ratio from the same law falls in

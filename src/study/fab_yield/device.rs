@@ -112,6 +112,7 @@ impl Device {
                     p_max_dem_GPa: r.p_max_GPa?,
                     mu_estimate: me?,
                     mu_dem: r.mu.filter(|&m| m > 0.0)?,
+                    p_crit_GPa: self.p_crit_gpa(),
                 })
             })
             .collect()
@@ -124,12 +125,14 @@ impl Device {
     }
 
     /// The predicted DEM critical load (N): the margin of its own DEM run nearest to the
-    /// band's prediction transferred through its estimate, else the band's bias-corrected
-    /// centre.
+    /// band's prediction, among those whose coating held, transferred through its estimate,
+    /// else the band's bias-corrected centre (a run whose coating failed measures the failure,
+    /// not the margin: [`super::calibration`]).
     pub fn predicted(&self, band: &Band, mu_sl: f64) -> f64 {
         let centre = self.limit_with(band.centre(), mu_sl);
         self.pairs()
             .iter()
+            .filter(|p| p.coating_held())
             .map(|p| (p, n_to_mn(centre) - p.load_mN))
             .filter(|(p, _)| p.p_ratio().is_finite() && p.mu_ratio().is_finite())
             .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
@@ -138,7 +141,8 @@ impl Device {
 
     /// Where the device's DEM critical load can lie (N): the band's bracket (the estimate's
     /// own [W_low, W_high] for the global band; the design's worst and best ratios transferred
-    /// through its estimate otherwise), narrowed by its DEM runs (a held load is a lower
+    /// through its estimate otherwise), its lower end widened to the worst ratios of its own
+    /// runs, narrowed by its DEM runs (a held load is a lower
     /// bound, one failed above every held load an upper bound; a failure below the band drops
     /// the band's lower edge).
     pub fn bounds(&self, band: &Band, mu_sl: f64, resolution: f64) -> Bounds {
@@ -157,6 +161,16 @@ impl Device {
                 (lo, self.limit_with(band.best(), mu_sl).max(lo))
             }
         };
+        // its own runs, where they show the DEM worse than the band (a run whose coating
+        // failed is left out of the band, not out of its own device's bracket)
+        let own = self.pairs();
+        if !own.is_empty() {
+            let worst = own.iter().fold(band.worst(), |w, p| Ratios {
+                p: w.p.max(p.p_ratio()),
+                mu: w.mu.min(p.mu_ratio()),
+            });
+            low = low.min(self.limit_with(worst, mu_sl));
+        }
         let (held, failed) = (self.held(), self.failed());
         if let Some(b) = failed {
             if low >= b {

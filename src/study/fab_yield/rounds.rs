@@ -10,11 +10,12 @@
 //! round, the K + 1 undecided devices with the lowest predictions
 //! ([`super::Device::predicted`]) get runs, side by side:
 //! - one predicted at or above T: a run at T (held: it is above; failed: it is located next);
-//! - else its location: a first run at its prediction (the band's bias-corrected centre
-//!   transferred through its estimate), then three runs a resolution apart around the
-//!   prediction its own margin gives (W*·(1 − r), W*, W*·(1 + r), inside what is known), so
-//!   that a good prediction locates it in one round; bisection once its bracket is within
-//!   twice the resolution, once its runs put the prediction outside what they know (a
+//! - else its location: while no run's coating has held anywhere (the band's centre is not
+//!   calibrated), one run [`GUARD`] resolutions below its prediction, which it should hold
+//!   and whose pair calibrates the centre; then two runs a resolution apart around the
+//!   prediction its own margin (or the calibrated centre) gives, W*·(1 ∓ r/2) inside what is
+//!   known, so that a good prediction locates it in one round; bisection once its bracket is
+//!   within twice the resolution, once its runs put the prediction outside what they know (a
 //!   prediction shown wrong is not walked after a resolution at a time), or after
 //!   [`STRADDLES`] such rounds. Where only one side is known, the bisection's other end is
 //!   the band's end, or [`GUARD`] resolutions beyond the known side once the runs crossed it.
@@ -22,8 +23,8 @@
 //! After each round the band is calibrated again on every run's pair ([`super::calibration`]),
 //! which narrows the other devices' brackets. It ends when no device is undecided, or when
 //! the runs allowed are spent (the undecided then keep the lower end of what is known, and the
-//! summary counts them). Cost: about 3 runs per located device and 1 per device shown above
-//! T, plus the first rounds' runs under the global band.
+//! summary counts them). Cost: about 2–3 runs per located device and 1 per device shown above
+//! T.
 
 use super::calibration::{Band, BandSource, Pair};
 use super::dem_decide::{Ask, Decision, DemDecider};
@@ -168,8 +169,9 @@ impl Knowledge {
     /// DEM value; held within the resolution below T → the load it held; at or above T → the
     /// estimate's (its W_c under the global band, else the
     /// band's centre transferred), kept inside its bounds; undecided (the runs were spent) →
-    /// the lower end of its bounds (where the DEM failed it below its band, its own margin's
-    /// prediction less twice the `resolution`).
+    /// the lower end of its bounds, less twice the `resolution` where that end is transferred
+    /// through the estimate rather than held by the DEM (where the DEM failed it below its
+    /// band, its own margin's prediction less twice the `resolution`).
     pub fn values(&self, devices: &[Device], mu_sl: f64, resolution: f64) -> Vec<(f64, DecidedBy)> {
         devices
             .iter()
@@ -192,8 +194,15 @@ impl Knowledge {
                     };
                     (w.clamp(b.low, b.high), by)
                 } else if b.low > 0.0 {
-                    // the runs are spent: the floor of what is known (conservative)
-                    (b.low, DecidedBy::Undecided)
+                    // the runs are spent: the floor of what is known (conservative); a floor
+                    // transferred through the estimate, not held by the DEM, less twice the
+                    // resolution, as a prediction
+                    let w = if d.held() == Some(b.low) {
+                        b.low
+                    } else {
+                        b.low * (1.0 - 2.0 * resolution)
+                    };
+                    (w, DecidedBy::Undecided)
                 } else {
                     // the DEM failed it below its band: its own margin's prediction, less
                     // twice the resolution
@@ -330,12 +339,12 @@ impl<'a> Rounds<'a> {
         } else {
             0.5 * d.estimate.load
         };
-        if d.dem.is_empty() {
-            return if x > 0.0 {
-                vec![x.max(b.low)]
-            } else {
-                Vec::new()
-            };
+        if x <= 0.0 {
+            return Vec::new();
+        }
+        if d.dem.is_empty() && k.band.held_pairs == 0 {
+            // nothing calibrated yet: a run the device should hold, whose pair calibrates
+            return vec![(x * (1.0 - GUARD * r)).max(b.low)];
         }
         let (lo, hi) = bracket(d, b, r);
         let near = x > lo && x < hi;
@@ -343,10 +352,11 @@ impl<'a> Rounds<'a> {
             // located to twice the resolution, or the prediction proved wrong: bisection
             return vec![0.5 * (lo + hi)];
         }
-        // three runs a resolution apart around the prediction, inside the bracket: two
-        // neighbours that disagree locate it
-        let x = x.max(lo / (1.0 - r)).min(hi / (1.0 + r));
-        [x * (1.0 - r), x, x * (1.0 + r)]
+        // two runs a resolution apart around the prediction, inside the bracket: if they
+        // disagree they locate it
+        let h = 0.5 * r;
+        let x = x.max(lo / (1.0 - h)).min(hi / (1.0 + h));
+        [x * (1.0 - h), x * (1.0 + h)]
             .into_iter()
             .filter(|&w| a.is_none_or(|a| w > a) && f.is_none_or(|f| w < f))
             .collect()
