@@ -76,8 +76,9 @@ pub fn ceiling(s: &YieldSummary) -> Option<String> {
 pub fn dem_work(s: &YieldSummary) -> String {
     let band = match s.band.coverage {
         Some(c) => format!(
-            "the design's own band from {} DEM/estimate pairs (P_max ratio {:.3}–{:.3}, coverage {:.1} %)",
+            "the design's own band from {} DEM/estimate pairs on {} devices (P_max ratio {:.3}–{:.3}, coverage {:.1} %)",
             s.band.pairs,
+            s.band.devices,
             s.band.p_ratio[0],
             s.band.p_ratio[1],
             100.0 * c

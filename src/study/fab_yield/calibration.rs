@@ -4,8 +4,10 @@
 //! estimate's on the same device at the same load ([`super::margin::estimate_at`]). From the
 //! pairs' ratios ρ = P_DEM/P_est and m = μ_est/μ_DEM the design gets its own band: the
 //! smallest and the largest ratio seen (split-conformal with the full range as the interval:
-//! for m exchangeable pairs, a fresh device's ratio lies inside [min, max] with probability
-//! ≥ (m − 1)/(m + 1), the band's stated coverage), and its bias correction, the median ratio.
+//! for ratios of d exchangeable devices, a fresh device's ratio lies inside [min, max] with
+//! probability ≥ (d − 1)/(d + 1), the band's stated coverage; d counts devices, not pairs,
+//! since one device's runs at nearby loads repeat its ratio), and its bias correction, the
+//! median ratio.
 //!
 //! The band maps the estimate onto the DEM where the DEM's verdict turns, so it is made from
 //! the pairs of that regime:
@@ -118,8 +120,10 @@ pub struct Band {
     pub mu_ratio: [f64; 2],
     /// The bias correction: median ρ and m of the pairs (1 without pairs).
     pub centre: [f64; 2],
-    /// Probability that a fresh pair lies in the band, (m − 1)/(m + 1) (`null`: global band,
-    /// whose coverage is that of the study's comparison).
+    /// Devices its ρ pairs come from (d).
+    pub devices: usize,
+    /// Probability that a fresh device's ratio lies in the band, (d − 1)/(d + 1) (`null`:
+    /// global band, whose coverage is that of the study's comparison).
     pub coverage: Option<f64>,
 }
 
@@ -145,6 +149,7 @@ impl Band {
             centre: [1.0, 1.0],
             coverage: None,
             held_pairs: 0,
+            devices: 0,
         }
     }
 
@@ -191,6 +196,10 @@ impl Band {
             let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             [lo, hi]
         };
+        let mut samples: Vec<usize> = rho.iter().map(|p| p.sample).collect();
+        samples.sort_unstable();
+        samples.dedup();
+        let d = samples.len();
         let (p, mu) = (ratios(&rho, Pair::p_ratio), ratios(&held, Pair::mu_ratio));
         let mut p_ratio = range(&p);
         // a coating failure shows ρ ≥ P_crit/P_est: the upper end covers it
@@ -206,7 +215,8 @@ impl Band {
             p_ratio,
             mu_ratio: range(&mu),
             centre: [median(p), median(mu)],
-            coverage: Some((m as f64 - 1.0) / (m as f64 + 1.0)),
+            devices: d,
+            coverage: Some((d as f64 - 1.0) / (d as f64 + 1.0)),
         }
     }
 
@@ -265,12 +275,22 @@ mod tests {
         );
         assert!((b.centre[0] - 1.01).abs() < 1e-12 && (b.centre[1] - 0.9).abs() < 1e-12);
         assert_eq!(Band::calibrated(&[]), Band::global());
-        let many: Vec<Pair> = (0..19).map(|i| pair(1.0 + 0.001 * i as f64, 0.9)).collect();
+        let mut many: Vec<Pair> = (0..19).map(|i| pair(1.0 + 0.001 * i as f64, 0.9)).collect();
+        for (i, p) in many.iter_mut().enumerate() {
+            p.sample = i;
+        }
         let b = Band::calibrated(&many);
         assert_eq!(b.source, BandSource::Design);
         assert!((b.p_ratio[0] - 1.0).abs() < 1e-12 && (b.p_ratio[1] - 1.018).abs() < 1e-12);
         assert!((b.centre[0] - 1.009).abs() < 1e-12);
         assert!((b.coverage.unwrap() - 0.9).abs() < 1e-12);
+        // the same pairs from 4 devices: the same band, a coverage of (4 − 1)/(4 + 1)
+        for (i, p) in many.iter_mut().enumerate() {
+            p.sample = i % 4;
+        }
+        let b = Band::calibrated(&many);
+        assert_eq!((b.devices, b.p_ratio[1]), (4, 1.0 + 0.001 * 18.0));
+        assert!((b.coverage.unwrap() - 0.6).abs() < 1e-12);
     }
 
     /// The band is made from the regime where the verdict turns: a run whose coating failed
@@ -334,9 +354,13 @@ mod tests {
         let mut inside = 0;
         for _ in 0..trials {
             let pairs: Vec<Pair> = (0..19)
-                .map(|_| pair(1.0 + 0.03 * rng.random::<f64>().powi(2), 0.9))
+                .map(|i| Pair {
+                    sample: i,
+                    ..pair(1.0 + 0.03 * rng.random::<f64>().powi(2), 0.9)
+                })
                 .collect();
             let b = Band::calibrated(&pairs);
+            assert_eq!(b.coverage, Some(0.9));
             let fresh = 1.0 + 0.03 * rng.random::<f64>().powi(2);
             inside += usize::from(fresh >= b.p_ratio[0] && fresh <= b.p_ratio[1]);
         }
