@@ -43,19 +43,28 @@ pub fn check(s: &YieldSummary) -> Option<String> {
     if s.dem_check_total == 0 {
         return None;
     }
+    let at = s.dem_check_load_mN.unwrap_or(0.0);
+    // the check's devices, pooled, lowered the quote below the load they were run at
+    let pooled_below = !s.dem_check_load_given
+        && s.load_at_quantile_mN
+            .is_some_and(|q| load(q) != load(at) && q < at);
     let agreement = match (s.dem_check_consistent, s.quote_lowered_by_check) {
-        (Some(true), true) => "; the quote was lowered until its check agreed",
-        (Some(true), false) => "; agrees with the quote",
+        (Some(true), true) => "; the quote was lowered until its check agreed".to_string(),
+        (Some(true), false) if pooled_below => format!(
+            " (the quote before the check); pooled, they brought the quote down to {} mN, which the check agrees with",
+            load(s.load_at_quantile_mN.unwrap_or(0.0))
+        ),
+        (Some(true), false) => "; agrees with the quote".to_string(),
         (Some(false), _) => {
-            "; CONTRADICTS the quote: fewer fresh devices hold it than the yield claims"
+            "; CONTRADICTS the quote: fewer fresh devices hold it than the yield claims".to_string()
         }
-        (None, _) => "",
+        (None, _) => String::new(),
     };
     Some(format!(
         "DEM check: {}/{} fresh devices held at {} mN{agreement}",
         s.dem_check_passed,
         s.dem_check_total,
-        load(s.dem_check_load_mN.unwrap_or(0.0))
+        load(at)
     ))
 }
 
@@ -101,4 +110,35 @@ pub fn dem_work(s: &YieldSummary) -> String {
         s.located.len(),
         s.setting_ranks
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Recipe B's summary (2026-11-29, lists emptied): 7 of 10 check devices held at the quote
+    /// before the check, 1.93 mN; pooled, they brought the quote to 1.85 mN.
+    const B: &str = r#"{"pattern": "tri-tri", "theta_deg": 10.6, "direction_deg": -18.2, "quantile": 0.95, "confidence": 0.95, "samples": 59, "pooled": 69, "resolution": 0.01, "load_at_quantile_mN": 1.84692113804, "load_at_quantile_bound_mN": 1.83835315509, "ceiling_mN": [1.90881644432, 1.9046169519], "bound_rank": 1, "min_samples_for_bound": 59, "yield_at_quantile_load": 0.9565217391304348, "yield_at_quantile_load_interval": [0.8781528506347058, 0.9909423926415002], "setting_ranks": 4, "threshold_mN": 1.92685325257, "located": [12, 18, 21, 26, 38], "dem_decided": 23, "undecided": 32, "dem_runs": 40, "dem_runs_allowed": 40, "dem_rounds": 7, "band": {"source": "design", "pairs": 26, "held_pairs": 26, "p_ratio": [0.9906487857461882, 1.00605417242739], "mu_ratio": [0.9807742080056132, 1.2128816381850656], "centre": [0.9971655253598259, 0.9958143561207069], "coverage": 0.9, "devices": 19}, "pairs": [], "dem_check_load_mN": 1.92685325257, "dem_check_passed": 7, "dem_check_total": 10, "dem_check_interval": [0.34754714994005553, 0.9332604888218157], "dem_check_consistent": true, "quote_lowered_by_check": false, "dem_check_runs": [], "lowest_dem_failure": {"sample": 18, "check": false, "load_mN": 1.92375883081, "theta_offset_deg": 0.09353698, "direction_offset_deg": 0.220021119, "seed": 17224887033131677236}, "dem": true, "censored": 0, "fabrication": {"theta_offset": {"law": "uniform", "half_width_deg": 0.1}, "direction_offset": {"law": "uniform", "half_width_deg": 0.5}, "sigma_h_um": 0.0, "sphere_diameter_cv": 0.0, "p_crit_sigma_GPa": 0.0, "sample_seed": 1, "excluded_seeds": [1], "truncate_sigma": 3.0}, "curve": []}"#;
+
+    /// A check run at the quote before it, which the pooled quote then fell below, says so
+    /// (not only "agrees"); one at the quote itself, or at a load asked for, just agrees; the
+    /// band line counts its devices.
+    #[test]
+    fn the_check_says_when_its_devices_lowered_the_quote() {
+        let mut s: YieldSummary = serde_json::from_str(B).unwrap();
+        assert_eq!(
+            check(&s).unwrap(),
+            "DEM check: 7/10 fresh devices held at 1.93 mN (the quote before the check); pooled, they brought the quote down to 1.85 mN, which the check agrees with"
+        );
+        s.dem_check_load_given = true;
+        assert!(check(&s)
+            .unwrap()
+            .ends_with("held at 1.93 mN; agrees with the quote"));
+        s.dem_check_load_given = false;
+        s.dem_check_load_mN = s.load_at_quantile_mN;
+        assert!(check(&s)
+            .unwrap()
+            .ends_with("held at 1.85 mN; agrees with the quote"));
+        assert!(dem_work(&s).contains("from 26 DEM/estimate pairs on 19 devices"));
+    }
 }

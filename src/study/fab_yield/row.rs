@@ -183,6 +183,9 @@ pub struct YieldSummary {
     /// Load of the DEM check (mN; the quoted load before the check's devices were pooled,
     /// unless asked otherwise; `null`: no check).
     pub dem_check_load_mN: Option<f64>,
+    /// Whether the check ran at a load asked for (`--dem-check-load-mn`), not at the quote.
+    #[serde(default)]
+    pub dem_check_load_given: bool,
     /// Devices of the DEM check that held.
     pub dem_check_passed: usize,
     /// Devices in the DEM check.

@@ -220,6 +220,7 @@ pub fn outcome(
             .map_or_else(super::Band::global, |k| k.band.clone()),
         pairs: kn.map(|k| k.pairs).unwrap_or_default(),
         dem_check_load_mN: dem.and_then(|d| d.check_load).filter(|_| total > 0).map(mn),
+        dem_check_load_given: dem.is_some_and(|d| d.check_load_given),
         dem_check_passed: passed,
         dem_check_total: total,
         dem_check_interval: (total > 0).then(|| {
