@@ -44,21 +44,21 @@ pub fn check(s: &YieldSummary) -> Option<String> {
         return None;
     }
     let at = s.dem_check_load_mN.unwrap_or(0.0);
-    // the check's devices, pooled, lowered the quote below the load they were run at
-    let pooled_below = !s.dem_check_load_given
-        && s.load_at_quantile_mN
-            .is_some_and(|q| load(q) != load(at) && q < at);
-    let agreement = match (s.dem_check_consistent, s.quote_lowered_by_check) {
-        (Some(true), true) => "; the quote was lowered until its check agreed".to_string(),
-        (Some(true), false) if pooled_below => format!(
+    // the quote the check's devices, pooled, lowered below the load they were run at
+    let pooled_to = s
+        .load_at_quantile_mN
+        .filter(|&q| !s.dem_check_load_given && q < at && load(q) != load(at));
+    let agreement = match (s.dem_check_consistent, s.quote_lowered_by_check, pooled_to) {
+        (Some(true), true, _) => "; the quote was lowered until its check agreed".to_string(),
+        (Some(true), false, Some(q)) => format!(
             " (the quote before the check); pooled, they brought the quote down to {} mN, which the check agrees with",
-            load(s.load_at_quantile_mN.unwrap_or(0.0))
+            load(q)
         ),
-        (Some(true), false) => "; agrees with the quote".to_string(),
-        (Some(false), _) => {
+        (Some(true), false, None) => "; agrees with the quote".to_string(),
+        (Some(false), _, _) => {
             "; CONTRADICTS the quote: fewer fresh devices hold it than the yield claims".to_string()
         }
-        (None, _) => String::new(),
+        (None, _, _) => String::new(),
     };
     Some(format!(
         "DEM check: {}/{} fresh devices held at {} mN{agreement}",

@@ -30,7 +30,7 @@ use super::margin::Ratios;
 use crate::study::verdict::{MU_RATIO, P_RATIO};
 use serde::{Deserialize, Serialize};
 
-/// Fewest pairs for a design's own band (coverage (m − 1)/(m + 1) = 82 % at 10).
+/// Fewest pairs for a design's own band (from 10 devices, coverage (d − 1)/(d + 1) = 82 %).
 pub const MIN_PAIRS: usize = 10;
 
 /// The pairs of the band's ρ: those whose estimated P_max is at least this fraction of P_crit
