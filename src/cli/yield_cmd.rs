@@ -136,8 +136,9 @@ pub struct Args {
     line_deg: Option<f64>,
     #[command(flatten)]
     knobs: FrictionKnobArgs,
-    /// Fresh devices run with the DEM at the quoted load as a check, then pooled into the
-    /// yield; the quote is lowered until the check agrees with it (0: none).
+    /// Fresh devices run with the DEM at the estimate's quote, first, as a check and to
+    /// calibrate the estimate on random devices, then pooled into the yield; the quote is
+    /// lowered until the check agrees with it (0: none).
     #[arg(
         long = "dem-check",
         value_name = "N",
@@ -145,7 +146,7 @@ pub struct Args {
         conflicts_with = "no_dem"
     )]
     dem_check: usize,
-    /// Load in mN of the DEM check [default: the quoted load]: compares the yield at another
+    /// Load in mN of the DEM check [default: the estimate's quote]: compares the yield at another
     /// load with the DEM's.
     #[arg(
         long = "dem-check-load-mn",

@@ -44,14 +44,15 @@ pub fn check(s: &YieldSummary) -> Option<String> {
         return None;
     }
     let at = s.dem_check_load_mN.unwrap_or(0.0);
-    // the quote the check's devices, pooled, lowered below the load they were run at
+    // the check ran at the estimate's quote, before the rounds; the rounds over the pool then
+    // set the quote elsewhere
     let pooled_to = s
         .load_at_quantile_mN
-        .filter(|&q| !s.dem_check_load_given && q < at && load(q) != load(at));
+        .filter(|&q| !s.dem_check_load_given && load(q) != load(at));
     let agreement = match (s.dem_check_consistent, s.quote_lowered_by_check, pooled_to) {
         (Some(true), true, _) => "; the quote was lowered until its check agreed".to_string(),
         (Some(true), false, Some(q)) => format!(
-            " (the quote before the check); pooled, they brought the quote down to {} mN, which the check agrees with",
+            " (the estimate's quote); with them pooled, the DEM's rounds set the quote at {} mN, which the check agrees with",
             load(q)
         ),
         (Some(true), false, None) => "; agrees with the quote".to_string(),
@@ -116,29 +117,29 @@ pub fn dem_work(s: &YieldSummary) -> String {
 mod tests {
     use super::*;
 
-    /// Recipe B's summary (2026-11-29, lists emptied): 7 of 10 check devices held at the quote
-    /// before the check, 1.93 mN; pooled, they brought the quote to 1.85 mN.
-    const B: &str = r#"{"pattern": "tri-tri", "theta_deg": 10.6, "direction_deg": -18.2, "quantile": 0.95, "confidence": 0.95, "samples": 59, "pooled": 69, "resolution": 0.01, "load_at_quantile_mN": 1.84692113804, "load_at_quantile_bound_mN": 1.83835315509, "ceiling_mN": [1.90881644432, 1.9046169519], "bound_rank": 1, "min_samples_for_bound": 59, "yield_at_quantile_load": 0.9565217391304348, "yield_at_quantile_load_interval": [0.8781528506347058, 0.9909423926415002], "setting_ranks": 4, "threshold_mN": 1.92685325257, "located": [12, 18, 21, 26, 38], "dem_decided": 23, "undecided": 32, "dem_runs": 40, "dem_runs_allowed": 40, "dem_rounds": 7, "band": {"source": "design", "pairs": 26, "held_pairs": 26, "p_ratio": [0.9906487857461882, 1.00605417242739], "mu_ratio": [0.9807742080056132, 1.2128816381850656], "centre": [0.9971655253598259, 0.9958143561207069], "coverage": 0.9, "devices": 19}, "pairs": [], "dem_check_load_mN": 1.92685325257, "dem_check_passed": 7, "dem_check_total": 10, "dem_check_interval": [0.34754714994005553, 0.9332604888218157], "dem_check_consistent": true, "quote_lowered_by_check": false, "dem_check_runs": [], "lowest_dem_failure": {"sample": 18, "check": false, "load_mN": 1.92375883081, "theta_offset_deg": 0.09353698, "direction_offset_deg": 0.220021119, "seed": 17224887033131677236}, "dem": true, "censored": 0, "fabrication": {"theta_offset": {"law": "uniform", "half_width_deg": 0.1}, "direction_offset": {"law": "uniform", "half_width_deg": 0.5}, "sigma_h_um": 0.0, "sphere_diameter_cv": 0.0, "p_crit_sigma_GPa": 0.0, "sample_seed": 1, "excluded_seeds": [1], "truncate_sigma": 3.0}, "curve": []}"#;
+    /// Recipe B's summary (2026-11-29, lists emptied): 10 of 10 check devices held at the
+    /// estimate's quote, 1.90 mN; with them pooled, the rounds set the quote at 1.85 mN.
+    const B: &str = r#"{"pattern": "tri-tri", "theta_deg": 10.6, "direction_deg": -18.2, "quantile": 0.95, "confidence": 0.95, "samples": 59, "pooled": 69, "resolution": 0.01, "load_at_quantile_mN": 1.8526838116, "load_at_quantile_bound_mN": 1.84097802123, "ceiling_mN": [1.89926574155, 1.89676016557], "bound_rank": 1, "min_samples_for_bound": 59, "yield_at_quantile_load": 0.9565217391304348, "yield_at_quantile_load_interval": [0.8781528506347058, 0.9909423926415002], "setting_ranks": 4, "threshold_mN": 1.91556425328, "located": [18, 60, 65, 66, 68], "dem_decided": 24, "undecided": 13, "dem_runs": 40, "dem_runs_allowed": 40, "dem_rounds": 5, "band": {"source": "design", "pairs": 35, "held_pairs": 35, "p_ratio": [0.9918770751632262, 1.0061264705769544], "mu_ratio": [0.9763444953760859, 0.9988959235520367], "centre": [0.9987158959043536, 0.991804804559621], "devices": 24, "coverage": 0.92}, "pairs": [], "dem_check_load_mN": 1.903125, "dem_check_load_given": false, "dem_check_passed": 10, "dem_check_total": 10, "dem_check_interval": [0.6915028921816884, 1.0], "dem_check_consistent": true, "quote_lowered_by_check": false, "dem_check_runs": [], "lowest_dem_failure": {"sample": 18, "check": false, "load_mN": 1.9164266549, "theta_offset_deg": 0.09353698, "direction_offset_deg": 0.220021119, "seed": 17224887033131677236}, "dem": true, "censored": 0, "fabrication": {"theta_offset": {"law": "uniform", "half_width_deg": 0.1}, "direction_offset": {"law": "uniform", "half_width_deg": 0.5}, "sigma_h_um": 0.0, "sphere_diameter_cv": 0.0, "p_crit_sigma_GPa": 0.0, "sample_seed": 1, "excluded_seeds": [1], "truncate_sigma": 3.0}, "curve": []}"#;
 
-    /// A check run at the quote before it, which the pooled quote then fell below, says so
-    /// (not only "agrees"); one at the quote itself, or at a load asked for, just agrees; the
-    /// band line counts its devices.
+    /// A check run at the estimate's quote, away from the final quote, says where the rounds
+    /// set the quote (not only "agrees"); one at the quote itself, or at a load asked for,
+    /// just agrees; the band line counts its devices.
     #[test]
-    fn the_check_says_when_its_devices_lowered_the_quote() {
+    fn the_check_says_where_the_rounds_set_the_quote() {
         let mut s: YieldSummary = serde_json::from_str(B).unwrap();
         assert_eq!(
             check(&s).unwrap(),
-            "DEM check: 7/10 fresh devices held at 1.93 mN (the quote before the check); pooled, they brought the quote down to 1.85 mN, which the check agrees with"
+            "DEM check: 10/10 fresh devices held at 1.90 mN (the estimate's quote); with them pooled, the DEM's rounds set the quote at 1.85 mN, which the check agrees with"
         );
         s.dem_check_load_given = true;
         assert!(check(&s)
             .unwrap()
-            .ends_with("held at 1.93 mN; agrees with the quote"));
+            .ends_with("held at 1.90 mN; agrees with the quote"));
         s.dem_check_load_given = false;
         s.dem_check_load_mN = s.load_at_quantile_mN;
         assert!(check(&s)
             .unwrap()
             .ends_with("held at 1.85 mN; agrees with the quote"));
-        assert!(dem_work(&s).contains("from 26 DEM/estimate pairs on 19 devices"));
+        assert!(dem_work(&s).contains("from 35 DEM/estimate pairs on 24 devices"));
     }
 }

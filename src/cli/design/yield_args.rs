@@ -42,8 +42,9 @@ pub struct YieldArgs {
     /// Seed of the devices' draws (the same seed gives the same devices).
     #[arg(long = "yield-sample-seed", value_name = "SEED", default_value_t = 1)]
     pub yield_seed: u64,
-    /// With the DEM: fresh devices run with the DEM at each answer's quoted load as a check,
-    /// then pooled into its yield (0: none).
+    /// With the DEM: fresh devices run with the DEM at each answer's estimated quote, first,
+    /// as a check and to calibrate the estimate on random devices, then pooled into its yield
+    /// (0: none).
     #[arg(long = "yield-dem-check", value_name = "N", default_value_t = 10)]
     pub yield_dem_check: usize,
     /// With the DEM: most DEM runs per answer's yield, the check's included. Devices still

@@ -30,7 +30,7 @@ pub struct YieldDem {
     pub params: DemParams,
     /// Fresh devices run with the DEM for the check (0: no check).
     pub check: usize,
-    /// Load (N) of the check; `None`: the quoted load.
+    /// Load (N) of the check; `None`: the estimate's quote.
     pub check_load: Option<f64>,
     /// Runs side by side (one thread each).
     pub jobs: usize,
@@ -45,7 +45,7 @@ pub const DEFAULT_MAX_RUNS: usize = 40;
 
 impl YieldDem {
     /// The DEM of a yield: runs with `params` (load, α and line set per run), `check` fresh
-    /// devices at `check_load` (N; `None`: the quoted load), at most `max_runs` runs (the
+    /// devices at `check_load` (N; `None`: the estimate's quote), at most `max_runs` runs (the
     /// check's included; see [`YieldDem::runs_hold_check`]), `jobs` side by side in `dir`.
     /// The one constructor of `superlube yield` and the design's yield stage.
     pub fn new(

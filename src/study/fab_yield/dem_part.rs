@@ -1,18 +1,22 @@
-//! Steps 3–4 of a yield with the DEM ([`run`]): the DEM rounds over the yield's devices, the
-//! check on fresh devices at the quoted load, and the rounds again over the pool.
+//! Steps 3–4 of a yield with the DEM ([`run`]): the check on fresh devices at the estimate's
+//! quote, then the DEM rounds over the pool.
 //!
-//! The runs allowed (`max_runs`, the check's included) are shared: the yield's own rounds get
-//! `max_runs − check`, the check its `check` runs, the rounds over the pool what is left. The
-//! check's devices are drawn after the yield's own (samples `samples..samples + check`),
-//! estimated like them, run at the quoted load, then pooled: a device that fails there is one
-//! of the lowest critical loads of the pool and gets located like any other.
-//! Cost: at most `max_runs` DEM runs and `check` devices' estimates.
+//! The check comes first: its devices are drawn after the yield's own (samples
+//! `samples..samples + check`), estimated like them, and run at the estimate's quote of the
+//! yield's own devices (or the load asked for). Drawn at random, not chosen by their estimate,
+//! their pairs calibrate the band ([`super::calibration`]) on devices like those it is applied
+//! to; the rounds' own runs go to the devices the estimate puts lowest, which, where the
+//! estimate ranks the devices backwards, are unlike those that fail first
+//! (`docs/validation/yield.md`). The check's devices are then pooled (DEM-decided devices of
+//! the same model) and the rounds run over the pool with what is left of `max_runs`; a check
+//! device that failed may be among the lowest critical loads and gets located like any other.
+//! Cost: at most `max_runs` DEM runs (the check's included) and `check` devices' estimates.
 
 use super::dem_decide::{DemDecider, YieldDem};
 use super::device::Device;
 use super::estimate::estimate_range;
 use super::params::YieldParams;
-use super::rounds::{quote, setting_ranks, DemOracle, Knowledge, Rounds};
+use super::rounds::{answer, setting_ranks, DemOracle, Rounds};
 use crate::runs::progress::Progress;
 use anyhow::Result;
 use surrogate::Scene;
@@ -42,7 +46,7 @@ pub struct DemPart {
 pub struct Plan {
     /// Fresh devices of the check (0: none).
     pub check: usize,
-    /// The check's load (N; `None`: the quoted load).
+    /// The check's load (N; `None`: the estimate's quote).
     pub check_load: Option<f64>,
     /// Most DEM runs, the check's included.
     pub max_runs: usize,
@@ -89,23 +93,24 @@ pub fn run_with(
         Rounds::new(oracle, mu_sl, p.resolution).stopping_when_sharp(p.quantile, p.confidence);
     let allowed = plan.max_runs.max(plan.check);
     let ranks = |n: usize| setting_ranks(n, p.quantile, p.confidence);
-    let n = devices.len();
-    rounds.run(devices, ranks(n), allowed - plan.check, progress)?;
     let mut check_why = Vec::new();
     let mut check_load = None;
     if plan.check > 0 {
-        let kn = Knowledge::of(devices, ranks(n), mu_sl, p.resolution);
-        let quoted = quote(&kn.values(devices, mu_sl, p.resolution), p.quantile);
-        if let Some(w) = plan.check_load.or(quoted) {
+        // the estimate's own quote of the yield's devices (the global band's centre is 1)
+        let estimated: Vec<f64> = devices.iter().map(|d| d.estimate.load).collect();
+        if let Some(w) = plan
+            .check_load
+            .or(answer(&estimated, p.quantile, p.confidence).0)
+        {
             let start = devices.len();
             devices.extend(fresh()?);
             let asks: Vec<(usize, f64)> = (start..devices.len()).map(|i| (i, w)).collect();
             check_why = rounds.execute(devices, &asks, "yield: DEM check", progress)?;
             check_load = Some(w);
-            let k = ranks(devices.len());
-            rounds.run(devices, k, allowed, progress)?;
         }
     }
+    let k = ranks(devices.len());
+    rounds.run(devices, k, allowed, progress)?;
     Ok(DemPart {
         runs: rounds.runs,
         allowed,

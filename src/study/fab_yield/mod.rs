@@ -9,14 +9,15 @@
 //!    load ladder then bisected to the resolution, with its band bracket [W_low, W_high] and
 //!    every single-load estimate made ([`critical`]); the devices are estimated in parallel,
 //!    each on its own solver.
-//! 3. **DEM rounds** — only the lowest K critical loads set the quote and its bound; the DEM
+//! 3. **Check** — `check` fresh devices are estimated and run with the DEM at the estimate's
+//!    quote; drawn at random, their pairs calibrate the band on devices not chosen by their
+//!    estimate; they are pooled into the yield (DEM-decided devices of the same model)
+//!    ([`dem_part`]).
+//! 4. **DEM rounds** — only the lowest K critical loads of the pool set the quote and its bound; the DEM
 //!    locates those devices' own critical loads to the resolution and shows the others above
 //!    them, its runs placed by the DEM's margin transferred through each device's estimate
 //!    ([`margin`]), with a band calibrated on the design's own DEM runs ([`calibration`],
 //!    [`rounds`]).
-//! 4. **Check** — `check` fresh devices are estimated and run with the DEM at the quoted load;
-//!    they are pooled into the yield (DEM-decided devices of the same model), and the rounds go
-//!    on over the pool ([`dem_part`]).
 //! 5. **Curve and summary** — yield(W) = fraction of devices with W_c ≥ W with its exact
 //!    (Clopper–Pearson) interval; the quote W_q = the load a fraction q hold, and its one-sided
 //!    lower bound at confidence γ from the order statistics (Wilks; [`interval`]); the check

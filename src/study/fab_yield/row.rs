@@ -81,7 +81,7 @@ pub struct CurvePoint {
     pub high: f64,
 }
 
-/// The DEM check on fresh devices at the quoted load.
+/// The DEM check on fresh devices at the estimate's quote.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DemCheckRun {
     /// Index of the device (after the yield's own samples).
@@ -180,8 +180,8 @@ pub struct YieldSummary {
     pub band: Band,
     /// Every DEM run beside the estimate at the same device and load.
     pub pairs: Vec<Pair>,
-    /// Load of the DEM check (mN; the quoted load before the check's devices were pooled,
-    /// unless asked otherwise; `null`: no check).
+    /// Load of the DEM check (mN; the estimate's quote of the yield's own devices, unless
+    /// asked otherwise; `null`: no check).
     pub dem_check_load_mN: Option<f64>,
     /// Whether the check ran at a load asked for (`--dem-check-load-mn`), not at the quote.
     #[serde(default)]

@@ -17,7 +17,7 @@ pub struct YieldStageParams {
     pub resolution: f64,
     /// Seed of the devices' draws (each device its own stream).
     pub seed: u64,
-    /// Fresh devices run with the DEM at the quoted load as a check (0: none; ignored without
+    /// Fresh devices run with the DEM at the estimate's quote as a check (0: none; ignored without
     /// the DEM).
     pub dem_check: usize,
     /// Most DEM runs per answer's yield, the check's included (≥ `dem_check`, ≥ 1).

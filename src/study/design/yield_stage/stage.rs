@@ -10,7 +10,7 @@
 //! of the design's searched `--seeds` ([`crate::study::fab_yield::FabricationModel::excluded_seeds`]), the design's load
 //! ladder, μ_sl, contact line and estimate knobs. With the DEM, the devices that can set the
 //! quoted load or its bound get their DEM critical load, located with the design's protocol
-//! and model, and `dem_check` fresh devices a DEM check at the quote, pooled in (at most 40
+//! and model, after `dem_check` fresh devices' DEM check at the estimate's quote, pooled in (at most 40
 //! runs; in `yield/<pattern>/`, reused by a re-run); without (`--no-dem`), the estimate's part
 //! only. The estimate's part (each device's
 //! critical load) is stored per design (`stages/<pattern>/yield_<θ>_<direction>.json`,
