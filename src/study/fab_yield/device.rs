@@ -37,12 +37,26 @@ pub struct Device {
     pub check: bool,
 }
 
+/// Where the lower end of a device's [`Bounds`] comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Floor {
+    /// The band (or the device's own worst ratios) transferred through its estimate: a
+    /// prediction, not a DEM run.
+    Transferred,
+    /// A load the DEM held.
+    Held,
+    /// Nothing: the DEM failed the device at or below its transferred floor (low = 0).
+    Lost,
+}
+
 /// What the yield knows of a device's DEM critical load (N): it lies in [low, high]; `located`
 /// when the DEM bracketed it to the resolution (then low = high = the highest load held).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bounds {
     /// Lowest possible value.
     pub low: f64,
+    /// Where `low` comes from.
+    pub floor: Floor,
     /// Highest possible value.
     pub high: f64,
     /// The DEM located it.
@@ -149,6 +163,7 @@ impl Device {
         if let Some(v) = self.located(resolution) {
             return Bounds {
                 low: v,
+                floor: Floor::Held,
                 high: v,
                 located: true,
                 failed: true,
@@ -172,13 +187,18 @@ impl Device {
             low = low.min(self.limit_with(worst, mu_sl));
         }
         let (held, failed) = (self.held(), self.failed());
+        let mut floor = Floor::Transferred;
         if let Some(b) = failed {
             if low >= b {
                 low = 0.0;
+                floor = Floor::Lost;
             }
             high = high.min(b);
         }
         if let Some(a) = held {
+            if a >= low {
+                floor = Floor::Held;
+            }
             low = low.max(a);
             high = high.max(a);
             if let Some(b) = failed {
@@ -187,6 +207,7 @@ impl Device {
         }
         Bounds {
             low,
+            floor,
             high,
             located: false,
             failed: failed.is_some(),
@@ -295,5 +316,17 @@ mod tests {
             (Some(1.7), Some(1.0))
         );
         assert_eq!(b(&floor), (1.5, 1.7, false));
+        // where each floor comes from: the band, a held run, or nothing left
+        let src = |d: &Device| d.bounds(&g, 0.02, 0.01).floor;
+        assert_eq!(
+            [src(&d), src(&failed), src(&held), src(&odd), src(&wide)],
+            [
+                Floor::Transferred,
+                Floor::Transferred,
+                Floor::Held,
+                Floor::Lost,
+                Floor::Held
+            ]
+        );
     }
 }

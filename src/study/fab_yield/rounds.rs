@@ -28,7 +28,7 @@
 
 use super::calibration::{Band, BandSource, Pair};
 use super::dem_decide::{Ask, Decision, DemDecider};
-use super::device::{Bounds, Device};
+use super::device::{Bounds, Device, Floor};
 use super::interval;
 use super::row::DecidedBy;
 use crate::runs::progress::Progress;
@@ -193,14 +193,13 @@ impl Knowledge {
                         DecidedBy::Dem
                     };
                     (w.clamp(b.low, b.high), by)
-                } else if b.low > 0.0 {
+                } else if b.floor != Floor::Lost {
                     // the runs are spent: the floor of what is known (conservative); a floor
                     // transferred through the estimate, not held by the DEM, less twice the
                     // resolution, as a prediction
-                    let w = if d.held() == Some(b.low) {
-                        b.low
-                    } else {
-                        b.low * (1.0 - 2.0 * resolution)
+                    let w = match b.floor {
+                        Floor::Held => b.low,
+                        _ => b.low * (1.0 - 2.0 * resolution),
                     };
                     (w, DecidedBy::Undecided)
                 } else {

@@ -11,7 +11,7 @@ use super::calibration::{Band, BandSource};
 use super::critical::{CriticalLoad, Limit, Probe};
 use super::dem_decide::{Ask, Decision};
 use super::dem_part::{run_with, Plan};
-use super::device::{Bounds, DemRun, Device};
+use super::device::{Bounds, DemRun, Device, Floor};
 use super::fabrication::{FabricationModel, OffsetLaw, Sample};
 use super::params::YieldParams;
 use super::rounds::{DemOracle, Knowledge, SHARP};
@@ -319,6 +319,7 @@ fn a_device_held_just_below_the_threshold_counts_at_its_held_load() {
     let held = 0.995 * threshold;
     let bounds = |failed: bool| Bounds {
         low: held,
+        floor: Floor::Held,
         high: 2.2e-3,
         located: false,
         failed,
