@@ -86,9 +86,10 @@ pub fn ceiling(s: &YieldSummary) -> Option<String> {
 pub fn dem_work(s: &YieldSummary) -> String {
     let band = match s.band.coverage {
         Some(c) => format!(
-            "the design's own band from {} DEM/estimate pairs on {} devices (P_max ratio {:.3}–{:.3}, coverage {:.1} %)",
+            "the design's own band from {} DEM/estimate pairs on {} devices, {} of them the check's random draws (P_max ratio {:.3}–{:.3}, coverage {:.1} %)",
             s.band.pairs,
             s.band.devices,
+            s.band.random_devices,
             s.band.p_ratio[0],
             s.band.p_ratio[1],
             100.0 * c
@@ -119,7 +120,7 @@ mod tests {
 
     /// Recipe B's summary (2026-11-29, lists emptied): 10 of 10 check devices held at the
     /// estimate's quote, 1.90 mN; with them pooled, the rounds set the quote at 1.85 mN.
-    const B: &str = r#"{"pattern": "tri-tri", "theta_deg": 10.6, "direction_deg": -18.2, "quantile": 0.95, "confidence": 0.95, "samples": 59, "pooled": 69, "resolution": 0.01, "load_at_quantile_mN": 1.8526838116, "load_at_quantile_bound_mN": 1.84097802123, "ceiling_mN": [1.89926574155, 1.89676016557], "bound_rank": 1, "min_samples_for_bound": 59, "yield_at_quantile_load": 0.9565217391304348, "yield_at_quantile_load_interval": [0.8781528506347058, 0.9909423926415002], "setting_ranks": 4, "threshold_mN": 1.91556425328, "located": [18, 60, 65, 66, 68], "dem_decided": 24, "undecided": 13, "dem_runs": 40, "dem_runs_allowed": 40, "dem_rounds": 5, "band": {"source": "design", "pairs": 35, "held_pairs": 35, "p_ratio": [0.9918770751632262, 1.0061264705769544], "mu_ratio": [0.9763444953760859, 0.9988959235520367], "centre": [0.9987158959043536, 0.991804804559621], "devices": 24, "coverage": 0.92}, "pairs": [], "dem_check_load_mN": 1.903125, "dem_check_load_given": false, "dem_check_passed": 10, "dem_check_total": 10, "dem_check_interval": [0.6915028921816884, 1.0], "dem_check_consistent": true, "quote_lowered_by_check": false, "dem_check_runs": [], "lowest_dem_failure": {"sample": 18, "check": false, "load_mN": 1.9164266549, "theta_offset_deg": 0.09353698, "direction_offset_deg": 0.220021119, "seed": 17224887033131677236}, "dem": true, "censored": 0, "fabrication": {"theta_offset": {"law": "uniform", "half_width_deg": 0.1}, "direction_offset": {"law": "uniform", "half_width_deg": 0.5}, "sigma_h_um": 0.0, "sphere_diameter_cv": 0.0, "p_crit_sigma_GPa": 0.0, "sample_seed": 1, "excluded_seeds": [1], "truncate_sigma": 3.0}, "curve": []}"#;
+    const B: &str = r#"{"pattern": "tri-tri", "theta_deg": 10.6, "direction_deg": -18.2, "quantile": 0.95, "confidence": 0.95, "samples": 59, "pooled": 69, "resolution": 0.01, "load_at_quantile_mN": 1.8526838116, "load_at_quantile_bound_mN": 1.84097802123, "ceiling_mN": [1.89926574155, 1.89676016557], "bound_rank": 1, "min_samples_for_bound": 59, "yield_at_quantile_load": 0.9565217391304348, "yield_at_quantile_load_interval": [0.8781528506347058, 0.9909423926415002], "setting_ranks": 4, "threshold_mN": 1.91556425328, "located": [18, 60, 65, 66, 68], "dem_decided": 24, "undecided": 13, "dem_runs": 40, "dem_runs_allowed": 40, "dem_rounds": 5, "band": {"source": "design", "pairs": 35, "held_pairs": 35, "p_ratio": [0.9918770751632262, 1.0061264705769544], "mu_ratio": [0.9763444953760859, 0.9988959235520367], "centre": [0.9987158959043536, 0.991804804559621], "devices": 24, "random_devices": 10, "coverage": 0.8181818181818182}, "pairs": [], "dem_check_load_mN": 1.903125, "dem_check_load_given": false, "dem_check_passed": 10, "dem_check_total": 10, "dem_check_interval": [0.6915028921816884, 1.0], "dem_check_consistent": true, "quote_lowered_by_check": false, "dem_check_runs": [], "lowest_dem_failure": {"sample": 18, "check": false, "load_mN": 1.9164266549, "theta_offset_deg": 0.09353698, "direction_offset_deg": 0.220021119, "seed": 17224887033131677236}, "dem": true, "censored": 0, "fabrication": {"theta_offset": {"law": "uniform", "half_width_deg": 0.1}, "direction_offset": {"law": "uniform", "half_width_deg": 0.5}, "sigma_h_um": 0.0, "sphere_diameter_cv": 0.0, "p_crit_sigma_GPa": 0.0, "sample_seed": 1, "excluded_seeds": [1], "truncate_sigma": 3.0}, "curve": []}"#;
 
     /// A check run at the estimate's quote, away from the final quote, says where the rounds
     /// set the quote (not only "agrees"); one at the quote itself, or at a load asked for,
@@ -140,6 +141,9 @@ mod tests {
         assert!(check(&s)
             .unwrap()
             .ends_with("held at 1.85 mN; agrees with the quote"));
-        assert!(dem_work(&s).contains("from 35 DEM/estimate pairs on 24 devices"));
+        assert!(dem_work(&s).contains(
+            "from 35 DEM/estimate pairs on 24 devices, 10 of them the check's random draws"
+        ));
+        assert!(dem_work(&s).contains("coverage 81.8 %"));
     }
 }

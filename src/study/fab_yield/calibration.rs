@@ -5,9 +5,14 @@
 //! pairs' ratios ρ = P_DEM/P_est and m = μ_est/μ_DEM the design gets its own band: the
 //! smallest and the largest ratio seen (split-conformal with the full range as the interval:
 //! for ratios of d exchangeable devices, a fresh device's ratio lies inside [min, max] with
-//! probability ≥ (d − 1)/(d + 1), the band's stated coverage; d counts devices, not pairs,
-//! since one device's runs at nearby loads repeat its ratio), and its bias correction, the
-//! median ratio.
+//! probability ≥ (d − 1)/(d + 1); d counts devices, not pairs, since one device's runs at
+//! nearby loads repeat its ratio), and its bias correction, the median ratio.
+//!
+//! **The stated coverage counts the devices drawn at random**: the check's, run first at the
+//! estimate's quote ([`super::dem_part`]). The rounds' devices are chosen by their estimate (the
+//! lowest first), so their ratios are not exchangeable with a fresh device's; they can only
+//! widen the range. With c ≥ 2 check devices among the pairs the coverage is (c − 1)/(c + 1);
+//! without (no check) it counts every device.
 //!
 //! The band maps the estimate onto the DEM where the DEM's verdict turns, so it is made from
 //! the pairs of that regime:
@@ -56,6 +61,9 @@ pub struct Pair {
     pub mu_dem: f64,
     /// The device's P_crit (GPa).
     pub p_crit_GPa: f64,
+    /// Whether its device is one of the check's: drawn at random, not chosen by its estimate.
+    #[serde(default)]
+    pub check: bool,
 }
 
 impl Pair {
@@ -122,8 +130,12 @@ pub struct Band {
     pub centre: [f64; 2],
     /// Devices its ρ pairs come from (d).
     pub devices: usize,
-    /// Probability that a fresh device's ratio lies in the band, (d − 1)/(d + 1) (`null`:
-    /// global band, whose coverage is that of the study's comparison).
+    /// Of those, the check's, drawn at random (c).
+    #[serde(default)]
+    pub random_devices: usize,
+    /// Probability that a fresh device's ratio lies in the band: (c − 1)/(c + 1) with c ≥ 2,
+    /// else (d − 1)/(d + 1) (module docs; `null`: global band, whose coverage is that of the
+    /// study's comparison).
     pub coverage: Option<f64>,
 }
 
@@ -150,6 +162,7 @@ impl Band {
             coverage: None,
             held_pairs: 0,
             devices: 0,
+            random_devices: 0,
         }
     }
 
@@ -196,10 +209,18 @@ impl Band {
             let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             [lo, hi]
         };
-        let mut samples: Vec<usize> = rho.iter().map(|p| p.sample).collect();
-        samples.sort_unstable();
-        samples.dedup();
-        let d = samples.len();
+        let devices = |check_only: bool| {
+            let mut s: Vec<usize> = rho
+                .iter()
+                .filter(|p| p.check || !check_only)
+                .map(|p| p.sample)
+                .collect();
+            s.sort_unstable();
+            s.dedup();
+            s.len()
+        };
+        let (d, c) = (devices(false), devices(true));
+        let counted = if c >= 2 { c } else { d };
         let (p, mu) = (ratios(&rho, Pair::p_ratio), ratios(&held, Pair::mu_ratio));
         let mut p_ratio = range(&p);
         // a coating failure shows ρ ≥ P_crit/P_est: the upper end covers it
@@ -216,7 +237,8 @@ impl Band {
             mu_ratio: range(&mu),
             centre: [median(p), median(mu)],
             devices: d,
-            coverage: Some((d as f64 - 1.0) / (d as f64 + 1.0)),
+            random_devices: c,
+            coverage: Some((counted as f64 - 1.0) / (counted as f64 + 1.0)),
         }
     }
 
@@ -259,6 +281,7 @@ mod tests {
             mu_estimate: 0.01,
             mu_dem: 0.01 / m,
             p_crit_GPa: 4.0 * rho.max(1.0),
+            check: false,
         }
     }
 
@@ -291,6 +314,14 @@ mod tests {
         let b = Band::calibrated(&many);
         assert_eq!((b.devices, b.p_ratio[1]), (4, 1.0 + 0.001 * 18.0));
         assert!((b.coverage.unwrap() - 0.6).abs() < 1e-12);
+        // 19 devices of which 3 the check's (drawn at random): the coverage counts those 3
+        for (i, p) in many.iter_mut().enumerate() {
+            p.sample = i;
+            p.check = i >= 16;
+        }
+        let b = Band::calibrated(&many);
+        assert_eq!((b.devices, b.random_devices), (19, 3));
+        assert!((b.coverage.unwrap() - 0.5).abs() < 1e-12);
     }
 
     /// The band is made from the regime where the verdict turns: a run whose coating failed

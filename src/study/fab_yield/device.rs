@@ -127,6 +127,7 @@ impl Device {
                     mu_estimate: me?,
                     mu_dem: r.mu.filter(|&m| m > 0.0)?,
                     p_crit_GPa: self.p_crit_gpa(),
+                    check: self.check,
                 })
             })
             .collect()
