@@ -193,20 +193,21 @@ impl Knowledge {
                         DecidedBy::Dem
                     };
                     (w.clamp(b.low, b.high), by)
-                } else if b.floor != Floor::Lost {
+                } else {
                     // the runs are spent: the floor of what is known (conservative); a floor
                     // transferred through the estimate, not held by the DEM, less twice the
-                    // resolution, as a prediction
+                    // resolution, as a prediction; no floor (the DEM failed it below its band,
+                    // or nothing transfers): its own margin's prediction, less twice the
+                    // resolution
                     let w = match b.floor {
                         Floor::Held => b.low,
-                        _ => b.low * (1.0 - 2.0 * resolution),
+                        Floor::Transferred if b.low > 0.0 => b.low * (1.0 - 2.0 * resolution),
+                        _ => {
+                            let w = d.predicted(&self.band, mu_sl) * (1.0 - 2.0 * resolution);
+                            w.clamp(0.0, b.high)
+                        }
                     };
                     (w, DecidedBy::Undecided)
-                } else {
-                    // the DEM failed it below its band: its own margin's prediction, less
-                    // twice the resolution
-                    let w = d.predicted(&self.band, mu_sl) * (1.0 - 2.0 * resolution);
-                    (w.clamp(0.0, b.high), DecidedBy::Undecided)
                 }
             })
             .collect()
@@ -256,6 +257,13 @@ fn bracket(d: &Device, b: &Bounds, r: f64) -> (f64, f64) {
         (Some(a), None) => (a, hi(a)),
         (None, None) => (b.low, b.high),
     }
+}
+
+/// The `n` entries of `ids` with the lowest `key` (same order), ties by id.
+fn lowest_of(ids: &[usize], key: &[f64], n: usize) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..ids.len()).collect();
+    order.sort_by(|&x, &y| key[x].total_cmp(&key[y]).then(ids[x].cmp(&ids[y])));
+    order.into_iter().map(|x| ids[x]).take(n).collect()
 }
 
 /// When the rounds of a yield may stop before every device is decided
@@ -395,9 +403,7 @@ impl<'a> Rounds<'a> {
                 .iter()
                 .map(|&i| devices[i].predicted(&kn.band, self.mu_sl))
                 .collect();
-            let mut order: Vec<usize> = (0..todo.len()).collect();
-            order.sort_by(|&x, &y| pred[x].total_cmp(&pred[y]).then(todo[x].cmp(&todo[y])));
-            todo = order.into_iter().map(|x| todo[x]).take(k + 1).collect();
+            todo = lowest_of(&todo, &pred, k + 1);
             let mut plan: Vec<(usize, f64)> = Vec::new();
             for &i in &todo {
                 for w in self.loads_for(&devices[i], &kn.bounds[i], &kn) {
