@@ -151,13 +151,9 @@ pub struct Alphas {
 }
 
 impl Alphas {
-    /// The angles in degrees, each checked ([`alpha`]).
+    /// The angles in degrees, each checked ([`alphas_deg`]).
     pub fn degrees(&self) -> Result<Vec<f64>> {
-        let v = parse_list_or_range(&self.text, "--alpha-deg")?;
-        for &a in &v {
-            alpha(a)?;
-        }
-        Ok(v)
+        alphas_deg(&self.text)
     }
 
     /// The angles in rad, each checked ([`alphas`]).
@@ -317,10 +313,7 @@ pub fn loads_mn(text: &str) -> Result<Vec<f64>> {
 
 /// `--load-mn` list or range (each checked by [`load`]) → N.
 pub fn loads(text: &str) -> Result<Vec<f64>> {
-    parse_list_or_range(text, "--load-mn")?
-        .into_iter()
-        .map(load)
-        .collect()
+    Ok(loads_mn(text)?.into_iter().map(mn_to_n).collect())
 }
 
 /// The largest |θ| in degrees a command takes: a full turn either way, so that a sweep
@@ -357,12 +350,18 @@ pub fn alpha(v: f64) -> Result<f64> {
     Ok(deg_to_rad(v))
 }
 
+/// `--alpha-deg` list or range (degrees, each checked by [`alpha`]), in degrees.
+pub fn alphas_deg(text: &str) -> Result<Vec<f64>> {
+    let v = parse_list_or_range(text, "--alpha-deg")?;
+    for &a in &v {
+        alpha(a)?;
+    }
+    Ok(v)
+}
+
 /// `--alpha-deg` list or range (each checked by [`alpha`]) → rad.
 pub fn alphas(text: &str) -> Result<Vec<f64>> {
-    parse_list_or_range(text, "--alpha-deg")?
-        .into_iter()
-        .map(alpha)
-        .collect()
+    Ok(alphas_deg(text)?.into_iter().map(deg_to_rad).collect())
 }
 
 /// One pulling direction in degrees from the substrate x axis: finite; returned unchanged.
